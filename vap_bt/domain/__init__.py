@@ -1,0 +1,1 @@
+"""Action knowledge: PDDL domains and problems, grounded actions, and the planner."""

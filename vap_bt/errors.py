@@ -1,0 +1,45 @@
+"""Errors a user can cause, each with its documented exit code.
+
+Every error that reaches the command line is a :class:`VapBtError`: the CLI prints its one-line
+message (naming the file, line or field at fault) and exits with its code, never a traceback.
+
+====  =====================================================================
+code  meaning
+====  =====================================================================
+0     the run succeeded (the executive's claim and the world agree)
+1     the run ended without reaching the goal
+2     bad input: a file, field or argument is wrong (:class:`InputError`)
+3     no plan exists for the problem as given (:class:`UnsolvableError`)
+4     the transport could not be brought up (:class:`TransportError`)
+====  =====================================================================
+"""
+
+from __future__ import annotations
+
+EXIT_OK = 0
+EXIT_GOAL_NOT_REACHED = 1
+EXIT_BAD_INPUT = 2
+EXIT_UNSOLVABLE = 3
+EXIT_TRANSPORT = 4
+
+
+class VapBtError(Exception):
+    exit_code = 1
+
+
+class InputError(VapBtError):
+    """Bad input; ``where`` names the file (and line or field) at fault."""
+
+    exit_code = EXIT_BAD_INPUT
+
+    def __init__(self, where: str, message: str) -> None:
+        super().__init__(f"{where}: {message}")
+        self.where = where
+
+
+class UnsolvableError(VapBtError):
+    exit_code = EXIT_UNSOLVABLE
+
+
+class TransportError(VapBtError):
+    exit_code = EXIT_TRANSPORT

@@ -1,0 +1,64 @@
+"""Rigid transforms as plain 4x4 numpy arrays.
+
+Motion code passes poses across module boundaries as homogeneous matrices (``T[:3, :3]`` rotation,
+``T[:3, 3]`` translation) so that callers need neither pinocchio nor pybullet types. These helpers
+build them and measure how far apart two of them are.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def rpy_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:
+    """Rotation for URDF roll-pitch-yaw (fixed axes x, then y, then z)."""
+    cr, sr = math.cos(roll), math.sin(roll)
+    cp, sp = math.cos(pitch), math.sin(pitch)
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    return np.array(
+        [
+            [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr],
+        ]
+    )
+
+
+def make_pose(position=(0.0, 0.0, 0.0), rotation: np.ndarray | None = None) -> np.ndarray:
+    T = np.eye(4)
+    if rotation is not None:
+        T[:3, :3] = rotation
+    T[:3, 3] = position
+    return T
+
+
+def planar_pose(x: float, y: float, yaw: float) -> np.ndarray:
+    """Pose of a mobile base on the floor: the frame of its virtual x, y, yaw joints."""
+    return make_pose((x, y, 0.0), rpy_matrix(0.0, 0.0, yaw))
+
+
+def inverse(T: np.ndarray) -> np.ndarray:
+    R, p = T[:3, :3], T[:3, 3]
+    out = np.eye(4)
+    out[:3, :3] = R.T
+    out[:3, 3] = -R.T @ p
+    return out
+
+
+def rotation_angle(R: np.ndarray) -> float:
+    """Angle of a rotation matrix, robust near 0 and pi."""
+    c = (np.trace(R) - 1.0) / 2.0
+    s = np.linalg.norm([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]) / 2.0
+    return float(math.atan2(s, c))
+
+
+def pose_error(a: np.ndarray, b: np.ndarray) -> tuple[float, float]:
+    """(position distance in m, rotation angle in rad) between two poses."""
+    return float(np.linalg.norm(a[:3, 3] - b[:3, 3])), rotation_angle(a[:3, :3].T @ b[:3, :3])
+
+
+def wrap_angle(a):
+    """Angle(s) mapped to [-pi, pi)."""
+    return (np.asarray(a) + np.pi) % (2.0 * np.pi) - np.pi

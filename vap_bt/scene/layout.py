@@ -1,0 +1,165 @@
+"""Scene layouts: a compact, human-written description of a household and the facts it means.
+
+Writing every ground atom of a house by hand is error-prone, so task files describe a scene the
+way a person would — rooms, doors between them, furniture in rooms, items on or inside furniture
+— and :func:`layout_facts` expands that into the household domain's atoms (``in_room``,
+``connects`` both ways, ``openable``/``open``/``closed``, ``reachable``, ``blocking``, a floor
+per room for things that fall). The same layout names the objects a physical world must build.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from vap_bt.domain.atoms import Atom
+
+
+def floor_of(room: str) -> str:
+    """Every room has a floor surface; dropped things land there."""
+    return f"floor_{room}"
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+
+class Door(_Strict):
+    between: tuple[str, str]
+    state: Literal["open", "closed"] = "open"
+
+
+class Furniture(_Strict):
+    type: Literal["surface", "container", "appliance", "sink"]
+    room: str
+    state: Literal["open", "closed"] | None = None  # only for things that open
+    clear: bool = True
+
+
+class Item(_Strict):
+    """``place`` is ``"on <surface>"``, ``"inside <container>"`` or ``"held"``.
+
+    (A ``place`` string rather than ``on:``/``inside:`` keys, because YAML 1.1 reads a bare
+    ``on`` key as the boolean true.)"""
+
+    type: Literal["item", "knife"] = "item"
+    place: str
+    fillable: bool = False
+    blocked_by: list[str] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _place(self) -> "Item":
+        words = self.place.split()
+        if not (words == ["held"] or (len(words) == 2 and words[0] in ("on", "inside"))):
+            raise ValueError(f"place must be 'on <surface>', 'inside <container>' or 'held', not {self.place!r}")
+        return self
+
+    @property
+    def held(self) -> bool:
+        return self.place == "held"
+
+    @property
+    def on(self) -> str | None:
+        w = self.place.split()
+        return w[1] if w[0] == "on" else None
+
+    @property
+    def inside(self) -> str | None:
+        w = self.place.split()
+        return w[1] if w[0] == "inside" else None
+
+
+class Robot(_Strict):
+    room: str
+    at: str | None = None  # what the robot stands at and looks at; default: its room's floor
+
+
+class Layout(_Strict):
+    rooms: list[str]
+    doors: dict[str, Door] = Field(default_factory=dict)
+    robot: Robot
+    furniture: dict[str, Furniture] = Field(default_factory=dict)
+    items: dict[str, Item] = Field(default_factory=dict)
+
+    @model_validator(mode="after")
+    def _names(self) -> "Layout":
+        rooms = set(self.rooms)
+        for name, d in self.doors.items():
+            for r in d.between:
+                if r not in rooms:
+                    raise ValueError(f"door {name!r}: unknown room {r!r}")
+        for name, f in self.furniture.items():
+            if f.room not in rooms:
+                raise ValueError(f"furniture {name!r}: unknown room {f.room!r}")
+        places = {**{floor_of(r): "surface" for r in rooms}, **{n: f.type for n, f in self.furniture.items()}}
+        for name, it in self.items.items():
+            if it.on is not None and places.get(it.on) != "surface":
+                raise ValueError(f"item {name!r}: on: {it.on!r} is not a surface of this scene")
+            if it.inside is not None and places.get(it.inside) not in ("container", "appliance"):
+                raise ValueError(f"item {name!r}: inside: {it.inside!r} is not a container of this scene")
+            for b in it.blocked_by:
+                if b not in self.items:
+                    raise ValueError(f"item {name!r}: blocked_by: unknown item {b!r}")
+        if self.robot.room not in rooms:
+            raise ValueError(f"robot: unknown room {self.robot.room!r}")
+        return self
+
+    def objects(self) -> dict[str, str]:
+        """Object name -> PDDL type."""
+        out = {r: "room" for r in self.rooms}
+        out.update({floor_of(r): "surface" for r in self.rooms})
+        out.update({d: "door" for d in self.doors})
+        out.update({n: f.type for n, f in self.furniture.items()})
+        out.update({n: i.type for n, i in self.items.items()})
+        return out
+
+    def room_of(self, name: str) -> str | None:
+        if name in self.furniture:
+            return self.furniture[name].room
+        for r in self.rooms:
+            if name == floor_of(r):
+                return r
+        it = self.items.get(name)
+        if it is None or it.held:
+            return None
+        return self.room_of(it.on or it.inside)
+
+
+def layout_facts(layout: Layout) -> set[Atom]:
+    """The ground atoms a layout means, in the household domain's vocabulary."""
+    f: set[Atom] = {Atom("robot_in", (layout.robot.room,))}
+    at = layout.robot.at or floor_of(layout.robot.room)
+    f |= {Atom("robot_at", (at,)), Atom("inview", (at,))}
+    for r in layout.rooms:
+        f |= {Atom("in_room", (floor_of(r), r)), Atom("clear", (floor_of(r),))}
+    for name, d in layout.doors.items():
+        a, b = d.between
+        f |= {Atom("connects", (name, a, b)), Atom("connects", (name, b, a)),
+              Atom("in_room", (name, a)), Atom("in_room", (name, b)), Atom("openable", (name,)),
+              Atom(d.state, (name,))}
+    for name, fu in layout.furniture.items():
+        f.add(Atom("in_room", (name, fu.room)))
+        if fu.state is not None:
+            f |= {Atom("openable", (name,)), Atom(fu.state, (name,))}
+        elif fu.type in ("container", "appliance"):
+            f.add(Atom("open", (name,)))  # an open-topped container (a basket) is always open
+        if fu.type == "surface" and fu.clear:
+            f.add(Atom("clear", (name,)))
+    held = False
+    for name, it in layout.items.items():
+        if it.held:
+            f.add(Atom("holding", (name,)))
+            held = True
+        else:
+            f.add(Atom("on", (name, it.on)) if it.on else Atom("inside", (name, it.inside)))
+            f.add(Atom("in_room", (name, layout.room_of(name))))
+        if it.fillable:
+            f.add(Atom("fillable", (name,)))
+        for b in it.blocked_by:
+            f.add(Atom("blocking", (b, name)))
+        if not it.blocked_by:
+            f.add(Atom("reachable", (name,)))
+    if not held:
+        f.add(Atom("hand_empty"))
+    return f

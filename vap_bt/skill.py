@@ -1,0 +1,98 @@
+"""The skill contract: how the executive asks for an action and how a plugin performs it.
+
+A *skill* is a class that performs one PDDL action on a :class:`~vap_bt.world.World`. It names
+the action it implements, the robot whose server hosts it, and the resource it occupies (two
+goals for one resource are never in flight together). Skills are found through the entry-point
+group ``vap_bt.skills``; the built-in ones in ``skills/`` are registered the same way.
+
+The executive side sees goals the ROS way — send, feedback, result, cancel — through a
+:class:`SkillClient`. One client runs goals in-process (fast campaigns), the other over Zenoh
+(:mod:`vap_bt.transport`); behaviours cannot tell them apart. Skills never import py_trees.
+"""
+
+from __future__ import annotations
+
+import enum
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Protocol
+
+from vap_bt.world import GoalContext, Observation, World
+
+ENTRY_POINT_GROUP = "vap_bt.skills"
+
+
+class GoalState(enum.Enum):
+    PENDING = "pending"  # sent, not yet accepted
+    ACTIVE = "active"  # accepted and running
+    SUCCEEDED = "succeeded"
+    ABORTED = "aborted"  # the skill ran and failed, or its server vanished
+    CANCELED = "canceled"
+    REJECTED = "rejected"  # unknown action, busy resource, bad arguments
+
+    @property
+    def terminal(self) -> bool:
+        return self not in (GoalState.PENDING, GoalState.ACTIVE)
+
+
+@dataclass
+class SkillResult:
+    success: bool
+    message: str = ""
+    data: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class Feedback:
+    progress: float  # 0..1
+    text: str = ""
+
+
+class Skill(ABC):
+    """Base class of every skill plugin.
+
+    Subclasses set ``action`` (the PDDL action name), ``robot`` (which server hosts it) and
+    ``resource`` (what it occupies while running), and implement :meth:`execute`, which runs on
+    a worker thread and should call ``ctx.feedback`` now and then and return early once
+    ``ctx.cancelled()`` is true.
+    """
+
+    action: ClassVar[str]
+    robot: ClassVar[str] = "ur5e"
+    resource: ClassVar[str] = "arm"
+
+    def __init__(self, world: World) -> None:
+        self.world = world
+
+    @abstractmethod
+    def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult: ...
+
+
+class GoalHandle(Protocol):
+    """A goal in flight, as the executive sees it."""
+
+    goal_id: str
+
+    def state(self) -> GoalState: ...
+
+    def feedback(self) -> Feedback | None: ...
+
+    def result(self) -> SkillResult | None: ...
+
+    def cancel(self) -> None: ...
+
+
+class SkillClient(Protocol):
+    """Starts goals on whatever hosts the skills (in-process or over Zenoh)."""
+
+    def send_goal(self, action: str, args: tuple[str, ...]) -> GoalHandle: ...
+
+    def close(self) -> None: ...
+
+
+class Camera(Protocol):
+    """Where the executive gets observations and moves its viewpoint."""
+
+    def observe(self, targets: tuple[str, ...]) -> Observation: ...
+
+    def move_view(self, target: str, direction: str) -> bool: ...

@@ -1,0 +1,149 @@
+"""Task files: the YAML a user writes to say what the robot should do, and where.
+
+A task file names a domain, describes the scene (a :class:`~vap_bt.scene.layout.Layout`, or a
+PDDL problem file for domains other than the household), states the goal — as PDDL atoms, with
+the natural-language instruction beside it — and sets the run's options. Paths are relative to
+the task file. Every mistake is reported once, with the file and the field or line at fault::
+
+    name: collect_cup
+    instruction: Take the cup from the living-room table to the kitchen counter.
+    domain: ../domains/household.pddl
+    goal: ["on(cup, counter)"]
+    scene: {rooms: [...], doors: {...}, robot: {...}, furniture: {...}, items: {...}}
+    options: {verify: both, budget: 3, max_replans: 10}
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Literal
+
+import yaml
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal as Lit
+from vap_bt.domain.task import PlanningTask
+from vap_bt.errors import InputError
+from vap_bt.scene.layout import Layout, layout_facts
+
+Verify = Literal["both", "pre", "eff", "none"]
+
+
+class Options(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    verify: Verify = "both"
+    budget: int = Field(3, ge=0, description="viewpoint budget K of active perception")
+    paraphrases: int = Field(5, ge=1, le=5, description="N paraphrases asked per predicate")
+    max_replans: int = Field(10, ge=0)
+    max_ticks: int = Field(2000, ge=1)
+    injection: bool = True  # Table II situation injection in the world
+
+
+class TaskFile(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    name: str
+    instruction: str = ""
+    paper_task: str | None = None
+    domain: str
+    problem: str | None = None
+    scene: Layout | None = None
+    goal: list[str] | None = None
+    world: Literal["symbolic", "pybullet"] = "symbolic"
+    options: Options = Field(default_factory=Options)
+
+    @model_validator(mode="after")
+    def _scene_or_problem(self) -> "TaskFile":
+        if (self.scene is None) == (self.problem is None):
+            raise ValueError("give exactly one of scene: (a household layout) or problem: (a PDDL file)")
+        if self.scene is not None and not self.goal:
+            raise ValueError("a task with a scene needs goal: [atoms]")
+        return self
+
+
+class Task:
+    """A loaded task: the file's contents plus the planning task they define."""
+
+    def __init__(self, spec: TaskFile, planning: PlanningTask, path: Path | None) -> None:
+        self.spec, self.planning, self.path = spec, planning, path
+
+    @property
+    def name(self) -> str:
+        return self.spec.name
+
+    @property
+    def options(self) -> Options:
+        return self.spec.options
+
+
+def load(path: str | Path) -> Task:
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(str(path), "no such task file")
+    try:
+        raw = yaml.safe_load(path.read_text())
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = f"{path}:{mark.line + 1}" if mark else str(path)
+        raise InputError(where, f"not valid YAML: {getattr(exc, 'problem', exc)}") from None
+    if not isinstance(raw, dict):
+        raise InputError(str(path), "a task file is a mapping (name:, domain:, goal:, ...)")
+    try:
+        spec = TaskFile.model_validate(raw)
+    except ValidationError as exc:
+        err = exc.errors()[0]
+        field = ".".join(str(x) for x in err["loc"]) or "(top level)"
+        raise InputError(f"{path}: field {field}", err["msg"]) from None
+    return from_spec(spec, base=path.parent, where=path)
+
+
+def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
+    from vap_bt.domain.pddl import load_task, parse_strings
+
+    domain_path = (base / spec.domain).resolve()
+    if spec.problem is not None:
+        planning = load_task(domain_path, (base / spec.problem).resolve())
+        if spec.goal:
+            planning = planning.with_state(planning.init, _goal(spec.goal, planning, where))
+        return Task(spec, planning, Path(where))
+    objects = spec.scene.objects()
+    facts = layout_facts(spec.scene)
+    goal_atoms = [_parse(g, where) for g in spec.goal]
+    text = problem_text(spec.name, objects, facts, goal_atoms)
+    planning = parse_strings(domain_path, text, where=f"{where}: field scene")
+    for a in goal_atoms:
+        why = planning.check_atom(a.atom)
+        if why:
+            raise InputError(f"{where}: field goal", why)
+    return Task(spec, planning, Path(where))
+
+
+def _parse(text: str, where) -> Lit:
+    neg = text.strip().startswith("not ")
+    try:
+        atom = Atom.parse(text.strip()[4:] if neg else text)
+    except AtomSyntaxError as exc:
+        raise InputError(f"{where}: field goal", str(exc)) from None
+    return Lit(atom, not neg)
+
+
+def _goal(goal: list[str], planning: PlanningTask, where) -> tuple[Lit, ...]:
+    out = []
+    for g in goal:
+        lit = _parse(g, where)
+        why = planning.check_atom(lit.atom)
+        if why:
+            raise InputError(f"{where}: field goal", why)
+        out.append(lit)
+    return tuple(out)
+
+
+def problem_text(name: str, objects: dict[str, str], facts: set[Atom], goal: list[Lit]) -> str:
+    """A PDDL problem for the household domain (so unified-planning and Fast Downward read it)."""
+    by_type: dict[str, list[str]] = {}
+    for o, t in sorted(objects.items()):
+        by_type.setdefault(t, []).append(o)
+    objs = "\n    ".join(f"{' '.join(names)} - {t}" for t, names in by_type.items())
+    init = "\n    ".join(a.pddl() for a in sorted(facts))
+    goals = " ".join(l.atom.pddl() if l.positive else f"(not {l.atom.pddl()})" for l in goal)
+    return (f"(define (problem {name}) (:domain household)\n  (:objects\n    {objs})\n"
+            f"  (:init\n    {init})\n  (:goal (and {goals})))\n")
