@@ -17,7 +17,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
 
-from vap_bt.world import GoalContext, Observation, World
+from vap_bt.world import GoalContext, Observation, SceneSnapshot, World
 
 ENTRY_POINT_GROUP = "vap_bt.skills"
 
@@ -91,8 +91,10 @@ class SkillClient(Protocol):
 
 
 class Camera(Protocol):
-    """Where the executive gets observations and moves its viewpoint."""
+    """Where the executive gets observations, moves its viewpoint and surveys the scene."""
 
     def observe(self, targets: tuple[str, ...]) -> Observation: ...
+
+    def survey(self) -> SceneSnapshot: ...
 
     def move_view(self, target: str, direction: str) -> bool: ...

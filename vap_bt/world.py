@@ -49,6 +49,11 @@ class Observation:
 
     ``visibility`` maps object names to the fraction of the object that the view shows (0 when out
     of view or fully occluded); a pixel world derives it from the segmentation mask.
+
+    ``relations`` are the spatial facts (``on``, ``inside``, ``in_room``, ``holding``) about the
+    objects in view, as the scene-graph builder derives them from geometry (paper Sec. IV-A:
+    centroid above a support surface, box inside a container's volume). They re-locate objects
+    after a situation; truth values of other predicates are for the VLM to judge.
     """
 
     view_index: int
@@ -58,6 +63,7 @@ class Observation:
     depth: np.ndarray | None = None  # (H, W) float32, metres
     segmentation: np.ndarray | None = None  # (H, W) int32 object ids, -1 background
     segment_names: dict[int, str] = field(default_factory=dict)
+    relations: frozenset[Atom] = frozenset()
     intrinsics: tuple[float, float, float, float] | None = None  # fx, fy, cx, cy
     camera_pose: tuple[float, ...] | None = None  # x, y, z, qx, qy, qz, qw (world frame)
     stamp: float = 0.0
@@ -99,8 +105,10 @@ class World(Protocol):
     def reset(self, seed: int) -> None:
         """Restore the task's initial state; every random draw after this follows ``seed``."""
 
-    def initial_belief(self) -> SceneSnapshot:
-        """Objects and facts the robot starts out believing (its perception of the start)."""
+    def survey(self) -> SceneSnapshot:
+        """Explore and build a scene graph of the current state: every object with the facts an
+        RGB-D survey and geometric reasoning establish (the paper's BuildSceneGraph). Called at
+        the start, and again when an object has been lost track of."""
 
     def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
         """Carry out one domain action, with this world's situation injection."""

@@ -105,6 +105,31 @@ class DomainKnowledge:
         """Predicates some action changes; the others are rigid (static map knowledge)."""
         return frozenset(t.predicate for s in self.schemas.values() for t in (*s.add, *s.delete))
 
+    @cached_property
+    def complements(self) -> dict[str, str]:
+        """Pairs like open/closed: every action that adds one over some arguments deletes the
+        other over the same arguments, and no action touches either alone. Correcting one of a
+        pair to a value implies the other's opposite."""
+        pairs: dict[str, str] = {}
+        touched: dict[str, set[tuple[str, str] | None]] = {}
+        for s in self.schemas.values():
+            dels = {(t.predicate, t.terms) for t in s.delete}
+            adds = {(t.predicate, t.terms) for t in s.add}
+            for t in s.add:
+                partner = [p for p, terms in dels if terms == t.terms and p != t.predicate
+                           and self.predicates.get(p) == self.predicates.get(t.predicate)]
+                touched.setdefault(t.predicate, set()).add(partner[0] if len(partner) == 1 else None)
+            for t in s.delete:
+                partner = [p for p, terms in adds if terms == t.terms and p != t.predicate
+                           and self.predicates.get(p) == self.predicates.get(t.predicate)]
+                touched.setdefault(t.predicate, set()).add(partner[0] if len(partner) == 1 else None)
+        for p, partners in touched.items():
+            if len(partners) == 1 and None not in partners:
+                q = next(iter(partners))
+                if touched.get(q) == {p}:
+                    pairs[p] = q
+        return pairs
+
     def is_rigid(self, predicate: str) -> bool:
         return predicate not in self.fluent_predicates
 

@@ -54,6 +54,9 @@ class Kinematics:
         self.joint_names: tuple[str, ...] = names
         self.lower = self.model.lowerPositionLimit.copy()
         self.upper = self.model.upperPositionLimit.copy()
+        # Python copies for scalar loops (IK), where numpy's per-call cost dominates.
+        self.lower_list: list[float] = self.lower.tolist()
+        self.upper_list: list[float] = self.upper.tolist()
 
     def _reference_configuration(self, full: pin.Model, locked: Mapping[str, float]) -> np.ndarray:
         """Values of the locked joints: fingers open, everything else at zero, then overrides."""
@@ -108,13 +111,15 @@ class Kinematics:
 
     def pose_and_jacobian(self, q: np.ndarray, fid: int) -> tuple[pin.SE3, np.ndarray]:
         """Frame placement and its 6 x dof Jacobian in the frame's own (local) axes."""
-        pin.computeJointJacobians(self.model, self.data, q)
-        placement = pin.updateFramePlacement(self.model, self.data, fid)
-        return placement, pin.getFrameJacobian(self.model, self.data, fid, LOCAL)
+        # One call: forward kinematics, the frame's placement (left in data.oMf) and its Jacobian.
+        J = pin.computeFrameJacobian(self.model, self.data, q, fid, LOCAL)
+        return self.data.oMf[fid], J
 
     def clamp(self, q: np.ndarray) -> np.ndarray:
         """Bring ``q`` into the limits: shift full-turn joints by 2 pi, clip the others."""
         q = np.array(q, dtype=float)
+        if ((q >= self.lower) & (q <= self.upper)).all():  # the common case, kept cheap for IK
+            return q
         w = self.wraps
         span = 2.0 * np.pi
         below = w & (q < self.lower)
@@ -125,9 +130,14 @@ class Kinematics:
 
     def random_configuration(self, rng: np.random.Generator) -> np.ndarray:
         """Uniform within the limits, full-turn joints within one turn around zero."""
+        lo, hi = self._sampling_range
+        return rng.uniform(lo, hi)
+
+    @cached_property
+    def _sampling_range(self) -> tuple[np.ndarray, np.ndarray]:
         lo = np.where(self.wraps, np.maximum(self.lower, -np.pi), self.lower)
         hi = np.where(self.wraps, np.minimum(self.upper, np.pi), self.upper)
-        return rng.uniform(lo, hi)
+        return lo, hi
 
 
 def world_to_base(target_world: np.ndarray, base_pose: tuple[float, float, float]) -> np.ndarray:

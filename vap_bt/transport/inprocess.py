@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from vap_bt.skill import Feedback, GoalState, Skill, SkillResult
 from vap_bt.transport.execution import GoalRun, run_goal, unknown_action
-from vap_bt.world import Observation, World
+from vap_bt.world import Observation, SceneSnapshot, World
 
 
 @dataclass
@@ -70,3 +70,6 @@ class InProcessCamera:
 
     def move_view(self, target: str, direction: str) -> bool:
         return self.world.move_view(target, direction)
+
+    def survey(self) -> SceneSnapshot:
+        return self.world.survey()

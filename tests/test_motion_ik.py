@@ -1,0 +1,111 @@
+"""IK round-trips on random reachable poses, is deterministic, and rejects colliding solutions."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import robots
+from vap_bt.motion import se3
+from vap_bt.motion.collision import CollisionChecker, SceneBoxes
+from vap_bt.motion.ik import IKOptions, solve_ik
+from vap_bt.motion.kinematics import Kinematics, world_to_base
+
+CFG = robots.load_config()
+
+
+@pytest.fixture(scope="module")
+def kin():
+    return Kinematics.arm()
+
+
+@pytest.fixture(scope="module")
+def checker(kin):
+    return CollisionChecker(kin)
+
+
+def reachable_targets(kin, checker, n, seed):
+    """FK of random collision-free configurations: every target has at least one solution."""
+    rng = np.random.default_rng(seed)
+    out = []
+    while len(out) < n:
+        q = kin.random_configuration(rng)
+        if not checker.in_collision(q):
+            out.append((q, kin.fk(q)))
+    return out
+
+
+def test_home_and_zero_are_collision_free(kin, checker):
+    assert not checker.in_collision(np.array(CFG.arm.home))
+    assert not checker.in_collision(np.zeros(6))
+    assert checker.n_self_pairs > 50
+
+
+def test_folded_arm_collides_with_itself(kin, checker):
+    q = np.array(CFG.arm.home)
+    q[2] = np.pi  # elbow fully folded: forearm inside the upper arm
+    assert checker.in_collision(q)
+
+
+def test_round_trip_success_rate(kin, checker):
+    opt = IKOptions(seed=11)
+    targets = reachable_targets(kin, checker, 400, seed=5)
+    results = [solve_ik(kin, T, collision=checker, options=opt) for _, T in targets]
+    rate = np.mean([r.success for r in results])
+    print(f"IK round-trip success {rate:.1%} over {len(targets)} targets")
+    assert rate >= 0.995
+    for (q_true, T), r in zip(targets, results):
+        if r.success:
+            pos, rot = se3.pose_error(kin.fk(r.q), T)
+            assert pos <= opt.position_tolerance and rot <= opt.orientation_tolerance
+            assert np.all(r.q >= kin.lower) and np.all(r.q <= kin.upper)
+            assert not checker.in_collision(r.q)
+
+
+def test_deterministic_given_seed(kin, checker):
+    (_, T), = reachable_targets(kin, checker, 1, seed=9)
+    a = solve_ik(kin, T, options=IKOptions(seed=3))
+    b = solve_ik(kin, T, options=IKOptions(seed=3))
+    assert a.success and np.array_equal(a.q, b.q) and a.iterations == b.iterations
+
+
+def test_initial_guess_near_solution_converges_at_once(kin):
+    q = np.array(CFG.arm.home)
+    r = solve_ik(kin, kin.fk(q), q_init=q + 0.01)
+    assert r.success and r.seeds == 1 and r.iterations <= 5
+    assert np.allclose(r.q, q, atol=1e-3)
+
+
+def test_solution_in_collision_is_rejected(kin, checker):
+    target = kin.fk(np.array(CFG.arm.home))
+    # A box around the TCP: any configuration reaching the pose has its fingers inside it.
+    centre = target[:3, 3]
+    box = SceneBoxes.from_aabbs(np.concatenate([centre - 0.05, centre + 0.05])[None], ("block",))
+    blocked = checker.with_boxes(box)
+    assert blocked.in_collision(np.array(CFG.arm.home))
+    r = solve_ik(kin, target, collision=blocked, options=IKOptions(max_seeds=4))
+    assert not r.success and r.reason == "collision"
+    assert solve_ik(kin, target, collision=checker, options=IKOptions(max_seeds=4)).success
+
+
+def test_unreachable_target_fails_cleanly(kin):
+    far = se3.make_pose((3.0, 0.0, 0.5))
+    r = solve_ik(kin, far, options=IKOptions(max_seeds=3))
+    assert not r.success and r.reason == "unreachable" and r.position_error > 1.0
+
+
+def test_world_target_with_the_base_elsewhere(kin):
+    base = (2.0, 1.0, np.pi / 2)
+    q = np.array(CFG.arm.home)
+    target_world = se3.planar_pose(*base) @ kin.fk(q)
+    r = solve_ik(kin, world_to_base(target_world, base), q_init=q)
+    assert r.success
+
+
+def test_mobile_chain_reaches_a_far_target_by_moving_the_base():
+    mobile = Kinematics.mobile_arm()
+    home = np.concatenate([[0.0, 0.0, 0.0], CFG.arm.home])
+    target = se3.planar_pose(3.0, -2.0, 0.8) @ Kinematics.arm().fk(np.array(CFG.arm.home))
+    r = solve_ik(mobile, target, q_init=home)
+    assert r.success
+    assert np.linalg.norm(r.q[:2] - [3.0, -2.0]) < 1.5

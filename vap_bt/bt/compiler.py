@@ -1,0 +1,62 @@
+"""The plan → behaviour-tree compiler.
+
+A plan ``[a0 … an-1]`` becomes the tree drawn in DESIGN.md — memory sequences throughout, so a
+node that succeeded is not ticked again while a later one runs::
+
+    Sequence "plan"
+     ├─ Sequence "a0: grasp(cup, table, kitchen)"
+     │   ├─ Sequence "pre"   ActivePerception(K) ─ VerifyPredicate(inview cup) …
+     │   ├─ ExecuteSkill(grasp, cup, table, kitchen)
+     │   ├─ ApplyEffects
+     │   └─ Sequence "eff"   ActivePerception(K) ─ VerifyPredicate(holding cup) …
+     ├─ …
+     └─ GoalCheck
+
+Which atoms are checked: the preconditions (``pre``) and the add effects (``eff``, the paper's
+Eff+) whose predicate the camera can judge (there are paraphrases for it) and that some action
+can change (rigid facts are map knowledge). The verification mode removes whole phases:
+``both``, ``pre``, ``eff`` or ``none``.
+"""
+
+from __future__ import annotations
+
+import py_trees
+
+from vap_bt.bt.active_perception import ActivePerception
+from vap_bt.bt.apply_effects import ApplyEffects
+from vap_bt.bt.context import ExecutionContext, Phase
+from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.goal_check import GoalCheck
+from vap_bt.bt.verify_predicate import VerifyPredicate
+from vap_bt.domain.atoms import Literal
+from vap_bt.domain.knowledge import DomainKnowledge, GroundAction
+from vap_bt.perception.prompts import verifiable
+
+
+def checked(literals, knowledge: DomainKnowledge) -> list[Literal]:
+    return [l for l in literals if verifiable(l.atom.predicate) and not knowledge.is_rigid(l.atom.predicate)]
+
+
+def _checks(ctx: ExecutionContext, phase: Phase, literals: list[Literal], action: GroundAction,
+            step: int) -> py_trees.composites.Sequence:
+    return py_trees.composites.Sequence(phase, memory=True, children=[
+        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in literals])
+
+
+def compile_action(ctx: ExecutionContext, action: GroundAction, step: int,
+                   knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
+    children: list[py_trees.behaviour.Behaviour] = []
+    if ctx.mode.pre:
+        children.append(_checks(ctx, "pre", checked(action.preconditions, knowledge), action, step))
+    children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action)]
+    if ctx.mode.eff:
+        adds = [Literal(a) for a in sorted(action.add - action.pre_pos)]  # Eff+ that the action changes
+        children.append(_checks(ctx, "eff", checked(adds, knowledge), action, step))
+    return py_trees.composites.Sequence(f"a{step}: {action}", memory=True, children=children)
+
+
+def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Literal, ...],
+                 knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
+    nodes = [compile_action(ctx, a, i, knowledge) for i, a in enumerate(plan)]
+    nodes.append(GoalCheck(ctx, goal, len(plan)))
+    return py_trees.composites.Sequence("plan", memory=True, children=nodes)

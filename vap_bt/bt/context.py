@@ -1,0 +1,94 @@
+"""What the behaviours of one episode share: belief, senses, hands, settings and the record.
+
+py_trees behaviours are constructed with this context rather than reaching into a global
+blackboard: every dependency is explicit and typed, and two executives can run side by side.
+Behaviours write what happened (verifications, actions, the pending situation) here; the
+executive reads it to decide what to do when a tree fails.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Callable, Literal
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.knowledge import GroundAction
+from vap_bt.perception.verification import Round, VoteSettings
+from vap_bt.perception.vlm import VLM
+from vap_bt.scene.graph import SceneGraph
+from vap_bt.skill import Camera, SkillClient
+
+Phase = Literal["pre", "eff", "goal"]
+SituationKind = Literal["precondition", "effect", "execution", "goal"]
+
+
+@dataclass(frozen=True)
+class VerifyMode:
+    pre: bool = True
+    eff: bool = True
+
+    @classmethod
+    def parse(cls, name: str) -> "VerifyMode":
+        return {"both": cls(True, True), "pre": cls(True, False), "eff": cls(False, True),
+                "none": cls(False, False)}[name]
+
+    @property
+    def name(self) -> str:
+        return {(True, True): "both", (True, False): "pre", (False, True): "eff", (False, False): "none"}[
+            (self.pre, self.eff)]
+
+
+@dataclass
+class Situation:
+    """A check that settled against expectation, or a skill that failed: the loop must replan."""
+
+    kind: SituationKind
+    action: GroundAction | None
+    step: int  # index of the action in the plan being executed
+    atom: Atom | None = None
+    expected: bool | None = None
+    observed: bool | None = None
+    detail: str = ""
+
+    def to_json(self) -> dict:
+        return {"kind": self.kind, "action": str(self.action) if self.action else None,
+                "predicate": str(self.atom) if self.atom else None,
+                "expected": self.expected, "observed": self.observed, "detail": self.detail}
+
+
+@dataclass
+class Verification:
+    phase: Phase
+    action: str
+    atom: Atom
+    expected: bool
+    value: bool
+    outcome: Literal["confirmed", "contradicted", "unsettled"]
+    rounds: list[Round]
+
+    def to_json(self) -> dict:
+        return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
+                "expected": self.expected, "value": self.value, "outcome": self.outcome,
+                "views": len(self.rounds), "queries": sum(len(r.answers) + (r.sufficient is not None)
+                                                          + (r.direction is not None) for r in self.rounds),
+                "rounds": [r.to_json() for r in self.rounds]}
+
+
+@dataclass
+class ExecutionContext:
+    graph: SceneGraph
+    vlm: VLM | None
+    camera: Camera
+    skills: SkillClient
+    mode: VerifyMode = field(default_factory=VerifyMode)
+    budget: int = 3  # K: viewpoint moves per verification
+    vote: VoteSettings = field(default_factory=VoteSettings)
+    progress: Callable[[str], None] = lambda msg: None
+    situation: Situation | None = None
+    verifications: list[Verification] = field(default_factory=list)
+    actions: list[dict] = field(default_factory=list)
+    t0: float = field(default_factory=time.perf_counter)
+
+    def now(self) -> float:
+        return round(time.perf_counter() - self.t0, 6)

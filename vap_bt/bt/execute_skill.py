@@ -1,0 +1,52 @@
+"""ExecuteSkill: a plan action sent as a goal to whatever hosts the skill (ROS-action style).
+
+``initialise`` sends the goal; the behaviour is RUNNING while the goal is in flight and reports
+progress from the skill's feedback; it succeeds or fails with the goal's result. If the tree
+interrupts it (a higher-priority branch, a halted tree), ``terminate`` cancels the goal so the
+robot does not keep moving for a plan that no longer exists. A failed goal is a situation of
+kind ``execution``.
+"""
+
+from __future__ import annotations
+
+import py_trees
+from py_trees.common import Status
+
+from vap_bt.bt.context import ExecutionContext, Situation
+from vap_bt.domain.knowledge import GroundAction
+from vap_bt.skill import GoalHandle, GoalState
+
+
+class ExecuteSkill(py_trees.behaviour.Behaviour):
+    def __init__(self, ctx: ExecutionContext, action: GroundAction, step: int) -> None:
+        super().__init__(name=f"execute {action}")
+        self.ctx, self.action, self.step = ctx, action, step
+        self.handle: GoalHandle | None = None
+        self._sent_at = 0.0
+
+    def initialise(self) -> None:
+        self._sent_at = self.ctx.now()
+        self.handle = self.ctx.skills.send_goal(self.action.name, self.action.args)
+
+    def update(self) -> Status:
+        state = self.handle.state()
+        fb = self.handle.feedback()
+        if fb is not None:
+            self.feedback_message = f"{fb.progress:.0%} {fb.text}"
+        if not state.terminal:
+            return Status.RUNNING
+        result = self.handle.result()
+        ok = state == GoalState.SUCCEEDED and result is not None and result.success
+        self.ctx.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
+                                 "message": result.message if result else "", "sent_s": self._sent_at,
+                                 "done_s": self.ctx.now()})
+        if ok:
+            return Status.SUCCESS
+        detail = result.message if result else state.value
+        self.ctx.situation = Situation("execution", self.action, self.step, detail=detail)
+        self.ctx.progress(f"    situation: execution of {self.action} failed ({detail})")
+        return Status.FAILURE
+
+    def terminate(self, new_status: Status) -> None:
+        if new_status == Status.INVALID and self.handle is not None and not self.handle.state().terminal:
+            self.handle.cancel()

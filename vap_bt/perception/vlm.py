@@ -1,0 +1,97 @@
+"""The vision-language model protocol: a yes/no question or a choice among options, about one image.
+
+Every backend — the simulated one, OpenAI-compatible servers, Gemini — answers a :class:`Query`
+about an :class:`~vap_bt.world.Observation` with an :class:`Answer`. Answers are parsed
+strictly: anything that is not clearly "yes"/"no" (or one of the options) is ``None``, which the
+vote treats as uncertainty. A timeout is the same: uncertainty, never a crash.
+
+``Query.about`` names the atoms the question concerns. Real models ignore it (they have the
+prompt and the image); the simulated model judges from what the world shows of those atoms' objects.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Literal, Protocol
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.world import Observation
+
+Purpose = Literal["predicate", "sufficiency", "viewpoint", "action"]
+
+
+@dataclass(frozen=True)
+class Query:
+    prompt: str
+    kind: Literal["yesno", "choice"] = "yesno"
+    purpose: Purpose = "predicate"
+    about: tuple[Atom, ...] = ()
+    objects: tuple[str, ...] = ()
+    options: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Answer:
+    raw: str
+    value: bool | str | None  # None: no usable answer
+
+    @property
+    def usable(self) -> bool:
+        return self.value is not None
+
+
+class VLM(Protocol):
+    name: str
+
+    def ask(self, query: Query, observation: Observation) -> Answer: ...
+
+    def describe(self) -> dict:
+        """Backend name and every parameter that shapes its answers (for the report)."""
+
+
+_YES = re.compile(r"^\W*(yes|y|true)\b", re.I)
+_NO = re.compile(r"^\W*(no|n|false)\b", re.I)
+
+
+def parse_yes_no(text: str) -> bool | None:
+    """Strict: the reply must open with yes or no; anything else is no answer."""
+    if _YES.match(text):
+        return True
+    if _NO.match(text):
+        return False
+    return None
+
+
+def parse_choice(text: str, options: tuple[str, ...]) -> str | None:
+    """The single option the reply names; none or several named is no answer."""
+    words = set(re.findall(r"[a-z]+", text.lower()))
+    named = [o for o in options if o in words]
+    return named[0] if len(named) == 1 else None
+
+
+class MeteredVLM:
+    """Wraps a VLM to count queries and their time per purpose (for reports and benchmarks)."""
+
+    def __init__(self, inner: VLM) -> None:
+        self.inner = inner
+        self.name = inner.name
+        self.counts: dict[str, int] = {}
+        self.seconds = 0.0
+
+    def ask(self, query: Query, observation: Observation) -> Answer:
+        import time
+
+        t0 = time.perf_counter()
+        try:
+            return self.inner.ask(query, observation)
+        finally:
+            self.seconds += time.perf_counter() - t0
+            self.counts[query.purpose] = self.counts.get(query.purpose, 0) + 1
+
+    @property
+    def total(self) -> int:
+        return sum(self.counts.values())
+
+    def describe(self) -> dict:
+        return self.inner.describe()

@@ -1,0 +1,1 @@
+"""Worlds: the fast symbolic one over ground facts and the physical pybullet household."""

@@ -1,0 +1,79 @@
+"""Situation injection: the paper's Table II as data, and one seeded draw per action.
+
+Each row is a situation the world may cause when an action runs: its kind, its probability, and
+what it does, expressed so that every world can carry it out in its own terms:
+
+* ``effect``  — whether the action's intended effects still happen (a navigation during which the
+  held object falls still arrives; a grasp that fails does not hold anything);
+* ``drops``   — which argument (by index), if any, ends up on the floor near the robot; ``"held"``
+  means whatever the robot was holding.
+
+The symbolic world applies this to ground facts; the pybullet world makes it physically so
+(opens the gripper, lets the object fall). Table II's "N/A" rows (object not in view after
+navigation, no free space) are not injected: they arise from the world itself.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class SituationSpec:
+    action: str
+    kind: str
+    probability: float
+    effect: bool  # do the intended effects still happen?
+    drops: int | str | None = None  # argument index, "held", or None
+
+
+#: Table II of the paper (simulation experiments), row by row. ``takeout`` is grasping from an
+#: open container and shares grasp's row; ``navigate`` between rooms shares find's.
+TABLE_II: tuple[SituationSpec, ...] = (
+    SituationSpec("find", "held_object_drops_during_navigation", 0.10, effect=True, drops="held"),
+    SituationSpec("navigate", "held_object_drops_during_navigation", 0.10, effect=True, drops="held"),
+    SituationSpec("grasp", "grasp_fails_object_unchanged", 0.25, effect=False),
+    SituationSpec("grasp", "grasp_fails_object_drops_nearby", 0.25, effect=False, drops=0),
+    SituationSpec("takeout", "grasp_fails_object_unchanged", 0.25, effect=False),
+    SituationSpec("takeout", "grasp_fails_object_drops_nearby", 0.25, effect=False, drops=0),
+    SituationSpec("placein", "place_fails_object_in_hand", 0.10, effect=False),
+    SituationSpec("placein", "place_fails_object_drops_nearby", 0.10, effect=False, drops=0),
+    SituationSpec("placeon", "place_fails_object_in_hand", 0.10, effect=False),
+    SituationSpec("placeon", "place_fails_object_drops_nearby", 0.10, effect=False, drops=0),
+    SituationSpec("fill", "container_not_fully_filled", 0.05, effect=False),
+    SituationSpec("fill", "container_drops_nearby", 0.05, effect=False, drops=0),
+    SituationSpec("open", "open_fails_object_closed", 0.10, effect=False),
+    SituationSpec("close", "close_fails_object_open", 0.10, effect=False),
+    SituationSpec("turnon", "turnon_fails_object_off", 0.10, effect=False),
+    SituationSpec("cut", "cut_fails_knife_in_hand", 0.25, effect=False),
+    SituationSpec("cut", "cut_fails_knife_drops_nearby", 0.25, effect=False, drops=1),
+)
+
+
+class SituationModel:
+    """Draws at most one situation per executed action, from a seeded generator."""
+
+    def __init__(self, table: tuple[SituationSpec, ...] = TABLE_II, enabled: bool = True, seed: int = 0) -> None:
+        self.table, self.enabled = table, enabled
+        self.rng = random.Random(seed)
+
+    def reseed(self, seed: int) -> None:
+        self.rng = random.Random(seed)
+
+    def draw(self, action: str) -> SituationSpec | None:
+        # one uniform draw per action, always taken, so that enabling or disabling rows of one
+        # action does not shift the random stream of the others
+        u = self.rng.random()
+        if not self.enabled:
+            return None
+        acc = 0.0
+        for spec in self.table:
+            if spec.action == action:
+                acc += spec.probability
+                if u < acc:
+                    return spec
+        return None
+
+    def describe(self) -> list[dict]:
+        return [{"action": s.action, "kind": s.kind, "p": s.probability} for s in self.table] if self.enabled else []
