@@ -23,6 +23,7 @@ __all__ = [
     "Mount",
     "RobotConfig",
     "available",
+    "config_path",
     "load_config",
     "package_dir",
     "urdf_path",

@@ -109,3 +109,25 @@ def test_mobile_chain_reaches_a_far_target_by_moving_the_base():
     r = solve_ik(mobile, target, q_init=home)
     assert r.success
     assert np.linalg.norm(r.q[:2] - [3.0, -2.0]) < 1.5
+
+
+def test_closed_form_solutions_are_exact():
+    from vap_bt.motion import ur_analytic
+
+    dh = CFG.arm.dh
+    rng = np.random.default_rng(4)
+    for _ in range(50):
+        T = ur_analytic.dh_fk(rng.uniform(-np.pi, np.pi, 6), dh)
+        solutions = ur_analytic.solve(T, dh)
+        assert 2 <= len(solutions) <= 8
+        for q in solutions:
+            pos, rot = se3.pose_error(ur_analytic.dh_fk(q, dh), T)
+            assert pos < 1e-9 and rot < 1e-9
+
+
+def test_pure_dls_without_closed_form_seeds(kin, checker):
+    opt = IKOptions(seed=2, analytic_seeds=False)
+    targets = reachable_targets(kin, checker, 60, seed=8)
+    rate = np.mean([solve_ik(kin, T, options=opt).success for _, T in targets])
+    print(f"pure DLS success {rate:.1%}")
+    assert rate >= 0.98

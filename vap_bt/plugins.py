@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from importlib import metadata
 from typing import Iterable
 
+from vap_bt.errors import EXIT_BAD_INPUT, VapBtError
 from vap_bt.skill import ENTRY_POINT_GROUP, Skill
 from vap_bt.world import World
 
@@ -75,8 +76,10 @@ class Discovery:
     problems: tuple[PluginProblem, ...]
 
 
-class SkillConflictError(RuntimeError):
-    """Two plugins bind the same PDDL action; the message names both."""
+class SkillConflictError(VapBtError):
+    """Two plugins bind the same PDDL action; the message names both (exit code 2)."""
+
+    exit_code = EXIT_BAD_INPUT
 
 
 def discover(group: str = ENTRY_POINT_GROUP) -> Discovery:

@@ -108,6 +108,11 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
     objects = spec.scene.objects()
     facts = layout_facts(spec.scene)
     goal_atoms = [_parse(g, where) for g in spec.goal]
+    for lit in goal_atoms:  # unknown names are the goal's fault, said before PDDL ever sees them
+        unknown = [a for a in lit.atom.args if a not in objects]
+        if unknown:
+            raise InputError(f"{where}: field goal", f"unknown object {unknown[0]!r} in {lit.atom} "
+                             f"(the scene has {', '.join(sorted(objects))})")
     text = problem_text(spec.name, objects, facts, goal_atoms)
     planning = parse_strings(domain_path, text, where=f"{where}: field scene")
     for a in goal_atoms:

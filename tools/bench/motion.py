@@ -5,9 +5,10 @@
 IK: the same random reachable TCP targets (FK of random collision-free arm configurations, base
 at the origin, fingers open) are given to
 
-* ours — :func:`vap_bt.motion.ik.solve_ik` (damped least squares, up to 20 random seeds), once
-  without and once with the collision check (pybullet's IK checks none, so the first row is the
-  like-for-like one);
+* ours — :func:`vap_bt.motion.ik.solve_ik`: damped least squares seeded with the closed-form UR
+  solutions (the default), then random seeds, up to 20; with and without the collision check
+  (pybullet's IK checks none, so the first row is the like-for-like one); and pure DLS from random
+  seeds only (``analytic_seeds=False``), to show what the seeding buys;
 * pybullet — ``calculateInverseKinematics`` in DIRECT mode on the same URDF. Its IK moves every
   movable joint, so the base and finger joints get a large ``jointDamping`` (they stay put) and
   only the arm joints of its answer are used. It is iterated: after each call the arm is set to
@@ -75,15 +76,19 @@ def reachable_targets(kin: Kinematics, n: int, seed: int) -> list[np.ndarray]:
     return out
 
 
-def bench_ours(kin: Kinematics, targets, args, collision: bool) -> Row:
-    options = IKOptions(position_tolerance=args.pos_tol, orientation_tolerance=args.rot_tol, seed=args.seed + 1)
+def bench_ours(kin: Kinematics, targets, args, *, analytic: bool, collision: bool) -> Row:
+    options = IKOptions(
+        position_tolerance=args.pos_tol, orientation_tolerance=args.rot_tol, seed=args.seed + 1, analytic_seeds=analytic
+    )
     checker = CollisionChecker(kin) if collision else None
     start = time.perf_counter()
     results = [solve_ik(kin, T, collision=checker, options=options) for T in targets]
     elapsed = time.perf_counter() - start
-    name = "ours DLS + collision check" if collision else "ours DLS (pinocchio)"
+    name = "ours: DLS, " + ("closed-form seeds" if analytic else "random seeds") + (" + collision" if collision else "")
     iters = np.mean([r.iterations for r in results])
-    return Row(name, len(targets), elapsed / len(targets), float(np.mean([r.success for r in results])), "ik", f"{iters:.1f} iterations/solve")
+    seeds = np.mean([r.seeds for r in results])
+    note = f"{iters:.1f} iterations, {seeds:.1f} seeds /solve"
+    return Row(name, len(targets), elapsed / len(targets), float(np.mean([r.success for r in results])), "ik", note)
 
 
 class PybulletIK:
@@ -172,14 +177,15 @@ def extra_benches(specs: list[str]) -> list[Bench]:
 
 def format_table(rows: list[Row]) -> str:
     """One line per row; within a group, ``speed-up`` is the group's last row's time / this row's."""
-    header = f"{'bench':38s} {'n':>5s} {'success':>8s} {'time/item':>11s} {'speed-up':>9s}  note"
+    header = f"{'bench':42s} {'n':>5s} {'success':>8s} {'time/item':>11s} {'speed-up':>9s}  note"
     lines = [header, "-" * len(header)]
-    reference = {r.group: r.seconds for r in rows if r.group}
+    sizes = {g: sum(r.group == g for r in rows) for g in {r.group for r in rows}}
+    reference = {r.group: r.seconds for r in rows if r.group and sizes[r.group] > 1}
     for r in rows:
         success = "" if r.success is None else f"{100 * r.success:.1f}%"
         ref = reference.get(r.group)
         ratio = f"{ref / r.seconds:.1f}x" if ref and r.seconds > 0 else ""
-        lines.append(f"{r.name:38s} {r.n:5d} {success:>8s} {1e3 * r.seconds:9.3f}ms {ratio:>9s}  {r.note}")
+        lines.append(f"{r.name:42s} {r.n:5d} {success:>8s} {1e3 * r.seconds:9.3f}ms {ratio:>9s}  {r.note}")
     return "\n".join(lines)
 
 
@@ -201,8 +207,9 @@ def main(argv: list[str] | None = None) -> int:
     kin = Kinematics.arm()
     targets = reachable_targets(kin, args.n, args.seed)
     rows = [
-        bench_ours(kin, targets, args, collision=False),
-        bench_ours(kin, targets, args, collision=True),
+        bench_ours(kin, targets, args, analytic=True, collision=False),
+        bench_ours(kin, targets, args, analytic=True, collision=True),
+        bench_ours(kin, targets, args, analytic=False, collision=False),
         bench_pybullet(kin, targets, args),
         bench_toppra(args),
     ]

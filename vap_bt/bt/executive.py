@@ -140,17 +140,29 @@ class Executive:
         if not portable:
             return 0
         obs = self.camera.observe(tuple(portable))
+        lost = []
         for o in portable:
             if obs.visibility.get(o, 0.0) > 0.0:
                 seen = {a for a in obs.relations if a.args and a.args[0] == o}
                 if seen:
                     graph.relocate(o, seen)
-        lost = [o for o in portable if not any(a.predicate in ("on", "inside", "holding")
-                                               for a in graph.location(o))]
+            elif self._expected_in_sight(graph, o):
+                lost.append(o)  # the camera turned toward where belief puts it, and it is not there
+        lost += [o for o in portable if o not in lost
+                 and not any(a.predicate in ("on", "inside", "holding") for a in graph.location(o))]
         if lost:
             graph.merge_survey(self.camera.survey())
             return 1
         return 0
+
+    @staticmethod
+    def _expected_in_sight(graph: SceneGraph, obj: str) -> bool:
+        """Belief says the camera should see ``obj``: it is held, or it is in the robot's room."""
+        loc = graph.location(obj)
+        if any(a.predicate == "holding" for a in loc):
+            return True
+        rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"}
+        return any(a.predicate == "in_room" and a.args[1] in rooms for a in loc)
 
     def _portable(self, obj: str) -> bool:
         t = self.task.objects.get(obj)

@@ -8,24 +8,31 @@ that far-away seeds take cautious steps and the last steps are plain Newton step
 quadratically. Steps are capped per joint and the result brought back into the joint limits
 (full-turn joints shift by 2 pi rather than stick at a limit).
 
-A seed that stalls or runs out of iterations is abandoned for the next one. Seeds are: the
-caller's initial guess (if any), then configurations drawn from a generator seeded with
-``options.seed`` — so the answer is deterministic. A converged solution that collides (self or
-scene, :mod:`vap_bt.motion.collision`) is rejected and the search goes on.
+A seed that stalls or runs out of iterations is abandoned for the next one. Seeds are, in order:
+for the UR arm chain, the closed-form solutions of :mod:`ur_analytic` (nearest to the initial
+guess first, each shifted by whole turns towards it), with which DLS merely polishes; the
+caller's initial guess (if any); then configurations drawn from a generator seeded with
+``options.seed`` — so the answer is deterministic. ``analytic_seeds=False`` gives pure DLS.
+A converged solution that collides (self or scene, :mod:`vap_bt.motion.collision`) is rejected
+and the search goes on.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import numpy as np
 import pinocchio as pin
+
 # toppra already depends on scipy; its raw LAPACK binding is the cheapest 6x6 SPD solve.
 from scipy.linalg.lapack import dposv
 
+from vap_bt.motion import se3, ur_analytic
 from vap_bt.motion.collision import CollisionChecker
 from vap_bt.motion.kinematics import Kinematics
+from vap_bt.motion.se3 import wrap_angle
 
 
 @dataclass(frozen=True)
@@ -40,6 +47,8 @@ class IKOptions:
     #: give up a seed when the error shrank less than this factor over ``stall_window`` iterations
     stall_ratio: float = 0.9
     stall_window: int = 5
+    #: start from the closed-form UR solutions when the chain is the 6-joint arm
+    analytic_seeds: bool = True
 
 
 @dataclass(frozen=True)
@@ -97,7 +106,29 @@ def _descend(
     return q, pos, rot, it
 
 
-def _seeds(kin: Kinematics, q_init: np.ndarray | None, opt: IKOptions):
+def _near(q: np.ndarray, ref: np.ndarray, kin: Kinematics) -> np.ndarray:
+    """``q`` with full-turn joints shifted by whole turns towards ``ref``, kept within limits."""
+    shifted = np.where(kin.wraps, ref + wrap_angle(q - ref), q)
+    return kin.clamp(shifted)
+
+
+def _analytic_seeds(kin: Kinematics, frame: str, target: np.ndarray, q_ref: np.ndarray | None) -> Iterator[np.ndarray]:
+    offsets = kin.flange_offsets(frame)
+    if offsets is None:
+        return
+    world_arm_base, flange_frame = offsets
+    flange_in_arm_base = se3.inverse(world_arm_base) @ target @ se3.inverse(flange_frame)
+    solutions = ur_analytic.iter_solutions(flange_in_arm_base, kin.config.arm.dh)
+    if q_ref is None:  # any solution will do: compute them lazily
+        yield from solutions
+        return
+    near = [_near(q, q_ref, kin) for q in solutions]
+    yield from sorted(near, key=lambda q: float(np.abs(q - q_ref).sum()))
+
+
+def _seeds(kin: Kinematics, frame: str, target: np.ndarray, q_init: np.ndarray | None, opt: IKOptions):
+    if opt.analytic_seeds:
+        yield from _analytic_seeds(kin, frame, target, q_init)
     if q_init is not None:
         yield kin.clamp(q_init)
     rng = np.random.default_rng(opt.seed)
@@ -120,7 +151,8 @@ def solve_ik(
     best: tuple[float, np.ndarray, float, float] | None = None
     total = 0
     converged_but_colliding = False
-    seeds = _seeds(kin, None if q_init is None else np.asarray(q_init, dtype=float), options)
+    q0 = None if q_init is None else np.asarray(q_init, dtype=float)
+    seeds = _seeds(kin, frame, np.asarray(target, dtype=float), q0, options)
     for n in range(1, options.max_seeds + 1):
         q, pos, rot, its = _descend(kin, fid, goal, next(seeds), options)
         total += its

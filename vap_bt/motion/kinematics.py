@@ -57,6 +57,7 @@ class Kinematics:
         # Python copies for scalar loops (IK), where numpy's per-call cost dominates.
         self.lower_list: list[float] = self.lower.tolist()
         self.upper_list: list[float] = self.upper.tolist()
+        self._offsets: dict[str, tuple[np.ndarray, np.ndarray]] = {}
 
     def _reference_configuration(self, full: pin.Model, locked: Mapping[str, float]) -> np.ndarray:
         """Values of the locked joints: fingers open, everything else at zero, then overrides."""
@@ -109,11 +110,30 @@ class Kinematics:
         pin.framesForwardKinematics(self.model, self.data, np.asarray(q, dtype=float))
         return {f.name: self.data.oMf[i].homogeneous for i, f in enumerate(self.model.frames)}
 
+    def flange_offsets(self, frame: str) -> tuple[np.ndarray, np.ndarray] | None:
+        """For the UR arm chain: (arm base in the chain's world, ``frame`` in the flange frame),
+        both constant; None when the chain is not exactly the arm or ``frame`` does not ride on
+        the flange. This is what the closed-form UR solution needs to seed IK."""
+        if self.joint_names != self.config.arm.joints:
+            return None
+        fid = self.frame_id(frame)
+        if self.model.frames[fid].parentJoint != self.model.njoints - 1:
+            return None
+        if frame not in self._offsets:
+            frames = self.fk_all(np.zeros(self.dof))
+            self._offsets[frame] = (
+                frames[self.config.arm.base_link],
+                se3.inverse(frames[self.config.arm.flange]) @ frames[frame],
+            )
+        return self._offsets[frame]
+
     def pose_and_jacobian(self, q: np.ndarray, fid: int) -> tuple[pin.SE3, np.ndarray]:
         """Frame placement and its 6 x dof Jacobian in the frame's own (local) axes."""
-        # One call: forward kinematics, the frame's placement (left in data.oMf) and its Jacobian.
-        J = pin.computeFrameJacobian(self.model, self.data, q, fid, LOCAL)
-        return self.data.oMf[fid], J
+        # computeJointJacobians also runs forward kinematics (pin.computeFrameJacobian does not
+        # leave data.oMi consistent with q, so it cannot give the placement as well).
+        pin.computeJointJacobians(self.model, self.data, q)
+        placement = pin.updateFramePlacement(self.model, self.data, fid)
+        return placement, pin.getFrameJacobian(self.model, self.data, fid, LOCAL)
 
     def clamp(self, q: np.ndarray) -> np.ndarray:
         """Bring ``q`` into the limits: shift full-turn joints by 2 pi, clip the others."""

@@ -155,7 +155,7 @@ def plan_scene(layout: Layout, catalog: Catalog, seed: int = 0) -> ScenePlan:
     x = 0.0
     for i, name in enumerate(order):
         members = [n for n, f in layout.furniture.items() if f.room == name]
-        need = sum(kinds[n].size[0] for n in members) + style.furniture_gap * (len(members) + 3)
+        need = sum(kinds[n].size[0] for n in members) + style.furniture_gap * len(members) + 2.0  # 1 m free at each end
         width = max(style.width, need)
         rooms[name] = RoomPlan(name, x, x + width, 0.0, style.depth, i)
         x += width

@@ -10,7 +10,8 @@ Its camera has no pixels. An observation says, for each object, which fraction o
 view shows: zero for what is neither near where the robot stands nor something it was asked to
 look at in its room (other rooms and closed containers are never seen into), otherwise a seeded
 draw in [0.3, 1] per view,
-redrawn whenever the viewpoint moves. Things lying on the floor of the robot's room count as
+redrawn whenever the viewpoint moves. (In a domain without ``robot_in``/``robot_at`` the whole
+scene is in view.) Things lying on the floor of the robot's room count as
 near (that is where dropped things land, and the camera sweeps the floor). That is what the simulated VLM's accuracy depends on.
 """
 
@@ -35,6 +36,7 @@ class SymbolicWorld:
 
     def __init__(self, task: PlanningTask, situations: SituationModel | None = None, seed: int = 0) -> None:
         self.task = task
+        self._situated = {"robot_in", "robot_at"} <= set(task.knowledge.predicates)
         self.situations = situations or SituationModel(enabled=False)
         self.reset(seed)
 
@@ -137,6 +139,8 @@ class SymbolicWorld:
         return not self._enclosed(obj) and self._robot_room() in self._rooms_of(obj)
 
     def _in_view(self, obj: str) -> bool:
+        if not self._situated:
+            return True  # a domain without a robot position (blocksworld): the whole scene is in view
         if self.task.objects.get(obj) == "room":
             return obj == self._robot_room()
         if Atom("holding", (obj,)) in self.state:

@@ -68,6 +68,9 @@ class InProcessCamera:
     def observe(self, targets: tuple[str, ...]) -> Observation:
         return self.world.observe(tuple(targets))
 
+    def survey(self) -> SceneSnapshot:
+        return self.world.survey()
+
     def move_view(self, target: str, direction: str) -> bool:
         return self.world.move_view(target, direction)
 

@@ -1,0 +1,1 @@
+"""Test fixtures for the transport and plugin tests (a facts world, Zenoh helpers)."""

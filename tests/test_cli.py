@@ -1,0 +1,42 @@
+"""The command line: plans, runs, and one clear line with a documented exit code for bad input."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_UNSOLVABLE
+
+from conftest import DOMAINS, ROOT, TREES
+
+
+def test_plan_prints_a_plan(cli):
+    code, out, _ = cli("plan", DOMAINS / "gripper-domain.pddl", DOMAINS / "gripper-p4.pddl")
+    assert code == 0 and "pick(" in out and "drop(" in out
+
+
+@pytest.mark.parametrize("argv,code,needle", [
+    (["plan", DOMAINS / "syntax-error-domain.pddl", DOMAINS / "gripper-p4.pddl"], EXIT_BAD_INPUT,
+     "syntax-error-domain.pddl:8"),
+    (["plan", DOMAINS / "blocksworld-domain.pddl", DOMAINS / "unsolvable-p.pddl"], EXIT_UNSOLVABLE, "no plan"),
+    (["run", DOMAINS / "missing.yaml"], EXIT_BAD_INPUT, "no such task file"),
+    (["run", TREES / "collect_cup.yaml", "--domain", "x"], EXIT_BAD_INPUT, "not both"),
+    (["run", "--seed", "abc"], EXIT_BAD_INPUT, "invalid int"),
+])
+def test_bad_input_is_one_line_and_a_documented_code(cli, argv, code, needle):
+    got, out, err = cli(*argv)
+    assert got == code
+    assert needle in err and "Traceback" not in err
+
+
+def test_installed_command_reports_errors_without_traceback(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("name: t\ndomain: ../domains/household.pddl\nscene: {rooms: [a]}\ngoal: ['hand_empty']\n")
+    exe = ROOT / ".venv" / "bin" / "vap-bt"
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt.cli"]
+    p = subprocess.run([*cmd, "run", str(bad)], capture_output=True, text=True, timeout=120)
+    assert p.returncode == EXIT_BAD_INPUT
+    assert "field scene.robot" in p.stderr and "Traceback" not in p.stderr
+    assert len(p.stderr.strip().splitlines()) == 1

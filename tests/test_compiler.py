@@ -1,0 +1,77 @@
+"""The plan → tree compiler builds exactly the tree DESIGN.md draws."""
+
+from __future__ import annotations
+
+import py_trees
+import pytest
+
+from vap_bt.bt.active_perception import ActivePerception
+from vap_bt.bt.apply_effects import ApplyEffects
+from vap_bt.bt.compiler import compile_plan
+from vap_bt.bt.context import ExecutionContext, VerifyMode
+from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.goal_check import GoalCheck
+from vap_bt.bt.verify_predicate import VerifyPredicate
+from vap_bt.domain.planner import Planner
+from vap_bt.scene.graph import SceneGraph
+from vap_bt.taskfile import load
+from vap_bt.world import SceneSnapshot
+
+from conftest import TREES
+
+
+@pytest.fixture(scope="module")
+def cup():
+    task = load(TREES / "collect_cup.yaml").planning
+    return task, Planner(task, first_engine="search").plan().actions
+
+
+def tree_for(task, actions, mode: str):
+    ctx = ExecutionContext(graph=SceneGraph.from_snapshot(SceneSnapshot([], set(task.init))), vlm=None,
+                           camera=None, skills=None, mode=VerifyMode.parse(mode))
+    return compile_plan(ctx, actions, task.goal, task.knowledge)
+
+
+def checks(seq: py_trees.composites.Sequence) -> list[str]:
+    out = []
+    for node in seq.children:
+        assert isinstance(node, ActivePerception) and isinstance(node.decorated, VerifyPredicate)
+        out.append(node.decorated.name)
+    return out
+
+
+def test_tree_shape_for_both(cup):
+    task, actions = cup
+    root = tree_for(task, actions, "both")
+    assert isinstance(root, py_trees.composites.Sequence) and root.memory and root.name == "plan"
+    assert [c.name for c in root.children[:-1]] == [f"a{i}: {a}" for i, a in enumerate(actions)]
+    assert isinstance(root.children[-1], GoalCheck)
+    for step in root.children[:-1]:
+        assert step.memory
+        kinds = [type(c) for c in step.children]
+        assert kinds == [py_trees.composites.Sequence, ExecuteSkill, ApplyEffects, py_trees.composites.Sequence]
+        assert [step.children[0].name, step.children[3].name] == ["pre", "eff"]
+
+
+def test_grasp_checks_what_the_camera_can_judge(cup):
+    task, actions = cup
+    root = tree_for(task, actions, "both")
+    i = next(i for i, a in enumerate(actions) if a.name == "grasp")
+    step = root.children[i]
+    # in_room is map knowledge and never asked; the rest of grasp's preconditions are
+    assert sorted(checks(step.children[0])) == sorted(
+        ["inview(cup)", "hand_empty", "reachable(cup)", "on(cup, coffee_table)"])
+    assert checks(step.children[3]) == ["holding(cup)"]
+
+
+@pytest.mark.parametrize("mode,names", [
+    ("pre", ["pre", None, None]),
+    ("eff", [None, None, "eff"]),
+    ("none", [None, None]),
+])
+def test_modes_drop_whole_phases(cup, mode, names):
+    task, actions = cup
+    root = tree_for(task, actions, mode)
+    step = root.children[1]
+    got = [c.name if isinstance(c, py_trees.composites.Sequence) else None for c in step.children]
+    assert got == names

@@ -1,0 +1,81 @@
+"""The planner: Fast Downward through unified-planning, and the in-process replanner."""
+
+from __future__ import annotations
+
+import pytest
+from unified_planning.engines import ValidationResultStatus
+from unified_planning.plans import ActionInstance, SequentialPlan
+from unified_planning.shortcuts import PlanValidator
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.pddl import load_task
+from vap_bt.domain.planner import Planner
+from vap_bt.errors import UnsolvableError
+from vap_bt.taskfile import load
+
+from conftest import DOMAINS, HOUSEHOLD_TASKS, LITERATURE, TREES
+
+
+def up_valid(task, actions) -> bool:
+    """Validate with unified-planning's own validator (independent of our semantics)."""
+    problem = task.to_up()
+    acts = {a.name: a for a in problem.actions}
+    objs = {o.name: o for o in problem.all_objects}
+    plan = SequentialPlan([ActionInstance(acts[a.name], [objs[x] for x in a.args]) for a in actions])
+    with PlanValidator(problem_kind=problem.kind) as v:
+        return v.validate(problem, plan).status == ValidationResultStatus.VALID
+
+
+@pytest.mark.parametrize("domain,problem", LITERATURE)
+@pytest.mark.parametrize("engine", ["fast-downward", "search"])
+def test_plans_are_valid_for_literature_domains(domain, problem, engine):
+    task = load_task(DOMAINS / domain, DOMAINS / problem)
+    plan = Planner(task, first_engine=engine).plan()
+    assert plan.engine == engine and len(plan) > 0
+    assert task.validate(plan.actions)
+    assert up_valid(task, plan.actions)
+
+
+@pytest.mark.parametrize("name", HOUSEHOLD_TASKS)
+def test_household_plans_are_valid(name):
+    task = load(TREES / name).planning
+    plan = Planner(task, first_engine="search").plan()
+    assert up_valid(task, plan.actions)
+
+
+def test_unsolvable_problem_is_reported_by_both_engines():
+    task = load_task(DOMAINS / "blocksworld-domain.pddl", DOMAINS / "unsolvable-p.pddl")
+    for engine in ("fast-downward", "search"):
+        with pytest.raises(UnsolvableError):
+            Planner(task, first_engine=engine).plan()
+
+
+def test_replan_reuses_the_tail_of_the_previous_plan():
+    task = load(TREES / "collect_cup.yaml").planning
+    planner = Planner(task, first_engine="search")
+    plan = planner.plan()
+    # after the first action, belief is the state that action leads to: the tail still works
+    state = plan.actions[0].apply(task.init)
+    again = planner.replan(state, plan.actions)
+    assert again.engine == "reuse" and again.actions == plan.actions[1:]
+
+
+def test_replan_searches_when_the_tail_no_longer_works():
+    task = load(TREES / "collect_cup.yaml").planning
+    planner = Planner(task, first_engine="search")
+    plan = planner.plan()
+    # the cup fell on the floor: the old plan grasps it from the table, which no longer holds
+    state = set(task.init) - {Atom("on", ("cup", "coffee_table"))}
+    state |= {Atom("on", ("cup", "floor_living_room"))}
+    again = planner.replan(frozenset(state), plan.actions)
+    assert again.engine == "search"
+    assert any(a.name == "grasp" and a.args[1] == "floor_living_room" for a in again.actions)
+    assert task.with_state(state).validate(again.actions)
+
+
+def test_replan_of_a_seen_state_comes_from_the_cache():
+    task = load(TREES / "boil_water.yaml").planning
+    planner = Planner(task, first_engine="search")
+    first = planner.plan()
+    assert planner.replan(task.init).engine == "cache"
+    assert planner.replan(task.init).actions == first.actions

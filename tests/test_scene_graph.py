@@ -1,0 +1,48 @@
+"""The scene graph: action-driven and observation-driven updates."""
+
+from __future__ import annotations
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.scene.graph import SceneGraph
+from vap_bt.taskfile import load
+from vap_bt.world import SceneSnapshot
+
+from conftest import TREES
+
+A = Atom.parse
+
+
+def graph_for(name: str) -> tuple[SceneGraph, object]:
+    task = load(TREES / name).planning
+    return SceneGraph.from_snapshot(SceneSnapshot([], set(task.init)), tracks_hand=True), task
+
+
+def test_apply_then_undo_restores_belief():
+    g, task = graph_for("collect_cup.yaml")
+    before = g.state()
+    grasp = task.knowledge.ground("grasp", ("cup", "coffee_table", "living_room"))
+    g.apply(grasp)
+    assert g.holds(A("holding(cup)")) and not g.holds(A("on(cup, coffee_table)")) and not g.holds(A("hand_empty"))
+    assert g.undo(grasp)
+    assert g.state() == before
+    assert not g.undo(grasp), "undo of an action that is no longer the last applied must refuse"
+
+
+def test_correct_sets_the_complement_only_where_it_applies():
+    g, _ = graph_for("boil_water.yaml")
+    assert g.holds(A("closed(cabinet)"))
+    g.correct(A("closed(cabinet)"), False, complement="open")
+    assert g.holds(A("open(cabinet)")) and not g.holds(A("closed(cabinet)"))
+    # the counter is neither open nor closed in belief: no complement is invented for it
+    g.correct(A("open(counter)"), False, complement="closed")
+    assert not g.holds(A("closed(counter)"))
+
+
+def test_relocate_replaces_the_location_and_keeps_the_hand_consistent():
+    g, task = graph_for("collect_cup.yaml")
+    g.apply(task.knowledge.ground("grasp", ("cup", "coffee_table", "living_room")))
+    seen = {A("on(cup, floor_living_room)"), A("in_room(cup, living_room)")}
+    g.relocate("cup", seen)
+    assert g.location("cup") == seen
+    assert g.holds(A("hand_empty")), "nothing is held any more, so the hand must be believed empty"
+    assert [c.cause for c in g.history][-2:] == ["relocate", "relocate"]

@@ -1,0 +1,169 @@
+"""Skill goals over real Zenoh sessions on 127.0.0.1: the full goal life cycle, in one process.
+
+A server session and a client session talk over TCP loopback on a port of their own; nothing is
+mocked. Process-level failures (SIGKILL, SIGSTOP) are in test_transport_process.py.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pytest
+import zenoh
+
+from plugin_fixtures.fact_world import FactWorld
+from plugin_fixtures.zenoh_net import endpoint, free_port, session, wait_until
+from skills.manipulation import Grasp, Open, PlaceOn
+from vap_bt.domain.atoms import Atom
+from vap_bt.skill import GoalState, Skill, SkillResult
+from vap_bt.transport import keys
+from vap_bt.transport.client import ZenohCamera, ZenohSkillClient
+from vap_bt.transport.messages import GoalRequest, encode
+from vap_bt.transport.server import SkillServer
+
+pytestmark = pytest.mark.timeout(30)
+
+
+class Explodes(Skill):
+    action = "explode"
+
+    def execute(self, args, ctx):
+        raise RuntimeError("boom")
+
+
+def arm_skills(world) -> dict[str, Skill]:
+    return {cls.action: cls(world) for cls in (Grasp, PlaceOn, Open, Explodes)}
+
+
+@pytest.fixture
+def net():
+    """(world, server, client) for robot ur5e on a fresh loopback port."""
+    port = free_port()
+    world = FactWorld(duration=0.3, steps=3)
+    with session(listen=(endpoint(port),)) as s_srv, session(connect=(endpoint(port),)) as s_cli:
+        server = SkillServer(s_srv, "ur5e", arm_skills(world), camera=world, name="arm").start()
+        routes = {a: "ur5e" for a in server.skills}
+        client = ZenohSkillClient(s_cli, routes)
+        wait_until(lambda: "arm" in client._alive["ur5e"], 3)
+        yield world, server, client, s_cli
+        client.close()
+        server.close()
+
+
+def test_goal_reports_feedback_then_result(net):
+    world, _, client, _ = net
+    handle = client.send_goal("grasp", ("cup", "table"))
+    seen = {handle.wait_answered(2)}
+    progress = []
+    while not handle.state().terminal:
+        if handle.feedback() is not None:
+            progress.append(handle.feedback().progress)
+        time.sleep(0.01)
+    assert GoalState.ACTIVE in seen
+    assert handle.wait(2) is GoalState.SUCCEEDED
+    assert handle.result().success and "grasp done" in handle.result().message
+    assert progress and min(progress) < 1.0  # feedback arrived while the goal ran
+    assert handle.feedback().progress == 1.0
+    assert world.holds(Atom("holding", ("cup",)))
+
+
+def test_failed_action_is_aborted_with_the_worlds_reason(net):
+    _, _, client, _ = net
+    handle = client.send_goal("placeon", ("cup", "table"))  # not holding the cup
+    assert handle.wait(3) is GoalState.ABORTED
+    assert "preconditions do not hold" in handle.result().message
+
+
+def test_a_skill_that_raises_aborts_its_goal_not_the_server(net):
+    _, _, client, _ = net
+    handle = client.send_goal("explode", ())
+    assert handle.wait(3) is GoalState.ABORTED
+    assert "RuntimeError: boom" in handle.result().message
+    assert client.send_goal("open", ("fridge",)).wait(3) is GoalState.SUCCEEDED
+
+
+def test_cancel_reaches_the_skill(net):
+    world, _, client, _ = net
+    world.duration, world.steps = 5.0, 100
+    handle = client.send_goal("grasp", ("cup", "table"))
+    assert handle.wait_answered(2) is GoalState.ACTIVE
+    handle.cancel()
+    assert handle.wait(2) is GoalState.CANCELED
+    assert "stopped by cancel" in handle.result().message
+    assert not world.holds(Atom("holding", ("cup",)))
+
+
+def test_unknown_action_is_rejected(net):
+    _, _, client, s_cli = net
+    unrouted = client.send_goal("fly", ("cup",))
+    assert unrouted.state() is GoalState.REJECTED
+    assert "no skill plugin binds action 'fly'" in unrouted.result().message
+    # routed to the robot, but no server there hosts it
+    lost = ZenohSkillClient(s_cli, {"fly": "ur5e"}, accept_timeout=2)
+    handle = lost.send_goal("fly", ("cup",))
+    assert handle.wait(2.5) is GoalState.REJECTED
+    assert "no skill server for 'fly' on robot 'ur5e' answered" in handle.result().message
+    lost.close()
+
+
+def test_busy_resource_is_rejected_with_a_reason(net):
+    world, _, client, _ = net
+    world.duration, world.steps = 5.0, 100
+    first = client.send_goal("grasp", ("cup", "table"))
+    assert first.wait_answered(2) is GoalState.ACTIVE
+    second = client.send_goal("open", ("fridge",))
+    assert second.wait(2) is GoalState.REJECTED
+    assert f"resource 'arm' of robot ur5e is busy with goal {first.goal_id}" in second.result().message
+    first.cancel()
+    assert first.wait(2) is GoalState.CANCELED
+    world.duration = 0.0
+    assert client.send_goal("open", ("fridge",)).wait(2) is GoalState.SUCCEEDED  # freed
+
+
+def test_garbage_and_foreign_schema_requests_get_an_error_reply(net):
+    _, _, _, s_cli = net
+    key = keys.skill("ur5e", "grasp")
+    replies = list(s_cli.get(key, payload=b"not a frame", timeout=2))
+    assert replies[0].err is not None and "bad magic" in replies[0].err.payload.to_string()
+    foreign = encode(GoalRequest("x-1", "grasp", ("cup", "table"))).replace(b'"schema":1', b'"schema":9')
+    replies = list(s_cli.get(key, payload=foreign, timeout=2))
+    assert "peer speaks message schema 9, this side speaks 1" in replies[0].err.payload.to_string()
+
+
+def test_camera_over_zenoh(net):
+    world, _, _, s_cli = net
+    camera = ZenohCamera(s_cli, "ur5e", timeout=3)
+    obs = camera.observe(("cup", "ghost"))
+    local = world.observe(("cup", "ghost"))
+    assert obs.visibility == {"cup": 1.0, "ghost": 0.0}
+    for name, dtype in (("rgb", np.uint8), ("depth", np.float32), ("segmentation", np.int32)):
+        assert getattr(obs, name).dtype == dtype
+        np.testing.assert_array_equal(getattr(obs, name), getattr(local, name))
+    assert obs.segment_names == {7: "cup"} and obs.intrinsics == (500.0, 500.0, 3.0, 2.0)
+    snap = camera.survey()
+    assert Atom("on", ("cup", "table")) in snap.facts and {o.name for o in snap.objects} >= {"cup"}
+    assert camera.move_view("cup", "left") is True
+    assert camera.move_view("cup", "sideways") is False
+    camera.close()
+
+
+def test_two_robots_do_not_see_each_others_goals():
+    port = free_port()
+    w1, w2 = FactWorld(), FactWorld()
+    heard: list[str] = []
+    with session(listen=(endpoint(port),)) as srv, session(connect=(endpoint(port),)) as cli:
+        s1 = SkillServer(srv, "r1", arm_skills(w1), name="one").start()
+        s2 = SkillServer(srv, "r2", arm_skills(w2), name="two").start()
+        spy = cli.declare_subscriber("vap/r2/**", lambda s: heard.append(str(s.key_expr)))
+        c1 = ZenohSkillClient(cli, {"grasp": "r1"})
+        wait_until(lambda: "one" in c1._alive["r1"], 3)
+        assert c1.send_goal("grasp", ("cup", "table")).wait(3) is GoalState.SUCCEEDED
+        assert w1.performed == [("grasp", ("cup", "table"))] and w2.performed == []
+        assert set(c1._alive) == {"r1"}  # it never subscribed to r2's namespace
+        time.sleep(0.1)
+        assert heard == []
+        spy.undeclare()
+        c1.close()
+        s1.close()
+        s2.close()

@@ -1,0 +1,71 @@
+"""The wire schema: round trips, compact images, and one clear error for every bad frame."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.skill import Feedback, GoalState, SkillResult
+from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
+from vap_bt.transport.messages import (GoalReply, GoalRequest, GoalStatus, MessageError, SchemaMismatch,
+                                       decode, encode)
+from vap_bt.world import ObjectInfo, Observation, SceneSnapshot
+
+
+def test_messages_round_trip():
+    status = GoalStatus("g-1", GoalState.SUCCEEDED, Feedback(1.0, "done"),
+                        SkillResult(True, "ok", {"n": np.int64(3), "v": np.arange(2.0)}), "arm")
+    back = decode(encode(status), GoalStatus)
+    assert back.result.data == {"n": 3, "v": [0.0, 1.0]} and back.state is GoalState.SUCCEEDED
+    req = GoalRequest("g-2", "grasp", ("cup", "table"), "c")
+    assert decode(encode(req), GoalRequest) == req
+    snap = SceneSnapshot([ObjectInfo("cup", "cup", "kitchen", (1.0, 2.0, 0.5))], {Atom("on", ("cup", "t"))})
+    assert decode(encode(snap), SceneSnapshot) == snap
+
+
+def test_images_travel_as_raw_bytes_not_json():
+    rgb = np.zeros((480, 640, 3), np.uint8)
+    obs = Observation(0, ("cup",), {"cup": 1.0}, rgb=rgb, depth=np.ones((480, 640), np.float64))
+    frame = encode(obs)
+    assert len(frame) < rgb.nbytes + 480 * 640 * 4 + 1024  # pixels plus a small header
+    back = decode(frame, Observation)
+    assert back.depth.dtype == np.float32 and back.rgb.shape == (480, 640, 3)
+
+
+@pytest.mark.parametrize("frame, message", [
+    (b"", "bad magic"),
+    (b"VAPB\x05\x00\x00\x00{nope", "unreadable message header"),
+    (encode(GoalRequest("g", "a", ()))[:-3], "unreadable message header"),
+])
+def test_bad_frames_are_one_message_error(frame, message):
+    with pytest.raises(MessageError, match=message):
+        decode(frame, GoalRequest)
+
+
+def test_wrong_kind_truncated_arrays_and_foreign_schema():
+    with pytest.raises(MessageError, match="expected a goal_reply message, got goal_request"):
+        decode(encode(GoalRequest("g", "a", ())), GoalReply)
+    obs = encode(Observation(0, (), {}, rgb=np.zeros((2, 2, 3), np.uint8)))
+    with pytest.raises(MessageError, match="array 'rgb' is truncated"):
+        decode(obs[:-1], Observation)
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 1"):
+        decode(encode(GoalReply("g", True)).replace(b'"schema":1', b'"schema":2'), GoalReply)
+
+
+def test_default_configuration_is_loopback_only():
+    import argparse
+
+    from vap_bt.transport.config import add_transport_arguments
+
+    p = argparse.ArgumentParser()
+    add_transport_arguments(p, default_listen=True)
+    conf = build_config(settings_from_args(p.parse_args([]), default_listen=True))
+    assert json.loads(conf.get_json("listen/endpoints")) == ["tcp/127.0.0.1:7448"]
+    assert json.loads(conf.get_json("connect/endpoints")) == []
+    assert json.loads(conf.get_json("scouting/multicast/enabled")) is False
+    assert json.loads(conf.get_json("transport/link/tx/lease")) == 2000
+    client = build_config(TransportSettings(connect=("tcp/127.0.0.1:7448",)))
+    assert json.loads(client.get_json("listen/endpoints")) == []

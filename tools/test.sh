@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The test suite: sets up if needed, then runs every test (slow ones included).
+# pytest exits 5 when it collects no test; that is a failure here, never a silent pass.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+bash tools/setup.sh || exit 1
+.venv/bin/python -m pytest -q "$@"
+code=$?
+if [ "$code" -eq 5 ]; then
+  echo "test.sh: pytest collected no test — treating as a failure" >&2
+  exit 1
+fi
+exit "$code"

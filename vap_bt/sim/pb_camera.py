@@ -1,0 +1,122 @@
+"""Rendering: the wrist RGB-D camera (and an overview camera for pictures), with segmentation.
+
+pybullet's TinyRenderer (``ER_TINY_RENDERER``, no GPU) draws colour, a non-linear depth buffer and
+a segmentation mask. We turn the depth buffer into metres (``far*near / (far - (far-near)*d)``),
+the mask into body ids (``seg & 0xFFFFFF``), and body ids into object names through the scene.
+
+Visibility of an object is the number of its visible pixels divided by its *unoccluded* projected
+size. The latter is estimated without a second render: the object's bounding box corners are
+projected into the image and the area of their convex hull is scaled by a fill factor for the
+object's shape (a sphere fills about half the hull of its box, a box nearly all of it). It counts
+parts outside the frame as not visible, which is what a camera would show. The estimate is a
+documented proxy, clipped to [0, 1].
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import cv2
+import numpy as np
+import pybullet as pb
+
+from robots.config import Camera
+from vap_bt.sim.pb_robot import quat_of
+
+FILL = {"box": 0.9, "cylinder": 0.75, "sphere": 0.5, "furniture": 0.85, "door": 0.9}
+
+
+@dataclass(frozen=True)
+class Render:
+    rgb: np.ndarray  # (H, W, 3) uint8
+    depth: np.ndarray  # (H, W) float32 metres
+    bodies: np.ndarray  # (H, W) int32 body id, -1 background
+    pose: np.ndarray  # 4x4 optical frame (z forward, x right, y down)
+    camera: Camera
+
+    @property
+    def intrinsics(self) -> tuple[float, float, float, float]:
+        c = self.camera
+        return (c.fx, c.fy, c.cx, c.cy)
+
+    @property
+    def pose7(self) -> tuple[float, ...]:
+        return (*map(float, self.pose[:3, 3]), *map(float, quat_of(self.pose[:3, :3])))
+
+    def pixel_threshold(self) -> int:
+        """Fewest visible pixels for an object to count as in view (0.05 % of the image, >= 12)."""
+        return max(12, int(0.0005 * self.camera.width * self.camera.height))
+
+
+def render(cid: int, pose: np.ndarray, camera: Camera, shadows: bool = False) -> Render:
+    """Render from an optical-frame pose (4x4, world)."""
+    eye = pose[:3, 3]
+    view = pb.computeViewMatrix(tuple(eye), tuple(eye + pose[:3, 2]), tuple(-pose[:3, 1]))
+    proj = pb.computeProjectionMatrixFOV(camera.vertical_fov_deg, camera.width / camera.height, camera.near, camera.far)
+    w, h, rgba, depth, seg = pb.getCameraImage(
+        camera.width, camera.height, view, proj, renderer=pb.ER_TINY_RENDERER, shadow=int(shadows),
+        flags=pb.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX, physicsClientId=cid)
+    rgb = np.asarray(rgba, np.uint8).reshape(h, w, 4)[:, :, :3].copy()
+    d = np.asarray(depth, np.float32).reshape(h, w)
+    metric = camera.far * camera.near / (camera.far - (camera.far - camera.near) * d)
+    seg = np.asarray(seg, np.int64).reshape(h, w)
+    bodies = np.where(seg >= 0, seg & 0xFFFFFF, -1).astype(np.int32)
+    return Render(rgb, metric.astype(np.float32), bodies, pose, camera)
+
+
+def look_pose(eye, target) -> np.ndarray:
+    """Optical-frame pose at ``eye`` looking at ``target`` with the image upright."""
+    z = np.asarray(target, float) - np.asarray(eye, float)
+    z /= np.linalg.norm(z)
+    x = np.cross(z, (0.0, 0.0, 1.0))
+    if np.linalg.norm(x) < 1e-6:  # looking straight down: any right vector
+        x = np.array([1.0, 0.0, 0.0])
+    x /= np.linalg.norm(x)
+    T = np.eye(4)
+    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, eye
+    return T
+
+
+def name_image(r: Render, names: dict[int, str], ids: dict[str, int]) -> np.ndarray:
+    """Segmentation in object ids (``ids`` numbers the names), -1 for anything unnamed."""
+    out = np.full(r.bodies.shape, -1, np.int32)
+    for body, name in names.items():
+        out[r.bodies == body] = ids[name]
+    return out
+
+
+def projected_area(r: Render, box: tuple[float, ...]) -> float:
+    """Area (pixels) of the convex hull of the projected corners of an axis-aligned box."""
+    lo, hi = np.array(box[:3]), np.array(box[3:])
+    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+    inv = np.linalg.inv(r.pose)
+    pc = (inv[:3, :3] @ corners.T).T + inv[:3, 3]
+    if np.all(pc[:, 2] < r.camera.near):
+        return 0.0
+    z = np.maximum(pc[:, 2], r.camera.near)
+    c = r.camera
+    uv = np.stack([c.fx * pc[:, 0] / z + c.cx, c.fy * pc[:, 1] / z + c.cy], axis=1).astype(np.float32)
+    return float(cv2.contourArea(cv2.convexHull(uv)))
+
+
+def visibility(r: Render, counts: dict[str, int], boxes: dict[str, tuple[float, ...]], fills: dict[str, float]) -> dict[str, float]:
+    """Visible fraction of each named object (see the module docstring for the proxy)."""
+    out = {}
+    for name, box in boxes.items():
+        n = counts.get(name, 0)
+        if n == 0:
+            out[name] = 0.0
+            continue
+        area = projected_area(r, box) * fills.get(name, 0.8)
+        out[name] = float(min(1.0, n / area)) if area > 0 else 0.0
+    return out
+
+
+def pixel_counts(r: Render, names: dict[int, str]) -> dict[str, int]:
+    ids, counts = np.unique(r.bodies, return_counts=True)
+    out: dict[str, int] = {}
+    for b, n in zip(ids.tolist(), counts.tolist()):
+        name = names.get(b)
+        if name is not None:
+            out[name] = out.get(name, 0) + n
+    return out

@@ -1,0 +1,641 @@
+"""Motion primitives: what the robot physically does for each household action.
+
+Each primitive moves the robot through :class:`~vap_bt.sim.pb_motion.Motion` (IK, timed joint
+trajectories, motors) and lets the physics produce the effect: a grasp closes the fingers until
+they touch the object and only then ties it to the hand; an ``open`` grips the handle and drags it
+along its arc (or slide), so the door's joint turns because the arm pulled it; a ``push`` slides
+the blocker aside with the closed fingers; a ``cut`` strokes the held knife down until it touches
+the object, which then falls apart into two bodies.
+
+A :class:`~vap_bt.sim.situations.SituationSpec` drawn for the action (Table II) is made physically
+so by changing the motion, never the outcome directly: the fingers close short of the object, the
+gripper opens over the floor beside the robot, the hand slips off the handle, the press misses
+the switch, the knife stops short. The ground truth then shows what Table I describes.
+
+Where the robot stands and looks follows one rule: furniture is worked from its standoff pose in
+front of it; items from their support's standoff shifted sideways to face them (floor items from
+the corridor side); the wrist camera then looks at the target from above the base.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pybullet as pb
+
+from vap_bt.sim.pb_camera import look_pose
+from vap_bt.sim.pb_catalog import Catalog
+from vap_bt.sim.pb_motion import Motion
+from vap_bt.sim.pb_robot import Robot
+from vap_bt.sim.pb_scene import Scene, Thing, make_item_body
+from vap_bt.sim.pb_truth import Truth
+from vap_bt.sim.situations import SituationSpec
+from vap_bt.world import ActionOutcome
+
+CAMERA_EYE = (0.50, 0.0, 1.20)  # where the camera looks from, in the base frame
+CARRY = (0.30, 0.40, 0.95)  # where a held object rides, in the base frame (beside the base)
+DROP = (0.30, 0.62, 0.55)  # where an object is let go "nearby": over the floor beside the base
+CORRIDOR_SPEED = 1.0
+APPROACH = 0.14  # pre-grasp distance along the approach axis
+#: base centre to the worked point, horizontally, for a top-down and a horizontal approach
+WORK_DISTANCE = {"top": 0.62, "front": 0.74}
+BASE_CLEARANCE = 0.40  # base centre to the front face of the furniture at least
+
+
+def _frame(z, x, p) -> np.ndarray:
+    z = np.asarray(z, float) / np.linalg.norm(z)
+    x = np.asarray(x, float) - np.dot(x, z) * z
+    x /= np.linalg.norm(x)
+    T = np.eye(4)
+    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, p
+    return T
+
+
+class Primitives:
+    def __init__(self, scene: Scene, robot: Robot, motion: Motion, truth: Truth, catalog: Catalog,
+                 phase: Callable[[float, str], None]) -> None:
+        self.scene, self.robot, self.motion, self.truth, self.catalog = scene, robot, motion, truth, catalog
+        self.phase = phase
+        self.cid = scene.client
+        self.look_target: np.ndarray | None = None
+        self.release_at: float | None = None  # progress of a base move at which to let go (Table II)
+
+    # ================================================================ poses
+
+    def base_T(self, q=None) -> np.ndarray:
+        x, y, yaw = (self.robot.target if q is None else q)[:3]
+        c, s = math.cos(yaw), math.sin(yaw)
+        T = np.eye(4)
+        T[:3, :3] = [[c, -s, 0], [s, c, 0], [0, 0, 1]]
+        T[:3, 3] = (x, y, 0)
+        return T
+
+    def in_base(self, p) -> np.ndarray:
+        return (self.base_T() @ np.array([*p, 1.0]))[:3]
+
+    def standoff(self, name: str) -> tuple[float, float, float]:
+        t = self.scene.things[name]
+        plan = self.scene.plan
+        if t.furniture is not None:
+            return t.furniture.standoff()
+        if t.door is not None:
+            return self._door_pose(t, self.truth.room_of_point(self.robot.base_pose[:2]) or t.door.low, 0.95)
+        if t.room is not None:  # a floor (or a room): the room's middle, on the corridor
+            r = plan.rooms[t.room]
+            return ((r.x0 + r.x1) / 2, plan.corridor_y, math.pi / 2)
+        c = self.truth.center(name)
+        support = self.truth.support_of(name) or self.truth.container_of(name)
+        st = self.scene.things.get(support) if support else None
+        if st is not None and st.furniture is not None:
+            f = st.furniture
+            lateral = float(self.truth._local(f, c)[0])
+            lateral = max(-f.kind.size[0] / 2, min(f.kind.size[0] / 2, lateral))
+            return f.standoff(lateral)
+        # on a floor: from the corridor side, facing the front wall
+        return (float(c[0]), float(min(c[1] + 0.72, plan.corridor_y + 0.3)), -math.pi / 2)
+
+    def _door_pose(self, t: Thing, room: str, dist: float) -> tuple[float, float, float]:
+        d = t.door
+        side = -1.0 if room == d.low else 1.0
+        return (d.x + side * dist, d.center_y, math.pi if side > 0 else 0.0)
+
+    def work_pose(self, point, toward, how: str, clear_of: str | None = None) -> tuple[float, float, float]:
+        """Base pose for manipulating at ``point``: ``toward`` is the horizontal direction from
+        the point to where the robot stands; keep clear of the front of ``clear_of``."""
+        f = np.array([toward[0], toward[1], 0.0])
+        f /= np.linalg.norm(f)
+        r = WORK_DISTANCE[how]
+        t = self.scene.things.get(clear_of) if clear_of else None
+        if t is not None and t.furniture is not None:
+            fp = t.furniture
+            front = fp.to_world((0.0, fp.kind.size[1] / 2, 0.0))
+            behind = float((front - np.asarray(point))[:2] @ fp.front[:2])
+            r = max(r, behind + BASE_CLEARANCE)
+        p = np.asarray(point) + f * r
+        return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+
+    def approach(self, pose) -> None:
+        """Drive the base to a work pose (arm at home or carrying)."""
+        self.motion.drive(pose, 0.6)
+
+    # ================================================================ arm helpers
+
+    def home(self) -> None:
+        q = self.robot.target.copy()
+        q[3:] = self.robot.cfg.arm.home
+        self.motion.through([q], 0.8)
+
+    def look_at(self, point, lift: float = 0.0, allow_base: bool = False) -> bool:
+        eye = self.in_base((CAMERA_EYE[0], CAMERA_EYE[1], CAMERA_EYE[2] + lift))
+        T = look_pose(eye, point)
+        q = self.motion.solve(T, "camera_optical", allow_base=allow_base)
+        if q is None:
+            return False
+        self.motion.through([q], 0.8)
+        self.look_target = np.asarray(point, float)
+        return True
+
+    def carry(self) -> None:
+        """Arm to the carry pose: the held object beside the base (empty hand: home)."""
+        if self.truth.held() is None:
+            self.home()
+            return
+        T = self.motion.pose("tcp")
+        rel = np.linalg.inv(self.base_T()) @ T
+        rel[:3, 3] = CARRY
+        q = self.motion.solve(self.base_T() @ rel, allow_base=False)
+        if q is not None:
+            self.motion.through([q], 0.8)
+
+    def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False) -> bool:
+        q = self.motion.solve(T, allow_base=allow_base)
+        if q is None:
+            return False
+        return self.motion.through([q], speed)
+
+    def open_hand(self) -> None:
+        self.robot.detach()
+        self.motion.fingers(self.robot.cfg.gripper.stroke)
+
+    def drop_nearby(self) -> None:
+        """Let the held object fall to the floor beside the robot."""
+        T = self.motion.pose("tcp")
+        T[:3, 3] = self.in_base(DROP)
+        self.goto_pose(T, allow_base=False)
+        self.open_hand()
+        self.motion.settle(45)  # let it fall and come to rest
+
+    # ================================================================ navigation
+
+    def drive_to(self, pose, name: str) -> ActionOutcome:
+        """Base along the corridor to ``pose``; stops at a closed door on the way."""
+        plan = self.scene.plan
+        self.carry()
+        x, y, yaw = self.robot.base_pose
+        legs = [(x, plan.corridor_y, yaw)]
+        here = plan.rooms[self.truth.room_of_point((x, y))] if self.truth.room_of_point((x, y)) else None
+        there = self.truth.room_of_point(pose[:2])
+        for d in sorted(plan.doors.values(), key=lambda d: abs(d.x - x)):
+            crosses = (min(x, pose[0]) < d.x < max(x, pose[0])) and here is not None
+            if crosses:
+                side = -1.0 if x < d.x else 1.0
+                legs.append((d.x + side * 0.95, d.center_y, 0.0 if side < 0 else math.pi))
+                legs.append(("door", d.name))
+                legs.append((d.x - side * 0.95, d.center_y, pose[2]))
+        legs += [(pose[0], plan.corridor_y, pose[2]), tuple(pose)]
+        drives = [leg for leg in legs if leg[0] != "door"]
+        total = max(len(drives), 1)
+        done = 0
+        for leg in legs:
+            if leg[0] == "door":
+                if not self.truth._open(leg[1]):
+                    self.look_at(self._door_look(leg[1]))
+                    return ActionOutcome(False, f"door {leg[1]} is not open: stopped in front of it")
+                continue
+            self._drive_leg(leg, done / total, 1 / total)
+            done += 1
+        del there
+        return ActionOutcome(True)
+
+    def _drive_leg(self, pose, p0: float, span: float) -> None:
+        def on_sample(s: float) -> None:
+            if self.release_at is not None and p0 + s * span >= self.release_at and self.truth.held():
+                self.release_at = None
+                self.robot.detach()  # the object slips out mid-way
+                self.robot.command_fingers(self.robot.cfg.gripper.stroke)
+            self.phase(p0 + s * span, "driving")
+
+        self.motion.on_sample = on_sample
+        try:
+            self.motion.drive(pose, CORRIDOR_SPEED)
+        finally:
+            self.motion.on_sample = None
+
+    def _door_look(self, door: str) -> np.ndarray:
+        d = self.scene.things[door].door
+        return np.array([d.x, d.center_y, 0.8])
+
+    def target_point(self, name: str) -> np.ndarray:
+        t = self.scene.things[name]
+        if t.door is not None:
+            return self._door_look(name)
+        if t.room is not None:
+            x, y, yaw = self.robot.base_pose
+            return np.array([x + 1.5 * math.cos(yaw), y + 1.5 * math.sin(yaw), 0.0])
+        if t.furniture is not None:
+            f = t.furniture
+            if f.kind.cavity is not None:
+                z = sum(f.kind.cavity.z) / 2
+                return f.to_world((0.0, f.kind.size[1] / 4, z))
+            return f.to_world((0.0, 0.0, f.kind.size[2]))
+        return self.truth.center(name)
+
+    def find(self, target: str, sit: SituationSpec | None) -> ActionOutcome:
+        if sit is not None and sit.drops == "held":
+            self.release_at = 0.5
+        try:
+            out = self.drive_to(self.standoff(target), target)
+        finally:
+            self.release_at = None
+        self.look_at(self.target_point(target))
+        return out
+
+    def navigate(self, to_room: str, door: str, sit: SituationSpec | None) -> ActionOutcome:
+        if sit is not None and sit.drops == "held":
+            self.release_at = 0.5
+        t = self.scene.things[door]
+        try:
+            out = self.drive_to(self._door_pose(t, to_room, 1.0), door)
+        finally:
+            self.release_at = None
+        self.look_at(self._door_look(door))
+        return out
+
+    # ================================================================ grasping
+
+    def grasp_frame(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Grasp pose of the tcp and the approach direction for an item where it is now."""
+        t = self.scene.things[name]
+        c = self.truth.center(name)
+        container = self.truth.container_of(name)
+        ct = self.scene.things.get(container) if container else None
+        if ct is not None and ct.furniture.kind.cavity.open == "front":
+            a = -ct.furniture.front
+            return _frame(a, (0, 0, -1), c), a
+        _, orn = pb.getBasePositionAndOrientation(t.body, physicsClientId=self.cid)
+        R = np.array(pb.getMatrixFromQuaternion(orn)).reshape(3, 3)
+        left = self.base_T()[:3, 1]
+        across = left if t.kind.shape == "sphere" or (t.kind.shape == "cylinder" and not t.kind.lying) else R[:, 1]
+        across = np.array([across[0], across[1], 0.0])
+        across /= np.linalg.norm(across)
+        if across @ left < 0:
+            across = -across
+        z = np.array([0.0, 0.0, -1.0])
+        x = np.cross(across, z)
+        top = self.truth.aabb(name)[5]
+        p = c.copy()
+        p[2] = max(top - 0.03, c[2])  # fingertips reach below the top; flat things from above
+        return _frame(z, x, p), z
+
+    def toward_robot(self, point, support: str | None) -> np.ndarray:
+        """Horizontal direction from a point to the side the robot works it from."""
+        t = self.scene.things.get(support) if support else None
+        if t is not None and t.furniture is not None:
+            return t.furniture.front
+        d = np.array([*self.robot.base_pose[:2], 0.0]) - np.asarray(point)
+        d[2] = 0.0
+        return d / max(np.linalg.norm(d), 1e-6)
+
+    def grasp(self, name: str, sit: SituationSpec | None) -> ActionOutcome:
+        t = self.scene.things[name]
+        G, a = self.grasp_frame(name)
+        where = self.truth.container_of(name) or self.truth.support_of(name)
+        self.approach(self.work_pose(G[:3, 3], self.toward_robot(G[:3, 3], where), "top" if a[2] < -0.5 else "front", where))
+        G, a = self.grasp_frame(name)
+        pre = G.copy()
+        pre[:3, 3] -= a * APPROACH
+        self.phase(0.1, "pre-grasp")
+        if not self.goto_pose(pre):
+            self.home()
+            return ActionOutcome(False, f"{name}: no arm pose reaches it")
+        self.motion.fingers(self.robot.cfg.gripper.stroke)
+        target = G.copy()
+        if sit is not None and sit.kind == "grasp_fails_object_unchanged":
+            target[:3, 3] -= a * 0.09  # the fingers close short of the object
+        self.phase(0.35, "approach")
+        self.motion.line(target, steps=4, speed=0.3)
+        self.phase(0.55, "closing")
+        touching = self.motion.fingers(0.0, t.body, force=60.0)
+        if touching >= 1:
+            self.robot.attach(t.body, name)
+        self.phase(0.75, "lifting")
+        back = self.motion.pose("tcp")
+        back[:3, 3] -= a * 0.12 if a[2] > -0.5 else 0.0
+        back[2, 3] += 0.12 if a[2] <= -0.5 else 0.02
+        self.motion.line(back, steps=3, speed=0.3)
+        if self.robot.grip is None:
+            self.open_hand()
+            self.home()
+            return ActionOutcome(True, f"grasp of {name} closed on nothing")
+        if sit is not None and sit.drops == 0:
+            self.drop_nearby()
+            self.home()
+            return ActionOutcome(True, f"{name} slipped out of the gripper")
+        self.carry()
+        return ActionOutcome(True)
+
+    # ================================================================ placing
+
+    def free_spot(self, surface: str, item: str) -> np.ndarray:
+        """Centre of a free spot on a surface's top (far from other items, near the robot)."""
+        t = self.scene.things[surface]
+        others = [self.truth.center(i.name) for i in self.scene.items() if i.name != item and self.truth._on(i.name, surface)]
+        if t.room is not None:
+            x, y, yaw = self.robot.base_pose
+            cands = [np.array([x + 0.75 * math.cos(yaw) + dx * -math.sin(yaw), y + 0.75 * math.sin(yaw) + dx * math.cos(yaw), 0.0])
+                     for dx in np.linspace(-0.3, 0.3, 7)]
+        else:
+            f = t.furniture
+            w = f.kind.size[0] / 2 - 0.08
+            cands = [f.to_world((lx, 0.0, f.kind.size[2])) for lx in np.linspace(-w, w, 9)]
+        base = np.array(self.robot.base_pose[:2])
+
+        def score(p):
+            clear = min([np.linalg.norm(p[:2] - o[:2]) for o in others] + [1.0])
+            return min(clear, 0.2) - 0.05 * np.linalg.norm(p[:2] - base)
+
+        return max(cands, key=score)
+
+    def cavity_spot(self, container: str) -> tuple[np.ndarray, np.ndarray]:
+        """Centre of a container's cavity floor, and the direction to put things in from."""
+        t = self.scene.things[container]
+        f = t.furniture
+        cav = f.kind.cavity
+        shift = 0.0
+        if t.hinge is not None and t.hinge.prismatic:
+            shift = pb.getJointState(t.hinge.body, t.hinge.joint, physicsClientId=self.cid)[0]
+        p = f.to_world((0.0, 0.03 + shift, cav.z[0]))
+        a = -f.front if cav.open == "front" else np.array([0.0, 0.0, -1.0])
+        return p, a
+
+    def place(self, name: str, where: str, inside: bool, sit: SituationSpec | None) -> ActionOutcome:
+        if self.truth.held() != name:
+            return ActionOutcome(False, f"not holding {name}")
+        t = self.scene.things[name]
+        if sit is not None and sit.drops == 0:
+            self.drop_nearby()
+            self.home()
+            return ActionOutcome(True, f"{name} dropped on the way")
+        if inside:
+            spot, a = self.cavity_spot(where)
+        else:
+            spot, a = self.free_spot(where, name), np.array([0.0, 0.0, -1.0])
+        self.approach(self.work_pose(spot, self.toward_robot(spot, where), "top" if a[2] < -0.5 else "front", where))
+        box = self.truth.aabb(name)
+        c = self.truth.center(name)
+        spot = spot.copy()
+        spot[2] += (c[2] - box[2]) + 0.015  # its bottom just above the support
+        T_tcp = self.robot.link_pose("tcp")
+        _, orn = pb.getBasePositionAndOrientation(t.body, physicsClientId=self.cid)
+        T_item = np.eye(4)
+        T_item[:3, :3] = np.array(pb.getMatrixFromQuaternion(orn)).reshape(3, 3)
+        T_item[:3, 3] = c
+        hold = np.linalg.inv(T_tcp) @ T_item
+        target_item = T_item.copy()
+        target_item[:3, 3] = spot
+        G = target_item @ np.linalg.inv(hold)
+        pre = G.copy()
+        pre[:3, 3] -= a * 0.16
+        self.phase(0.2, "pre-place")
+        if not self.goto_pose(pre):
+            self.carry()
+            return ActionOutcome(False, f"{where}: no arm pose reaches it")
+        self.phase(0.5, "placing")
+        self.motion.line(G, steps=4, speed=0.3)
+        if sit is not None and sit.kind == "place_fails_object_in_hand":
+            self.motion.line(pre, steps=3, speed=0.3)  # the gripper never opened
+            self.carry()
+            return ActionOutcome(True, f"{name} still in the gripper")
+        self.open_hand()
+        self.motion.settle(20)
+        self.phase(0.8, "retreat")
+        self.motion.line(pre, steps=3, speed=0.4)
+        self.home()
+        return ActionOutcome(True)
+
+    # ================================================================ doors and lids
+
+    def open_close(self, name: str, opening: bool, sit: SituationSpec | None) -> ActionOutcome:
+        t = self.scene.things[name]
+        h = t.hinge
+        if h is None:
+            return ActionOutcome(False, f"{name} has nothing to open")
+        q0 = pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0]
+        side = 1.0
+        if h.other_side is not None:  # a room door: use the face towards the robot
+            p, n, _ = h.handle_at(q0)
+            base = np.array([*self.robot.base_pose[:2], p[2]])
+            side = 1.0 if (base - p) @ n > 0 else -1.0
+        full = h.full
+        if h.other_side is not None:
+            full = abs(h.full) * side  # push the leaf away from the robot's side
+        goal = full if opening else 0.0
+        if h.other_side is not None and not opening:
+            side = -1.0 if q0 * side > 0 else side
+        p, n, bar = h.handle_at(q0, side)
+        stand = p
+        if not h.prismatic and abs(h.axis[2]) > 0.5 and h.other_side is None:
+            # stand beside the leaf's free edge, out of the area the leaf sweeps towards the robot
+            leaf = (p - h.origin) * np.array([1.0, 1.0, 0.0])
+            stand = p + leaf / np.linalg.norm(leaf) * 0.2
+        self.approach(self.work_pose(stand, n, "front", name if t.furniture else None))
+        approach = -n
+        x = -bar if abs(bar[2]) > 0.5 else bar
+        G = _frame(approach, x, p)
+        pre = G.copy()
+        pre[:3, 3] += n * APPROACH
+        self.phase(0.1, "reaching for the handle")
+        if not self.goto_pose(pre):
+            self.home()
+            return ActionOutcome(False, f"{name}: handle out of reach")
+        self.motion.fingers(self.robot.cfg.gripper.stroke)
+        self.motion.line(G, steps=4, speed=0.3, allow_base=False)
+        touching = self.motion.fingers(0.0, h.body, h.joint, force=80.0)
+        if touching == 0 or (sit is not None and not sit.effect):
+            # the hand slips off the handle: the arm lets go and backs off, the joint stays
+            self.open_hand()
+            self.motion.line(pre, steps=3, speed=0.4, allow_base=False)
+            self.home()
+            return ActionOutcome(True, f"{name}: the handle slipped")
+        self.robot.attach(h.body, name, h.joint, point=True)
+        self.phase(0.4, "moving the handle")
+        # follow the handle's path a little at a time, always from where the leaf really is, so
+        # the hand never runs ahead of a leaf that sticks (the joint moves because the hand pulls)
+        n_steps = max(4, int(abs(goal - q0) / (0.02 if h.prismatic else 0.1)))
+        step = (goal - q0) / n_steps
+        for k in range(n_steps):
+            qm = pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0]
+            if abs(goal - qm) < abs(step) / 2:
+                break
+            q = qm + step
+            R, _ = h.transform(q, q0)
+            pk, _, _ = h.handle_at(q, side)
+            T = np.eye(4)
+            T[:3, :3] = R @ G[:3, :3]
+            T[:3, 3] = pk
+            sol = self.motion.solve(T, allow_base=False)
+            if sol is None:
+                break
+            self.motion.through([sol], 0.3)
+            self.phase(0.4 + 0.4 * (k + 1) / n_steps, "moving the handle")
+        self.open_hand()
+        # let go without dragging the leaf: slide the open fingers off the end of the bar, then
+        # back the base away before folding the arm
+        off = self.robot.link_pose("tcp")
+        off[:3, 3] += h.handle_at(pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0], side)[2] * 0.14
+        self.motion.line(off, steps=3, speed=0.3, allow_base=False)
+        x, y, yaw = self.robot.base_pose
+        self.motion.drive((x - 0.35 * math.cos(yaw), y - 0.35 * math.sin(yaw), yaw), 0.5)
+        self.home()
+        self.look_at(self.target_point(name))
+        return ActionOutcome(True)
+
+    # ================================================================ the rest
+
+    def press(self, appliance: str, sit: SituationSpec | None) -> ActionOutcome:
+        t = self.scene.things[appliance]
+        if t.light_link is None:
+            return ActionOutcome(False, f"{appliance} has no switch")
+        lp = np.array(pb.getLinkState(t.body, t.light_link, physicsClientId=self.cid)[4])
+        n = t.furniture.front
+        self.approach(self.work_pose(lp, n, "front", appliance))
+        G = _frame(-n, (0, 0, -1), lp + n * 0.012)
+        pre = G.copy()
+        pre[:3, 3] += n * 0.12
+        self.motion.fingers(0.0)
+        if not self.goto_pose(pre):
+            self.home()
+            return ActionOutcome(False, f"{appliance}: switch out of reach")
+        miss = sit is not None and not sit.effect
+        touch = G.copy()
+        if miss:
+            touch[:3, 3] += n * 0.06  # the press stops short of the switch
+        self.motion.line(touch, steps=3, speed=0.3)
+        if not miss:
+            self._turn_on(t)
+        self.motion.line(pre, steps=2, speed=0.4)
+        self.motion.fingers(self.robot.cfg.gripper.stroke)
+        self.home()
+        self.look_at(self.target_point(appliance))
+        return ActionOutcome(True)
+
+    def _turn_on(self, t: Thing) -> None:
+        t.states["turned_on"] = True
+        pb.changeVisualShape(t.body, t.light_link, rgbaColor=t.kind.light[1], physicsClientId=self.cid)
+        for it in self.scene.items():
+            if self.truth._inside(it.name, t.name):
+                it.states["heated"] = True
+                self.recolor(it)
+
+    def recolor(self, it: Thing) -> None:
+        """Show an item's state: water colour when filled, a warm tint when heated."""
+        k = it.kind
+        color = np.array(k.color)
+        level = float(it.states.get("filled", 0.0))
+        if level >= 0.95 and k.filled_color:
+            color = np.array(k.filled_color)
+        elif level > 0:
+            color = np.array(self.catalog.half_filled_color)
+        if it.states.get("heated"):
+            color = 0.5 * color + 0.5 * np.array(self.catalog.heated_tint)
+        for b in it.bodies:
+            pb.changeVisualShape(b, -1, rgbaColor=tuple(color), physicsClientId=self.cid)
+
+    def fill(self, name: str, sink: str, sit: SituationSpec | None) -> ActionOutcome:
+        if self.truth.held() != name:
+            return ActionOutcome(False, f"not holding {name}")
+        t = self.scene.things[name]
+        if sit is not None and sit.drops == 0:
+            self.drop_nearby()
+            self.home()
+            return ActionOutcome(True, f"{name} slipped out")
+        f = self.scene.things[sink].furniture
+        tap = f.to_world((0.0, -f.kind.size[1] / 2 + 0.2, f.kind.size[2] + 0.08))
+        self.approach(self.work_pose(tap, f.front, "top", sink))
+        T = self.motion.pose("tcp")
+        T[:3, 3] += tap - self.truth.center(name)
+        self.phase(0.3, "under the tap")
+        if not self.goto_pose(T):
+            self.carry()
+            return ActionOutcome(False, f"{sink}: tap out of reach")
+        self.motion.settle(40)  # the water runs
+        t.states["filled"] = 0.5 if (sit is not None and not sit.effect) else 1.0
+        t.states["heated"] = False  # fresh water is cold
+        self.recolor(t)
+        self.carry()
+        return ActionOutcome(True)
+
+    def cut(self, name: str, knife: str, sit: SituationSpec | None) -> ActionOutcome:
+        if self.truth.held() != knife:
+            return ActionOutcome(False, f"not holding {knife}")
+        if sit is not None and sit.drops == 1:
+            self.drop_nearby()
+            self.home()
+            return ActionOutcome(True, f"{knife} slipped out")
+        t = self.scene.things[name]
+        c = self.truth.center(name)
+        support = self.truth.support_of(name)
+        self.approach(self.work_pose(c, self.toward_robot(c, support), "top", support))
+        top = self.truth.aabb(name)[5]
+        kbox = self.truth.aabb(knife)
+        T = self.motion.pose("tcp")
+        below = T[2, 3] - kbox[2]  # from the tcp down to the blade's edge
+        T[:3, 3] = (c[0], c[1], top + below + 0.06)
+        if not self.goto_pose(T):
+            self.carry()
+            return ActionOutcome(False, f"{name}: out of reach")
+        stroke = T.copy()
+        short = sit is not None and not sit.effect
+        stroke[2, 3] = (top + below + 0.03) if short else (c[2] + below)
+        kb = self.scene.things[knife].body
+        for k in range(1, 7):
+            step = T.copy()
+            step[2, 3] = T[2, 3] + (stroke[2, 3] - T[2, 3]) * k / 6
+            self.goto_pose(step, 0.2, allow_base=False)
+            if not t.states["sliced"] and any(pb.getClosestPoints(kb, b, 0.004, physicsClientId=self.cid) for b in t.bodies):
+                self.split(t, T[:3, 1])
+        self.goto_pose(T, 0.4, allow_base=False)
+        self.carry()
+        return ActionOutcome(True)
+
+    def split(self, t: Thing, normal: np.ndarray) -> None:
+        """The object falls apart into two halves on either side of the blade."""
+        c = self.truth.center(t.name)
+        ex = t.kind.extent
+        pb.removeBody(t.body, physicsClientId=self.cid)
+        n = np.array([normal[0], normal[1], 0.0])
+        n /= np.linalg.norm(n)
+        yaw = math.atan2(n[1], n[0])
+        bodies = []
+        for s in (-1, 1):
+            p = c + n * s * (ex[0] / 4 + 0.012)
+            p[2] = c[2] - ex[2] / 2 + ex[2] / 2 + 0.002
+            bodies.append(make_item_body(self.cid, t.kind, tuple(p), yaw, half=True, mass=t.kind.mass / 2))
+        t.bodies = bodies
+        t.states["sliced"] = True
+        self.recolor(t)
+
+    def push(self, blocker: str, target: str, sit: SituationSpec | None) -> ActionOutcome:
+        support = self.truth.support_of(blocker)
+        if support is None:
+            return ActionOutcome(False, f"{blocker} is not on a surface")
+        front, side = self.truth._front_axes(support)
+        b = self.truth.center(blocker)
+        o = self.truth.center(target)
+        self.approach(self.work_pose(b, front, "top", support))
+        direction = side if (b - o)[:2] @ side[:2] >= 0 else -side  # away from what it blocks
+        r = max(self.scene.things[blocker].kind.extent[:2]) / 2
+        box = self.truth.aabb(blocker)
+        z = box[2] + 0.6 * (box[5] - box[2])
+        start = b - direction * (r + 0.05)
+        start[2] = z + 0.1
+        G = _frame((0, 0, -1), direction, start)
+        self.motion.fingers(0.0)
+        if not self.goto_pose(G):
+            self.home()
+            return ActionOutcome(False, f"{blocker}: out of reach")
+        down = G.copy()
+        down[2, 3] = z
+        self.motion.line(down, steps=3, speed=0.3)
+        along = down.copy()
+        along[:3, 3] += direction * 0.22
+        self.motion.line(along, steps=5, speed=0.2)
+        up = along.copy()
+        up[2, 3] += 0.12
+        self.motion.line(up, steps=2, speed=0.4)
+        self.motion.fingers(self.robot.cfg.gripper.stroke)
+        self.home()
+        self.look_at(self.target_point(target))
+        return ActionOutcome(True)

@@ -1,0 +1,244 @@
+"""Ground truth: which household atoms hold, read off the physics state.
+
+Every predicate of ``domains/household.pddl`` is decided from geometry, joints, constraints or the
+visible state of an object — never from what the plan expected:
+
+* ``on(o, s)``: o rests on s's top (its bottom within a few cm of the top, its centre over it);
+  ``on(o, floor_r)``: o lies on the floor inside room r;
+* ``inside(o, c)``: o's centre lies in c's cavity (a drawer's cavity moves with its tray);
+* ``holding(o)``: the grasp constraint ties o to the hand; ``hand_empty``: no item is held;
+* ``open``/``closed``: the hinge or slide's fraction of its full travel against the catalogue's
+  thresholds (a half-open door is neither); things without a door (a basket) are always open;
+* ``in_room``, ``robot_in``: positions inside a room's floor rectangle (a held item is in no room;
+  a door is in both of its rooms); ``robot_at(x)``: the base stands in x's room within
+  ``AT_DISTANCE`` of x (floors: anywhere in the room; held items: always);
+* ``inview(x)``: x covers at least the camera's pixel threshold in the current wrist image;
+* ``blocking(b, o)``: b stands on o's support, in front of o (towards the side the robot works
+  from), overlapping it sideways; ``reachable(o)``: nothing blocks o;
+* ``filled``, ``sliced``, ``heated``, ``turned_on``: the object's physical state;
+* ``clear``, ``openable``, ``fillable``, ``connects``: rigid facts of the layout.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pybullet as pb
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.sim.pb_catalog import Catalog
+from vap_bt.sim.pb_robot import Robot
+from vap_bt.sim.pb_scene import Scene, Thing
+
+AT_DISTANCE = 1.3  # m from the base centre to the thing's box
+RIGID = ("clear", "openable", "fillable", "connects")
+BLOCK_DEPTH = 0.25  # how far in front of an item a blocker may stand
+
+
+class Truth:
+    def __init__(self, scene: Scene, robot: Robot, catalog: Catalog, rigid: set[Atom],
+                 visible_names: Callable[[], set[str]]) -> None:
+        self.scene, self.robot, self.catalog = scene, robot, catalog
+        self.rigid = rigid
+        self.visible_names = visible_names  # names above the pixel threshold in the wrist view
+
+    # ------------------------------------------------------------ geometry
+
+    def aabb(self, name: str) -> tuple[float, ...]:
+        t = self.scene.things[name]
+        if t.room is not None and not t.bodies:  # a room: its floor rectangle
+            r = self.scene.plan.rooms[name]
+            return (r.x0, r.y0, 0.0, r.x1, r.y1, self.catalog.room.wall_height)
+        lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+        for b in t.bodies:
+            links = range(-1, pb.getNumJoints(b, physicsClientId=self.scene.client))
+            for link in links:
+                a, c = pb.getAABB(b, link, physicsClientId=self.scene.client)
+                if a[0] > c[0]:  # a link without shapes
+                    continue
+                lo, hi = np.minimum(lo, a), np.maximum(hi, c)
+        return (*map(float, lo), *map(float, hi))
+
+    def center(self, name: str) -> np.ndarray:
+        t = self.scene.things[name]
+        if t.item is not None:
+            return np.mean([pb.getBasePositionAndOrientation(b, physicsClientId=self.scene.client)[0]
+                            for b in t.bodies], axis=0)
+        a = self.aabb(name)
+        return (np.array(a[:3]) + np.array(a[3:])) / 2
+
+    def room_of_point(self, p) -> str | None:
+        return self.scene.plan.room_at(float(p[0]), float(p[1]))
+
+    def joint_fraction(self, t: Thing) -> float:
+        q = pb.getJointState(t.hinge.body, t.hinge.joint, physicsClientId=self.scene.client)[0]
+        return abs(q) / abs(t.hinge.full)
+
+    def held(self) -> str | None:
+        g = self.robot.grip
+        return g.name if g is not None and g.link == -1 else None
+
+    # ------------------------------------------------------------ predicates
+
+    def holds(self, atom: Atom) -> bool:
+        if atom.predicate in RIGID:
+            return atom in self.rigid
+        fn = getattr(self, "_" + atom.predicate, None)
+        if fn is None:
+            return False
+        try:
+            return bool(fn(*atom.args))
+        except KeyError:  # an object this world does not have
+            return False
+
+    def _hand_empty(self) -> bool:
+        return self.held() is None
+
+    def _holding(self, o: str) -> bool:
+        return self.held() == o
+
+    def _robot_in(self, r: str) -> bool:
+        x, y, _ = self.robot.base_pose
+        return self.scene.plan.rooms[r].contains(x, y)
+
+    def _in_room(self, x: str, r: str) -> bool:
+        t = self.scene.things[x]
+        if t.door is not None:
+            return r in (t.door.low, t.door.high)
+        if t.furniture is not None:
+            return t.furniture.room == r
+        if t.room is not None:
+            return t.room == r
+        if self.held() == x:
+            return False
+        return self.room_of_point(self.center(x)) == r
+
+    def _robot_at(self, x: str) -> bool:
+        t = self.scene.things[x]
+        bx, by, _ = self.robot.base_pose
+        if t.room is not None and t.bodies:  # a floor: anywhere in its room
+            return self._robot_in(t.room)
+        if self.held() == x:
+            return True
+        rooms = (t.door.low, t.door.high) if t.door else (t.furniture.room if t.furniture else self.room_of_point(self.center(x)),)
+        if self.room_of_point((bx, by)) not in rooms:
+            return False
+        a = self.aabb(x)
+        dx = max(a[0] - bx, 0.0, bx - a[3])
+        dy = max(a[1] - by, 0.0, by - a[4])
+        return math.hypot(dx, dy) <= AT_DISTANCE
+
+    def _inview(self, x: str) -> bool:
+        return x in self.visible_names()
+
+    def _open(self, x: str) -> bool:
+        t = self.scene.things[x]
+        if t.hinge is None:
+            return t.pddl_type in ("container", "appliance")
+        return self.joint_fraction(t) >= self.catalog.open_above
+
+    def _closed(self, x: str) -> bool:
+        t = self.scene.things[x]
+        return t.hinge is not None and self.joint_fraction(t) <= self.catalog.closed_below
+
+    def _on(self, o: str, s: str) -> bool:
+        if self.held() == o:
+            return False
+        box = self.aabb(o)
+        c = self.center(o)
+        t = self.scene.things[s]
+        if t.room is not None:  # a floor
+            return box[2] < 0.05 and self.scene.plan.rooms[t.room].contains(c[0], c[1])
+        f = t.furniture
+        if f is None:
+            return False
+        top = f.kind.size[2]
+        local = self._local(f, c)
+        w, d = f.kind.size[0] / 2, f.kind.size[1] / 2
+        return top - 0.03 <= box[2] <= top + 0.04 and abs(local[0]) <= w and abs(local[1]) <= d
+
+    def _inside(self, o: str, c: str) -> bool:
+        if self.held() == o:
+            return False
+        t = self.scene.things[c]
+        f = t.furniture
+        if f is None or f.kind.cavity is None:
+            return False
+        p = self._local(f, self.center(o))
+        w, d, _ = f.kind.size
+        cav = f.kind.cavity
+        shift = 0.0
+        if t.hinge is not None and t.hinge.prismatic:  # the cavity is the tray, which slides out
+            shift = pb.getJointState(t.hinge.body, t.hinge.joint, physicsClientId=self.scene.client)[0]
+        return (abs(p[0]) <= w / 2 - cav.wall + 0.01 and -d / 2 + shift <= p[1] <= d / 2 + shift + 0.02
+                and cav.z[0] - 0.03 <= p[2] <= cav.z[1] + 0.02)
+
+    def _blocking(self, b: str, o: str) -> bool:
+        if b == o or self.held() in (b, o):
+            return False
+        tb, to = self.scene.things[b], self.scene.things[o]
+        if tb.item is None or to.item is None:
+            return False
+        support = self._support(o)
+        if support is None or support != self._support(b):
+            return False
+        front, side = self._front_axes(support)
+        d = self.center(b) - self.center(o)
+        ahead = float(d[:2] @ front[:2])
+        lateral = abs(float(d[:2] @ side[:2]))
+        reach = (max(tb.kind.extent[:2]) + max(to.kind.extent[:2])) / 2 + 0.02
+        return 0.0 < ahead < BLOCK_DEPTH and lateral < reach
+
+    def _reachable(self, o: str) -> bool:
+        if self.scene.things[o].item is None:
+            return False
+        return not any(self._blocking(b.name, o) for b in self.scene.items())
+
+    def _filled(self, o: str) -> bool:
+        return float(self.scene.things[o].states.get("filled", 0.0)) >= 0.95
+
+    def _sliced(self, o: str) -> bool:
+        return bool(self.scene.things[o].states.get("sliced", False))
+
+    def _heated(self, o: str) -> bool:
+        return bool(self.scene.things[o].states.get("heated", False))
+
+    def _turned_on(self, a: str) -> bool:
+        return bool(self.scene.things[a].states.get("turned_on", False))
+
+    # ------------------------------------------------------------ helpers
+
+    @staticmethod
+    def _local(f, p) -> np.ndarray:
+        c, s = math.cos(f.yaw), math.sin(f.yaw)
+        dx, dy = p[0] - f.x, p[1] - f.y
+        return np.array([c * dx + s * dy, -s * dx + c * dy, p[2]])
+
+    def _support(self, o: str) -> str | None:
+        """The surface an item rests on now (furniture or floor), if any."""
+        for t in self.scene.things.values():
+            if (t.furniture is not None and t.pddl_type == "surface") or (t.room is not None and t.bodies):
+                if self._on(o, t.name):
+                    return t.name
+        return None
+
+    def _front_axes(self, support: str) -> tuple[np.ndarray, np.ndarray]:
+        """Unit vectors towards the side the robot works from, and along that side."""
+        t = self.scene.things[support]
+        if t.furniture is not None:
+            f = t.furniture.front
+        else:  # floor items are approached from the corridor
+            f = np.array([0.0, 1.0, 0.0])
+        return f, np.array([-f[1], f[0], 0.0])
+
+    def support_of(self, o: str) -> str | None:
+        return self._support(o)
+
+    def container_of(self, o: str) -> str | None:
+        for t in self.scene.things.values():
+            if t.furniture is not None and t.furniture.kind.cavity is not None and t.pddl_type != "sink":
+                if self._inside(o, t.name):
+                    return t.name
+        return None

@@ -1,0 +1,317 @@
+"""ZenohSkillClient and ZenohCamera: the executive's side of the Zenoh transport.
+
+``send_goal`` never blocks. It picks a goal id, sends a :class:`GoalRequest` through a cached
+Querier on ``vap/<robot>/skill/<action>`` and returns a :class:`ZenohGoalHandle` in PENDING.
+Everything after that arrives on Zenoh callbacks and only updates the handle under a lock:
+
+* the reply           -> ACTIVE (accepted) or REJECTED (with the server's reason);
+* no reply at all     -> REJECTED ("no skill server ... answered");
+* a status message    -> new feedback, or the terminal state and result;
+* the server's liveliness token disappears -> every goal in flight on it ABORTED, "server vanished".
+
+The client listens before it asks: per robot it subscribes to ``vap/<robot>/goal/*/status`` and
+to the robots' liveliness tokens when it is created, so no early feedback or fast result is lost,
+and it only ever subscribes to the namespaces of its own robots.
+
+Which robot hosts which action comes from the plugin registry (:func:`vap_bt.plugins.routes`)
+unless a routing table is passed in.
+"""
+
+from __future__ import annotations
+
+import itertools
+import threading
+from typing import Any, Mapping
+
+import zenoh
+
+from vap_bt import plugins
+from vap_bt.errors import TransportError
+from vap_bt.skill import Feedback, GoalState, SkillResult
+from vap_bt.transport import keys
+from vap_bt.transport.messages import (
+    CancelRequest,
+    ErrorReply,
+    GoalReply,
+    GoalRequest,
+    GoalStatus,
+    MessageError,
+    MoveViewReply,
+    MoveViewRequest,
+    ObserveRequest,
+    SurveyRequest,
+    decode,
+    encode,
+)
+from vap_bt.world import Observation, SceneSnapshot
+
+#: how long a goal request may wait for its server's accept/reject
+ACCEPT_TIMEOUT_S = 5.0
+#: how long a camera request may take (rendering included)
+CAMERA_TIMEOUT_S = 30.0
+
+
+class ZenohGoalHandle:
+    """A goal in flight on a remote skill server; updated by the client's callbacks."""
+
+    def __init__(self, client: "ZenohSkillClient", goal_id: str, robot: str, action: str) -> None:
+        self.goal_id = goal_id
+        self.robot = robot
+        self.action = action
+        self.server = ""
+        self._client = client
+        self._state = GoalState.PENDING
+        self._feedback: Feedback | None = None
+        self._result: SkillResult | None = None
+        self._answered = threading.Event()  # accepted or ended
+        self._ended = threading.Event()
+
+    def state(self) -> GoalState:
+        return self._state
+
+    def feedback(self) -> Feedback | None:
+        return self._feedback
+
+    def result(self) -> SkillResult | None:
+        return self._result
+
+    def cancel(self) -> None:
+        if not self._state.terminal:
+            self._client._cancel(self)
+
+    def wait(self, timeout: float | None = None) -> GoalState:
+        """Block until the goal ends (tools and tests; behaviours poll :meth:`state`)."""
+        self._ended.wait(timeout)
+        return self._state
+
+    def wait_answered(self, timeout: float | None = None) -> GoalState:
+        """Block until the server accepted or the goal ended."""
+        self._answered.wait(timeout)
+        return self._state
+
+    # state changes: called by the client with its lock held
+    def _activate(self, server: str) -> None:
+        if self._state is GoalState.PENDING:
+            self._state = GoalState.ACTIVE
+            self.server = server
+            self._answered.set()
+
+    def _finish(self, state: GoalState, result: SkillResult) -> None:
+        if not self._state.terminal:
+            self._result, self._state = result, state
+            self._answered.set()
+            self._ended.set()
+
+
+class ZenohSkillClient:
+    """A :class:`~vap_bt.skill.SkillClient` that sends goals to skill servers over Zenoh."""
+
+    def __init__(
+        self,
+        session: zenoh.Session,
+        routes: Mapping[str, str] | None = None,
+        *,
+        accept_timeout: float = ACCEPT_TIMEOUT_S,
+        owns_session: bool = False,
+    ) -> None:
+        self.session = session
+        self.routes = dict(plugins.routes(plugins.discover_skills()) if routes is None else routes)
+        self.accept_timeout = accept_timeout
+        self._owns_session = owns_session
+        self._prefix = str(session.zid())[:12]
+        self._ids = itertools.count(1)
+        self._lock = threading.Lock()
+        self._inflight: dict[str, ZenohGoalHandle] = {}
+        self._alive: dict[str, set[str]] = {}
+        self._queriers: dict[tuple[str, str], zenoh.Querier] = {}
+        self._declared: list[Any] = []
+        for robot in sorted(set(self.routes.values())):
+            self._watch(robot)
+
+    # -- SkillClient -----------------------------------------------------------------------------
+
+    def send_goal(self, action: str, args: tuple[str, ...]) -> ZenohGoalHandle:
+        robot = self.routes.get(action)
+        handle = ZenohGoalHandle(self, f"{self._prefix}-{next(self._ids)}", robot or "", action)
+        if robot is None:
+            known = ", ".join(sorted(self.routes)) or "none"
+            handle._finish(GoalState.REJECTED, SkillResult(
+                False, f"no skill plugin binds action {action!r} (known: {known})"))
+            return handle
+        request = GoalRequest(handle.goal_id, action, tuple(args), self._prefix)
+        with self._lock:
+            self._inflight[handle.goal_id] = handle
+        self._querier(robot, action).get(
+            zenoh.handlers.Callback(
+                lambda reply: self._on_reply(handle, reply),
+                lambda: self._on_query_done(handle),
+                indirect=False,  # the callbacks only flip state under a lock
+            ),
+            payload=encode(request),
+        )
+        return handle
+
+    def close(self) -> None:
+        """Fail goals still in flight, withdraw subscriptions; close the session if owned."""
+        with self._lock:
+            for handle in list(self._inflight.values()):
+                handle._finish(GoalState.ABORTED, SkillResult(False, "skill client closed"))
+            self._inflight.clear()
+        for entity in [*self._declared, *self._queriers.values()]:
+            entity.undeclare()
+        self._declared.clear()
+        self._queriers.clear()
+        if self._owns_session:
+            self.session.close()
+
+    # -- wiring ----------------------------------------------------------------------------------
+
+    def _watch(self, robot: str) -> None:
+        self._alive[robot] = set()
+        sub = self.session.declare_subscriber
+        self._declared.append(sub(keys.all_goal_status(robot), _direct(self._on_status)))
+        self._declared.append(
+            self.session.liveliness().declare_subscriber(
+                keys.all_alive(robot), _direct(lambda s: self._on_liveliness(robot, s)), history=True
+            )
+        )
+
+    def _querier(self, robot: str, action: str) -> zenoh.Querier:
+        key = (robot, action)
+        querier = self._queriers.get(key)
+        if querier is None:
+            querier = self.session.declare_querier(
+                keys.skill(robot, action),
+                target=zenoh.QueryTarget.BEST_MATCHING,
+                consolidation=zenoh.ConsolidationMode.NONE,
+                timeout=self.accept_timeout,
+            )
+            self._queriers[key] = querier
+        return querier
+
+    # -- callbacks (Zenoh threads: never block) --------------------------------------------------
+
+    def _on_reply(self, handle: ZenohGoalHandle, reply: zenoh.Reply) -> None:
+        if reply.ok is None:
+            self._end(handle, GoalState.REJECTED, _error_text(reply))
+            return
+        try:
+            answer = decode(reply.ok.payload.to_bytes(), GoalReply)
+        except MessageError as exc:
+            self._end(handle, GoalState.REJECTED, f"unreadable reply from server: {exc}")
+            return
+        if not answer.accepted:
+            self._end(handle, GoalState.REJECTED, answer.reason)
+            return
+        with self._lock:
+            if answer.server not in self._alive.get(handle.robot, ()):
+                # its token is gone already: the server died between accepting and now
+                handle._finish(GoalState.ABORTED, SkillResult(False, "server vanished"))
+                self._inflight.pop(handle.goal_id, None)
+            else:
+                handle._activate(answer.server)
+
+    def _on_query_done(self, handle: ZenohGoalHandle) -> None:
+        if handle.state() is GoalState.PENDING:
+            self._end(handle, GoalState.REJECTED,
+                    f"no skill server for {handle.action!r} on robot {handle.robot!r} answered "
+                    f"within {self.accept_timeout:g} s")
+
+    def _on_status(self, sample: zenoh.Sample) -> None:
+        try:
+            status = decode(sample.payload.to_bytes(), GoalStatus)
+        except MessageError:
+            return  # not ours to judge; the server logs its own errors
+        with self._lock:
+            handle = self._inflight.get(status.goal_id)
+            if handle is None:
+                return  # another client's goal on the same robot
+            if status.state.terminal:
+                handle._finish(status.state, status.result or SkillResult(False, status.state.value))
+                if status.feedback is not None:
+                    handle._feedback = status.feedback
+                del self._inflight[status.goal_id]
+            else:
+                handle._activate(status.server)
+                handle._feedback = status.feedback
+
+    def _on_liveliness(self, robot: str, sample: zenoh.Sample) -> None:
+        server = keys.last_chunks(sample.key_expr, 1)[0]
+        with self._lock:
+            if sample.kind == zenoh.SampleKind.PUT:
+                self._alive[robot].add(server)
+                return
+            self._alive[robot].discard(server)
+            lost = [h for h in self._inflight.values() if h.robot == robot and h.server == server]
+            for handle in lost:
+                handle._finish(GoalState.ABORTED, SkillResult(False, "server vanished"))
+                del self._inflight[handle.goal_id]
+
+    def _end(self, handle: ZenohGoalHandle, state: GoalState, reason: str) -> None:
+        with self._lock:
+            handle._finish(state, SkillResult(False, reason))
+            self._inflight.pop(handle.goal_id, None)
+
+    def _cancel(self, handle: ZenohGoalHandle) -> None:
+        self.session.put(
+            keys.goal_cancel(handle.robot, handle.goal_id),
+            encode(CancelRequest(handle.goal_id)),
+            congestion_control=zenoh.CongestionControl.BLOCK,
+            express=True,
+        )
+
+
+class ZenohCamera:
+    """A :class:`~vap_bt.skill.Camera` served by a robot's skill server; calls block."""
+
+    def __init__(self, session: zenoh.Session, robot: str, timeout: float = CAMERA_TIMEOUT_S) -> None:
+        self.robot = keys.chunk("robot", robot)
+        self.timeout = timeout
+        self._queriers = {
+            verb: session.declare_querier(keys.camera(robot, verb), timeout=timeout)
+            for verb in ("observe", "survey", "move")
+        }
+
+    def observe(self, targets: tuple[str, ...]) -> Observation:
+        return self._ask("observe", ObserveRequest(tuple(targets)), Observation)
+
+    def survey(self) -> SceneSnapshot:
+        return self._ask("survey", SurveyRequest(), SceneSnapshot)
+
+    def move_view(self, target: str, direction: str) -> bool:
+        return self._ask("move", MoveViewRequest(target, direction), MoveViewReply).reachable
+
+    def close(self) -> None:
+        for querier in self._queriers.values():
+            querier.undeclare()
+
+    def _ask(self, verb: str, request: Any, expect: type) -> Any:
+        for reply in self._queriers[verb].get(payload=encode(request)):
+            if reply.ok is None:
+                raise TransportError(f"camera {verb} on robot {self.robot}: {_error_text(reply)}")
+            payload = reply.ok.payload.to_bytes()
+            try:
+                return decode(payload, expect)
+            except MessageError as exc:
+                try:  # the server's own explanation, if that is what came back
+                    reason = decode(payload, ErrorReply).reason
+                except MessageError:
+                    reason = str(exc)
+                raise TransportError(f"camera {verb} on robot {self.robot}: {reason}") from None
+        raise TransportError(
+            f"no camera on robot {self.robot!r} answered {verb} within {self.timeout:g} s"
+        )
+
+
+def _direct(fn: Any) -> zenoh.handlers.Callback:
+    return zenoh.handlers.Callback(fn, indirect=False)
+
+
+def _error_text(reply: zenoh.Reply) -> str:
+    err = reply.err
+    if err is None:
+        return "empty reply"
+    try:
+        return err.payload.to_string()
+    except Exception:  # a non-UTF-8 error payload
+        return repr(err.payload.to_bytes())

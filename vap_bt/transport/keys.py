@@ -1,0 +1,68 @@
+"""Zenoh key expressions: every key the executive and the skill servers use, in one place.
+
+All keys live under ``vap/<robot>/`` so that two robots on one Zenoh network never see each
+other's goals (a client subscribes to its robots' namespaces only)::
+
+    vap/<robot>/skill/<action>        queryable: start a goal (GoalRequest -> GoalReply)
+    vap/<robot>/goal/<id>/status      published: feedback and the final result (GoalStatus)
+    vap/<robot>/goal/<id>/cancel      published: ask the server to cancel (CancelRequest)
+    vap/<robot>/camera/observe        queryable: ObserveRequest -> Observation
+    vap/<robot>/camera/survey         queryable: SurveyRequest -> SceneSnapshot
+    vap/<robot>/camera/move           queryable: MoveViewRequest -> MoveViewReply
+    vap/<robot>/alive/<server>        liveliness token of a running skill server
+
+Robot, action, server and goal names are single key chunks: no ``/`` and none of Zenoh's
+wildcard or reserved characters, checked here once so that a bad name is one clear error.
+"""
+
+from __future__ import annotations
+
+import re
+
+ROOT = "vap"
+_CHUNK = re.compile(r"^[A-Za-z0-9_.\-]+$")
+
+
+def chunk(kind: str, name: str) -> str:
+    """``name`` if it can be one key chunk, else ValueError naming ``kind``."""
+    if not isinstance(name, str) or not _CHUNK.match(name):
+        raise ValueError(f"bad {kind} name {name!r}: use letters, digits, '_', '-', '.'")
+    return name
+
+
+def skill(robot: str, action: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/skill/{chunk('action', action)}"
+
+
+def goal_status(robot: str, goal_id: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/goal/{chunk('goal', goal_id)}/status"
+
+
+def goal_cancel(robot: str, goal_id: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/goal/{chunk('goal', goal_id)}/cancel"
+
+
+def all_goal_status(robot: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/goal/*/status"
+
+
+def all_goal_cancel(robot: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/goal/*/cancel"
+
+
+def camera(robot: str, verb: str) -> str:
+    """``verb`` is one of observe, survey, move."""
+    return f"{ROOT}/{chunk('robot', robot)}/camera/{chunk('camera verb', verb)}"
+
+
+def alive(robot: str, server: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/alive/{chunk('server', server)}"
+
+
+def all_alive(robot: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/alive/*"
+
+
+def last_chunks(key: str, n: int) -> list[str]:
+    """The last ``n`` chunks of a concrete key (goal id, server name)."""
+    return str(key).rsplit("/", n)[1:]

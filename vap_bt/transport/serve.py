@@ -1,0 +1,143 @@
+"""The ``vap-bt serve`` and ``vap-bt skills`` commands.
+
+``vap-bt serve`` opens one Zenoh session, builds one world, and starts a
+:class:`~vap_bt.transport.server.SkillServer` for each robot asked for (default: every robot that
+has a skill plugin), all bound to that world through a :class:`LockedWorld`, so one simulator is
+shared safely by the arm's and the base's skills. It prints one ``ready`` line on stdout once
+everything is declared and runs until SIGINT or SIGTERM. ``python -m vap_bt.transport.serve``
+does the same without the ``vap-bt`` wrapper.
+
+``vap-bt skills`` lists the installed skill plugins: action, robot, resource, where it comes
+from; broken plugins and conflicting ones are reported too (a conflict exits with code 2).
+
+Exit codes follow :mod:`vap_bt.errors`: 2 bad input, 4 the transport could not come up.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import signal
+import sys
+import threading
+
+from vap_bt import plugins
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, InputError, VapBtError
+from vap_bt.transport.config import add_transport_arguments, open_session, settings_from_args
+from vap_bt.transport.locked_world import LockedWorld
+from vap_bt.transport.server import SkillServer
+from vap_bt.transport.world_factory import make_world, parse_world_args
+
+
+def add_serve_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--robot", action="append", default=[], metavar="ROBOT",
+                   help="robot whose skills to host (ur5e, base, ...); repeatable; "
+                        "default: every robot with a skill plugin")
+    p.add_argument("--world", default="symbolic",
+                   help="symbolic, pybullet, or package.module:factory (default symbolic)")
+    p.add_argument("--task", help="task file the symbolic/pybullet world is built from")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--world-arg", action="append", default=[], metavar="KEY=VALUE",
+                   help="keyword argument for a package.module:factory world; repeatable")
+    p.add_argument("--name", help="server name in the liveliness token (one robot only)")
+    p.add_argument("--exclude-skill", action="append", default=[], metavar="ENTRY_POINT",
+                   help="ignore this skill plugin (by entry-point name); repeatable")
+    add_transport_arguments(p, default_listen=True)
+
+
+def run_serve(args: argparse.Namespace) -> int:
+    entries = [e for e in plugins.discover_skills() if e.name not in set(args.exclude_skill)]
+    table = plugins.skill_table(entries)
+    robots = _robots(args.robot, table)
+    if args.name and len(robots) > 1:
+        raise InputError("--name", "a server name only fits one --robot")
+    world = make_world(args.world, args.task, args.seed, parse_world_args(args.world_arg))
+    shared = LockedWorld(world)
+    settings = settings_from_args(args, default_listen=True)
+    session = open_session(settings)
+    servers: list[SkillServer] = []
+    stop = threading.Event()
+    try:
+        for robot in robots:
+            skills = plugins.instantiate(shared, robot, entries)
+            servers.append(SkillServer(session, robot, skills, camera=shared, name=args.name).start())
+        _on_signals(stop)
+        where = ", ".join(settings.listen) or "(no listener)"
+        hosted = "; ".join(f"{s.robot}: {' '.join(sorted(s.skills))}" for s in servers)
+        print(f"vap-bt serve: ready on {where} — {hosted}", flush=True)
+        while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
+            pass
+    except KeyboardInterrupt:
+        pass
+    finally:
+        for server in servers:
+            server.close()
+        session.close()
+        world.close()
+    return EXIT_OK
+
+
+def add_skills_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--json", action="store_true", help="machine-readable listing")
+
+
+def run_skills(args: argparse.Namespace) -> int:
+    found = plugins.discover()
+    rows = [
+        {"action": e.action, "robot": e.robot, "resource": e.resource, "entry_point": e.name,
+         "class": e.module, "distribution": f"{e.distribution} {e.version}"}
+        for e in sorted(found.entries, key=lambda e: (e.robot, e.action, e.name))
+    ]
+    if args.json:
+        print(json.dumps({"skills": rows, "problems": [str(p) for p in found.problems]}, indent=2))
+    else:
+        _print_table(rows)
+        for problem in found.problems:
+            print(f"warning: {problem}", file=sys.stderr)
+    try:
+        plugins.skill_table(found.entries)
+    except plugins.SkillConflictError as exc:
+        print(f"vap-bt: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    return EXIT_OK
+
+
+def _robots(asked: list[str], table: dict[str, plugins.SkillEntry]) -> list[str]:
+    available = sorted({e.robot for e in table.values()})
+    for robot in asked:
+        if robot not in available:
+            raise InputError("--robot", f"no skill plugin is bound to robot {robot!r} "
+                                        f"(robots with skills: {', '.join(available) or 'none'})")
+    return sorted(set(asked)) or available
+
+
+def _on_signals(stop: threading.Event) -> None:
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, lambda *_: stop.set())
+
+
+def _print_table(rows: list[dict[str, str]]) -> None:
+    if not rows:
+        print("no skill plugins installed (entry-point group vap_bt.skills)")
+        return
+    cols = ["action", "robot", "resource", "entry_point", "class", "distribution"]
+    widths = {c: max(len(c), *(len(r[c]) for r in rows)) for c in cols}
+    print("  ".join(c.upper().ljust(widths[c]) for c in cols).rstrip())
+    for r in rows:
+        print("  ".join(r[c].ljust(widths[c]) for c in cols).rstrip())
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m vap_bt.transport.serve``: the serve command on its own."""
+    parser = argparse.ArgumentParser(prog="vap-bt serve", description=__doc__.splitlines()[0])
+    add_serve_arguments(parser)
+    args = parser.parse_args(argv)
+    try:
+        return run_serve(args)
+    except VapBtError as exc:
+        print(f"vap-bt serve: {exc}", file=sys.stderr)
+        return exc.exit_code
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,242 @@
+"""SkillServer: one robot's skills (and camera) offered over Zenoh.
+
+For every action it hosts the server declares a queryable on ``vap/<robot>/skill/<action>``.
+A goal request is decided on the spot — accepted, or rejected because the action's resource is
+busy with another goal — and answered at once; the goal itself then runs on the worker thread of
+its resource (one long-lived thread per resource, so two goals never share an arm and Zenoh's
+own threads never run a skill). While it runs, every ``ctx.feedback`` is published on
+``vap/<robot>/goal/<id>/status``; the final result follows on the same key. A message on
+``vap/<robot>/goal/<id>/cancel`` sets the goal's cancel flag, which the skill sees as
+``ctx.cancelled()``.
+
+The server's presence is a liveliness token ``vap/<robot>/alive/<name>``, declared before any
+queryable so that a client always learns of the server before its first reply; when the process
+dies or hangs, Zenoh drops the token and clients fail that server's goals at once.
+
+Given a world (or any :class:`~vap_bt.skill.Camera`), the server also answers
+``vap/<robot>/camera/{observe,survey,move}``; those run on Zenoh's Python callback thread, not
+its network threads, and a failing world becomes an error reply, never a dead server.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import queue
+import threading
+from dataclasses import dataclass
+from typing import Any, Callable
+
+import zenoh
+
+from vap_bt.skill import Feedback, GoalState, Skill
+from vap_bt.transport import keys
+from vap_bt.transport.execution import GoalRun, run_goal
+from vap_bt.transport.messages import (
+    CancelRequest,
+    ErrorReply,
+    GoalReply,
+    GoalRequest,
+    GoalStatus,
+    MessageError,
+    MoveViewReply,
+    MoveViewRequest,
+    ObserveRequest,
+    SurveyRequest,
+    decode,
+    encode,
+)
+
+log = logging.getLogger(__name__)
+
+
+@dataclass
+class _Goal:
+    goal_id: str
+    skill: Skill
+    args: tuple[str, ...]
+    run: GoalRun
+
+
+class SkillServer:
+    """Hosts ``skills`` (action -> Skill) for ``robot`` on an open Zenoh ``session``.
+
+    The session stays the caller's; :meth:`close` withdraws what the server declared.
+    """
+
+    def __init__(
+        self,
+        session: zenoh.Session,
+        robot: str,
+        skills: dict[str, Skill],
+        camera: Any | None = None,
+        name: str | None = None,
+    ) -> None:
+        self.session = session
+        self.robot = keys.chunk("robot", robot)
+        self.skills = dict(skills)
+        self.camera = camera
+        self.name = keys.chunk("server", name or f"{robot}-{os.getpid()}-{str(session.zid())[:8]}")
+        self._lock = threading.Lock()
+        self._goals: dict[str, _Goal] = {}
+        self._busy: dict[str, str] = {}  # resource -> goal id
+        self._queues: dict[str, queue.SimpleQueue[_Goal | None]] = {}
+        self._threads: list[threading.Thread] = []
+        self._declared: list[Any] = []
+        self._token: Any = None
+
+    # -- lifecycle -------------------------------------------------------------------------------
+
+    def start(self) -> "SkillServer":
+        for resource in sorted({s.resource for s in self.skills.values()}):
+            self._queues[resource] = q = queue.SimpleQueue()
+            t = threading.Thread(target=self._work, args=(q,), name=f"skill-{resource}", daemon=True)
+            t.start()
+            self._threads.append(t)
+        self._token = self.session.liveliness().declare_token(keys.alive(self.robot, self.name))
+        declare = self.session.declare_queryable
+        fast = _network_callback  # replies are decided without blocking: no thread hop
+        self._declared.append(
+            self.session.declare_subscriber(keys.all_goal_cancel(self.robot), fast(self._on_cancel))
+        )
+        for action in self.skills:
+            on_query = fast(lambda q, a=action: self._on_goal(q, a))
+            self._declared.append(declare(keys.skill(self.robot, action), on_query))
+        if self.camera is not None:
+            for verb, handler in (("observe", self._observe), ("survey", self._survey),
+                                  ("move", self._move_view)):
+                self._declared.append(declare(keys.camera(self.robot, verb), _camera_reply(handler)))
+        log.info("skill server %s hosts %s on robot %s", self.name, sorted(self.skills), self.robot)
+        return self
+
+    def close(self) -> None:
+        """Withdraw the token and queryables, cancel running goals, stop the workers."""
+        if self._token is not None:
+            self._token.undeclare()
+            self._token = None
+        for entity in self._declared:
+            entity.undeclare()
+        self._declared.clear()
+        with self._lock:
+            for goal in self._goals.values():
+                goal.run.request_cancel()
+        for q in self._queues.values():
+            q.put(None)
+        for t in self._threads:
+            t.join(timeout=5.0)
+        self._threads.clear()
+
+    def __enter__(self) -> "SkillServer":
+        return self.start()
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # -- goals -----------------------------------------------------------------------------------
+
+    def _on_goal(self, query: zenoh.Query, action: str) -> None:
+        try:
+            req = decode(query.payload.to_bytes() if query.payload else b"", GoalRequest)
+        except MessageError as exc:
+            query.reply_err(f"bad goal request for {action}: {exc}")
+            return
+        goal = self._admit(req, action)
+        accepted = isinstance(goal, _Goal)
+        reason = "" if accepted else goal
+        reply = GoalReply(req.goal_id, accepted, reason, self.name)
+        query.reply(query.key_expr, encode(reply), express=True)  # no batching delay
+        if accepted:  # queued only after the reply, so the client hears "accepted" first
+            self._queues[goal.skill.resource].put(goal)
+
+    def _admit(self, req: GoalRequest, action: str) -> "_Goal | str":
+        """Register the goal and claim its resource; the rejection reason otherwise."""
+        if req.action != action:
+            return f"request for {req.action!r} sent to the {action!r} queryable"
+        try:
+            keys.chunk("goal", req.goal_id)
+        except ValueError as exc:
+            return str(exc)
+        if not all(isinstance(a, str) for a in req.args):
+            return f"arguments of {action} must be strings, got {req.args!r}"
+        skill = self.skills[action]
+        with self._lock:
+            if req.goal_id in self._goals:
+                return f"goal id {req.goal_id} is already in use"
+            holder = self._busy.get(skill.resource)
+            if holder is not None:
+                return (
+                    f"resource {skill.resource!r} of robot {self.robot} is busy with goal "
+                    f"{holder}; send {action} again when it has ended"
+                )
+            run = GoalRun(on_feedback=self._feedback_publisher(req.goal_id))
+            goal = self._goals[req.goal_id] = _Goal(req.goal_id, skill, tuple(req.args), run)
+            self._busy[skill.resource] = req.goal_id
+        return goal
+
+    def _work(self, q: "queue.SimpleQueue[_Goal | None]") -> None:
+        while (goal := q.get()) is not None:
+            state, result = run_goal(goal.skill, goal.args, goal.run)
+            with self._lock:  # free the resource before telling the client, so it can resend
+                self._goals.pop(goal.goal_id, None)
+                self._busy.pop(goal.skill.resource, None)
+            self._publish(GoalStatus(goal.goal_id, state, goal.run.last_feedback, result, self.name))
+
+    def _feedback_publisher(self, goal_id: str) -> Callable[[Feedback], None]:
+        def publish(fb: Feedback) -> None:
+            self._publish(GoalStatus(goal_id, GoalState.ACTIVE, fb, None, self.name))
+
+        return publish
+
+    def _publish(self, status: GoalStatus) -> None:
+        final = status.state.terminal  # a result must not be dropped under congestion
+        self.session.put(
+            keys.goal_status(self.robot, status.goal_id),
+            encode(status),
+            congestion_control=zenoh.CongestionControl.BLOCK if final else zenoh.CongestionControl.DROP,
+            express=True,
+        )
+
+    def _on_cancel(self, sample: zenoh.Sample) -> None:
+        try:
+            goal_id = decode(sample.payload.to_bytes(), CancelRequest).goal_id
+        except MessageError as exc:
+            log.warning("ignored a bad cancel on %s: %s", sample.key_expr, exc)
+            return
+        with self._lock:
+            goal = self._goals.get(goal_id)
+        if goal is not None:
+            goal.run.request_cancel()
+
+    # -- camera ----------------------------------------------------------------------------------
+
+    def _observe(self, payload: bytes) -> Any:
+        return self.camera.observe(decode(payload, ObserveRequest).targets)
+
+    def _survey(self, payload: bytes) -> Any:
+        decode(payload, SurveyRequest)
+        return self.camera.survey()
+
+    def _move_view(self, payload: bytes) -> Any:
+        req = decode(payload, MoveViewRequest)
+        return MoveViewReply(bool(self.camera.move_view(req.target, req.direction)))
+
+
+def _network_callback(fn: Callable[[Any], None]) -> zenoh.handlers.Callback:
+    """Run ``fn`` directly on Zenoh's receiving thread; ``fn`` must never block."""
+    return zenoh.handlers.Callback(fn, indirect=False)
+
+
+def _camera_reply(handler: Callable[[bytes], Any]) -> Callable[[zenoh.Query], None]:
+    """A queryable callback that answers with ``handler``'s message, or an ErrorReply."""
+
+    def on_query(query: zenoh.Query) -> None:
+        payload = query.payload.to_bytes() if query.payload else b""
+        try:
+            answer = handler(payload)
+        except MessageError as exc:
+            answer = ErrorReply(f"bad camera request: {exc}")
+        except Exception as exc:  # the world's failure is the caller's answer, not our crash
+            answer = ErrorReply(f"camera failed: {type(exc).__name__}: {exc}")
+        query.reply(query.key_expr, encode(answer))
+
+    return on_query
