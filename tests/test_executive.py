@@ -34,6 +34,7 @@ def test_household_task_succeeds_without_situations(name):
     assert r["situations"] == [] and r["replans"] == 0
 
 
+@pytest.mark.slow
 def test_every_injected_situation_is_detected_and_recovered():
     """Noise off: each situation the world injects is detected once, at its action or later."""
     episodes = 0
@@ -68,6 +69,7 @@ def rate(name: str, verify: str, seeds=range(25)) -> float:
     return sum(r["success"] and r["goal_satisfied"] for r in map(s.episode, seeds)) / len(seeds)
 
 
+@pytest.mark.slow
 def test_verifying_both_recovers_far_more_often_than_none():
     both = [rate(n, "both") for n in HOUSEHOLD_TASKS]
     none = [rate(n, "none") for n in HOUSEHOLD_TASKS]
@@ -95,3 +97,20 @@ def test_report_has_everything_to_rerun(tmp_path, cli):
     r2 = load_json((tmp_path / "r2.json").read_text())
     assert [p["actions"] for p in r2["plans"]] == [p["actions"] for p in r["plans"]]
     assert r2["situations"] == r["situations"] and r2["vlm_queries"] == r["vlm_queries"]
+
+
+@pytest.mark.slow
+def test_zenoh_embedded_run_matches_the_in_process_run():
+    """Same task, same seed: the loop over real Zenoh sessions makes the same episode."""
+    runs = {}
+    for transport in ("inproc", "zenoh"):
+        s = session("boil_water.yaml", transport=transport)
+        try:
+            runs[transport] = s.episode(1)
+        finally:
+            s.close()
+    a, b = runs["inproc"], runs["zenoh"]
+    assert a["success"] and b["success"] and b["goal_satisfied"]
+    assert [p["actions"] for p in a["plans"]] == [p["actions"] for p in b["plans"]]
+    assert a["situations"] == b["situations"] and a["injected"] == b["injected"]
+    assert [x["state"] for x in a["actions_executed"]] == [x["state"] for x in b["actions_executed"]]

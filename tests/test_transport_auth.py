@@ -39,6 +39,7 @@ def _config(path, mode: str, router: str, user: dict | None, listen: bool = Fals
     return str(path)
 
 
+@pytest.mark.slow
 def test_session_without_credentials_cannot_start_a_goal(tmp_path):
     router_ep = endpoint(free_port())
     (tmp_path / "users.txt").write_text("executive:s3cret\nskills:t0ken\n")

@@ -105,7 +105,9 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--early-stop", action="store_true", help="stop a vote once it is decided")
     sr.add_argument("--max-replans", type=int)
     sr.add_argument("--planner", choices=["fast-downward", "search"], help="engine of the first plan")
-    sr.add_argument("--transport", choices=["inproc", "zenoh"])
+    sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",
+                    help="zenoh (default): skill servers in this command, reached over a loopback Zenoh link; "
+                         "inproc: skills called directly (fast campaigns)")
     sr.add_argument("--report", help="write the full JSON report here")
     sr.add_argument("--full", action="store_true", help="print the full report, not the summary")
     sr.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")

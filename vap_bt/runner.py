@@ -26,6 +26,10 @@ from vap_bt.taskfile import Task
 from vap_bt.world import World
 
 
+#: how often the tree is ticked while a goal is in flight on a skill server
+TICK_PERIOD_S = 0.002
+
+
 @dataclass
 class RunConfig:
     world: str = "symbolic"
@@ -100,7 +104,13 @@ class Session:
         self.planner = Planner(self.task.planning, first_engine=self.cfg.planner)
         self.world = make_world(self.task, self.cfg)
         self.skills = make_skills(self.task, self.world)
-        self.vlm = make_vlm(self.task, self.world, self.cfg)
+        self._embedded = None
+        if self.cfg.transport == "zenoh":
+            from vap_bt.transport.embedded import EmbeddedTransport
+
+            self._embedded = EmbeddedTransport(self.world, self.skills)
+        # the simulated VLM reads the truth through the same lock the skill servers hold
+        self.vlm = make_vlm(self.task, self._embedded.locked if self._embedded else self.world, self.cfg)
 
     def episode(self, seed: int | None = None) -> dict:
         cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
@@ -110,7 +120,8 @@ class Session:
         skills, camera = self._transport()
         settings = ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
                                      vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=cfg.early_stop),
-                                     max_replans=cfg.max_replans, max_ticks=cfg.max_ticks)
+                                     max_replans=cfg.max_replans, max_ticks=cfg.max_ticks,
+                                     tick_period_s=0.0 if cfg.transport == "inproc" else TICK_PERIOD_S)
         t0 = time.perf_counter()
         vlm = metered if settings.mode.pre or settings.mode.eff else None
         outcome = Executive(self.task.planning, self.planner, skills, camera, vlm, settings, self.progress).run()
@@ -118,9 +129,13 @@ class Session:
         return self._report(cfg, outcome, metered, wall)
 
     def close(self) -> None:
+        if self._embedded is not None:
+            self._embedded.close()
         self.world.close()
 
     def _transport(self):
+        if self._embedded is not None:
+            return self._embedded.client, self._embedded.camera
         if self.cfg.transport == "inproc":
             from vap_bt.transport.inprocess import InProcessCamera, InProcessSkillClient
 

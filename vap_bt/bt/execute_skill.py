@@ -26,6 +26,7 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
 
     def initialise(self) -> None:
         self._sent_at = self.ctx.now()
+        self.ctx.progress(f"  a{self.step}: {self.action}")
         self.handle = self.ctx.skills.send_goal(self.action.name, self.action.args)
 
     def update(self) -> Status:
@@ -40,6 +41,8 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         self.ctx.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
                                  "message": result.message if result else "", "sent_s": self._sent_at,
                                  "done_s": self.ctx.now()})
+        self.ctx.progress(f"  a{self.step}: {state.value} in {(self.ctx.now() - self._sent_at) * 1000:.0f} ms"
+                          + (f" ({result.message})" if result and result.message and not ok else ""))
         if ok:
             return Status.SUCCESS
         detail = result.message if result else state.value

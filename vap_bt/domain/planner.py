@@ -68,8 +68,8 @@ class Planner:
         key = (task.init, task.goal)
         if key in self._cache:
             return Plan(list(self._cache[key]), "cache", time.perf_counter() - t0)
-        actions = self._fast_downward(task) if self.first_engine == "fast-downward" else self._search_or_fd(task)
-        return self._accept(task, actions, self.first_engine, t0)
+        found = self._fast_downward(task) if self.first_engine == "fast-downward" else self._search_or_fd(task)
+        return self._accept(task, *found, t0)
 
     def replan(self, state: frozenset[Atom], previous: list[GroundAction] | None = None,
                goal: tuple[Literal, ...] | None = None) -> Plan:
@@ -83,8 +83,7 @@ class Planner:
         key = (task.init, task.goal)
         if key in self._cache:
             return Plan(list(self._cache[key]), "cache", time.perf_counter() - t0)
-        actions, engine = self._search_or_fd(task)
-        return self._accept(task, actions, engine, t0)
+        return self._accept(task, *self._search_or_fd(task), t0)
 
     # -- engines -------------------------------------------------------------------------------
 
@@ -110,9 +109,9 @@ class Planner:
                     raise UnsolvableError(f"no plan reaches the goal from this state ({task.name})")
             else:
                 raise UnsolvableError(f"no action can make {[str(a) for a in pos if a not in g.index]} true")
-        return self._fast_downward(task), "fast-downward"
+        return self._fast_downward(task)
 
-    def _fast_downward(self, task: PlanningTask) -> list[GroundAction]:
+    def _fast_downward(self, task: PlanningTask) -> tuple[list[GroundAction], str]:
         from unified_planning.engines import PlanGenerationResultStatus as S
         from unified_planning.shortcuts import OneshotPlanner
 
@@ -121,13 +120,12 @@ class Planner:
         if result.status in (S.SOLVED_SATISFICING, S.SOLVED_OPTIMALLY):
             k = task.knowledge
             return [k.ground(ai.action.name, tuple(p.object().name for p in ai.actual_parameters))
-                    for ai in result.plan.actions]
+                    for ai in result.plan.actions], "fast-downward"
         if result.status in (S.UNSOLVABLE_PROVEN, S.UNSOLVABLE_INCOMPLETELY):
             raise UnsolvableError(f"Fast Downward: no plan reaches the goal of {task.name}")
         raise UnsolvableError(f"Fast Downward found no plan for {task.name}: {result.status.name}")
 
-    def _accept(self, task: PlanningTask, result, engine: str, t0: float) -> Plan:
-        actions, engine = result if isinstance(result, tuple) else (result, engine)
+    def _accept(self, task: PlanningTask, actions: list[GroundAction], engine: str, t0: float) -> Plan:
         if not task.validate(actions):
             raise RuntimeError(f"{engine} returned a plan that does not reach the goal: {[str(a) for a in actions]}")
         self._cache[(task.init, task.goal)] = tuple(actions)

@@ -169,14 +169,13 @@ class Primitives:
 
     # ================================================================ navigation
 
-    def drive_to(self, pose, name: str) -> ActionOutcome:
+    def drive_to(self, pose) -> ActionOutcome:
         """Base along the corridor to ``pose``; stops at a closed door on the way."""
         plan = self.scene.plan
         self.carry()
         x, y, yaw = self.robot.base_pose
         legs = [(x, plan.corridor_y, yaw)]
         here = plan.rooms[self.truth.room_of_point((x, y))] if self.truth.room_of_point((x, y)) else None
-        there = self.truth.room_of_point(pose[:2])
         for d in sorted(plan.doors.values(), key=lambda d: abs(d.x - x)):
             crosses = (min(x, pose[0]) < d.x < max(x, pose[0])) and here is not None
             if crosses:
@@ -196,7 +195,6 @@ class Primitives:
                 continue
             self._drive_leg(leg, done / total, 1 / total)
             done += 1
-        del there
         return ActionOutcome(True)
 
     def _drive_leg(self, pose, p0: float, span: float) -> None:
@@ -236,7 +234,7 @@ class Primitives:
         if sit is not None and sit.drops == "held":
             self.release_at = 0.5
         try:
-            out = self.drive_to(self.standoff(target), target)
+            out = self.drive_to(self.standoff(target))
         finally:
             self.release_at = None
         self.look_at(self.target_point(target))
@@ -247,7 +245,7 @@ class Primitives:
             self.release_at = 0.5
         t = self.scene.things[door]
         try:
-            out = self.drive_to(self._door_pose(t, to_room, 1.0), door)
+            out = self.drive_to(self._door_pose(t, to_room, 1.0))
         finally:
             self.release_at = None
         self.look_at(self._door_look(door))
@@ -276,7 +274,8 @@ class Primitives:
         x = np.cross(across, z)
         top = self.truth.aabb(name)[5]
         p = c.copy()
-        p[2] = max(top - 0.03, c[2])  # fingertips reach below the top; flat things from above
+        # fingertips (0.018 m beyond the tcp) reach below the top, but stay off the support
+        p[2] = max(top - 0.03, c[2], self.truth.aabb(name)[2] + 0.022)
         return _frame(z, x, p), z
 
     def toward_robot(self, point, support: str | None) -> np.ndarray:

@@ -142,7 +142,8 @@ def _build_rooms(cid: int, plan: ScenePlan, catalog: Catalog, things: dict[str, 
     walls: list[int] = []
     for room in plan.rooms.values():
         color = style.floor_colors[room.index % len(style.floor_colors)]
-        col, vis = _shapes(cid, [_slab(room.x0, room.x1, room.y0, room.y1, -0.02, 0.0, color)])
+        # a thick slab: a falling object cannot pass through it within one time step
+        col, vis = _shapes(cid, [_slab(room.x0, room.x1, room.y0, room.y1, -0.2, 0.0, color)])
         body = pb.createMultiBody(0, col, vis, physicsClientId=cid)
         name = f"floor_{room.name}"
         things[name] = Thing(name, "surface", [body], room=room.name)
@@ -168,9 +169,10 @@ def _build_rooms(cid: int, plan: ScenePlan, catalog: Catalog, things: dict[str, 
 def _build_door(cid: int, d: DoorPlan, catalog: Catalog) -> Thing:
     style = catalog.room
     h = style.wall_height - 0.04
-    leaf_w = d.width - 0.03
+    gap = style.wall_thickness / 2 + 0.012  # the leaf starts clear of the wall it hangs on
+    leaf_w = d.width - gap - 0.02
     th = 0.035
-    leaf = _slab(-th / 2, th / 2, 0.015, 0.015 + leaf_w, 0.02, h, style.door_color)
+    leaf = _slab(-th / 2, th / 2, gap, gap + leaf_w, 0.02, h, style.door_color)
     handles = [_slab(s * (th / 2 + HANDLE_STANDOUT) - 0.012, s * (th / 2 + HANDLE_STANDOUT) + 0.012,
                      ROOM_HANDLE_RADIUS - 0.012, ROOM_HANDLE_RADIUS + 0.012, HANDLE_HEIGHT - 0.09,
                      HANDLE_HEIGHT + 0.09, (0.75, 0.75, 0.7, 1)) for s in (1, -1)]

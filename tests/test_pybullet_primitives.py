@@ -1,0 +1,191 @@
+"""Each primitive achieves its domain effect in the physics, and each injected Table II situation
+leaves the ground truth Table I describes. Real physics, no mocks: situations are forced by a
+SituationModel whose table holds one row with probability 1."""
+
+from pathlib import Path
+
+import pytest
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.sim.pybullet_world import PybulletWorld
+from vap_bt.sim.situations import SituationModel, SituationSpec
+from vap_bt.taskfile import load
+
+TREES = Path(__file__).resolve().parents[1] / "trees"
+pytestmark = pytest.mark.slow
+
+CUT_SCENE = """
+name: cut_test
+domain: {domain}
+goal: ["sliced(lemon)"]
+scene:
+  rooms: [kitchen]
+  robot: {{room: kitchen}}
+  furniture:
+    cutting_board: {{type: surface, room: kitchen}}
+  items:
+    lemon: {{place: on cutting_board}}
+    knife: {{type: knife, place: held}}
+"""
+
+
+class Ctx:
+    def feedback(self, progress, text=""): ...
+
+    def cancelled(self):
+        return False
+
+
+def A(text):
+    return Atom.parse(text)
+
+
+def forced(action, kind):
+    from vap_bt.sim.situations import TABLE_II
+
+    spec = next(s for s in TABLE_II if s.action == action and s.kind == kind)
+    return SituationModel(table=(SituationSpec(spec.action, spec.kind, 1.0, spec.effect, spec.drops),))
+
+
+def world(name, situations=None, **kw):
+    task = load(TREES / f"{name}.yaml") if not isinstance(name, Path) else load(name)
+    return PybulletWorld(task, seed=0, injection=situations is not None, situations=situations,
+                         image_size=(160, 120), **kw)
+
+
+def run(w, *actions):
+    for a in actions:
+        name, args = a.split("(")
+        w.perform(name, tuple(x.strip() for x in args.rstrip(")").split(",")), Ctx())
+
+
+@pytest.fixture
+def cut_task(tmp_path):
+    p = tmp_path / "cut.yaml"
+    p.write_text(CUT_SCENE.format(domain=(TREES.parent / "domains" / "household.pddl").as_posix()))
+    return p
+
+
+# ------------------------------------------------------------ effects without situations
+
+
+def test_grasp_navigate_place():
+    w = world("collect_cup")
+    run(w, "find(floor_living_room, cup, living_room)", "grasp(cup, coffee_table, living_room)")
+    assert w.holds(A("holding(cup)")) and not w.holds(A("hand_empty")) and not w.holds(A("on(cup, coffee_table)"))
+    run(w, "navigate(living_room, kitchen, door_lk, cup)")
+    assert w.holds(A("robot_in(kitchen)")) and w.holds(A("holding(cup)"))
+    run(w, "find(door_lk, counter, kitchen)")
+    assert w.holds(A("robot_at(counter)")) and w.holds(A("inview(counter)"))
+    run(w, "placeon(cup, counter, kitchen)")
+    assert w.holds(A("on(cup, counter)")) and w.holds(A("hand_empty")) and w.holds(A("in_room(cup, kitchen)"))
+    w.close()
+
+
+def test_open_takeout_fill_turnon():
+    w = world("boil_water")
+    run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)")
+    assert w.holds(A("open(cabinet)")) and not w.holds(A("closed(cabinet)"))
+    run(w, "takeout(cup, cabinet, kitchen)")
+    assert w.holds(A("holding(cup)")) and not w.holds(A("inside(cup, cabinet)"))
+    run(w, "find(cabinet, kitchen_sink, kitchen)", "fill(cup, kitchen_sink)")
+    assert w.holds(A("filled(cup)"))
+    run(w, "find(kitchen_sink, microwave, kitchen)", "turnon(microwave, cup)")
+    assert w.holds(A("turned_on(microwave)")) and not w.holds(A("heated(cup)"))  # the cup is not inside
+    w.close()
+
+
+def test_push_clears_the_blocker():
+    w = world("pick_plate")
+    assert w.holds(A("blocking(bowl, plate)")) and not w.holds(A("reachable(plate)"))
+    run(w, "find(floor_kitchen, plate, kitchen)", "push(bowl, plate)")
+    assert not w.holds(A("blocking(bowl, plate)")) and w.holds(A("reachable(plate)"))
+    assert w.holds(A("on(bowl, dining_table)"))
+    w.close()
+
+
+def test_cut_splits_the_object(cut_task):
+    w = world(cut_task)
+    run(w, "find(floor_kitchen, lemon, kitchen)", "cut(lemon, knife)")
+    assert w.holds(A("sliced(lemon)")) and len(w.scene.things["lemon"].bodies) == 2
+    assert w.holds(A("holding(knife)"))
+    w.close()
+
+
+def test_scripted_disturbance_moves_an_object():
+    w = world("pick_plate", disturbances=[{"at": 0, "move": "mug", "to": "shelf"}])
+    run(w, "find(floor_kitchen, shelf, kitchen)")
+    assert w.holds(A("on(mug, shelf)")) and not w.holds(A("on(mug, dining_table)"))
+    assert [s.kind for s in w.injected()] == ["object_moved_by_person"]
+    w.close()
+
+
+# ------------------------------------------------------------ Table II situations
+
+
+@pytest.mark.parametrize("kind, expect", [
+    ("grasp_fails_object_unchanged", ["hand_empty", "on(cup, coffee_table)"]),
+    ("grasp_fails_object_drops_nearby", ["hand_empty", "on(cup, floor_living_room)"]),
+])
+def test_grasp_situations(kind, expect):
+    w = world("collect_cup", forced("grasp", kind))
+    run(w, "grasp(cup, coffee_table, living_room)")
+    assert all(w.holds(A(e)) for e in expect) and not w.holds(A("holding(cup)"))
+    assert [s.kind for s in w.injected()] == [kind]
+    w.close()
+
+
+@pytest.mark.parametrize("kind, expect, absent", [
+    ("place_fails_object_in_hand", ["holding(cup)"], ["on(cup, coffee_table)"]),
+    ("place_fails_object_drops_nearby", ["hand_empty", "on(cup, floor_living_room)"], ["on(cup, coffee_table)"]),
+])
+def test_place_situations(kind, expect, absent):
+    w = world("collect_cup", forced("placeon", kind))
+    run(w, "grasp(cup, coffee_table, living_room)", "placeon(cup, coffee_table, living_room)")
+    assert all(w.holds(A(e)) for e in expect) and not any(w.holds(A(a)) for a in absent)
+    w.close()
+
+
+def test_held_object_drops_during_navigation():
+    w = world("collect_cup", forced("navigate", "held_object_drops_during_navigation"))
+    run(w, "grasp(cup, coffee_table, living_room)", "navigate(living_room, kitchen, door_lk, cup)")
+    assert w.holds(A("robot_in(kitchen)")) and w.holds(A("hand_empty"))
+    assert w.holds(A("on(cup, floor_living_room)")) or w.holds(A("on(cup, floor_kitchen)"))
+    w.close()
+
+
+def test_open_fails_object_closed():
+    w = world("boil_water", forced("open", "open_fails_object_closed"))
+    run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)")
+    assert w.holds(A("closed(cabinet)")) and not w.holds(A("open(cabinet)"))
+    w.close()
+
+
+def test_turnon_fails_object_off():
+    w = world("boil_water", forced("turnon", "turnon_fails_object_off"))
+    run(w, "find(floor_kitchen, microwave, kitchen)", "turnon(microwave, cup)")
+    assert not w.holds(A("turned_on(microwave)"))
+    w.close()
+
+
+@pytest.mark.parametrize("kind, expect", [
+    ("container_not_fully_filled", ["holding(cup)"]),
+    ("container_drops_nearby", ["hand_empty", "on(cup, floor_kitchen)"]),
+])
+def test_fill_situations(kind, expect):
+    w = world("boil_water", forced("fill", kind))
+    run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)", "takeout(cup, cabinet, kitchen)",
+        "find(cabinet, kitchen_sink, kitchen)", "fill(cup, kitchen_sink)")
+    assert all(w.holds(A(e)) for e in expect) and not w.holds(A("filled(cup)"))
+    w.close()
+
+
+@pytest.mark.parametrize("kind, expect", [
+    ("cut_fails_knife_in_hand", ["holding(knife)"]),
+    ("cut_fails_knife_drops_nearby", ["hand_empty", "on(knife, floor_kitchen)"]),
+])
+def test_cut_situations(cut_task, kind, expect):
+    w = world(cut_task, forced("cut", kind))
+    run(w, "cut(lemon, knife)")
+    assert all(w.holds(A(e)) for e in expect) and not w.holds(A("sliced(lemon)"))
+    w.close()
