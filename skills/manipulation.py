@@ -69,6 +69,6 @@ class Fill(ArmSkill):
 
 
 class Push(ArmSkill):
-    """push: push an object, e.g. a door or a button."""
+    """push: push a blocking object aside so that another becomes reachable."""
 
     action = "push"

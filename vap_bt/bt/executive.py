@@ -7,9 +7,11 @@ context; the executive handles it and swaps in a new tree:
 1. an effect that did not happen first undoes the action-driven update, so belief returns to
    what held before the action;
 2. the contradicted atom is set to its observed value (observation-driven update);
-3. the objects the action touched are re-located from what the camera sees now; an object that
+3. a skill that failed to act makes the robot's placement for it (``inview``) stale, so that the
+   new plan approaches the target again rather than retrying from the same spot;
+4. the objects the action touched are re-located from what the camera sees now; an object that
    belief no longer places anywhere triggers a fresh survey (the paper's UpdateFromObservation);
-4. the planner replans from the corrected graph — reusing the old plan's tail when it still
+5. the planner replans from the corrected graph — reusing the old plan's tail when it still
    works — within the replanning budget.
 
 The executive talks only to protocols (SkillClient, Camera, VLM): it never sees a world.
@@ -36,6 +38,9 @@ from vap_bt.skill import Camera, SkillClient
 
 #: PDDL types whose objects are placed somewhere (and so can be lost track of)
 PORTABLE_TYPES = ("item",)
+#: the perception predicate that says the robot is placed to act on a thing; a skill that failed
+#: to act from where the robot stands makes these beliefs stale, so the new plan re-approaches
+VIEW_PREDICATE = "inview"
 
 
 @dataclass
@@ -135,6 +140,10 @@ class Executive:
             graph.undo(s.action)
         if s.atom is not None and s.observed is not None:
             graph.correct(s.atom, s.observed, self.task.knowledge.complements.get(s.atom.predicate))
+        if s.kind == "execution" and s.action is not None:
+            for lit in s.action.preconditions:
+                if lit.positive and lit.atom.predicate == VIEW_PREDICATE:
+                    graph.correct(lit.atom, False)
         involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()))))
         portable = [o for o in involved if self._portable(o)]
         if not portable:

@@ -407,6 +407,23 @@ class Primitives:
     # ================================================================ doors and lids
 
     def open_close(self, name: str, opening: bool, sit: SituationSpec | None) -> ActionOutcome:
+        """Open or close with a free hand: something held is set down on the nearest surface of
+        the room first and picked up again afterwards (the domain lets a full hand open doors)."""
+        held = self.truth.held()
+        if held is None:
+            return self._open_close(name, opening, sit)
+        room = self.truth.room_of_point(self.robot.base_pose[:2])
+        x, y, _ = self.robot.base_pose
+        shelves = sorted((t for t in self.scene.things.values() if t.furniture is not None and
+                          t.pddl_type == "surface" and t.furniture.room == room),
+                         key=lambda t: math.hypot(t.furniture.x - x, t.furniture.y - y))
+        if not shelves or not self.place(held, shelves[0].name, False, None).completed:
+            return ActionOutcome(False, f"{name}: the hand is full")
+        out = self._open_close(name, opening, sit)
+        self.grasp(held, None)
+        return out
+
+    def _open_close(self, name: str, opening: bool, sit: SituationSpec | None) -> ActionOutcome:
         t = self.scene.things[name]
         h = t.hinge
         if h is None:
