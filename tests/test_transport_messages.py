@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import struct
 
 import numpy as np
 import pytest
@@ -51,8 +52,14 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
     obs = encode(Observation(0, (), {}, rgb=np.zeros((2, 2, 3), np.uint8)))
     with pytest.raises(MessageError, match="array 'rgb' is truncated"):
         decode(obs[:-1], Observation)
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 1"):
-        decode(encode(GoalReply("g", True)).replace(b'"schema":1', b'"schema":2'), GoalReply)
+    frame = encode(GoalReply("g", True))
+    foreign = frame[:4] + struct.pack("<I", 3) + frame[8:]  # the schema field
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 3, this side speaks 2"):
+        decode(foreign, GoalReply)
+    # a schema-1 peer (JSON header for every kind) is recognised as such
+    head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 2"):
+        decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
 
 
 def test_default_configuration_is_loopback_only():

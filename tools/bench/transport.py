@@ -28,6 +28,7 @@ from vap_bt.skill import Skill, SkillResult  # noqa: E402
 from vap_bt.transport.config import TransportSettings, open_session  # noqa: E402
 
 ROBOT = "bench"
+BASELINE_KEY = "vapbench/echo"
 
 
 class Noop(Skill):
@@ -52,17 +53,23 @@ def idle_skill(i: int) -> type[Skill]:
 
 
 def serve(endpoint: str, nodes: int, ready) -> None:
+    import zenoh
+
     from vap_bt.transport.server import SkillServer
 
     session = open_session(TransportSettings(listen=(endpoint,)))
     skills = {"noop": Noop(None)}
     skills.update({f"idle{i}": idle_skill(i)(None) for i in range(nodes)})
     server = SkillServer(session, ROBOT, skills, name="bench").start()
+    # the baseline: answer at once, on Zenoh's receiving thread, as the skill server does
+    echo = session.declare_queryable(BASELINE_KEY, zenoh.handlers.Callback(
+        lambda q: q.reply(q.key_expr, b"accepted", express=True), indirect=False))
     ready.set()
     try:
         while True:
             time.sleep(1)
     finally:
+        echo.undeclare()
         server.close()
         session.close()
 
@@ -85,6 +92,17 @@ def bench_goals(client, n: int) -> tuple[list[float], list[float]]:
         accept.append(t1 - t0)
         full.append(t2 - t0)
     return accept, full
+
+
+def bench_bare(querier, n: int) -> list[float]:
+    """Bare Zenoh query round trips: ``get`` until the first reply is received."""
+    samples = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        reply = querier.get(payload=b"0123456789abcdef").recv()
+        samples.append(time.perf_counter() - t0)
+        assert reply.ok is not None
+    return samples
 
 
 def bench_ticks(client, nodes: int, ticks: int) -> list[float] | str:
@@ -121,6 +139,8 @@ def main() -> int:
     parser.add_argument("--goals", type=int, default=1000)
     parser.add_argument("--nodes", type=int, default=100)
     parser.add_argument("--ticks", type=int, default=1000)
+    parser.add_argument("--rounds", type=int, default=10,
+                        help="blocks in which goals and bare queries alternate (default 10)")
     args = parser.parse_args()
 
     endpoint = f"tcp/127.0.0.1:{free_port()}"
@@ -139,11 +159,29 @@ def main() -> int:
         client = ZenohSkillClient(session, routes, owns_session=True)
         while not client._alive[ROBOT]:
             time.sleep(0.01)
+        import zenoh
+
+        bare_querier = session.declare_querier(
+            BASELINE_KEY, consolidation=zenoh.ConsolidationMode.NONE, timeout=5,
+            congestion_control=zenoh.CongestionControl.BLOCK, express=True)
         bench_goals(client, 50)  # warm-up: queriers declared, caches hot
-        accept, full = bench_goals(client, args.goals)
+        bench_bare(bare_querier, 50)
+        accept, full, bare = [], [], []
+        rounds = max(1, min(args.rounds, args.goals))
+        for r in range(rounds):  # interleaved, so both see the same load
+            k = args.goals // rounds + (r < args.goals % rounds)
+            a, f = bench_goals(client, k)
+            accept += a
+            full += f
+            bare += bench_bare(bare_querier, k)
+        bare_querier.undeclare()
         ms = lambda x: f"{x * 1e3:.3f} ms"  # noqa: E731
         print(f"goal accept round trip ({args.goals} goals, tcp loopback, server in its own process): "
               f"p50 {ms(statistics.median(accept))}  p99 {ms(percentile(accept, 0.99))}")
+        print(f"bare zenoh query round trip ({len(bare)} queries, same link and config): "
+              f"p50 {ms(statistics.median(bare))}  p99 {ms(percentile(bare, 0.99))}")
+        print(f"goal accept / bare query: p50 x{statistics.median(accept) / statistics.median(bare):.2f}  "
+              f"p99 x{percentile(accept, 0.99) / percentile(bare, 0.99):.2f}")
         print(f"goal send -> result ({args.goals} goals, no-op skill): "
               f"p50 {ms(statistics.median(full))}  p99 {ms(percentile(full, 0.99))}")
         ticks = bench_ticks(client, args.nodes, args.ticks)

@@ -185,6 +185,8 @@ class ZenohSkillClient:
                 target=zenoh.QueryTarget.BEST_MATCHING,
                 consolidation=zenoh.ConsolidationMode.NONE,
                 timeout=self.accept_timeout,
+                congestion_control=zenoh.CongestionControl.BLOCK,  # a goal is never dropped
+                express=True,  # no batching delay on the way out
             )
             self._queriers[key] = querier
         return querier

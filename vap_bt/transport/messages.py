@@ -2,14 +2,37 @@
 
 Each message is one *frame*::
 
-    b"VAPB" | u32 little-endian header length | header (UTF-8 JSON) | array bytes ...
+    b"VAPB" | u32 schema | u8 kind | header | array bytes ...
 
-The header always carries ``schema`` (:data:`SCHEMA`, bumped on any incompatible change) and
-``kind`` (which message it is), then the message's own fields. Numeric arrays never go through
-JSON: the header lists them as ``[name, dtype, shape]`` and their raw little-endian bytes follow
-in that order, so a 640x480 RGB-D frame costs its pixels plus a few hundred bytes. Images are
-normalised on the way out: rgb ``uint8 (H, W, 3)``, depth ``float32 (H, W)`` metres,
-segmentation ``int32 (H, W)``.
+``schema`` is :data:`SCHEMA`, bumped on any incompatible change; ``kind`` says which message it
+is (:data:`KIND_CODES`, all below 123 so that byte 8 is never ``{``, see below). All integers
+are little-endian. What the header looks like depends on
+the kind:
+
+* **Goal traffic** (``goal_request``, ``goal_reply``, ``goal_status``, ``cancel``) sits on the
+  latency-critical path of every goal, so its header is a fixed binary layout that costs a few
+  microseconds to pack and unpack (JSON cost ten times that)::
+
+      goal_request     strings[goal_id, action, client, *args]
+      goal_reply       u8 accepted | strings[goal_id, reason, server]
+      cancel           strings[goal_id]
+      goal_status      u8 flags | f64 progress | strings[goal_id, state, server,
+                                                         feedback text, result message, result data]
+
+  where ``strings[...]`` is ``u32 count | u32 byte length of each | the UTF-8 bytes``; the status
+  ``flags`` are bit 0 "has feedback", bit 1 "has result", bit 2 "result succeeded"; ``state`` is
+  the :class:`~vap_bt.skill.GoalState` value; ``result data`` is JSON (empty for ``{}``).
+* **Everything else** (camera requests and replies, observations, scene snapshots, errors) has
+  ``u32 length | UTF-8 JSON object`` with the message's own fields. Numeric arrays never go
+  through JSON: the header lists them as ``[name, dtype, shape]`` under ``arrays`` and their raw
+  little-endian bytes follow in that order, so a 640x480 RGB-D frame costs its pixels plus a few
+  hundred bytes. Images are normalised on the way out: rgb ``uint8 (H, W, 3)``, depth
+  ``float32 (H, W)`` metres, segmentation ``int32 (H, W)``.
+
+Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
+for every kind; 2 — the layout above. A schema-1 frame is still recognised (its byte 8, the
+start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
+versions, not garbage.
 
 A frame from a peer speaking another schema raises :class:`SchemaMismatch`, which says both
 versions; anything else undecodable raises :class:`MessageError`. Neither ever shows a traceback
@@ -32,9 +55,11 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, SkillResult
 from vap_bt.world import ObjectInfo, Observation, SceneSnapshot
 
-SCHEMA = 1
+SCHEMA = 2
 MAGIC = b"VAPB"
-_PREFIX = struct.Struct("<4sI")
+_PREFIX = struct.Struct("<4sIB")  # magic, schema, kind
+_U32 = struct.Struct("<I")
+_LEGACY_PREFIX = struct.Struct("<4sI")  # schema 1: magic, JSON header length
 
 T = TypeVar("T")
 
@@ -134,26 +159,6 @@ def _flat_unpacker(cls: type) -> Unpacker:
     return unpack
 
 
-def _pack_status(m: GoalStatus) -> tuple[dict[str, Any], Arrays]:
-    fb = None if m.feedback is None else [m.feedback.progress, m.feedback.text]
-    res = None
-    if m.result is not None:
-        res = [m.result.success, m.result.message, _jsonable(m.result.data) if m.result.data else {}]
-    return {"goal_id": m.goal_id, "state": m.state.value, "feedback": fb, "result": res,
-            "server": m.server}, {}
-
-
-def _unpack_status(d: dict[str, Any], _: Arrays) -> GoalStatus:
-    fb, res = d["feedback"], d["result"]
-    return GoalStatus(
-        goal_id=d["goal_id"],
-        state=GoalState(d["state"]),
-        feedback=None if fb is None else Feedback(float(fb[0]), str(fb[1])),
-        result=None if res is None else SkillResult(bool(res[0]), str(res[1]), dict(res[2])),
-        server=d.get("server", ""),
-    )
-
-
 def _pack_observation(o: Observation) -> tuple[dict[str, Any], Arrays]:
     arrays = {
         name: np.ascontiguousarray(getattr(o, name), dtype=dtype)
@@ -202,11 +207,119 @@ def _unpack_snapshot(d: dict[str, Any], _: Arrays) -> SceneSnapshot:
     )
 
 
-_CODECS: dict[str, tuple[type, Packer, Unpacker]] = {
-    "goal_request": (GoalRequest, _pack_flat, _flat_unpacker(GoalRequest)),
-    "goal_reply": (GoalReply, _pack_flat, _flat_unpacker(GoalReply)),
-    "goal_status": (GoalStatus, _pack_status, _unpack_status),
-    "cancel": (CancelRequest, _pack_flat, _flat_unpacker(CancelRequest)),
+# -- goal traffic: binary headers ------------------------------------------------------------
+
+
+def _pack_strings(*items: str) -> bytes:
+    raw = [t.encode() for t in items]
+    return struct.pack(f"<{len(raw) + 1}I", len(raw), *map(len, raw)) + b"".join(raw)
+
+
+def _unpack_strings(data: bytes, offset: int) -> list[str]:
+    """The strings at ``offset``, which must run exactly to the end of ``data``."""
+    (n,) = _U32.unpack_from(data, offset)
+    offset += 4
+    if n * 4 > len(data) - offset:
+        raise MessageError("unreadable message header: string table is truncated")
+    lengths = struct.unpack_from(f"<{n}I", data, offset)
+    offset += 4 * n
+    out = []
+    for length in lengths:
+        end = offset + length
+        if end > len(data):
+            raise MessageError("unreadable message header: a string is truncated")
+        out.append(data[offset:end].decode())
+        offset = end
+    if offset != len(data):
+        raise MessageError("unreadable message header: trailing bytes")
+    return out
+
+
+def _enc_request(m: GoalRequest) -> bytes:
+    return _pack_strings(m.goal_id, m.action, m.client, *m.args)
+
+
+def _dec_request(data: bytes, offset: int) -> GoalRequest:
+    goal_id, action, client, *args = _unpack_strings(data, offset)
+    return GoalRequest(goal_id, action, tuple(args), client)
+
+
+def _enc_reply(m: GoalReply) -> bytes:
+    return (b"\x01" if m.accepted else b"\x00") + _pack_strings(m.goal_id, m.reason, m.server)
+
+
+def _dec_reply(data: bytes, offset: int) -> GoalReply:
+    accepted = data[offset]
+    goal_id, reason, server = _unpack_strings(data, offset + 1)
+    return GoalReply(goal_id, accepted == 1, reason, server)
+
+
+def _enc_cancel(m: CancelRequest) -> bytes:
+    return _pack_strings(m.goal_id)
+
+
+def _dec_cancel(data: bytes, offset: int) -> CancelRequest:
+    (goal_id,) = _unpack_strings(data, offset)
+    return CancelRequest(goal_id)
+
+
+_STATUS_HEAD = struct.Struct("<Bd")  # flags, feedback progress
+_HAS_FEEDBACK, _HAS_RESULT, _SUCCESS = 1, 2, 4
+
+
+def _enc_status(m: GoalStatus) -> bytes:
+    flags, progress, text, message, data = 0, 0.0, "", "", ""
+    if m.feedback is not None:
+        flags |= _HAS_FEEDBACK
+        progress, text = float(m.feedback.progress), m.feedback.text
+    if m.result is not None:
+        flags |= _HAS_RESULT | (_SUCCESS if m.result.success else 0)
+        message = m.result.message
+        if m.result.data:
+            data = json.dumps(m.result.data, separators=(",", ":"), default=_json_default)
+    return _STATUS_HEAD.pack(flags, progress) + _pack_strings(
+        m.goal_id, m.state.value, m.server, text, message, data)
+
+
+def _dec_status(data: bytes, offset: int) -> GoalStatus:
+    flags, progress = _STATUS_HEAD.unpack_from(data, offset)
+    goal_id, state, server, text, message, blob = _unpack_strings(data, offset + _STATUS_HEAD.size)
+    result = None
+    if flags & _HAS_RESULT:
+        payload = json.loads(blob) if blob else {}
+        if not isinstance(payload, dict):
+            raise MessageError("malformed goal_status message: result data is not an object")
+        result = SkillResult(bool(flags & _SUCCESS), message, payload)
+    return GoalStatus(
+        goal_id=goal_id,
+        state=GoalState(state),
+        feedback=Feedback(progress, text) if flags & _HAS_FEEDBACK else None,
+        result=result,
+        server=server,
+    )
+
+
+# -- the kind table ------------------------------------------------------------------------------
+
+#: kind name -> the u8 that names it on the wire (never reuse a code; add new ones at the end)
+KIND_CODES = {
+    "goal_request": 1, "goal_reply": 2, "goal_status": 3, "cancel": 4, "observe": 5,
+    "survey": 6, "move_view": 7, "move_view_reply": 8, "error": 9, "observation": 10,
+    "scene_snapshot": 11,
+}
+
+Encoder = Callable[[Any], bytes]
+Decoder = Callable[[bytes, int], Any]
+
+# kinds with a binary header: (class, encoder, decoder)
+_BINARY: dict[str, tuple[type, Encoder, Decoder]] = {
+    "goal_request": (GoalRequest, _enc_request, _dec_request),
+    "goal_reply": (GoalReply, _enc_reply, _dec_reply),
+    "goal_status": (GoalStatus, _enc_status, _dec_status),
+    "cancel": (CancelRequest, _enc_cancel, _dec_cancel),
+}
+# kinds with a JSON header: (class, packer, unpacker)
+_JSON: dict[str, tuple[type, Packer, Unpacker]] = {
     "observe": (ObserveRequest, _pack_flat, _flat_unpacker(ObserveRequest)),
     "survey": (SurveyRequest, _pack_flat, _flat_unpacker(SurveyRequest)),
     "move_view": (MoveViewRequest, _pack_flat, _flat_unpacker(MoveViewRequest)),
@@ -215,54 +328,96 @@ _CODECS: dict[str, tuple[type, Packer, Unpacker]] = {
     "observation": (Observation, _pack_observation, _unpack_observation),
     "scene_snapshot": (SceneSnapshot, _pack_snapshot, _unpack_snapshot),
 }
-_KIND_OF = {cls: kind for kind, (cls, _, _) in _CODECS.items()}
+_KIND_OF = {cls: kind for kind, (cls, _, _) in [*_BINARY.items(), *_JSON.items()]}
+_CLASS_OF_CODE = {KIND_CODES[kind]: cls for cls, kind in _KIND_OF.items()}
+# class -> its frame prefix and encoder (binary kinds) or packer (JSON kinds)
+_ENCODERS: dict[type, tuple[bytes, bool, Callable[[Any], Any]]] = {
+    cls: (_PREFIX.pack(MAGIC, SCHEMA, KIND_CODES[kind]), kind in _BINARY,
+          (_BINARY[kind] if kind in _BINARY else _JSON[kind])[1])
+    for cls, kind in _KIND_OF.items()
+}
+# code -> (kind name, class, binary decoder or None, JSON unpacker or None)
+_DECODERS: dict[int, tuple[str, type, Decoder | None, Unpacker | None]] = {
+    KIND_CODES[kind]: (kind, cls, _BINARY[kind][2] if kind in _BINARY else None,
+                       _JSON[kind][2] if kind in _JSON else None)
+    for cls, kind in _KIND_OF.items()
+}
 
 
 def encode(msg: Any) -> bytes:
     """One frame for ``msg`` (any message class above, Observation or SceneSnapshot)."""
-    kind = _KIND_OF.get(type(msg))
-    if kind is None:
+    codec = _ENCODERS.get(type(msg))
+    if codec is None:
         raise TypeError(f"{type(msg).__name__} is not a transport message")
-    body, arrays = _CODECS[kind][1](msg)
-    header = {"schema": SCHEMA, "kind": kind, **body,
-              "arrays": [[n, a.dtype.str, list(a.shape)] for n, a in arrays.items()]}
+    prefix, binary, enc = codec
+    if binary:
+        return prefix + enc(msg)
+    body, arrays = enc(msg)
+    header = {**body, "arrays": [[n, a.dtype.str, list(a.shape)] for n, a in arrays.items()]}
     head = json.dumps(header, separators=(",", ":"), default=_json_default).encode()
-    return b"".join([_PREFIX.pack(MAGIC, len(head)), head, *(a.tobytes() for a in arrays.values())])
+    return b"".join([prefix, _U32.pack(len(head)), head, *(a.tobytes() for a in arrays.values())])
 
 
 def decode(data: bytes | bytearray | memoryview, expect: type[T]) -> T:
     """The message in ``data``, which must be of type ``expect``."""
-    header, arrays = _read_frame(bytes(data))
-    kind = header.pop("kind", None)
-    codec = _CODECS.get(kind)  # type: ignore[arg-type]
+    data = bytes(data)
+    if len(data) < _PREFIX.size or data[:4] != MAGIC:
+        raise MessageError("not a vap_bt message (bad magic)")
+    if data[8] == 0x7B:  # "{": a schema-1 frame
+        _legacy_schema(data)  # raises
+    _, schema, code = _PREFIX.unpack_from(data)
+    if schema != SCHEMA:
+        raise _mismatch(schema)
+    codec = _DECODERS.get(code)
     if codec is None:
-        raise MessageError(f"unknown message kind {kind!r}")
-    cls, _, unpack = codec
+        raise MessageError(f"unknown message kind {code!r}")
+    kind, cls, binary, unpack = codec
     if cls is not expect:
         raise MessageError(f"expected a {_KIND_OF[expect]} message, got {kind}")
     try:
-        return unpack(header, arrays)
+        if binary is not None:
+            return binary(data, _PREFIX.size)
+        header, arrays = _read_json(data, _PREFIX.size)
+        return unpack(header, arrays)  # type: ignore[misc]
+    except struct.error:
+        raise MessageError(f"unreadable message header: {kind} message is truncated") from None
+    except UnicodeDecodeError as exc:
+        raise MessageError(f"unreadable message header: {exc}") from None
     except (KeyError, TypeError, ValueError, IndexError) as exc:
+        if isinstance(exc, MessageError):
+            raise
         raise MessageError(f"malformed {kind} message: {type(exc).__name__}: {exc}") from None
 
 
-def _read_frame(data: bytes) -> tuple[dict[str, Any], Arrays]:
-    if len(data) < _PREFIX.size or data[:4] != MAGIC:
-        raise MessageError("not a vap_bt message (bad magic)")
-    _, n = _PREFIX.unpack_from(data)
+def _mismatch(schema: object) -> SchemaMismatch:
+    return SchemaMismatch(
+        f"peer speaks message schema {schema!r}, this side speaks {SCHEMA}: "
+        "run the same vap_bt version on both ends"
+    )
+
+
+def _legacy_schema(data: bytes) -> None:
+    """A schema-1 frame (JSON header right after a u32 length): say which schema it is."""
+    _, n = _LEGACY_PREFIX.unpack_from(data)
     try:
-        header = json.loads(data[_PREFIX.size:_PREFIX.size + n])
+        header = json.loads(data[_LEGACY_PREFIX.size:_LEGACY_PREFIX.size + n])
+    except ValueError as exc:
+        raise MessageError(f"unreadable message header: {exc}") from None
+    raise _mismatch(header.get("schema") if isinstance(header, dict) else None)
+
+
+def _read_json(data: bytes, offset: int) -> tuple[dict[str, Any], Arrays]:
+    (n,) = _U32.unpack_from(data, offset)
+    offset += _U32.size
+    if offset + n > len(data):
+        raise MessageError("unreadable message header: truncated")
+    try:
+        header = json.loads(data[offset:offset + n])
     except ValueError as exc:
         raise MessageError(f"unreadable message header: {exc}") from None
     if not isinstance(header, dict):
         raise MessageError("message header is not an object")
-    schema = header.pop("schema", None)
-    if schema != SCHEMA:
-        raise SchemaMismatch(
-            f"peer speaks message schema {schema!r}, this side speaks {SCHEMA}: "
-            "run the same vap_bt version on both ends"
-        )
-    return header, _read_arrays(data, _PREFIX.size + n, header.pop("arrays", []))
+    return header, _read_arrays(data, offset + n, header.pop("arrays", []))
 
 
 def _read_arrays(data: bytes, offset: int, specs: list) -> Arrays:
@@ -280,11 +435,6 @@ def _read_arrays(data: bytes, offset: int, specs: list) -> Arrays:
         arrays[name] = np.frombuffer(data, dt, count, offset).reshape(shape).copy()
         offset = end
     return arrays
-
-
-def _jsonable(value: Any) -> Any:
-    """``value`` with numpy types and tuples made JSON-friendly; unknown objects as str."""
-    return json.loads(json.dumps(value, default=_json_default))
 
 
 def _json_default(obj: Any) -> Any:
