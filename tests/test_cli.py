@@ -40,3 +40,27 @@ def test_installed_command_reports_errors_without_traceback(tmp_path):
     assert p.returncode == EXIT_BAD_INPUT
     assert "field scene.robot" in p.stderr and "Traceback" not in p.stderr
     assert len(p.stderr.strip().splitlines()) == 1
+
+
+def test_interrupted_run_still_writes_what_it_knew(cli, tmp_path, monkeypatch):
+    """Ctrl-C in the middle of an episode: exit 130, and the report keeps the plans and actions so far."""
+    from vap_bt.sim.symbolic import SymbolicWorld
+
+    real = SymbolicWorld.perform
+    calls = {"n": 0}
+
+    def perform(self, action, args, ctx):  # the user presses Ctrl-C during the third action
+        calls["n"] += 1
+        if calls["n"] == 3:
+            raise KeyboardInterrupt
+        return real(self, action, args, ctx)
+
+    monkeypatch.setattr(SymbolicWorld, "perform", perform)
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--transport", "inproc", "--report", tmp_path / "r.json",
+                       "-q")
+    assert code == 130 and "interrupted" in err
+    import json
+
+    r = json.loads((tmp_path / "r.json").read_text())
+    assert r["interrupted"] and r["reason"] == "interrupted" and not r["success"]
+    assert r["plans"] and len(r["actions_executed"]) == 2

@@ -52,7 +52,7 @@ def _load_run_task(args):
 
 
 def cmd_run(args) -> int:
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.runner import EpisodeInterrupted, RunConfig, Session
 
     task = _load_run_task(args)
     cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
@@ -67,6 +67,9 @@ def cmd_run(args) -> int:
                  "command": report_mod.command_line()}
     try:
         rep = {**session.episode(), "command": report_mod.command_line()}
+    except EpisodeInterrupted as stop:
+        rep = {**stop.report, "command": report_mod.command_line(), "interrupted": True}
+        raise
     finally:
         session.close()
         if args.report:  # written even when the run stops early, so nothing already known is lost

@@ -26,6 +26,14 @@ from vap_bt.taskfile import Task
 from vap_bt.world import World
 
 
+class EpisodeInterrupted(KeyboardInterrupt):
+    """Ctrl-C during an episode; carries the report of the episode up to that moment."""
+
+    def __init__(self, report: dict) -> None:
+        super().__init__("interrupted")
+        self.report = report
+
+
 #: how often the tree is ticked while a goal is in flight on a skill server
 TICK_PERIOD_S = 0.002
 
@@ -124,7 +132,16 @@ class Session:
                                      tick_period_s=0.0 if cfg.transport == "inproc" else TICK_PERIOD_S)
         t0 = time.perf_counter()
         vlm = metered if settings.mode.pre or settings.mode.eff else None
-        outcome = Executive(self.task.planning, self.planner, skills, camera, vlm, settings, self.progress).run()
+        executive = Executive(self.task.planning, self.planner, skills, camera, vlm, settings, self.progress)
+        try:
+            outcome = executive.run()
+        except KeyboardInterrupt:
+            if executive.outcome is None:
+                raise
+            outcome = executive.outcome  # what happened until the interruption is still worth keeping
+            outcome.reason = "interrupted"
+            rep = self._report(cfg, outcome, metered, time.perf_counter() - t0)
+            raise EpisodeInterrupted(rep) from None
         wall = time.perf_counter() - t0
         return self._report(cfg, outcome, metered, wall)
 

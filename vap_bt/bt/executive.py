@@ -76,6 +76,8 @@ class Executive:
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
+        #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
+        self.outcome: EpisodeOutcome | None = None
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
             raise ValueError("verification needs a VLM; use verify mode 'none' to run without one")
 
@@ -85,7 +87,7 @@ class Executive:
                                          tracks_hand={"holding", "hand_empty"} <= set(k.predicates))
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress)
-        out = EpisodeOutcome(False, "", [], [], 0, [], 1, 0, graph, ctx)
+        out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], 1, 0, graph, ctx)
         try:
             plan = self.planner.plan(graph.state(), self.task.goal)
         except UnsolvableError as exc:
