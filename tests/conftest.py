@@ -21,6 +21,28 @@ LITERATURE = [
 HOUSEHOLD_TASKS = sorted(p.name for p in TREES.glob("*.yaml"))
 
 
+@pytest.fixture(scope="module")
+def cup():
+    """The collect-cup task and a plan for it."""
+    from vap_bt.domain.planner import Planner
+    from vap_bt.taskfile import load
+
+    task = load(TREES / "collect_cup.yaml").planning
+    return task, Planner(task, first_engine="search").plan().actions
+
+
+def tree_for(task, actions, mode: str):
+    """The compiled tree of ``actions`` in verification ``mode`` (nothing is ticked)."""
+    from vap_bt.bt.compiler import compile_plan
+    from vap_bt.bt.context import ExecutionContext, VerifyMode
+    from vap_bt.scene.graph import SceneGraph
+    from vap_bt.world import SceneSnapshot
+
+    ctx = ExecutionContext(graph=SceneGraph.from_snapshot(SceneSnapshot([], set(task.init))), vlm=None,
+                           camera=None, skills=None, mode=VerifyMode.parse(mode))
+    return compile_plan(ctx, actions, task.goal, task.knowledge)
+
+
 @pytest.fixture
 def cli(capsys):
     """Run ``vap-bt`` in this process; returns (exit code, stdout, stderr)."""

@@ -7,29 +7,11 @@ import pytest
 
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
-from vap_bt.bt.compiler import compile_plan
-from vap_bt.bt.context import ExecutionContext, VerifyMode
 from vap_bt.bt.execute_skill import ExecuteSkill
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
-from vap_bt.domain.planner import Planner
-from vap_bt.scene.graph import SceneGraph
-from vap_bt.taskfile import load
-from vap_bt.world import SceneSnapshot
 
-from conftest import TREES
-
-
-@pytest.fixture(scope="module")
-def cup():
-    task = load(TREES / "collect_cup.yaml").planning
-    return task, Planner(task, first_engine="search").plan().actions
-
-
-def tree_for(task, actions, mode: str):
-    ctx = ExecutionContext(graph=SceneGraph.from_snapshot(SceneSnapshot([], set(task.init))), vlm=None,
-                           camera=None, skills=None, mode=VerifyMode.parse(mode))
-    return compile_plan(ctx, actions, task.goal, task.knowledge)
+from conftest import tree_for
 
 
 def checks(seq: py_trees.composites.Sequence) -> list[str]:

@@ -189,3 +189,59 @@ def test_cut_situations(cut_task, kind, expect):
     run(w, "cut(lemon, knife)")
     assert all(w.holds(A(e)) for e in expect) and not w.holds(A("sliced(lemon)"))
     w.close()
+
+
+# ------------------------------------------------------------ doors and drawers
+
+
+ARTICULATED = [  # (task scene, the thing, where the robot stands first)
+    ("boil_water", "cabinet", "find(floor_kitchen, cabinet, kitchen)"),
+    ("boil_water", "microwave", "find(floor_kitchen, microwave, kitchen)"),
+    ("heat_pie", "fridge", "find(floor_kitchen, fridge, kitchen)"),
+    ("heat_pie", "oven", "find(floor_kitchen, oven, kitchen)"),
+    ("halve_egg", "drawer", "find(floor_kitchen, drawer, kitchen)"),
+    ("gather_kindling", "door_lg", "find(floor_living_room, table, living_room)"),
+]
+
+
+def within_limits(w, name):
+    h = w.scene.things[name].hinge
+    q = w.truth.joint_value(name)
+    return h.lower - 1e-3 <= q <= h.upper + 1e-3
+
+
+@pytest.mark.parametrize("task, thing, start", ARTICULATED, ids=[a[1] for a in ARTICULATED])
+def test_open_then_close(task, thing, start):
+    w = world(task)
+    run(w, start)
+    assert w.holds(A(f"closed({thing})"))
+    run(w, f"open({thing})")
+    assert w.holds(A(f"open({thing})")) and not w.holds(A(f"closed({thing})")) and within_limits(w, thing)
+    run(w, f"close({thing})")
+    assert w.holds(A(f"closed({thing})")) and not w.holds(A(f"open({thing})")) and within_limits(w, thing)
+    w.close()
+
+
+def test_close_fails_object_open():
+    w = world("heat_pie", forced("close", "close_fails_object_open"))
+    run(w, "find(floor_kitchen, fridge, kitchen)", "open(fridge)", "close(fridge)")
+    assert w.holds(A("open(fridge)")) and not w.holds(A("closed(fridge)"))
+    assert [s.kind for s in w.injected()] == ["close_fails_object_open"]
+    w.close()
+
+
+def test_open_fails_door_stays_closed():
+    w = world("gather_kindling", forced("open", "open_fails_object_closed"))
+    run(w, "find(floor_living_room, table, living_room)", "open(door_lg)")
+    assert w.holds(A("closed(door_lg)")) and not w.holds(A("open(door_lg)"))
+    w.close()
+
+
+def test_door_left_half_open_blocks_navigation():
+    w = world("gather_kindling", disturbances=[{"at": 0, "door": "door_lg", "open": 0.4}])
+    run(w, "find(floor_living_room, table, living_room)")
+    assert not w.holds(A("open(door_lg)")) and not w.holds(A("closed(door_lg)"))
+    assert [s.kind for s in w.injected()] == ["door_left_half_open"]
+    out = w.perform("navigate", ("living_room", "garden", "door_lg", "table"), Ctx())
+    assert not out.completed and w.holds(A("robot_in(living_room)")) and not w.holds(A("robot_in(garden)"))
+    w.close()

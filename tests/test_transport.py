@@ -130,7 +130,7 @@ def test_garbage_and_foreign_schema_requests_get_an_error_reply(net):
     frame = encode(GoalRequest("x-1", "grasp", ("cup", "table")))
     foreign = frame[:4] + struct.pack("<I", 9) + frame[8:]  # the schema field
     replies = list(s_cli.get(key, payload=foreign, timeout=2))
-    assert "peer speaks message schema 9, this side speaks 2" in replies[0].err.payload.to_string()
+    assert "peer speaks message schema 9, this side speaks 3" in replies[0].err.payload.to_string()
 
 
 def test_camera_over_zenoh(net):

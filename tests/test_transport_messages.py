@@ -11,8 +11,8 @@ import pytest
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
-from vap_bt.transport.messages import (GoalReply, GoalRequest, GoalStatus, MessageError, SchemaMismatch,
-                                       decode, encode)
+from vap_bt.transport.messages import (CancelRequest, GoalReply, GoalRequest, GoalStatus, MessageError,
+                                       SchemaMismatch, decode, encode)
 from vap_bt.world import ObjectInfo, Observation, SceneSnapshot
 
 
@@ -23,6 +23,10 @@ def test_messages_round_trip():
     assert back.result.data == {"n": 3, "v": [0.0, 1.0]} and back.state is GoalState.SUCCEEDED
     req = GoalRequest("g-2", "grasp", ("cup", "table"), "c")
     assert decode(encode(req), GoalRequest) == req
+    # goal traffic has a binary header: non-ASCII text, empty strings and feedback-only status
+    for msg in (GoalReply("g-3", False, "busy: tête à tête ✓", "arm"), GoalRequest("g-4", "say", ("", "ü"), ""),
+                CancelRequest("g-5"), GoalStatus("g-6", GoalState.ACTIVE, Feedback(0.25, "¼ done"), None, "arm")):
+        assert decode(encode(msg), type(msg)) == msg
     snap = SceneSnapshot([ObjectInfo("cup", "cup", "kitchen", (1.0, 2.0, 0.5))], {Atom("on", ("cup", "t"))})
     assert decode(encode(snap), SceneSnapshot) == snap
 
@@ -53,12 +57,12 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
     with pytest.raises(MessageError, match="array 'rgb' is truncated"):
         decode(obs[:-1], Observation)
     frame = encode(GoalReply("g", True))
-    foreign = frame[:4] + struct.pack("<I", 3) + frame[8:]  # the schema field
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 3, this side speaks 2"):
+    foreign = frame[:4] + struct.pack("<I", 2) + frame[8:]  # the schema field
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 3"):
         decode(foreign, GoalReply)
     # a schema-1 peer (JSON header for every kind) is recognised as such
     head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 2"):
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 3"):
         decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
 
 

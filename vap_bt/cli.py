@@ -3,6 +3,7 @@
 ``vap-bt plan DOMAIN PROBLEM``       print a plan (Fast Downward through unified-planning)
 ``vap-bt run TASK.yaml``             run a task end to end and print a JSON report
 ``vap-bt run --domain D --problem P`` the same for any typed STRIPS domain
+``vap-bt export TASK.yaml``          print the compiled tree as BehaviorTree.CPP XML
 ``vap-bt skills``                    list the installed skill plugins
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
 
@@ -84,6 +85,29 @@ def cmd_run(args) -> int:
     return EXIT_OK if ok else EXIT_GOAL_NOT_REACHED
 
 
+def cmd_export(args) -> int:
+    """Plan a task and print its compiled tree as BehaviorTree.CPP XML."""
+    from vap_bt.bt.compiler import compile_plan
+    from vap_bt.bt.context import ExecutionContext, VerifyMode
+    from vap_bt.bt.export import to_btcpp_xml
+    from vap_bt.domain.planner import Planner
+    from vap_bt.scene.graph import SceneGraph
+    from vap_bt.world import SceneSnapshot
+
+    task = _load_run_task(args)
+    planning = task.planning
+    plan = Planner(planning).plan()
+    ctx = ExecutionContext(graph=SceneGraph.from_snapshot(SceneSnapshot([], set(planning.init))), vlm=None,
+                           camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
+                           budget=task.options.budget)
+    xml = to_btcpp_xml(compile_plan(ctx, plan.actions, planning.goal, planning.knowledge))
+    if args.output:
+        Path(args.output).write_text(xml)
+    else:
+        sys.stdout.write(xml)
+    return EXIT_OK
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans")
     p.add_argument("-v", "--verbose", action="store_true", help="debug logging")
@@ -115,6 +139,14 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--full", action="store_true", help="print the full report, not the summary")
     sr.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
     sr.set_defaults(func=cmd_run)
+
+    se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML")
+    se.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
+    se.add_argument("--domain")
+    se.add_argument("--problem")
+    se.add_argument("--verify", choices=["both", "pre", "eff", "none"])
+    se.add_argument("-o", "--output", help="write the XML here instead of stdout")
+    se.set_defaults(func=cmd_export)
 
     _add_transport_commands(sub)
     return p

@@ -1,11 +1,16 @@
 """Transport benchmark: goal-accept round trip over Zenoh on loopback, and BT tick overhead.
 
-    .venv/bin/python tools/bench/transport.py [--goals 1000] [--nodes 100] [--ticks 1000]
+    .venv/bin/python tools/bench/transport.py [--goals 1000] [--nodes 100] [--ticks 1000] [--rounds 10]
 
 1. **Goal accept round trip.** A skill server runs in its own process (spawned, so the two sides
    do not share a GIL) and hosts a no-op skill; the client sends ``--goals`` goals one after the
    other over TCP on 127.0.0.1 and times ``send_goal`` -> the server's "accepted" reply (what a
    behaviour waits for before it reports RUNNING), and separately send -> final result.
+   **Baseline**, in the same run, over the same link and session configuration: the bare Zenoh
+   query round trip — a queryable in the server process that answers at once with a few bytes
+   (on Zenoh's receiving thread, express, as the skill server does), asked through a querier
+   until its reply is in the client's hands — and the ratio of the two. Goals and bare queries
+   alternate in ``--rounds`` blocks so that both see the same machine load.
 2. **BT tick overhead.** A py_trees parallel of ``--nodes`` ExecuteSkill behaviours, each with a
    goal in flight on that server that does nothing until cancelled ("all skills idle"); the time
    of one tick of the whole tree, i.e. what the executive pays per tick for polling the goals.

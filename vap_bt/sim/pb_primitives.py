@@ -25,6 +25,7 @@ from collections.abc import Callable
 import numpy as np
 import pybullet as pb
 
+from vap_bt.sim.pb_articulation import PARKED_MARGIN, HandleFollower, Obb
 from vap_bt.sim.pb_camera import look_pose
 from vap_bt.sim.pb_catalog import Catalog
 from vap_bt.sim.pb_motion import Motion
@@ -39,9 +40,19 @@ CARRY = (0.30, 0.40, 0.95)  # where a held object rides, in the base frame (besi
 DROP = (0.30, 0.62, 0.55)  # where an object is let go "nearby": over the floor beside the base
 CORRIDOR_SPEED = 1.0
 APPROACH = 0.14  # pre-grasp distance along the approach axis
+EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
 BASE_CLEARANCE = 0.40  # base centre to the front face of the furniture at least
+WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep a work pose clear
+WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
+OPEN_TO = 0.92  # fraction of its travel an opened door or drawer is pulled to (limits: 1.0)
+#: a closing hand presses a furniture door a little past closed, against its stop: the grip is
+#: springy and the joint's friction would otherwise leave the leaf a few per cent open (room doors
+#: swing both ways and have no stop there)
+CLOSE_TO = -0.03
+LOOSE_GRIP = 0.05  # finger opening round a held handle bar (the bar's diagonal is 0.034 m)
+FOLLOW_SPEED = 0.3  # fraction of the joint limits while the hand carries a handle
 
 
 def _frame(z, x, p) -> np.ndarray:
@@ -61,6 +72,7 @@ class Primitives:
         self.cid = scene.client
         self.look_target: np.ndarray | None = None
         self.release_at: float | None = None  # progress of a base move at which to let go (Table II)
+        self.follower = HandleFollower(scene, motion)
 
     # ================================================================ poses
 
@@ -103,7 +115,8 @@ class Primitives:
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None) -> tuple[float, float, float]:
         """Base pose for manipulating at ``point``: ``toward`` is the horizontal direction from
-        the point to where the robot stands; keep clear of the front of ``clear_of``."""
+        the point to where the robot stands; keep clear of the front of ``clear_of``, and step
+        sideways (facing the point) when an open door leaf or other furniture is in the way."""
         f = np.array([toward[0], toward[1], 0.0])
         f /= np.linalg.norm(f)
         r = WORK_DISTANCE[how]
@@ -114,6 +127,13 @@ class Primitives:
             behind = float((front - np.asarray(point))[:2] @ fp.front[:2])
             r = max(r, behind + BASE_CLEARANCE)
         p = np.asarray(point) + f * r
+        side = np.array([-f[1], f[0], 0.0])
+        obstacles = self.follower.obstacles()
+        for shift in WORK_SHIFTS:
+            q = p + side * shift
+            pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
+            if self.follower.base_free(pose, obstacles, margin=WORK_MARGIN):
+                return pose
         return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def approach(self, pose) -> None:
@@ -253,14 +273,15 @@ class Primitives:
 
     # ================================================================ grasping
 
-    def grasp_frame(self, name: str) -> tuple[np.ndarray, np.ndarray]:
-        """Grasp pose of the tcp and the approach direction for an item where it is now."""
+    def grasp_frame(self, name: str, sideways: bool = False) -> tuple[np.ndarray, np.ndarray]:
+        """Grasp pose of the tcp and the approach direction for an item where it is now: from the
+        side out of a front-open container (or when asked), else from above."""
         t = self.scene.things[name]
         c = self.truth.center(name)
         container = self.truth.container_of(name)
         ct = self.scene.things.get(container) if container else None
-        if ct is not None and ct.furniture.kind.cavity.open == "front":
-            a = -ct.furniture.front
+        if (ct is not None and ct.furniture.kind.cavity.open == "front") or sideways:
+            a = -ct.furniture.front if ct is not None else -self.toward_robot(c, self.truth.support_of(name))
             return _frame(a, (0, 0, -1), c), a
         _, orn = pb.getBasePositionAndOrientation(t.body, physicsClientId=self.cid)
         R = np.array(pb.getMatrixFromQuaternion(orn)).reshape(3, 3)
@@ -287,12 +308,12 @@ class Primitives:
         d[2] = 0.0
         return d / max(np.linalg.norm(d), 1e-6)
 
-    def grasp(self, name: str, sit: SituationSpec | None) -> ActionOutcome:
+    def grasp(self, name: str, sit: SituationSpec | None, sideways: bool = False) -> ActionOutcome:
         t = self.scene.things[name]
-        G, a = self.grasp_frame(name)
+        G, a = self.grasp_frame(name, sideways)
         where = self.truth.container_of(name) or self.truth.support_of(name)
         self.approach(self.work_pose(G[:3, 3], self.toward_robot(G[:3, 3], where), "top" if a[2] < -0.5 else "front", where))
-        G, a = self.grasp_frame(name)
+        G, a = self.grasp_frame(name, sideways)
         pre = G.copy()
         pre[:3, 3] -= a * APPROACH
         self.phase(0.1, "pre-grasp")
@@ -327,8 +348,9 @@ class Primitives:
 
     # ================================================================ placing
 
-    def free_spot(self, surface: str, item: str) -> np.ndarray:
-        """Centre of a free spot on a surface's top (far from other items, near the robot)."""
+    def free_spot(self, surface: str, item: str, edge: bool = False) -> np.ndarray:
+        """Centre of a free spot on a surface's top (far from other items, near the robot); with
+        ``edge``, close to the front edge (where a hand can take it from the side again)."""
         t = self.scene.things[surface]
         others = [self.truth.center(i.name) for i in self.scene.items() if i.name != item and self.truth._on(i.name, surface)]
         if t.room is not None:
@@ -338,7 +360,8 @@ class Primitives:
         else:
             f = t.furniture
             w = f.kind.size[0] / 2 - 0.08
-            cands = [f.to_world((lx, 0.0, f.kind.size[2])) for lx in np.linspace(-w, w, 9)]
+            ly = f.kind.size[1] / 2 - EDGE_SPOT if edge else 0.0
+            cands = [f.to_world((lx, ly, f.kind.size[2])) for lx in np.linspace(-w, w, 9)]
         base = np.array(self.robot.base_pose[:2])
 
         def score(p):
@@ -359,7 +382,7 @@ class Primitives:
         a = -f.front if cav.open == "front" else np.array([0.0, 0.0, -1.0])
         return p, a
 
-    def place(self, name: str, where: str, inside: bool, sit: SituationSpec | None) -> ActionOutcome:
+    def place(self, name: str, where: str, inside: bool, sit: SituationSpec | None, edge: bool = False) -> ActionOutcome:
         if self.truth.held() != name:
             return ActionOutcome(False, f"not holding {name}")
         t = self.scene.things[name]
@@ -370,7 +393,7 @@ class Primitives:
         if inside:
             spot, a = self.cavity_spot(where)
         else:
-            spot, a = self.free_spot(where, name), np.array([0.0, 0.0, -1.0])
+            spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
         self.approach(self.work_pose(spot, self.toward_robot(spot, where), "top" if a[2] < -0.5 else "front", where))
         box = self.truth.aabb(name)
         c = self.truth.center(name)
@@ -400,7 +423,13 @@ class Primitives:
         self.open_hand()
         self.motion.settle(20)
         self.phase(0.8, "retreat")
-        self.motion.line(pre, steps=3, speed=0.4)
+        # out of the grasp along the hand's axis first (a hand holding from the side would lift
+        # the object on its fingers going straight up), then back along the way in
+        out = self.motion.pose("tcp")
+        out[:3, 3] -= out[:3, 2] * 0.1
+        self.motion.line(out, steps=2, speed=0.4)
+        out[:3, 3] -= a * 0.1
+        self.motion.line(out, steps=2, speed=0.4)
         self.home()
         return ActionOutcome(True)
 
@@ -408,19 +437,22 @@ class Primitives:
 
     def open_close(self, name: str, opening: bool, sit: SituationSpec | None) -> ActionOutcome:
         """Open or close with a free hand: something held is set down on the nearest surface of
-        the room first and picked up again afterwards (the domain lets a full hand open doors)."""
+        the room first and picked up again afterwards, the same way it was held (from the side or
+        from above: it may have to go into a low cavity next); the domain lets a full hand open
+        doors."""
         held = self.truth.held()
         if held is None:
             return self._open_close(name, opening, sit)
+        sideways = abs(self.robot.link_pose("tcp")[2, 2]) < 0.5  # the hand's axis is horizontal
         room = self.truth.room_of_point(self.robot.base_pose[:2])
         x, y, _ = self.robot.base_pose
         shelves = sorted((t for t in self.scene.things.values() if t.furniture is not None and
                           t.pddl_type == "surface" and t.furniture.room == room),
                          key=lambda t: math.hypot(t.furniture.x - x, t.furniture.y - y))
-        if not shelves or not self.place(held, shelves[0].name, False, None).completed:
+        if not shelves or not self.place(held, shelves[0].name, False, None, edge=sideways).completed:
             return ActionOutcome(False, f"{name}: the hand is full")
         out = self._open_close(name, opening, sit)
-        self.grasp(held, None)
+        self.grasp(held, None, sideways)
         return out
 
     def _open_close(self, name: str, opening: bool, sit: SituationSpec | None) -> ActionOutcome:
@@ -428,75 +460,102 @@ class Primitives:
         h = t.hinge
         if h is None:
             return ActionOutcome(False, f"{name} has nothing to open")
-        q0 = pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0]
+        start = self.robot.base_pose
+        q0 = self.truth.joint_value(name)
         side = 1.0
-        if h.other_side is not None:  # a room door: use the face towards the robot
+        goal_open = h.full
+        if h.other_side is not None:  # a room door: the face towards the robot, pushed away from it
             p, n, _ = h.handle_at(q0)
-            base = np.array([*self.robot.base_pose[:2], p[2]])
-            side = 1.0 if (base - p) @ n > 0 else -1.0
-        full = h.full
-        if h.other_side is not None:
-            full = abs(h.full) * side  # push the leaf away from the robot's side
-        goal = full if opening else 0.0
-        if h.other_side is not None and not opening:
-            side = -1.0 if q0 * side > 0 else side
+            side = 1.0 if (np.array([*start[:2], p[2]]) - p) @ n > 0 else -1.0
+            goal_open = abs(h.full) * side
+        if opening:
+            goal = goal_open * OPEN_TO
+        else:
+            goal = 0.0 if h.other_side is not None else h.full * CLOSE_TO
         p, n, bar = h.handle_at(q0, side)
-        stand = p
-        if not h.prismatic and abs(h.axis[2]) > 0.5 and h.other_side is None:
-            # stand beside the leaf's free edge, out of the area the leaf sweeps towards the robot
-            leaf = (p - h.origin) * np.array([1.0, 1.0, 0.0])
-            stand = p + leaf / np.linalg.norm(leaf) * 0.2
-        self.approach(self.work_pose(stand, n, "front", name if t.furniture else None))
-        approach = -n
-        x = -bar if abs(bar[2]) > 0.5 else bar
-        G = _frame(approach, x, p)
-        pre = G.copy()
-        pre[:3, 3] += n * APPROACH
+        G = _frame(-n, -bar if abs(bar[2]) > 0.5 else bar, p)
+        path = self.follower.plan(h, side, q0, goal, G, start, LOOSE_GRIP, APPROACH)
+        if not path.waypoints:
+            return ActionOutcome(False, f"{name}: handle out of reach")
+        grasp = path.waypoints[0]
+        self.phase(0.05, "approaching the handle")
+        self.approach(tuple(grasp.q[:3]))
         self.phase(0.1, "reaching for the handle")
-        if not self.goto_pose(pre):
+        self.motion.fingers(LOOSE_GRIP)  # wide enough round the bar, narrow enough beside the leaf
+        if not self.motion.through([path.pre.q], 0.8):
             self.home()
             return ActionOutcome(False, f"{name}: handle out of reach")
-        self.motion.fingers(self.robot.cfg.gripper.stroke)
-        self.motion.line(G, steps=4, speed=0.3, allow_base=False)
+        self.motion.line(grasp.T, steps=4, speed=0.3, allow_base=False)
+        self.motion.through([grasp.q], 0.3)
         touching = self.motion.fingers(0.0, h.body, h.joint, force=80.0)
         if touching == 0 or (sit is not None and not sit.effect):
             # the hand slips off the handle: the arm lets go and backs off, the joint stays
-            self.open_hand()
-            self.motion.line(pre, steps=3, speed=0.4, allow_base=False)
-            self.home()
+            self._retreat(name, start)
             return ActionOutcome(True, f"{name}: the handle slipped")
+        # a ball joint at the tcp, the fingers loosely round the bar: the bar may turn in the hand
         self.robot.attach(h.body, name, h.joint, point=True)
-        self.phase(0.4, "moving the handle")
-        # follow the handle's path a little at a time, always from where the leaf really is, so
-        # the hand never runs ahead of a leaf that sticks (the joint moves because the hand pulls)
-        n_steps = max(4, int(abs(goal - q0) / (0.02 if h.prismatic else 0.1)))
-        step = (goal - q0) / n_steps
-        for k in range(n_steps):
-            qm = pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0]
-            if abs(goal - qm) < abs(step) / 2:
-                break
-            q = qm + step
-            R, _ = h.transform(q, q0)
-            pk, _, _ = h.handle_at(q, side)
-            T = np.eye(4)
-            T[:3, :3] = R @ G[:3, :3]
-            T[:3, 3] = pk
-            sol = self.motion.solve(T, allow_base=False)
-            if sol is None:
-                break
-            self.motion.through([sol], 0.3)
-            self.phase(0.4 + 0.4 * (k + 1) / n_steps, "moving the handle")
-        self.open_hand()
-        # let go without dragging the leaf: slide the open fingers off the end of the bar, then
-        # back the base away before folding the arm
-        off = self.robot.link_pose("tcp")
-        off[:3, 3] += h.handle_at(pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0], side)[2] * 0.14
-        self.motion.line(off, steps=3, speed=0.3, allow_base=False)
-        x, y, yaw = self.robot.base_pose
-        self.motion.drive((x - 0.35 * math.cos(yaw), y - 0.35 * math.sin(yaw), yaw), 0.5)
-        self.home()
-        self.look_at(self.target_point(name))
+        self.motion.fingers(LOOSE_GRIP)  # the bar may now turn in the hand
+        self.phase(0.3, "moving the handle")
+
+        def on_sample(s: float) -> None:
+            self.phase(0.3 + 0.5 * s, "moving the handle")
+
+        self.motion.on_sample = on_sample
+        try:
+            self.motion.through([w.q for w in path.waypoints[1:]], FOLLOW_SPEED)
+        finally:
+            self.motion.on_sample = None
+        self.phase(0.85, "letting go")
+        self._retreat(name, start)
+        if not path.complete:
+            return ActionOutcome(True, f"{name}: the arm could not follow the handle all the way")
         return ActionOutcome(True)
+
+    def _retreat(self, name: str, start) -> None:
+        """Let go of a leaf without dragging it: the loose fingers back off the bar along the hand's
+        axis and away from the leaf's face, the base steps back, the arm folds (through a point
+        above the base if folding straight would sweep through the leaf), and the base returns to
+        where the action began if that way is clear of the leaf for the folded arm too."""
+        h = self.scene.things[name].hinge
+        q = self.truth.joint_value(name)
+        leaf, plate = Obb(*h.leaf(q)), Obb(*h.plate(q))
+        self.robot.detach()
+        self.motion.fingers(LOOSE_GRIP)
+        off = self.motion.pose("tcp")
+        off[:3, 3] -= off[:3, 2] * 0.12
+        self.motion.line(off, steps=3, speed=0.3, allow_base=False)
+        n = h.handle_at(q, 1.0)[1]
+        n = n if (self.motion.pose("tcp")[:3, 3] - plate.center) @ n > 0 else -n
+        away = self.motion.pose("tcp")
+        away[:3, 3] += n * 0.1
+        self.motion.line(away, steps=2, speed=0.3, allow_base=False)
+        static = self.follower.obstacles(h)
+        here = np.array(self.robot.base_pose)
+        back = here - 0.25 * np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
+        if self.follower.base_free(back, static, leaf, margin=PARKED_MARGIN):
+            self.motion.drive(tuple(back), 0.5)
+        home = self.robot.target.copy()
+        home[3:] = self.robot.cfg.arm.home
+        now = self.robot.target.copy()
+        self.follower.use_panel(h, LOOSE_GRIP)
+        if not all(self.follower.arm_clear(now + (home - now) * s, plate) for s in np.linspace(0, 1, 12)):
+            inner = self.motion.pose("tcp")
+            inner[:3, 3] = self.in_base((0.45, 0.0, 1.1))
+            self.motion.line(inner, steps=4, speed=0.4, allow_base=False)
+        self.home()
+        self.motion.fingers(self.robot.cfg.gripper.stroke)
+        here = np.array(self.robot.base_pose)
+        goal = np.array(start)
+        goal[2] = here[2] + math.remainder(goal[2] - here[2], 2 * math.pi)
+        backward = -np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
+        for via in ([], [here + backward * 0.3], [here + backward * 0.6]):
+            legs = [here, *via, goal]
+            if all(self.follower.base_free(a + (b - a) * s, static, leaf, folded=True, margin=PARKED_MARGIN)
+                   for a, b in zip(legs, legs[1:]) for s in np.linspace(0.05, 1, 12)):
+                for p in legs[1:]:
+                    self.motion.drive(tuple(p), 0.5)
+                break
+        self.look_at(self.target_point(name))
 
     # ================================================================ the rest
 

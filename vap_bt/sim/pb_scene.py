@@ -30,6 +30,8 @@ from vap_bt.sim.pb_layout import DoorPlan, FurniturePlan, ItemPlan, ScenePlan
 HANDLE_HEIGHT = 0.95  # of room-door handles
 HANDLE_STANDOUT = 0.045  # handle bar centre in front of the leaf surface
 ROOM_HANDLE_RADIUS = 0.8  # room-door handle distance from the hinge
+ROOM_DOOR_FRICTION = 15.0  # N m
+STOP_FORCE = 2000.0  # N m (or N) of a door stop
 
 
 @dataclass(frozen=True)
@@ -56,6 +58,28 @@ class Hinge:
     bar: np.ndarray  # direction of the handle bar at q = 0 (the fingers close across it)
     #: room doors have a second handle on the other face, this far behind the first one
     other_side: float | None = None
+    #: the moving part's bounding box at q = 0 (world centre and half extents): what sweeps
+    leaf_center: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    leaf_half: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    #: joint range and the friction of the joint (its velocity motor's force)
+    lower: float = 0.0
+    upper: float = 0.0
+    friction: float = 0.0
+    at_stop: bool = False  # the stop motor holds the joint at a limit
+
+    def hold_limits(self, cid: int) -> None:
+        """A door stop: pybullet's joint limits on these hand-built joints give way under a push,
+        so past a limit a strong position motor holds the joint there; back inside the range the
+        joint is free again (friction only)."""
+        q = pb.getJointState(self.body, self.joint, physicsClientId=cid)[0]
+        beyond = q < self.lower or q > self.upper
+        if beyond:
+            pb.setJointMotorControl2(self.body, self.joint, pb.POSITION_CONTROL, targetPosition=min(max(q, self.lower), self.upper),
+                                     targetVelocity=0.0, force=STOP_FORCE, positionGain=1.0, velocityGain=1.0,
+                                     physicsClientId=cid)
+        elif self.at_stop:
+            _friction(cid, self.body, self.joint, self.friction)
+        self.at_stop = beyond
 
     def transform(self, q: float, q_from: float = 0.0):
         """Rotation matrix and point map taking geometry at ``q_from`` to joint value ``q``."""
@@ -64,6 +88,24 @@ class Hinge:
             return np.eye(3), (lambda p: np.asarray(p) + shift)
         R = _axis_angle(self.axis, q - q_from)
         return R, (lambda p: self.origin + R @ (np.asarray(p) - self.origin))
+
+    def leaf(self, q: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The moving part at joint value ``q`` as an oriented box: centre, rotation, half extents."""
+        R, move = self.transform(q)
+        return move(self.leaf_center), R, self.leaf_half
+
+    def plate(self, q: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The leaf or drawer front without its handles (what a hand near the bar must not touch),
+        as an oriented box at joint value ``q``."""
+        n = np.abs(self.normal)
+        front = float(self.handle @ self.normal) - HANDLE_STANDOUT
+        back = float(self.leaf_center @ self.normal - self.leaf_half @ n)
+        if self.other_side is not None:
+            back = max(back, front - self.other_side + 2 * HANDLE_STANDOUT)
+        centre = self.leaf_center + self.normal * ((front + back) / 2 - float(self.leaf_center @ self.normal))
+        half = self.leaf_half * (1 - n) + n * (front - back) / 2
+        R, move = self.transform(q)
+        return move(centre), R, half
 
     def handle_at(self, q: float, side: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Handle grasp point, outward face normal and bar direction at joint value ``q``.
@@ -107,6 +149,12 @@ class Scene:
 
     def items(self) -> list[Thing]:
         return [t for t in self.things.values() if t.item is not None]
+
+    def hold_limits(self) -> None:
+        """Keep every door and drawer inside its joint range (call after each simulation step)."""
+        for t in self.things.values():
+            if t.hinge is not None:
+                t.hinge.hold_limits(self.client)
 
 
 def _axis_angle(axis: np.ndarray, angle: float) -> np.ndarray:
@@ -186,16 +234,23 @@ def _build_door(cid: int, d: DoorPlan, catalog: Catalog) -> Thing:
         linkPositions=[(0, 0, 0)], linkOrientations=[(0, 0, 0, 1)], linkInertialFramePositions=[(0, 0, 0)],
         linkInertialFrameOrientations=[(0, 0, 0, 1)], linkParentIndices=[0], linkJointTypes=[pb.JOINT_REVOLUTE],
         linkJointAxis=[(0, 0, 1)], physicsClientId=cid)
-    pb.changeDynamics(body, 0, jointLowerLimit=-style.door_open_angle - 0.05,
-                      jointUpperLimit=style.door_open_angle + 0.05, linearDamping=0.5, angularDamping=0.5,
+    limit = style.door_open_angle + 0.05
+    pb.changeDynamics(body, 0, jointLowerLimit=-limit, jointUpperLimit=limit, linearDamping=0.5, angularDamping=0.5,
                       physicsClientId=cid)
-    pb.resetJointState(body, 0, d.angle, physicsClientId=cid)
-    _friction(cid, body, 0, 15.0)
     hinge = Hinge(body, 0, False, -style.door_open_angle, np.array([d.x, d.hinge_y, 0.0]), np.array([0.0, 0.0, 1.0]),
                   handle=np.array([d.x + th / 2 + HANDLE_STANDOUT, d.hinge_y + ROOM_HANDLE_RADIUS, HANDLE_HEIGHT]),
                   normal=np.array([1.0, 0.0, 0.0]), bar=np.array([0.0, 0.0, 1.0]),
-                  other_side=th + 2 * HANDLE_STANDOUT)
+                  other_side=th + 2 * HANDLE_STANDOUT, **_leaf_box(cid, body, 0), lower=-limit, upper=limit,
+                  friction=ROOM_DOOR_FRICTION)
+    pb.resetJointState(body, 0, d.angle, physicsClientId=cid)
+    _friction(cid, body, 0, ROOM_DOOR_FRICTION)
     return Thing(d.name, "door", [body], door=d, hinge=hinge)
+
+
+def _leaf_box(cid: int, body: int, link: int) -> dict:
+    """Centre and half extents of a link's box (taken at q = 0, where leaves are axis-aligned)."""
+    lo, hi = (np.array(v) for v in pb.getAABB(body, link, physicsClientId=cid))
+    return {"leaf_center": (lo + hi) / 2, "leaf_half": (hi - lo) / 2}
 
 
 def _friction(cid: int, body: int, joint: int, force: float) -> None:
@@ -314,11 +369,12 @@ def _build_furniture(cid: int, f: FurniturePlan, catalog: Catalog) -> Thing:
         j, origin, axis, handle, bar = door
         full = k.door.full
         pb.changeDynamics(body, j, jointLowerLimit=-0.02, jointUpperLimit=full + 0.02, physicsClientId=cid)
+        thing.hinge = Hinge(body, j, k.door.prismatic, full, f.to_world(origin), f.direction(axis[:2]) + np.array([0, 0, axis[2]]),
+                            f.to_world(handle), f.front, f.direction(bar[:2]) + np.array([0, 0, bar[2]]),
+                            **_leaf_box(cid, body, j), lower=-0.02, upper=full + 0.02, friction=k.door.friction)
         state = f.state or "closed"
         pb.resetJointState(body, j, full if state == "open" else 0.0, physicsClientId=cid)
         _friction(cid, body, j, k.door.friction)
-        thing.hinge = Hinge(body, j, k.door.prismatic, full, f.to_world(origin), f.direction(axis[:2]) + np.array([0, 0, axis[2]]),
-                            f.to_world(handle), f.front, f.direction(bar[:2]) + np.array([0, 0, bar[2]]))
     return thing
 
 

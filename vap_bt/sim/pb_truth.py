@@ -72,9 +72,12 @@ class Truth:
     def room_of_point(self, p) -> str | None:
         return self.scene.plan.room_at(float(p[0]), float(p[1]))
 
+    def joint_value(self, name: str) -> float:
+        h = self.scene.things[name].hinge
+        return pb.getJointState(h.body, h.joint, physicsClientId=self.scene.client)[0]
+
     def joint_fraction(self, t: Thing) -> float:
-        q = pb.getJointState(t.hinge.body, t.hinge.joint, physicsClientId=self.scene.client)[0]
-        return abs(q) / abs(t.hinge.full)
+        return abs(self.joint_value(t.name)) / abs(t.hinge.full)
 
     def held(self) -> str | None:
         g = self.robot.grip

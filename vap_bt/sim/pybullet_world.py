@@ -125,6 +125,7 @@ class PybulletWorld:
         if self.ctx.cancelled():
             raise Cancelled()
         pb.stepSimulation(physicsClientId=self.cid)
+        self.scene.hold_limits()
         self.ticks += 1
 
     def _phase(self, progress: float, text: str) -> None:

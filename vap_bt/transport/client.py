@@ -2,12 +2,19 @@
 
 ``send_goal`` never blocks. It picks a goal id, sends a :class:`GoalRequest` through a cached
 Querier on ``vap/<robot>/skill/<action>`` and returns a :class:`ZenohGoalHandle` in PENDING.
-Everything after that arrives on Zenoh callbacks and only updates the handle under a lock:
+What happens next updates the handle under the client's lock:
 
 * the reply           -> ACTIVE (accepted) or REJECTED (with the server's reason);
 * no reply at all     -> REJECTED ("no skill server ... answered");
 * a status message    -> new feedback, or the terminal state and result;
 * the server's liveliness token disappears -> every goal in flight on it ABORTED, "server vanished".
+
+The reply is the latency-critical step (a behaviour reports RUNNING once it is in), so it does not
+go through a Python callback: Zenoh puts it in the query's own channel without taking the GIL,
+and the handle reads it whenever someone looks — :meth:`~ZenohGoalHandle.state` takes it without
+blocking, ``wait_answered``/``wait`` block on the channel itself, so the waiting thread wakes
+straight from Zenoh's receiving thread instead of through a callback, a lock and a GIL hand-off.
+Status messages and liveliness changes, which nobody waits on so tightly, stay on callbacks.
 
 The client listens before it asks: per robot it subscribes to ``vap/<robot>/goal/*/status`` and
 to the robots' liveliness tokens when it is created, so no early feedback or fast result is lost,
@@ -21,6 +28,7 @@ from __future__ import annotations
 
 import itertools
 import threading
+import time
 from typing import Any, Mapping
 
 import zenoh
@@ -52,7 +60,12 @@ CAMERA_TIMEOUT_S = 30.0
 
 
 class ZenohGoalHandle:
-    """A goal in flight on a remote skill server; updated by the client's callbacks."""
+    """A goal in flight on a remote skill server.
+
+    Status and liveliness callbacks update it; its accept/reject reply is read from the query's
+    channel by whichever thread looks at it first (:meth:`state`, :meth:`wait_answered`,
+    :meth:`wait`), so a PENDING goal only turns ACTIVE or REJECTED when someone asks.
+    """
 
     def __init__(self, client: "ZenohSkillClient", goal_id: str, robot: str, action: str) -> None:
         self.goal_id = goal_id
@@ -63,10 +76,13 @@ class ZenohGoalHandle:
         self._state = GoalState.PENDING
         self._feedback: Feedback | None = None
         self._result: SkillResult | None = None
-        self._answered = threading.Event()  # accepted or ended
-        self._ended = threading.Event()
+        self._replies: Any = None  # the request's reply channel until its answer is read
+        self._expires = 0.0  # monotonic time by which Zenoh closes that channel
+        self._reading = threading.Lock()  # one reader of the channel at a time
 
     def state(self) -> GoalState:
+        if self._replies is not None:
+            self._client._read_reply(self, 0.0)
         return self._state
 
     def feedback(self) -> Feedback | None:
@@ -81,12 +97,19 @@ class ZenohGoalHandle:
 
     def wait(self, timeout: float | None = None) -> GoalState:
         """Block until the goal ends (tools and tests; behaviours poll :meth:`state`)."""
-        self._ended.wait(timeout)
+        deadline = None if timeout is None else time.monotonic() + timeout
+        self.wait_answered(timeout)  # a rejection only ever comes as the reply
+        if not self._state.terminal:
+            self._client._wait_for(lambda: self._state.terminal, deadline)
         return self._state
 
     def wait_answered(self, timeout: float | None = None) -> GoalState:
         """Block until the server accepted or the goal ended."""
-        self._answered.wait(timeout)
+        deadline = None if timeout is None else time.monotonic() + timeout
+        if self._replies is not None:
+            self._client._read_reply(self, timeout)
+        if self._state is GoalState.PENDING:
+            self._client._wait_for(lambda: self._state is not GoalState.PENDING, deadline)
         return self._state
 
     # state changes: called by the client with its lock held
@@ -94,13 +117,12 @@ class ZenohGoalHandle:
         if self._state is GoalState.PENDING:
             self._state = GoalState.ACTIVE
             self.server = server
-            self._answered.set()
+            self._client._changed.notify_all()
 
     def _finish(self, state: GoalState, result: SkillResult) -> None:
         if not self._state.terminal:
             self._result, self._state = result, state
-            self._answered.set()
-            self._ended.set()
+            self._client._changed.notify_all()
 
 
 class ZenohSkillClient:
@@ -121,6 +143,7 @@ class ZenohSkillClient:
         self._prefix = str(session.zid())[:12]
         self._ids = itertools.count(1)
         self._lock = threading.Lock()
+        self._changed = threading.Condition(self._lock)  # any handle changed state
         self._inflight: dict[str, ZenohGoalHandle] = {}
         self._alive: dict[str, set[str]] = {}
         self._queriers: dict[tuple[str, str], zenoh.Querier] = {}
@@ -135,20 +158,16 @@ class ZenohSkillClient:
         handle = ZenohGoalHandle(self, f"{self._prefix}-{next(self._ids)}", robot or "", action)
         if robot is None:
             known = ", ".join(sorted(self.routes)) or "none"
-            handle._finish(GoalState.REJECTED, SkillResult(
-                False, f"no skill plugin binds action {action!r} (known: {known})"))
+            with self._lock:
+                handle._finish(GoalState.REJECTED, SkillResult(
+                    False, f"no skill plugin binds action {action!r} (known: {known})"))
             return handle
-        request = GoalRequest(handle.goal_id, action, tuple(args), self._prefix)
+        payload = encode(GoalRequest(handle.goal_id, action, tuple(args), self._prefix))
+        querier = self._querier(robot, action)
         with self._lock:
             self._inflight[handle.goal_id] = handle
-        self._querier(robot, action).get(
-            zenoh.handlers.Callback(
-                lambda reply: self._on_reply(handle, reply),
-                lambda: self._on_query_done(handle),
-                indirect=False,  # the callbacks only flip state under a lock
-            ),
-            payload=encode(request),
-        )
+        handle._expires = time.monotonic() + self.accept_timeout
+        handle._replies = querier.get(payload=payload)  # a channel: see the module docstring
         return handle
 
     def close(self) -> None:
@@ -156,6 +175,7 @@ class ZenohSkillClient:
         with self._lock:
             for handle in list(self._inflight.values()):
                 handle._finish(GoalState.ABORTED, SkillResult(False, "skill client closed"))
+                handle._replies = None
             self._inflight.clear()
         for entity in [*self._declared, *self._queriers.values()]:
             entity.undeclare()
@@ -191,7 +211,42 @@ class ZenohSkillClient:
             self._queriers[key] = querier
         return querier
 
-    # -- callbacks (Zenoh threads: never block) --------------------------------------------------
+    def _wait_for(self, done: Any, deadline: float | None) -> None:
+        with self._changed:
+            self._changed.wait_for(done, None if deadline is None else max(0.0, deadline - time.monotonic()))
+
+    # -- the reply channel (any thread that looks at a PENDING handle) ---------------------------
+
+    def _read_reply(self, handle: ZenohGoalHandle, timeout: float | None) -> None:
+        """Take the answer from ``handle``'s reply channel, waiting up to ``timeout`` (None: until
+        Zenoh closes the channel, which it does within :attr:`accept_timeout`)."""
+        if timeout is not None and timeout <= 0.0:
+            timeout = 0.0
+        if timeout == 0.0:
+            if not handle._reading.acquire(blocking=False):
+                return  # another thread is reading it; it will update the handle
+        elif not handle._reading.acquire(timeout=-1 if timeout is None else timeout):
+            return
+        try:
+            replies = handle._replies
+            if replies is None:
+                return
+            try:
+                if timeout == 0.0:
+                    reply = replies.try_recv()
+                elif timeout is None or time.monotonic() + timeout >= handle._expires:
+                    reply = replies.recv()  # bounded by the query's own timeout
+                else:
+                    reply = _recv_until(replies, time.monotonic() + timeout)
+            except zenoh.ZError:  # closed without an answer: nobody replied in time
+                handle._replies = None
+                self._on_no_reply(handle)
+                return
+            if reply is not None:
+                handle._replies = None  # one answer per goal; Zenoh closes the channel itself
+                self._on_reply(handle, reply)
+        finally:
+            handle._reading.release()
 
     def _on_reply(self, handle: ZenohGoalHandle, reply: zenoh.Reply) -> None:
         if reply.ok is None:
@@ -213,11 +268,13 @@ class ZenohSkillClient:
             else:
                 handle._activate(answer.server)
 
-    def _on_query_done(self, handle: ZenohGoalHandle) -> None:
-        if handle.state() is GoalState.PENDING:
+    def _on_no_reply(self, handle: ZenohGoalHandle) -> None:
+        if handle._state is GoalState.PENDING:
             self._end(handle, GoalState.REJECTED,
-                    f"no skill server for {handle.action!r} on robot {handle.robot!r} answered "
-                    f"within {self.accept_timeout:g} s")
+                      f"no skill server for {handle.action!r} on robot {handle.robot!r} answered "
+                      f"within {self.accept_timeout:g} s")
+
+    # -- callbacks (Zenoh threads: never block) --------------------------------------------------
 
     def _on_status(self, sample: zenoh.Sample) -> None:
         try:
@@ -303,6 +360,19 @@ class ZenohCamera:
         raise TransportError(
             f"no camera on robot {self.robot!r} answered {verb} within {self.timeout:g} s"
         )
+
+
+def _recv_until(replies: Any, deadline: float) -> zenoh.Reply | None:
+    """The channel's next reply, polling until ``deadline`` (a wait shorter than the query's life:
+    Zenoh's blocking ``recv`` has no timeout of its own)."""
+    pause = 0.00005
+    while (reply := replies.try_recv()) is None:
+        left = deadline - time.monotonic()
+        if left <= 0:
+            return None
+        time.sleep(min(pause, left))
+        pause = min(pause * 2, 0.002)
+    return reply
 
 
 def _direct(fn: Any) -> zenoh.handlers.Callback:

@@ -19,7 +19,8 @@ the kind:
       goal_status      u8 flags | f64 progress | strings[goal_id, state, server,
                                                          feedback text, result message, result data]
 
-  where ``strings[...]`` is ``u32 count | u32 byte length of each | the UTF-8 bytes``; the status
+  where ``strings[...]`` is ``u32 count | u32 length of each, in characters | the strings'
+  UTF-8 bytes, concatenated`` (one decode for all of them); the status
   ``flags`` are bit 0 "has feedback", bit 1 "has result", bit 2 "result succeeded"; ``state`` is
   the :class:`~vap_bt.skill.GoalState` value; ``result data`` is JSON (empty for ``{}``).
 * **Everything else** (camera requests and replies, observations, scene snapshots, errors) has
@@ -30,7 +31,7 @@ the kind:
   ``float32 (H, W)`` metres, segmentation ``int32 (H, W)``.
 
 Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
-for every kind; 2 — the layout above. A schema-1 frame is still recognised (its byte 8, the
+for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above. A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -55,7 +56,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, SkillResult
 from vap_bt.world import ObjectInfo, Observation, SceneSnapshot
 
-SCHEMA = 2
+SCHEMA = 3
 MAGIC = b"VAPB"
 _PREFIX = struct.Struct("<4sIB")  # magic, schema, kind
 _U32 = struct.Struct("<I")
@@ -211,8 +212,8 @@ def _unpack_snapshot(d: dict[str, Any], _: Arrays) -> SceneSnapshot:
 
 
 def _pack_strings(*items: str) -> bytes:
-    raw = [t.encode() for t in items]
-    return struct.pack(f"<{len(raw) + 1}I", len(raw), *map(len, raw)) + b"".join(raw)
+    return (struct.pack(f"<{len(items) + 1}I", len(items), *map(len, items))
+            + "".join(items).encode())
 
 
 def _unpack_strings(data: bytes, offset: int) -> list[str]:
@@ -222,16 +223,13 @@ def _unpack_strings(data: bytes, offset: int) -> list[str]:
     if n * 4 > len(data) - offset:
         raise MessageError("unreadable message header: string table is truncated")
     lengths = struct.unpack_from(f"<{n}I", data, offset)
-    offset += 4 * n
-    out = []
+    text = data[offset + 4 * n:].decode()  # one decode for all of them
+    if sum(lengths) != len(text):
+        raise MessageError("unreadable message header: strings do not match their lengths")
+    out, start = [], 0
     for length in lengths:
-        end = offset + length
-        if end > len(data):
-            raise MessageError("unreadable message header: a string is truncated")
-        out.append(data[offset:end].decode())
-        offset = end
-    if offset != len(data):
-        raise MessageError("unreadable message header: trailing bytes")
+        out.append(text[start:start + length])
+        start += length
     return out
 
 
@@ -276,7 +274,8 @@ def _enc_status(m: GoalStatus) -> bytes:
         flags |= _HAS_RESULT | (_SUCCESS if m.result.success else 0)
         message = m.result.message
         if m.result.data:
-            data = json.dumps(m.result.data, separators=(",", ":"), default=_json_default)
+            value = m.result.data if isinstance(m.result.data, dict) else {"value": m.result.data}
+            data = json.dumps(value, separators=(",", ":"), default=_json_default)
     return _STATUS_HEAD.pack(flags, progress) + _pack_strings(
         m.goal_id, m.state.value, m.server, text, message, data)
 
@@ -329,7 +328,6 @@ _JSON: dict[str, tuple[type, Packer, Unpacker]] = {
     "scene_snapshot": (SceneSnapshot, _pack_snapshot, _unpack_snapshot),
 }
 _KIND_OF = {cls: kind for kind, (cls, _, _) in [*_BINARY.items(), *_JSON.items()]}
-_CLASS_OF_CODE = {KIND_CODES[kind]: cls for cls, kind in _KIND_OF.items()}
 # class -> its frame prefix and encoder (binary kinds) or packer (JSON kinds)
 _ENCODERS: dict[type, tuple[bytes, bool, Callable[[Any], Any]]] = {
     cls: (_PREFIX.pack(MAGIC, SCHEMA, KIND_CODES[kind]), kind in _BINARY,
@@ -360,8 +358,9 @@ def encode(msg: Any) -> bytes:
 
 def decode(data: bytes | bytearray | memoryview, expect: type[T]) -> T:
     """The message in ``data``, which must be of type ``expect``."""
-    data = bytes(data)
-    if len(data) < _PREFIX.size or data[:4] != MAGIC:
+    if type(data) is not bytes:
+        data = bytes(data)
+    if len(data) < _PREFIX.size or not data.startswith(MAGIC):
         raise MessageError("not a vap_bt message (bad magic)")
     if data[8] == 0x7B:  # "{": a schema-1 frame
         _legacy_schema(data)  # raises

@@ -93,19 +93,21 @@ class SkillServer:
             t = threading.Thread(target=self._work, args=(q,), name=f"skill-{resource}", daemon=True)
             t.start()
             self._threads.append(t)
-        self._token = self.session.liveliness().declare_token(keys.alive(self.robot, self.name))
         declare = self.session.declare_queryable
         fast = _network_callback  # replies are decided without blocking: no thread hop
         self._declared.append(
             self.session.declare_subscriber(keys.all_goal_cancel(self.robot), fast(self._on_cancel))
         )
         for action in self.skills:
-            on_query = fast(lambda q, a=action: self._on_goal(q, a))
-            self._declared.append(declare(keys.skill(self.robot, action), on_query))
+            key = zenoh.KeyExpr(keys.skill(self.robot, action))  # parsed once, used per reply
+            on_query = fast(lambda q, a=action, k=key: self._on_goal(q, a, k))
+            self._declared.append(declare(key, on_query))
         if self.camera is not None:
             for verb, handler in (("observe", self._observe), ("survey", self._survey),
                                   ("move", self._move_view)):
                 self._declared.append(declare(keys.camera(self.robot, verb), _camera_reply(handler)))
+        # announce last: a client that sees the token must find every queryable already there
+        self._token = self.session.liveliness().declare_token(keys.alive(self.robot, self.name))
         log.info("skill server %s hosts %s on robot %s", self.name, sorted(self.skills), self.robot)
         return self
 
@@ -134,9 +136,10 @@ class SkillServer:
 
     # -- goals -----------------------------------------------------------------------------------
 
-    def _on_goal(self, query: zenoh.Query, action: str) -> None:
+    def _on_goal(self, query: zenoh.Query, action: str, key: zenoh.KeyExpr) -> None:
+        payload = query.payload
         try:
-            req = decode(query.payload.to_bytes() if query.payload else b"", GoalRequest)
+            req = decode(b"" if payload is None else payload.to_bytes(), GoalRequest)
         except MessageError as exc:
             query.reply_err(f"bad goal request for {action}: {exc}")
             return
@@ -144,7 +147,7 @@ class SkillServer:
         accepted = isinstance(goal, _Goal)
         reason = "" if accepted else goal
         reply = GoalReply(req.goal_id, accepted, reason, self.name)
-        query.reply(query.key_expr, encode(reply), express=True)  # no batching delay
+        query.reply(key, encode(reply), express=True)  # no batching delay
         if accepted:  # queued only after the reply, so the client hears "accepted" first
             self._queues[goal.skill.resource].put(goal)
 
