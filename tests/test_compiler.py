@@ -26,9 +26,10 @@ def test_tree_shape_for_both(cup):
     task, actions = cup
     root = tree_for(task, actions, "both")
     assert isinstance(root, py_trees.composites.Sequence) and root.memory and root.name == "plan"
-    assert [c.name for c in root.children[:-1]] == [f"a{i}: {a}" for i, a in enumerate(actions)]
+    assert [c.name for c in root.children[:-2]] == [f"a{i}: {a}" for i, a in enumerate(actions)]
     assert isinstance(root.children[-1], GoalCheck)
-    for step in root.children[:-1]:
+    assert root.children[-2].name == "goal" and checks(root.children[-2]) == ["on(cup, counter)"]
+    for step in root.children[:-2]:
         assert step.memory
         kinds = [type(c) for c in step.children]
         assert kinds == [py_trees.composites.Sequence, ExecuteSkill, ApplyEffects, py_trees.composites.Sequence]
@@ -57,3 +58,5 @@ def test_modes_drop_whole_phases(cup, mode, names):
     step = root.children[1]
     got = [c.name if isinstance(c, py_trees.composites.Sequence) else None for c in step.children]
     assert got == names
+    # the goal is looked at again only where effects are
+    assert (root.children[-2].name == "goal") == ("eff" in names)

@@ -10,12 +10,15 @@ node that succeeded is not ticked again while a later one runs::
      │   ├─ ApplyEffects
      │   └─ Sequence "eff"   ActivePerception(K) ─ VerifyPredicate(holding cup) …
      ├─ …
+     ├─ Sequence "goal"   ActivePerception(K) ─ VerifyPredicate(on cup counter) …
      └─ GoalCheck
 
 Which atoms are checked: the preconditions (``pre``) and the add effects (``eff``, the paper's
 Eff+) whose predicate the camera can judge (there are paraphrases for it) and that some action
-can change (rigid facts are map knowledge). The verification mode removes whole phases:
-``both``, ``pre``, ``eff`` or ``none``.
+can change (rigid facts are map knowledge). Before claiming success, the goal's atoms are looked
+at once more (``goal``, with the effect checks): an effect confirmed minutes ago may have been
+undone since (a bottle rolled off the counter). The verification mode removes whole phases:
+``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``.
 """
 
 from __future__ import annotations
@@ -37,7 +40,7 @@ def checked(literals, knowledge: DomainKnowledge) -> list[Literal]:
     return [l for l in literals if verifiable(l.atom.predicate) and not knowledge.is_rigid(l.atom.predicate)]
 
 
-def _checks(ctx: ExecutionContext, phase: Phase, literals: list[Literal], action: GroundAction,
+def _checks(ctx: ExecutionContext, phase: Phase, literals: list[Literal], action: GroundAction | None,
             step: int) -> py_trees.composites.Sequence:
     return py_trees.composites.Sequence(phase, memory=True, children=[
         ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in literals])
@@ -58,5 +61,7 @@ def compile_action(ctx: ExecutionContext, action: GroundAction, step: int,
 def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Literal, ...],
                  knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
     nodes = [compile_action(ctx, a, i, knowledge) for i, a in enumerate(plan)]
+    if ctx.mode.eff:
+        nodes.append(_checks(ctx, "goal", checked(goal, knowledge), None, len(plan)))
     nodes.append(GoalCheck(ctx, goal, len(plan)))
     return py_trees.composites.Sequence("plan", memory=True, children=nodes)

@@ -1,0 +1,288 @@
+"""The rerun view (vap_bt/viz): real episodes recorded to real .rrd files, read back with rerun.
+
+The recordings are read with rerun's own chunk reader (``rerun.chunk.RrdReader``) and checked
+with the ``rerun`` CLI (``rrd verify``, ``rrd print``): the tree graph and its status colours per
+tick, the verification text, situations, belief, and (pybullet) the camera images of each round.
+"""
+
+from __future__ import annotations
+
+import os
+import socket
+import subprocess
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+import pytest
+from py_trees.common import Status
+
+from conftest import ROOT, TREES
+
+rr = pytest.importorskip("rerun")
+
+from vap_bt.viz import SinkSpec, TreeRecorder, ViewerError  # noqa: E402
+from vap_bt.viz.tree_graph import STATUS_COLOURS  # noqa: E402
+
+RERUN = Path(sys.executable).parent / "rerun"
+#: a symbolic collect-cup episode with an effect situation and one replan (vlm_error 0)
+SEED_WITH_REPLAN = 8
+
+
+def session(world: str = "symbolic"):
+    from vap_bt import taskfile
+    from vap_bt.runner import RunConfig, Session
+
+    task = taskfile.load(TREES / "collect_cup.yaml")
+    return Session(task, RunConfig.from_task(task, world=world, transport="inproc", vlm_error=0.0))
+
+
+def run(sess, seed: int, recorder: TreeRecorder):
+    """One episode as ``Session.episode`` runs it, with the recorder as the executive's on_tree."""
+    from vap_bt.bt.context import VerifyMode
+    from vap_bt.bt.executive import Executive, ExecutiveSettings
+    from vap_bt.perception.verification import VoteSettings
+
+    cfg = sess.cfg
+    sess.world.reset(seed)
+    sess.vlm.reseed(seed)
+    skills, camera = sess._transport()
+    settings = ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
+                                 vote=VoteSettings(paraphrases=cfg.paraphrases),
+                                 max_replans=cfg.max_replans, max_ticks=cfg.max_ticks)
+    return Executive(sess.task.planning, sess.planner, skills, camera, sess.vlm, settings,
+                     on_tree=recorder.on_tree).run()
+
+
+def read(path: Path) -> dict[str, list[dict]]:
+    """Entity path -> rows (timeline values and components), in logging order (row ids are
+    time-ordered; chunks of one entity are not)."""
+    from rerun.chunk import RrdReader
+
+    rows: dict[str, list[dict]] = defaultdict(list)
+    for chunk in RrdReader(path).stream():
+        batch = chunk.to_record_batch()
+        cols = [n for n in batch.schema.names if n not in ("log_time", "time")]
+        data = batch.select(cols).to_pydict()
+        rows[chunk.entity_path] += [{k: data[k][i] for k in cols} for i in range(chunk.num_rows)]
+    for entity_rows in rows.values():
+        entity_rows.sort(key=lambda r: r.pop("rerun.controls.RowId"))
+    return rows
+
+
+def texts(rows: dict, path: str) -> list[str]:
+    return [r["TextLog:text"][0] for r in rows[path]]
+
+
+def rgb(packed: int) -> tuple[int, int, int]:
+    return (packed >> 24) & 255, (packed >> 16) & 255, (packed >> 8) & 255
+
+
+STATUS_OF = {v: k for k, v in STATUS_COLOURS.items()}
+
+
+@pytest.fixture(scope="module")
+def symbolic():
+    s = session()
+    yield s
+    s.close()
+
+
+@pytest.fixture(scope="module")
+def recorded(symbolic, tmp_path_factory):
+    path = tmp_path_factory.mktemp("viz") / "episode.rrd"
+    rec = TreeRecorder.open(["save", str(path)], name="collect_cup")
+    outcome = run(symbolic, SEED_WITH_REPLAN, rec)
+    rec.close()
+    return path, outcome, read(path)
+
+
+def test_recording_is_a_valid_rrd_with_the_tree_graph(recorded):
+    path, outcome, rows = recorded
+    assert outcome.success and outcome.replans == 1, "the seed should give one replan"
+    env = {**os.environ, "RUST_LOG": "error"}
+    verify = subprocess.run([str(RERUN), "rrd", "verify", str(path)], capture_output=True, text=True, env=env,
+                            timeout=60)
+    assert verify.returncode == 0, verify.stderr
+    printed = subprocess.run([str(RERUN), "rrd", "print", str(path)], capture_output=True, text=True, env=env,
+                             timeout=60).stdout
+    assert "/tree - data columns: [GraphEdges:edges" in printed
+    assert "/tree - data columns: [GraphNodes:colors GraphNodes:labels GraphNodes:node_ids" in printed
+    for entity in ("/tree", "/events/plan", "/events/actions", "/events/rounds", "/events/verifications",
+                   "/events/situations", "/events/belief", "/scene/facts", "/scene/graph", "/verification/round"):
+        assert rows[entity], f"nothing logged at {entity}"
+
+
+def test_tree_structure_per_plan_and_status_colours_per_tick(recorded):
+    _, outcome, rows = recorded
+    edges = [r for r in rows["/tree"] if r.get("GraphEdges:edges")]
+    nodes = [r for r in rows["/tree"] if r.get("GraphNodes:node_ids")]
+    assert len(edges) == len(outcome.plans) == 2  # the first tree and the one swapped in by the replan
+    situation_tick = edges[1]["tick"] - 1
+    ticks = [r["tick"] for r in nodes]
+    assert ticks == sorted(set(ticks)) and ticks[0] == 1 and ticks[-1] == outcome.ticks
+    assert edges[0]["tick"] == 1 and 1 < edges[1]["tick"] <= outcome.ticks
+    for r in nodes:  # a tree: every node but the root has one parent
+        ids = r["GraphNodes:node_ids"]
+        assert len(set(ids)) == len(ids) and ids[0] == "0"
+    statuses = {r["tick"]: [STATUS_OF[rgb(c)] for c in r["GraphNodes:colors"]] for r in nodes}
+    labels = {r["tick"]: r["GraphNodes:labels"] for r in nodes}
+    assert labels[1][0] == "plan" and labels[1][-1] == "goal check"
+    assert statuses[situation_tick][0] == Status.FAILURE  # the tick the effect check failed
+    assert statuses[outcome.ticks][0] == Status.SUCCESS and statuses[outcome.ticks][-1] == Status.SUCCESS
+    # logged only on change: two consecutive rows of one tree never carry the same colours
+    for a, b in zip(nodes, nodes[1:]):
+        if a["GraphNodes:node_ids"] == b["GraphNodes:node_ids"]:
+            assert a["GraphNodes:colors"] != b["GraphNodes:colors"]
+
+
+def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
+    _, outcome, rows = recorded
+    ctx = outcome.context
+    ver = texts(rows, "/events/verifications")
+    assert len(ver) == len(ctx.verifications)
+    for line, v in zip(ver, ctx.verifications):
+        assert str(v.atom) in line and v.outcome in line and v.action in line
+    rounds = texts(rows, "/events/rounds")
+    assert len(rounds) == sum(len(v.rounds) for v in ctx.verifications)
+    first = ctx.verifications[0].rounds[0]
+    assert all(f"Q: {q} → {'yes' if a else 'no'}" in rounds[0] for q, a in zip(first.questions, first.answers))
+    assert "vote yes" in rounds[0]
+    pages = [r["TextDocument:text"][0] for r in rows["/verification/round"]]
+    assert len(pages) == len(rounds) and first.questions[0] in pages[0]
+    sit = texts(rows, "/events/situations")
+    assert len(sit) == len(outcome.situations) == 1
+    assert str(outcome.situations[0].atom) in sit[0] and rows["/events/situations"][0]["TextLog:level"] == ["WARN"]
+    actions = texts(rows, "/events/actions")
+    assert sum("start" in a for a in actions) == len(ctx.actions)
+    assert sum("succeeded" in a for a in actions) == sum(e["state"] == "succeeded" for e in ctx.actions)
+    plan = texts(rows, "/events/plan")
+    assert plan[0].startswith("episode 1") and plan[1].startswith("plan: ") and plan[2].startswith("replan #1")
+
+
+def test_belief_is_logged_when_it_changes(recorded):
+    _, outcome, rows = recorded
+    docs = rows["/scene/facts"]
+    changes = outcome.graph.history
+    assert len(texts(rows, "/events/belief")) == len(changes)
+    assert 1 < len(docs) <= len(changes) + 1  # the initial survey, then at most once per tick with changes
+    final = docs[-1]["TextDocument:text"][0]
+    assert all(f"`{a}`" in final for a in outcome.graph.facts)
+    graph = rows["/scene/graph"][-1]
+    assert "cup" in graph["GraphNodes:node_ids"] and "on(cup, counter)" in graph["GraphNodes:node_ids"]
+    assert {"first": "cup", "second": "on(cup, counter)"} in graph["GraphEdges:edges"]
+
+
+def test_episodes_of_one_session_share_a_timeline(symbolic, tmp_path):
+    path = tmp_path / "two.rrd"
+    with TreeRecorder.open(f"save {path}") as rec:
+        first = run(symbolic, 0, rec)
+        second = run(symbolic, SEED_WITH_REPLAN, rec)
+    rows = read(path)
+    assert [t.split(":")[0] for t in texts(rows, "/events/plan") if t.startswith("episode")] == [
+        "episode 1", "episode 2"]
+    ticks = [r["tick"] for r in rows["/tree"]]
+    assert ticks == sorted(ticks) and ticks[-1] == first.ticks + second.ticks
+
+
+@pytest.mark.slow
+def test_pybullet_rounds_carry_their_camera_images(tmp_path):
+    pytest.importorskip("pybullet")
+    sess = session("pybullet")
+    path = tmp_path / "pybullet.rrd"
+    try:
+        with TreeRecorder.open(["save", str(path)]) as rec:
+            outcome = run(sess, 0, rec)
+    finally:
+        sess.close()
+    rows = read(path)
+    n_rounds = len(rows["/events/rounds"])
+    assert n_rounds > 0 and n_rounds >= sum(len(v.rounds) for v in outcome.context.verifications)
+    for entity, component in (("/world/camera/rgb", "EncodedImage:blob"), ("/world/camera/depth", "DepthImage:buffer"),
+                              ("/world/camera/segmentation", "SegmentationImage:buffer")):
+        assert sum(bool(r.get(component)) for r in rows[entity]) == n_rounds, entity
+    assert [r["view"] for r in rows["/world/camera/rgb"]] == list(range(1, n_rounds + 1))
+    assert "(image #1)" in texts(rows, "/events/rounds")[0]
+    camera = [r for r in rows["/world/camera"] if r.get("Pinhole:image_from_camera")]
+    assert len(camera) == n_rounds
+    assert rows["/world/objects"] and "cup" in rows["/world/objects"][0]["Boxes3D:labels"]
+
+
+def test_spawn_without_a_display_fails_with_one_clear_line(monkeypatch):
+    for var in ("DISPLAY", "WAYLAND_DISPLAY", "WAYLAND_SOCKET"):
+        monkeypatch.delenv(var, raising=False)
+    if not sys.platform.startswith("linux"):
+        pytest.skip("the display check is Linux's")
+    with pytest.raises(ViewerError) as err:
+        TreeRecorder.open("spawn")
+    msg = str(err.value)
+    assert "\n" not in msg and "no display" in msg and "--rerun save" in msg
+    assert err.value.exit_code == 4
+
+
+def test_spawn_reports_the_viewers_own_error_when_it_dies(monkeypatch):
+    if not sys.platform.startswith("linux"):
+        pytest.skip("needs an X display name that does not exist")
+    monkeypatch.setenv("DISPLAY", ":987")  # no X server there: the real viewer starts, then exits
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    with pytest.raises(ViewerError) as err:
+        TreeRecorder.open(["spawn"])
+    assert "\n" not in str(err.value) and "exited" in str(err.value)
+
+
+def _listeners(port: int) -> list[str]:
+    """Local addresses of the TCP sockets listening on ``port`` (Linux /proc)."""
+    out = []
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        if not os.path.exists(table):
+            continue
+        for line in Path(table).read_text().splitlines()[1:]:
+            local, state = line.split()[1], line.split()[3]
+            addr, p = local.rsplit(":", 1)
+            if int(p, 16) == port and state == "0A":  # LISTEN
+                out.append(addr)
+    return out
+
+
+def test_serve_listens_on_loopback_only():
+    if not os.path.exists("/proc/net/tcp"):
+        pytest.skip("needs Linux /proc")
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    rec = TreeRecorder.open(["serve", str(port)])
+    try:
+        rec.note("hello")
+        assert rec.recording.url == f"rerun+http://127.0.0.1:{port}/proxy"
+        listeners = _listeners(port)
+        assert listeners == ["0100007F"], listeners  # 127.0.0.1, and nothing else
+        with pytest.raises(ViewerError, match="in use"):
+            TreeRecorder.open(["serve", str(port)])
+    finally:
+        rec.close()
+
+
+@pytest.mark.parametrize("words,expected", [
+    (["spawn"], SinkSpec("spawn")),
+    (["serve"], SinkSpec("serve", port=9876)),
+    (["serve", "9000"], SinkSpec("serve", port=9000)),
+    (["save", "out.rrd"], SinkSpec("save", path=Path("out.rrd"))),
+    ("save:out.rrd", SinkSpec("save", path=Path("out.rrd"))),
+])
+def test_sink_words(words, expected):
+    assert SinkSpec.parse(words) == expected
+
+
+@pytest.mark.parametrize("words", [[], ["save"], ["save", "x.txt"], ["serve", "port"], ["spawn", "x"], ["web"]])
+def test_bad_sink_words_are_input_errors(words):
+    from vap_bt.errors import InputError
+
+    with pytest.raises(InputError):
+        SinkSpec.parse(words)
+
+
+def test_viz_is_the_only_room_that_imports_rerun():
+    """The executive stays rerun-free: importing it must not pull rerun in."""
+    code = ("import sys; import vap_bt.runner, vap_bt.bt.executive; "
+            "assert 'rerun' not in sys.modules, 'rerun imported by the executive'")
+    subprocess.run([sys.executable, "-c", code], check=True, cwd=ROOT, timeout=120)

@@ -1,0 +1,89 @@
+"""The episode told as text: one line per event, and a page per verification round.
+
+Everything the executive records on its :class:`~vap_bt.bt.context.ExecutionContext` — plans,
+actions started and finished, each round of looking (the N paraphrased questions and their
+answers, the vote, the view-sufficiency answer, the next viewpoint), each settled verification,
+each situation, each change of belief — becomes a line for rerun's text log, with a level that
+lets the viewer filter: situations are warnings, failed skills errors. A round also gets a
+markdown page with its question/answer table, which the viewer shows next to the image.
+
+Pure formatting: no rerun here, so the wording can be tested and reused (e.g. in reports).
+"""
+
+from __future__ import annotations
+
+from vap_bt.bt.context import Situation, Verification
+from vap_bt.domain.atoms import Atom
+from vap_bt.perception.verification import Round
+from vap_bt.scene.graph import Change
+
+INFO, WARN, ERROR = "INFO", "WARN", "ERROR"
+
+
+def yes_no(value: bool | None) -> str:
+    return "?" if value is None else ("yes" if value else "no")
+
+
+def plan_text(actions: list[str], replan: int) -> str:
+    head = "plan" if replan == 0 else f"replan #{replan}"
+    return f"{head}: {len(actions)} actions" + ("".join(f"\n  {i}: {a}" for i, a in enumerate(actions)))
+
+
+def action_start_text(step: int, action: str) -> str:
+    return f"a{step}: start {action}"
+
+
+def action_result_text(entry: dict) -> tuple[str, str]:
+    """(text, level) for one entry of ``ctx.actions``."""
+    ms = (entry.get("done_s", 0.0) - entry.get("sent_s", 0.0)) * 1000
+    ok = entry.get("state") == "succeeded"
+    msg = f" ({entry['message']})" if entry.get("message") and not ok else ""
+    return f"a{entry['step']}: {entry['state']} {entry['action']} in {ms:.0f} ms{msg}", (INFO if ok else ERROR)
+
+
+def round_text(phase: str, action: str, atom: Atom, expected: bool, r: Round, view_no: int | None = None) -> str:
+    """One line for the round, then one indented line per question with its answer."""
+    head = f"{phase} {action}: {'' if expected else 'not '}{atom} — view {r.view}"
+    if view_no is not None:
+        head += f" (image #{view_no})"
+    facts = [f"answers [{' '.join(yes_no(a) for a in r.answers)}] → vote {yes_no(r.vote)}"
+             f" ({'consistent' if r.consistent else 'inconsistent'})"]
+    if r.sufficient is not None:
+        facts.append(f"view sufficient: {yes_no(r.sufficient)}")
+    if r.direction is not None:
+        facts.append(f"next view: {r.direction}" + ("" if r.moved else " (could not move)"))
+    qa = [f"  Q: {q} → {yes_no(a)}" for q, a in zip(r.questions, r.answers)]
+    return "\n".join([f"{head}: " + "; ".join(facts), *qa])
+
+
+def round_markdown(phase: str, action: str, atom: Atom, expected: bool, r: Round) -> str:
+    lines = [f"# {'' if expected else 'not '}{atom}", "",
+             f"*{phase}* check of **{action}**, view {r.view}", "",
+             "| # | question | answer |", "|---|---|---|"]
+    lines += [f"| {i + 1} | {q} | {yes_no(a)} |" for i, (q, a) in enumerate(zip(r.questions, r.answers))]
+    lines += ["", f"- vote: **{yes_no(r.vote)}** ({'consistent' if r.consistent else 'inconsistent'})",
+              f"- view sufficient: {yes_no(r.sufficient)}"]
+    if r.direction is not None:
+        lines.append(f"- next viewpoint: {r.direction}" + ("" if r.moved else " (could not move there)"))
+    return "\n".join(lines)
+
+
+def verification_text(v: Verification) -> tuple[str, str]:
+    want = "" if v.expected else "not "
+    views = len(v.rounds)
+    queries = v.to_json()["queries"]
+    text = (f"{v.phase} {v.action}: {want}{v.atom} {v.outcome} (observed {str(v.value).lower()}) "
+            f"after {views} view{'s' * (views != 1)}, {queries} queries")
+    return text, (WARN if v.outcome == "contradicted" else INFO)
+
+
+def situation_text(s: Situation) -> str:
+    what = f" {'' if s.expected else 'not '}{s.atom} observed {str(s.observed).lower()}" if s.atom else ""
+    detail = f" ({s.detail})" if s.detail else ""
+    return f"situation: {s.kind} at step {s.step}" + (f" {s.action}" if s.action else "") + what + detail
+
+
+def change_text(c: Change) -> str:
+    added = ", ".join(f"+{a}" for a in sorted(map(str, c.added)))
+    removed = ", ".join(f"-{a}" for a in sorted(map(str, c.removed)))
+    return f"belief ({c.cause}): " + "; ".join(x for x in (added, removed) if x)

@@ -1,0 +1,254 @@
+"""TreeRecorder: the executive's ``on_tree`` callback that turns an episode into a rerun recording.
+
+The executive knows nothing of rerun. After every tick it hands its ``BehaviourTree`` to
+``on_tree(tree, tick)``; that is enough, because every behaviour of a compiled tree holds the
+episode's :class:`~vap_bt.bt.context.ExecutionContext`, and the context holds the record: the
+actions, the verifications with their rounds, the pending situation, and the scene graph with its
+history of changes. The recorder reads all of it *incrementally* — it keeps how many actions,
+verifications and belief changes it has logged, and which rounds and goals it has seen — so each
+tick costs only what is new, and logs only what changed:
+
+* the tree (``tree``): its edges and tidy layout when a new tree is swapped in (first plan, each
+  replan), its node colours whenever a status differs from the last logged tick;
+* the events (``events/*``), in the order the tree ran them: plan and replan, action start and
+  result, each round of looking with its questions and answers, each settled verification, each
+  situation, each change of belief;
+* the image of each round (``world/camera/*``) when the observation has pixels, paired exactly
+  with its round because a ``VerifyPredicate`` keeps the observation it voted on until it runs
+  again; with the round's question/answer page (``verification/round``);
+* the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes) at the start of an
+  episode and whenever it changed.
+
+Timelines: ``tick`` (the executive's tick, counted on across the episodes of a session so time
+never runs backwards), ``time`` (wall clock) and ``view`` (images logged so far: several rounds
+can happen within one tick). Belief corrections the executive makes between a failing tick and
+the first tick of the new tree are logged at that first tick, before its events.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Sequence
+
+import py_trees
+import rerun as rr
+from py_trees.common import Status
+
+from vap_bt.bt.apply_effects import ApplyEffects
+from vap_bt.bt.active_perception import ActivePerception
+from vap_bt.bt.context import ExecutionContext, Situation
+from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.verify_predicate import VerifyPredicate
+from vap_bt.viz import events as ev
+from vap_bt.viz import layout as L
+from vap_bt.viz.observation_view import camera_entities, has_pixels, segment_classes
+from vap_bt.viz.scene_view import facts_document, facts_graph, object_boxes
+from vap_bt.viz.sink import OpenRecording, SinkSpec, open_recording
+from vap_bt.viz.tree_graph import TreeGraph
+
+
+class TreeRecorder:
+    """Plug into ``Executive(..., on_tree=recorder.on_tree)``; call :meth:`close` at the end."""
+
+    def __init__(self, recording: OpenRecording, images: bool = True) -> None:
+        self.recording = recording
+        self.stream: rr.RecordingStream = recording.stream
+        self.images = images
+        self.episodes = 0
+        self.views = 0  # images logged (the ``view`` timeline)
+        self._offset = 0  # ticks of the finished episodes of this session
+        self._last_tick = 0
+        self._ctx: ExecutionContext | None = None
+        self._tree: py_trees.trees.BehaviourTree | None = None
+        self._graph: TreeGraph | None = None
+        self._statuses: tuple[Status, ...] | None = None
+        self._reset_indices()
+        self._classes = None
+
+    @classmethod
+    def open(cls, sink: SinkSpec | str | Sequence[str], name: str | None = None, images: bool = True) -> "TreeRecorder":
+        """Open a recording on ``sink`` (``SinkSpec``, ``"save run.rrd"``, ``["spawn"]`` …).
+
+        Raises :class:`~vap_bt.viz.sink.ViewerError` (spawn/serve could not start) or
+        :class:`~vap_bt.errors.InputError` (bad words or path) — both one-line CLI errors."""
+        spec = sink if isinstance(sink, SinkSpec) else SinkSpec.parse(sink)
+        return cls(open_recording(spec, recording_name=name, blueprint=L.blueprint()), images=images)
+
+    @property
+    def hint(self) -> str:
+        """One line for the user: where the recording goes and how to look at it."""
+        return self.recording.hint
+
+    # ---- the executive's callback -------------------------------------------------------------
+
+    def on_tree(self, tree: py_trees.trees.BehaviourTree, tick: int) -> None:
+        ctx = context_of(tree.root)
+        if ctx is not None and ctx is not self._ctx:
+            self._begin_episode(ctx)
+        self._last_tick = tick
+        self.stream.set_time(L.TICK, sequence=self._offset + tick)
+        self.stream.set_time(L.TIME, timestamp=time.time())
+        if ctx is None:
+            return
+        new_tree = tree is not self._tree
+        if new_tree:
+            self._new_tree(tree)
+        # corrections made between ticks (undo, correct, relocate, survey) came before this tick
+        pending_changes = ctx.graph.history[self._n_changes:]
+        self._n_changes = len(ctx.graph.history)
+        for c in [c for c in pending_changes if c.cause != "apply"]:
+            self._text(L.EV_BELIEF, ev.change_text(c))
+        applied = [c for c in pending_changes if c.cause == "apply"]
+        actions = ctx.actions[self._n_actions:]
+        self._n_actions = len(ctx.actions)
+        verifications = ctx.verifications[self._n_verifications:]
+        self._n_verifications = len(ctx.verifications)
+        self._walk(tree.root, actions, verifications, applied)
+        for entry in actions:  # anything the walk could not place (not expected)
+            self._text(L.EV_ACTIONS, *ev.action_result_text(entry))
+        for v in verifications:
+            self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
+        for c in applied:
+            self._text(L.EV_BELIEF, ev.change_text(c))
+        if ctx.situation is not None and ctx.situation is not self._situation:
+            self._situation = ctx.situation
+            self._text(L.EV_SITUATIONS, ev.situation_text(ctx.situation), ev.WARN)
+        if pending_changes:
+            self._log_belief(ctx, pending_changes[-1])
+        statuses = self._graph.statuses()
+        if new_tree or statuses != self._statuses:
+            self.stream.log(L.TREE, self._graph.status_nodes(statuses))
+            self._statuses = statuses
+
+    # ---- free-form notes and the end ----------------------------------------------------------
+
+    def note(self, text: str, level: str = ev.INFO) -> None:
+        """Log a line of the run's own progress (e.g. tee the executive's ``progress`` here)."""
+        self._text(L.EV_PLAN, text, level)
+
+    def close(self) -> None:
+        """Flush and close the sink (a saved file gets its footer; a served stream ends)."""
+        self.recording.close()
+
+    def serve_until_interrupted(self, say=print) -> None:
+        """In ``serve`` mode, keep serving after the run until Ctrl-C, so that a viewer that
+        connects late still receives the whole recording; returns at once in other modes."""
+        if self.recording.spec.mode != "serve":
+            return
+        say(f"{self.hint} — Ctrl-C to stop serving")
+        try:
+            while True:
+                time.sleep(3600)
+        except KeyboardInterrupt:
+            pass
+
+    def __enter__(self) -> "TreeRecorder":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    # ---- internals ----------------------------------------------------------------------------
+
+    def _reset_indices(self) -> None:
+        self._n_actions = self._n_verifications = self._n_changes = 0
+        self._replans = -1
+        self._situation: Situation | None = None
+        self._seen: set[int] = set()
+        self._keep: list[object] = []  # strong references, so that ids in _seen are never reused
+
+    def _begin_episode(self, ctx: ExecutionContext) -> None:
+        if self._ctx is not None:
+            self._offset += self._last_tick
+        self._ctx, self._tree, self._graph, self._statuses = ctx, None, None, None
+        self._reset_indices()
+        self.episodes += 1
+        self.stream.set_time(L.TICK, sequence=self._offset)
+        self.stream.set_time(L.TIME, timestamp=time.time())
+        self._text(L.EV_PLAN, f"episode {self.episodes}: {len(ctx.graph.facts)} facts believed, "
+                              f"verification {ctx.mode.name}, K={ctx.budget}")
+        self._log_belief(ctx, None, where="initial survey")
+        boxes = object_boxes(ctx.graph)
+        if boxes is not None:
+            self.stream.log(L.OBJECT_BOXES, boxes)
+
+    def _new_tree(self, tree: py_trees.trees.BehaviourTree) -> None:
+        self._tree, self._graph = tree, TreeGraph.of(tree.root)
+        self._replans += 1
+        plan = [str(b.action) for b in self._graph.behaviours if isinstance(b, ExecuteSkill)]
+        self._text(L.EV_PLAN, ev.plan_text(plan, self._replans))
+        self.stream.log(L.TREE, self._graph.structure())
+
+    def _walk(self, node, actions: list[dict], verifications: list, applied: list) -> None:
+        """Log what ``node`` and its subtree did this tick, in the order the tree ran it."""
+        if isinstance(node, ExecuteSkill) and node.handle is not None and self._first(node.handle):
+            self._text(L.EV_ACTIONS, ev.action_start_text(node.step, str(node.action)))
+        if isinstance(node, VerifyPredicate) and node.round is not None and self._first(node.round):
+            self._log_round(node)
+        for child in node.children:
+            self._walk(child, actions, verifications, applied)
+        if isinstance(node, ExecuteSkill):
+            entry = _pop(actions, lambda e: e["step"] == node.step and e["action"] == str(node.action))
+            if entry is not None:
+                self._text(L.EV_ACTIONS, *ev.action_result_text(entry))
+        if isinstance(node, ApplyEffects) and node.status == Status.SUCCESS and self._first(node):
+            c = _pop(applied, lambda c: c.added <= node.action.add and c.removed <= node.action.delete)
+            if c is not None:
+                self._text(L.EV_BELIEF, ev.change_text(c))
+        if isinstance(node, ActivePerception):
+            action = str(node.action) if node.action else "goal"
+            v = _pop(verifications, lambda v: v.atom == node.verify.atom and v.phase == node.phase
+                     and v.action == action)
+            if v is not None:
+                self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
+
+    def _log_round(self, node: VerifyPredicate) -> None:
+        parent = node.parent if isinstance(node.parent, ActivePerception) else None
+        phase = parent.phase if parent else "check"
+        action = (str(parent.action) if parent.action else "goal") if parent else "?"
+        obs = node.observation
+        view_no = None
+        if self.images and has_pixels(obs):
+            self.views += 1
+            view_no = self.views
+            self.stream.set_time(L.VIEW, sequence=self.views)
+            classes = segment_classes(obs)
+            if classes is not None and obs.segment_names != self._classes:
+                self._classes = dict(obs.segment_names)
+                self.stream.log(f"{L.WORLD}/camera/segmentation", classes, static=True)
+            for path, archetype in camera_entities(obs):
+                self.stream.log(path, archetype)
+        self._text(L.EV_ROUNDS, ev.round_text(phase, action, node.atom, node.expected, node.round, view_no))
+        self.stream.log(L.ROUND_PAGE, rr.TextDocument(
+            ev.round_markdown(phase, action, node.atom, node.expected, node.round), media_type=rr.MediaType.MARKDOWN))
+
+    def _log_belief(self, ctx: ExecutionContext, change, where: str = "") -> None:
+        self.stream.log(L.SCENE_FACTS, facts_document(ctx.graph, change, where))
+        self.stream.log(L.SCENE_GRAPH, *facts_graph(ctx.graph))
+
+    def _text(self, path: str, text: str, level: str = ev.INFO) -> None:
+        self.stream.log(path, rr.TextLog(text, level=level))
+
+    def _first(self, obj: object) -> bool:
+        """True the first time ``obj`` (a round, a goal handle, a node) is seen this episode."""
+        if id(obj) in self._seen:
+            return False
+        self._seen.add(id(obj))
+        self._keep.append(obj)
+        return True
+
+
+def context_of(root: py_trees.behaviour.Behaviour) -> ExecutionContext | None:
+    """The episode's context, held by every behaviour of a compiled tree."""
+    for node in root.iterate():
+        ctx = getattr(node, "ctx", None)
+        if isinstance(ctx, ExecutionContext):
+            return ctx
+    return None
+
+
+def _pop(items: list, match):
+    for i, x in enumerate(items):
+        if match(x):
+            return items.pop(i)
+    return None
