@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -64,3 +65,14 @@ def test_interrupted_run_still_writes_what_it_knew(cli, tmp_path, monkeypatch):
     r = json.loads((tmp_path / "r.json").read_text())
     assert r["interrupted"] and r["reason"] == "interrupted" and not r["success"]
     assert r["plans"] and len(r["actions_executed"]) == 2
+
+
+def test_run_records_a_rerun_file_over_zenoh(cli, tmp_path):
+    """The default run (skill servers over Zenoh) with --rerun save: the recording holds the tree."""
+    rrd = tmp_path / "run.rrd"
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--seed", "8", "--rerun", "save", rrd)
+    assert code == 0, err
+    assert rrd.exists() and rrd.stat().st_size > 10_000
+    exe = Path(sys.executable).with_name("rerun")  # the rerun CLI installed beside this interpreter
+    p = subprocess.run([str(exe), "rrd", "print", str(rrd)], capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0 and "tree" in p.stdout  # tests/test_viz.py checks the contents in depth

@@ -63,7 +63,13 @@ def cmd_run(args) -> int:
     progress = _progress(args.quiet)
     progress(f"task {task.name}: {task.spec.instruction or task.planning.source} "
              f"(world {cfg.world}, seed {cfg.seed}, verify {cfg.verify})")
-    session = Session(task, cfg, progress)
+    recorder = None
+    if args.rerun:
+        from vap_bt.viz import TreeRecorder  # only the viz room imports rerun
+
+        recorder = TreeRecorder.open(args.rerun, name=f"{task.name} seed {cfg.seed}")
+        progress(recorder.hint)
+    session = Session(task, cfg, progress, recorder=recorder)
     rep: dict = {"success": False, "goal_satisfied": None, "reason": "interrupted", "seed": cfg.seed,
                  "command": report_mod.command_line()}
     try:
@@ -75,6 +81,9 @@ def cmd_run(args) -> int:
         session.close()
         if args.report:  # written even when the run stops early, so nothing already known is lost
             report_mod.write(rep, args.report)
+        if recorder is not None:
+            recorder.serve_until_interrupted()
+            recorder.close()
     summary = {k: rep[k] for k in ("success", "goal_satisfied", "reason", "seed", "replans", "vlm_queries",
                                    "wall_s")}
     summary["situations"] = rep["situations"]
@@ -136,6 +145,9 @@ def build_parser() -> argparse.ArgumentParser:
                     help="zenoh (default): skill servers in this command, reached over a loopback Zenoh link; "
                          "inproc: skills called directly (fast campaigns)")
     sr.add_argument("--report", help="write the full JSON report here")
+    sr.add_argument("--rerun", nargs="+", metavar="MODE",
+                    help="live view in rerun: 'spawn' (a local viewer), 'serve [PORT]' (gRPC on 127.0.0.1, "
+                         "default 9876), or 'save FILE.rrd'")
     sr.add_argument("--full", action="store_true", help="print the full report, not the summary")
     sr.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
     sr.set_defaults(func=cmd_run)

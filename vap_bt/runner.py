@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import asdict, dataclass, field
-from typing import Callable
+from typing import Any, Callable
 
 from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
@@ -105,6 +105,7 @@ class Session:
     task: Task
     cfg: RunConfig
     progress: Callable[[str], None] = lambda m: None
+    recorder: Any = None  # a vap_bt.viz.TreeRecorder (on_tree + note), or None
     planner: Planner = field(init=False)
     world: World = field(init=False)
 
@@ -132,7 +133,11 @@ class Session:
                                      tick_period_s=0.0 if cfg.transport == "inproc" else TICK_PERIOD_S)
         t0 = time.perf_counter()
         vlm = metered if settings.mode.pre or settings.mode.eff else None
-        executive = Executive(self.task.planning, self.planner, skills, camera, vlm, settings, self.progress)
+        progress = self.progress
+        if self.recorder is not None:  # progress lines go to the recording's log as well
+            progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
+        executive = Executive(self.task.planning, self.planner, skills, camera, vlm, settings, progress,
+                              on_tree=self.recorder.on_tree if self.recorder is not None else None)
         try:
             outcome = executive.run()
         except KeyboardInterrupt:
