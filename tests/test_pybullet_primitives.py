@@ -95,6 +95,37 @@ def test_open_takeout_fill_turnon():
     w.close()
 
 
+def test_takeout_from_fridge_round_its_open_door():
+    # straight from where opening left the robot: the base drives round the open leaf (a straight
+    # drive would push it shut) and the low pie is taken with the hand pitched down
+    w = world("heat_pie")
+    run(w, "open(fridge)", "takeout(apple_pie, fridge, kitchen)")
+    assert w.holds(A("holding(apple_pie)")) and not w.holds(A("inside(apple_pie, fridge)"))
+    assert w.holds(A("open(fridge)"))
+    w.close()
+
+
+def test_takeout_from_drawer_then_cut_after_view_moves():
+    w = world("halve_egg")
+    run(w, "open(drawer)", "takeout(knife, drawer, kitchen)")
+    assert w.holds(A("holding(knife)")) and w.holds(A("open(drawer)"))
+    run(w, "find(floor_kitchen, egg, kitchen)")
+    for direction in ("closer", "closer"):  # the wrist camera turns the hand and the knife with it
+        w.move_view("egg", direction)
+    run(w, "cut(egg, knife)")
+    assert w.holds(A("sliced(egg)")) and w.holds(A("holding(knife)"))
+    w.close()
+
+
+def test_open_with_full_hand_sets_down_and_regrasps():
+    w = world("boil_water")
+    run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)", "takeout(cup, cabinet, kitchen)",
+        "find(cabinet, kitchen_sink, kitchen)", "fill(cup, kitchen_sink)", "find(kitchen_sink, microwave, kitchen)",
+        "open(microwave)")
+    assert w.holds(A("open(microwave)")) and w.holds(A("holding(cup)"))
+    w.close()
+
+
 def test_push_clears_the_blocker():
     w = world("pick_plate")
     assert w.holds(A("blocking(bowl, plate)")) and not w.holds(A("reachable(plate)"))

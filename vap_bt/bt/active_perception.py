@@ -5,8 +5,11 @@ round settles, the verdict stands: SUCCESS if the world agrees with the expectat
 *situation* is recorded on the context and the decorator fails, which fails the plan's tree and
 hands control to the executive. When the round does not settle (answers disagree, or the view is
 judged insufficient), the decorator asks the VLM where to look from, moves there, and ticks the
-child again — at most K moves. With the budget spent, a round whose answers agreed decides; one
-whose answers never agreed does not overturn belief (the check is recorded as *unsettled*).
+child again — at most K moves. With the budget spent and no round settled, a value decides only if
+every view's answers agreed on it; otherwise the check does not overturn belief and is recorded as
+*unsettled* (the paper returns the last vote here; one vote from a view the VLM judged insufficient
+is too close to a guess to rewrite the scene graph).
+An unsettled *goal* atom withholds the executive's claim of success.
 """
 
 from __future__ import annotations
@@ -48,14 +51,21 @@ class ActivePerception(py_trees.decorators.Decorator):
             r.moved = self.ctx.camera.move_view(target, r.direction) if r.direction else False
             self.moves += 1
             return Status.RUNNING
-        if r.consistent and r.vote is not None:
-            return self._settle(r.vote, "confirmed" if r.vote == self.verify.expected else "contradicted")
+        # budget spent without a settled round: a value stands only if every view's answers agreed on
+        # it (independent views agreeing is evidence; a model guessing about an object it cannot see
+        # rarely agrees with itself view after view); otherwise belief stands
+        votes = {x.vote for x in self.rounds if x.consistent}
+        if all(x.consistent for x in self.rounds) and len(votes) == 1 and None not in votes:
+            value = votes.pop()
+            return self._settle(value, "confirmed" if value == self.verify.expected else "contradicted")
         return self._settle(self.verify.expected, "unsettled")
 
     def _settle(self, value: bool, outcome: str) -> Status:
         v = self.verify
         self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
                                                    v.atom, v.expected, value, outcome, list(self.rounds)))
+        if self.phase == "goal" and outcome == "unsettled":
+            self.ctx.unconfirmed_goal.append(v.atom)
         if outcome != "contradicted":
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]

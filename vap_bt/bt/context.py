@@ -87,6 +87,8 @@ class ExecutionContext:
     progress: Callable[[str], None] = lambda msg: None
     situation: Situation | None = None
     verifications: list[Verification] = field(default_factory=list)
+    #: goal atoms the final look could not settle: success is not claimed over them
+    unconfirmed_goal: list[Atom] = field(default_factory=list)
     actions: list[dict] = field(default_factory=list)
     t0: float = field(default_factory=time.perf_counter)
 

@@ -102,6 +102,10 @@ class Executive:
             self.on_tree(tree, out.ticks)
             status = tree.root.status
             if status == Status.SUCCESS:
+                if ctx.unconfirmed_goal:  # the tree got through, but the camera could not confirm it
+                    out.reason = "goal reached in belief but not confirmed by looking: " + ", ".join(
+                        map(str, ctx.unconfirmed_goal))
+                    return out
                 out.success, out.reason = True, "goal reached"
                 return out
             if status == Status.RUNNING:

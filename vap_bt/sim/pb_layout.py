@@ -228,6 +228,10 @@ def _place_items(layout, catalog, types, furniture, rooms, rng: random.Random, d
                     cav = f.kind.cavity
                     z = cav.z[0]  # the cavity's floor
                     ly = (0.04 if cav.open == "front" else 0.0) + jitter(0.01)
+                    if f.kind.door is not None and f.kind.door.prismatic:
+                        # in a drawer: on the part of the tray that slides out of the body (the
+                        # rest stays under the top and cannot be reached from above)
+                        ly = f.kind.size[1] / 2 - f.kind.door.slide / 2 + jitter(0.01)
                 p = f.to_world((along, ly, z + k.extent[2] / 2 + 0.002))
                 yaw = f.yaw + jitter(0.1)
                 out[n] = ItemPlan(n, k, rel, support, tuple(map(float, p)), yaw)

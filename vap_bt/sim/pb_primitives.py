@@ -40,12 +40,24 @@ CARRY = (0.30, 0.40, 0.95)  # where a held object rides, in the base frame (besi
 DROP = (0.30, 0.62, 0.55)  # where an object is let go "nearby": over the floor beside the base
 CORRIDOR_SPEED = 1.0
 APPROACH = 0.14  # pre-grasp distance along the approach axis
+#: a side grasp keeps the hand level when the tcp can be this high above the item's bottom (the
+#: gripper housing reaches 0.03 m and the wrist 0.045 m below the hand's axis); lower items are
+#: taken with the hand pitched down by SIDE_PITCH, the tcp SIDE_PITCHED_HEIGHT above the bottom
+SIDE_LEVEL_HEIGHT = 0.042
+SIDE_PITCH = 0.6
+SIDE_PITCHED_HEIGHT = 0.025
+FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
+WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
 EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
 BASE_CLEARANCE = 0.40  # base centre to the front face of the furniture at least
 WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep a work pose clear
-WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
+WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15)  # further from the point, when no sideways shift is clear
+WORK_MARGIN = 0.08
+DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the start or the goal, when the straight way is blocked
+LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
+ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furniture to be worked  # base footprint to obstacles at a work pose (the arm is wider than the base)
 OPEN_TO = 0.92  # fraction of its travel an opened door or drawer is pulled to (limits: 1.0)
 #: a closing hand presses a furniture door a little past closed, against its stop: the grip is
 #: springy and the joint's friction would otherwise leave the leaf a few per cent open (room doors
@@ -62,6 +74,12 @@ def _frame(z, x, p) -> np.ndarray:
     T = np.eye(4)
     T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, p
     return T
+
+
+def _how(a) -> str:
+    """A hand approaching along ``a`` works from above ("top") or from the side ("front", level or
+    pitched down)."""
+    return "top" if a[2] < -0.9 else "front"
 
 
 class Primitives:
@@ -126,19 +144,59 @@ class Primitives:
             front = fp.to_world((0.0, fp.kind.size[1] / 2, 0.0))
             behind = float((front - np.asarray(point))[:2] @ fp.front[:2])
             r = max(r, behind + BASE_CLEARANCE)
-        p = np.asarray(point) + f * r
         side = np.array([-f[1], f[0], 0.0])
         obstacles = self.follower.obstacles()
-        for shift in WORK_SHIFTS:
-            q = p + side * shift
-            pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
-            if self.follower.base_free(pose, obstacles, margin=WORK_MARGIN):
-                return pose
+        for back in WORK_BACKOFFS:  # further back only when no sideways step clears (an open drawer)
+            p = np.asarray(point) + f * (r + back)
+            for shift in WORK_SHIFTS:
+                q = p + side * shift
+                pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
+                if self.follower.base_free(pose, obstacles, margin=WORK_MARGIN):
+                    return pose
+        p = np.asarray(point) + f * r
         return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def approach(self, pose) -> None:
         """Drive the base to a work pose (arm at home or carrying)."""
-        self.motion.drive(pose, 0.6)
+        for p in self.base_path(pose):
+            self.motion.drive(p, 0.6)
+
+    def base_path(self, pose) -> list[tuple[float, float, float]]:
+        """Poses to drive through to ``pose`` without the base or the arm above it running into a
+        wall, furniture or an open leaf: straight if that is clear, else through one via pose
+        (backed off from the goal along its heading, or round a corner); straight if none is."""
+        here = np.array(self.robot.target[:3], float)
+        goal = np.array(pose, float)
+        goal[2] = here[2] + math.remainder(goal[2] - here[2], 2 * math.pi)
+        obstacles = self.follower.obstacles()
+        heading = np.array([math.cos(goal[2]), math.sin(goal[2]), 0.0])
+        vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
+                                                               np.array([here[0], goal[1], here[2]])]
+        turned = np.array([here[0], here[1], goal[2]])  # turning on the spot first swings the arm away
+        paths = [[goal], *([v, goal] for v in vias), [turned, goal], *([turned, v, goal] for v in vias),
+                 *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)])]
+        for path in paths:
+            legs = [here, *path]
+            if all(self._leg_clear(a, b, obstacles) for a, b in zip(legs, legs[1:])):
+                return [tuple(map(float, p)) for p in path]
+        return [tuple(map(float, goal))]
+
+    def _leg_clear(self, a: np.ndarray, b: np.ndarray, obstacles) -> bool:
+        """A straight base move keeps the footprint off every obstacle once it has left ``a``, and
+        the arm (folded or carrying, seen from above) too except near ``b``, where it works over
+        the furniture."""
+        def way(u, v) -> float:  # a turn on the spot counts as a way too (the arm sweeps)
+            return float(np.linalg.norm((v - u)[:2]) + 0.4 * abs(v[2] - u[2]))
+
+        n = max(2, int(way(a, b) / 0.08) + 1)
+        for s in np.linspace(0.0, 1.0, n):
+            q = a + (b - a) * s
+            left, to_go = way(a, q), np.linalg.norm((b - q)[:2])
+            if left < LEAVE_SLACK:
+                continue
+            if not self.follower.base_free(q, obstacles, folded=to_go > ARM_SLACK, margin=PARKED_MARGIN):
+                return False
+        return True
 
     # ================================================================ arm helpers
 
@@ -227,7 +285,8 @@ class Primitives:
 
         self.motion.on_sample = on_sample
         try:
-            self.motion.drive(pose, CORRIDOR_SPEED)
+            for p in self.base_path(pose):
+                self.motion.drive(p, CORRIDOR_SPEED)
         finally:
             self.motion.on_sample = None
 
@@ -282,7 +341,14 @@ class Primitives:
         ct = self.scene.things.get(container) if container else None
         if (ct is not None and ct.furniture.kind.cavity.open == "front") or sideways:
             a = -ct.furniture.front if ct is not None else -self.toward_robot(c, self.truth.support_of(name))
-            return _frame(a, (0, 0, -1), c), a
+            bottom = self.truth.aabb(name)[2]
+            p = c.copy()
+            if c[2] - bottom < SIDE_LEVEL_HEIGHT:
+                # a level hand this low would put the gripper housing and the wrist into the
+                # support: the hand comes in pitched down instead, its tcp a little higher
+                a = math.cos(SIDE_PITCH) * a + np.array([0.0, 0.0, -math.sin(SIDE_PITCH)])
+                p[2] = max(c[2], bottom + SIDE_PITCHED_HEIGHT)
+            return _frame(a, (0, 0, -1), p), a
         _, orn = pb.getBasePositionAndOrientation(t.body, physicsClientId=self.cid)
         R = np.array(pb.getMatrixFromQuaternion(orn)).reshape(3, 3)
         left = self.base_T()[:3, 1]
@@ -312,12 +378,10 @@ class Primitives:
         t = self.scene.things[name]
         G, a = self.grasp_frame(name, sideways)
         where = self.truth.container_of(name) or self.truth.support_of(name)
-        self.approach(self.work_pose(G[:3, 3], self.toward_robot(G[:3, 3], where), "top" if a[2] < -0.5 else "front", where))
+        self.approach(self.work_pose(G[:3, 3], self.toward_robot(G[:3, 3], where), _how(a), where))
         G, a = self.grasp_frame(name, sideways)
-        pre = G.copy()
-        pre[:3, 3] -= a * APPROACH
         self.phase(0.1, "pre-grasp")
-        if not self.goto_pose(pre):
+        if self.reach_pre(G, a, where, APPROACH) is None:
             self.home()
             return ActionOutcome(False, f"{name}: no arm pose reaches it")
         self.motion.fingers(self.robot.cfg.gripper.stroke)
@@ -332,9 +396,14 @@ class Primitives:
             self.robot.attach(t.body, name)
         self.phase(0.75, "lifting")
         back = self.motion.pose("tcp")
-        back[:3, 3] -= a * 0.12 if a[2] > -0.5 else 0.0
-        back[2, 3] += 0.12 if a[2] <= -0.5 else 0.02
+        back[2, 3] += 0.12 if _how(a) == "top" else 0.02
         self.motion.line(back, steps=3, speed=0.3)
+        wt = self.scene.things.get(where) if where else None
+        if wt is not None and wt.furniture is not None and wt.furniture.kind.cavity is not None:
+            self.withdraw(name if self.robot.grip is not None else None, where)
+        elif _how(a) == "front":
+            back[:3, 3] -= np.array([a[0], a[1], 0.0]) * 0.12
+            self.motion.line(back, steps=3, speed=0.3)
         if self.robot.grip is None:
             self.open_hand()
             self.home()
@@ -345,6 +414,78 @@ class Primitives:
             return ActionOutcome(True, f"{name} slipped out of the gripper")
         self.carry()
         return ActionOutcome(True)
+
+    def way_out(self, container: str, pts) -> tuple[np.ndarray, float]:
+        """The way out of a container's cavity (up for a top-open one, straight out of the front
+        face for a front-open one) and how far the deepest of ``pts`` must still go that way to
+        be WITHDRAW_MARGIN clear of the rim or the face."""
+        f = self.scene.things[container].furniture
+        if f.kind.cavity.open == "top":
+            d = np.array([0.0, 0.0, 1.0])
+            depth = max(f.kind.cavity.z[1] - p[2] for p in pts)
+        else:
+            d = np.array([f.front[0], f.front[1], 0.0])
+            face = f.to_world((0.0, f.kind.size[1] / 2, 0.0))
+            depth = max(float((face - p)[:2] @ d[:2]) for p in pts)
+        return d, max(0.0, depth + WITHDRAW_MARGIN)
+
+    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
+        """Bring the hand to its pre-pose for going along ``a`` to ``G``: ``least`` back from
+        ``G``, and with the fingertips and ``pts`` (a held item's corners when the hand is at
+        ``G``) out of the container's cavity, so that the arm's joint-space move there cannot
+        sweep through a wall. Out of a deep front-open cavity that is further than the arm
+        reaches comfortably: the base steps back first, the arm goes to the pre-pose, and the base
+        steps in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`. Returns the
+        pre-pose (the hand is there), or None when the arm cannot get there."""
+        pre = G.copy()
+        pre[:3, 3] -= a * least
+        step = np.zeros(3)
+        ct = self.scene.things.get(container) if container else None
+        if ct is not None and ct.furniture is not None and ct.furniture.kind.cavity is not None:
+            d, out = self.way_out(container, [p - a * least for p in (G[:3, 3] + a * FINGERTIP, *pts)])
+            if d[2] > 0.5:  # a top-open cavity: the arm lifts the pre-pose
+                pre[:3, 3] += d * out
+            elif out > 0:
+                x, y, yaw = self.robot.target[:3]
+                obstacles = self.follower.obstacles()
+                if all(self.follower.base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, margin=PARKED_MARGIN)
+                       for s in np.linspace(0.25, 1.0, 4)):
+                    step = d * out
+                    self.motion.drive((x + step[0], y + step[1], yaw), 0.5)
+                else:  # no room behind: the arm backs off further instead
+                    pre[:3, 3] += d * out
+        far = pre.copy()
+        far[:3, 3] += step
+        if not self.goto_pose(far):
+            return None
+        if step.any():
+            x, y, yaw = self.robot.target[:3]
+            self.motion.drive((x - step[0], y - step[1], yaw), 0.4)
+        return pre
+
+    def withdraw(self, name: str | None, container: str) -> None:
+        """Bring a held item (``name``) or the empty hand out of a container's cavity the way it
+        went in (:meth:`way_out`): up a top-open one by the arm, out of a front-open one by the base
+        stepping back, which carries the arm along unchanged (else by the arm), so that the next
+        joint-space move of the arm cannot sweep it through the walls or a door."""
+        T = self.motion.pose("tcp")
+        if name is not None:
+            box = self.truth.aabb(name)
+            pts = [np.array([box[i], box[j], box[2]]) for i in (0, 3) for j in (1, 4)]
+        else:  # the open fingers: their tips and sides
+            pts = [T[:3, 3] + T[:3, 2] * FINGERTIP + T[:3, 1] * s * 0.06 - np.array([0.0, 0.0, 0.02]) for s in (-1, 1)]
+        d, out = self.way_out(container, pts)
+        if out <= 0:
+            return
+        if d[2] < 0.5:
+            x, y, yaw = self.robot.target[:3]
+            obstacles = self.follower.obstacles()
+            if all(self.follower.base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, margin=PARKED_MARGIN)
+                   for s in np.linspace(0.25, 1.0, 4)):
+                self.motion.drive((x + d[0] * out, y + d[1] * out, yaw), 0.4)
+                return
+        T[:3, 3] += d * out
+        self.motion.line(T, steps=max(2, int(out / 0.04)), speed=0.3)
 
     # ================================================================ placing
 
@@ -375,10 +516,11 @@ class Primitives:
         t = self.scene.things[container]
         f = t.furniture
         cav = f.kind.cavity
-        shift = 0.0
-        if t.hinge is not None and t.hinge.prismatic:
-            shift = pb.getJointState(t.hinge.body, t.hinge.joint, physicsClientId=self.cid)[0]
-        p = f.to_world((0.0, 0.03 + shift, cav.z[0]))
+        depth = 0.03
+        if t.hinge is not None and t.hinge.prismatic:  # the middle of the part of the tray that is out
+            depth = f.kind.size[1] / 2 - f.kind.door.slide / 2
+            depth += pb.getJointState(t.hinge.body, t.hinge.joint, physicsClientId=self.cid)[0]
+        p = f.to_world((0.0, depth, cav.z[0]))
         a = -f.front if cav.open == "front" else np.array([0.0, 0.0, -1.0])
         return p, a
 
@@ -394,7 +536,7 @@ class Primitives:
             spot, a = self.cavity_spot(where)
         else:
             spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
-        self.approach(self.work_pose(spot, self.toward_robot(spot, where), "top" if a[2] < -0.5 else "front", where))
+        self.approach(self.work_pose(spot, self.toward_robot(spot, where), _how(a), where))
         box = self.truth.aabb(name)
         c = self.truth.center(name)
         spot = spot.copy()
@@ -408,10 +550,10 @@ class Primitives:
         target_item = T_item.copy()
         target_item[:3, 3] = spot
         G = target_item @ np.linalg.inv(hold)
-        pre = G.copy()
-        pre[:3, 3] -= a * 0.16
+        corners = [spot + np.array([box[i], box[j], box[k]]) - c for i in (0, 3) for j in (1, 4) for k in (2, 5)]
         self.phase(0.2, "pre-place")
-        if not self.goto_pose(pre):
+        pre = self.reach_pre(G, a, where if inside else None, 0.16, corners)
+        if pre is None:
             self.carry()
             return ActionOutcome(False, f"{where}: no arm pose reaches it")
         self.phase(0.5, "placing")
@@ -428,8 +570,11 @@ class Primitives:
         out = self.motion.pose("tcp")
         out[:3, 3] -= out[:3, 2] * 0.1
         self.motion.line(out, steps=2, speed=0.4)
-        out[:3, 3] -= a * 0.1
-        self.motion.line(out, steps=2, speed=0.4)
+        if inside:
+            self.withdraw(None, where)
+        else:
+            out[:3, 3] -= a * 0.1
+            self.motion.line(out, steps=2, speed=0.4)
         self.home()
         return ActionOutcome(True)
 
@@ -443,7 +588,7 @@ class Primitives:
         held = self.truth.held()
         if held is None:
             return self._open_close(name, opening, sit)
-        sideways = abs(self.robot.link_pose("tcp")[2, 2]) < 0.5  # the hand's axis is horizontal
+        sideways = abs(self.robot.link_pose("tcp")[2, 2]) < 0.8  # level or pitched, not from above
         room = self.truth.room_of_point(self.robot.base_pose[:2])
         x, y, _ = self.robot.base_pose
         shelves = sorted((t for t in self.scene.things.values() if t.furniture is not None and
@@ -644,10 +789,17 @@ class Primitives:
         support = self.truth.support_of(name)
         self.approach(self.work_pose(c, self.toward_robot(c, support), "top", support))
         top = self.truth.aabb(name)[5]
-        kbox = self.truth.aabb(knife)
+        # the blade's lowest point, from the tcp: however the hand holds the knife, that point
+        # goes over the object's centre and down through it
+        kt = self.scene.things[knife]
+        pos, orn = pb.getBasePositionAndOrientation(kt.body, physicsClientId=self.cid)
+        R = np.array(pb.getMatrixFromQuaternion(orn)).reshape(3, 3)
+        signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+        corners = np.asarray(pos) + (signs * np.asarray(kt.kind.extent) / 2) @ R.T
+        edge = corners[np.argmin(corners[:, 2])] - self.robot.link_pose("tcp")[:3, 3]
+        below = -edge[2]
         T = self.motion.pose("tcp")
-        below = T[2, 3] - kbox[2]  # from the tcp down to the blade's edge
-        T[:3, 3] = (c[0], c[1], top + below + 0.06)
+        T[:3, 3] = (c[0] - edge[0], c[1] - edge[1], top + below + 0.06)
         if not self.goto_pose(T):
             self.carry()
             return ActionOutcome(False, f"{name}: out of reach")

@@ -322,7 +322,7 @@ class PybulletWorld:
                 return False
             try:
                 if (nx, ny) != (x, y):
-                    self.motion.drive((nx, ny, nyaw), 0.6)
+                    self.prims.approach((nx, ny, nyaw))  # round open leaves, like any base move
                 return self.prims.look_at(p, lift=lift, allow_base=False)
             except Cancelled:
                 return False
