@@ -95,6 +95,17 @@ def test_open_takeout_fill_turnon():
     w.close()
 
 
+def test_placein_puts_the_held_item_into_the_container():
+    w = world("store_firewood")
+    run(w, "find(floor_living_room, wood1, living_room)", "grasp(wood1, hearth, living_room)",
+        "navigate(living_room, storage_room, door_ls, wood1)", "find(door_ls, basket, storage_room)")
+    assert w.holds(A("holding(wood1)")) and w.holds(A("inview(basket)"))
+    run(w, "placein(wood1, basket, storage_room)")
+    assert w.holds(A("inside(wood1, basket)")) and w.holds(A("hand_empty"))
+    assert w.holds(A("in_room(wood1, storage_room)")) and not w.holds(A("holding(wood1)"))
+    w.close()
+
+
 def test_takeout_from_fridge_round_its_open_door():
     # straight from where opening left the robot: the base drives round the open leaf (a straight
     # drive would push it shut) and the low pie is taken with the hand pitched down
