@@ -1,8 +1,19 @@
 #!/usr/bin/env bash
-# The demo: sets up if needed, then runs the boil-water task (paper S1) end to end — plan, compile,
-# tick, verify every precondition and effect, handle injected situations — and writes the report.
+# The demo: sets up if needed, then runs the boil-water task (paper S1) end to end, twice:
+#  1. in the headless pybullet household — skill servers and executive in this one command,
+#     talking over a loopback Zenoh link; every precondition and effect checked by looking;
+#     the live view recorded for rerun (out/boil_water.rrd: `.venv/bin/rerun out/boil_water.rrd`);
+#  2. in the symbolic world with the paper's Table II situations injected, to show situations
+#     being detected, the scene graph corrected and the plan repaired.
+# Reports (everything needed to rerun) in out/. Extra arguments go to both `vap-bt run` calls.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
 mkdir -p out
-exec .venv/bin/vap-bt run trees/boil_water.yaml --seed "${SEED:-1}" --report out/boil_water.json "$@"
+seed="${SEED:-1}"
+echo "== 1/2: pybullet household, no injected situations ==" >&2
+.venv/bin/vap-bt run trees/boil_water.yaml --world pybullet --no-injection --seed "$seed" \
+  --report out/boil_water_pybullet.json --rerun save out/boil_water.rrd "$@"
+echo "== 2/2: symbolic world, Table II situations injected ==" >&2
+.venv/bin/vap-bt run trees/boil_water.yaml --world symbolic --seed "$seed" \
+  --report out/boil_water_symbolic.json "$@"
