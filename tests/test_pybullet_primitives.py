@@ -103,6 +103,42 @@ def test_placein_puts_the_held_item_into_the_container():
     run(w, "placein(wood1, basket, storage_room)")
     assert w.holds(A("inside(wood1, basket)")) and w.holds(A("hand_empty"))
     assert w.holds(A("in_room(wood1, storage_room)")) and not w.holds(A("holding(wood1)"))
+    # placing folded the arm: a look re-aims the camera (a remembered aim is stale) and, from
+    # where the robot stands, sees down into the open top; looking from above needs no base room
+    assert w.observe(("wood1", "basket")).visibility["wood1"] >= 0.5
+    assert w.move_view("wood1", "above")
+    assert w.observe(("wood1", "basket")).visibility["wood1"] >= 0.5
+    w.close()
+
+
+def test_a_held_item_does_not_hide_what_the_camera_looks_at():
+    # the knife, rigid in the wrist camera's view, lay across the egg: the aim turns past it
+    w = world("halve_egg")
+    run(w, "open(drawer)", "takeout(knife, drawer, kitchen)", "find(floor_kitchen, egg, kitchen)")
+    assert w.holds(A("holding(knife)"))
+    assert w.observe(("egg",)).visibility["egg"] >= 0.5
+    assert w.move_view("egg", "closer") and w.observe(("egg",)).visibility["egg"] >= 0.5
+    w.close()
+
+
+def test_a_closed_room_door_is_seen_whole_and_view_moves_stay_in_the_room():
+    w = world("gather_kindling")
+    run(w, "find(floor_living_room, door_lg, living_room)")
+    assert w.observe(("door_lg",)).visibility["door_lg"] >= 0.5
+    # "behind" the door is the other room: a view move does not drive through the closed leaf
+    assert not w.move_view("door_lg", "behind")
+    assert w.holds(A("robot_in(living_room)")) and w.holds(A("closed(door_lg)"))
+    w.close()
+
+
+def test_the_plate_on_the_tall_shelf_is_seen_from_the_front():
+    w = world("pick_plate")
+    run(w, "find(floor_kitchen, plate, kitchen)", "push(bowl, plate)", "grasp(plate, dining_table, kitchen)",
+        "placeon(plate, shelf, kitchen)")
+    assert w.holds(A("on(plate, shelf)"))
+    assert w.move_view("plate", "front")
+    vis = w.observe(("plate", "shelf")).visibility
+    assert min(vis["plate"], vis["shelf"]) >= 0.5
     w.close()
 
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
+import cv2
 import numpy as np
 import pybullet as pb
 
@@ -58,6 +59,14 @@ WORK_MARGIN = 0.08
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the start or the goal, when the straight way is blocked
 LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
 ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furniture to be worked  # base footprint to obstacles at a work pose (the arm is wider than the base)
+#: a camera aim turns off its point by one of these angles (rad) when the held item covers it; the
+#: point then shows this far (normalised image units, ~4 degrees) outside the item and the frame edge
+AIM_TURNS = (0.06, 0.1, 0.14, 0.18, 0.22, 0.26, 0.3)
+AIM_MARGIN = 0.07
+_BOX_SIGNS = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], float)
+#: a room door is looked at from this far (base centre to the doorway): the leaf, 1.2 m wide, then
+#: fits the wrist camera's frame (from the 0.95 m where the robot stops to open it, it overfills it)
+DOOR_VIEW = 1.8
 OPEN_TO = 0.92  # fraction of its travel an opened door or drawer is pulled to (limits: 1.0)
 #: a closing hand presses a furniture door a little past closed, against its stop: the grip is
 #: springy and the joint's friction would otherwise leave the leaf a few per cent open (room doors
@@ -76,6 +85,12 @@ def _frame(z, x, p) -> np.ndarray:
     return T
 
 
+def _rotation(axis, angle: float) -> np.ndarray:
+    """Rotation matrix about a unit axis (Rodrigues)."""
+    k = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
+    return np.eye(3) + math.sin(angle) * k + (1.0 - math.cos(angle)) * (k @ k)
+
+
 def _how(a) -> str:
     """A hand approaching along ``a`` works from above ("top") or from the side ("front", level or
     pitched down)."""
@@ -89,6 +104,7 @@ class Primitives:
         self.phase = phase
         self.cid = scene.client
         self.look_target: np.ndarray | None = None
+        self.look_pose: np.ndarray | None = None  # the camera's pose when it was last aimed
         self.release_at: float | None = None  # progress of a base move at which to let go (Table II)
         self.follower = HandleFollower(scene, motion)
 
@@ -111,7 +127,7 @@ class Primitives:
         if t.furniture is not None:
             return t.furniture.standoff()
         if t.door is not None:
-            return self._door_pose(t, self.truth.room_of_point(self.robot.base_pose[:2]) or t.door.low, 0.95)
+            return self._door_pose(t, self.truth.room_of_point(self.robot.base_pose[:2]) or t.door.low, DOOR_VIEW)
         if t.room is not None:  # a floor (or a room): the room's middle, on the corridor
             r = plan.rooms[t.room]
             return ((r.x0 + r.x1) / 2, plan.corridor_y, math.pi / 2)
@@ -157,7 +173,13 @@ class Primitives:
         return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def approach(self, pose) -> None:
-        """Drive the base to a work pose (arm at home or carrying)."""
+        """Drive the base to a work pose (arm at home or carrying). A pose in another room is
+        reached the way navigation goes, along the corridor and through the doorway (stopping in
+        front of a door that is not open), never straight through a wall."""
+        here, there = self.truth.room_of_point(self.robot.target[:2]), self.truth.room_of_point(pose[:2])
+        if here is not None and there is not None and here != there:
+            self.drive_to(pose)
+            return
         for p in self.base_path(pose):
             self.motion.drive(p, 0.6)
 
@@ -206,14 +228,84 @@ class Primitives:
         self.motion.through([q], 0.8)
 
     def look_at(self, point, lift: float = 0.0, allow_base: bool = False) -> bool:
+        """Aim the wrist camera at ``point`` from above the base (``lift`` higher). With something
+        in the hand the aim turns off the point just enough that the held item, rigid in the
+        camera's view, does not cover it (:meth:`aim_past_held`)."""
         eye = self.in_base((CAMERA_EYE[0], CAMERA_EYE[1], CAMERA_EYE[2] + lift))
         T = look_pose(eye, point)
-        q = self.motion.solve(T, "camera_optical", allow_base=allow_base)
-        if q is None:
+        for pose in (self.aim_past_held(T), T):
+            q = self.motion.solve(pose, "camera_optical", allow_base=allow_base)
+            if q is not None:
+                break
+        else:
             return False
         self.motion.through([q], 0.8)
         self.look_target = np.asarray(point, float)
+        self.look_pose = self.robot.link_pose("camera_optical")
         return True
+
+    def held_corners(self) -> np.ndarray | None:
+        """Corners (world) of the held item's oriented box(es), or None with an empty hand."""
+        name = self.truth.held()
+        if name is None:
+            return None
+        t = self.scene.things[name]
+        ext = np.asarray(t.kind.extent) / 2
+        pts = []
+        for b in t.bodies:
+            pos, orn = pb.getBasePositionAndOrientation(b, physicsClientId=self.cid)
+            R = np.array(pb.getMatrixFromQuaternion(orn)).reshape(3, 3)
+            pts.append(np.asarray(pos) + (_BOX_SIGNS * ext) @ R.T)
+        return np.concatenate(pts)
+
+    def aim_past_held(self, T: np.ndarray) -> np.ndarray:
+        """``T`` (a camera pose looking along its z at a point) turned the least so that the point
+        shows clear of the held item. The item is rigid with the camera, so where it appears in
+        the image does not depend on the aim: its box is projected once (normalised image
+        coordinates, from the camera pose now) and aims whose point falls outside that outline by
+        AIM_MARGIN, and inside the frame, are tried from small turns to large ones. Returns ``T``
+        when the point is not covered or no turn clears it."""
+        corners = self.held_corners()
+        if corners is None:
+            return T
+        cam = self.robot.cfg.camera
+        C = np.linalg.inv(self.robot.link_pose("camera_optical"))
+        pc = corners @ C[:3, :3].T + C[:3, 3]
+        z = np.maximum(pc[:, 2], cam.near)
+        hull = cv2.convexHull((pc[:, :2] / z[:, None]).astype(np.float32))
+        half = np.array([cam.width / 2 / cam.fx, cam.height / 2 / cam.fy]) - AIM_MARGIN
+
+        def clear(uv) -> bool:
+            if np.any(np.abs(uv) > half):
+                return False
+            return cv2.pointPolygonTest(hull, (float(uv[0]), float(uv[1])), True) < -AIM_MARGIN
+
+        if clear(np.zeros(2)):
+            return T
+        for r in AIM_TURNS:
+            for ang in np.linspace(0.0, 2 * math.pi, 16, endpoint=False):
+                uv = np.array([math.cos(ang), math.sin(ang)]) * math.tan(r)
+                if clear(uv):
+                    d = np.array([uv[0], uv[1], 1.0])
+                    d /= np.linalg.norm(d)
+                    # the turn taking the optical axis to d, undone: the point then shows at uv
+                    axis = np.cross((0.0, 0.0, 1.0), d)
+                    Q = _rotation(axis / np.linalg.norm(axis), math.acos(float(d[2])))
+                    out = T.copy()
+                    out[:3, :3] = T[:3, :3] @ Q.T
+                    return out
+        return T
+
+    def aimed_at(self, point, tolerance: float = 0.15) -> bool:
+        """Whether the wrist camera still looks as the last :meth:`look_at` aimed it, at a point
+        within ``tolerance`` of ``point`` (an action since may have moved the arm: a remembered
+        aim is no evidence of where the camera looks now)."""
+        if self.look_target is None or self.look_pose is None:
+            return False
+        T = self.robot.link_pose("camera_optical")
+        still = (np.linalg.norm(T[:3, 3] - self.look_pose[:3, 3]) < 0.03
+                 and float(T[:3, 2] @ self.look_pose[:3, 2]) > math.cos(0.05))
+        return bool(still and np.linalg.norm(np.asarray(point, float) - self.look_target) <= tolerance)
 
     def carry(self) -> None:
         """Arm to the carry pose: the held object beside the base (empty hand: home)."""

@@ -266,7 +266,7 @@ class PybulletWorld:
             known = [t for t in targets if t in self.scene.things and self.truth.held() != t]
             if known:
                 point = np.mean([self.prims.target_point(t) for t in known], axis=0)
-                if self.prims.look_target is None or np.linalg.norm(point - self.prims.look_target) > 0.15:
+                if not self.prims.aimed_at(point):
                     self.prims.look_at(point)
             r = self.wrist_view()
             names = self.scene.by_body()
@@ -318,23 +318,31 @@ class PybulletWorld:
             else:  # above
                 nx, ny, lift = x, y, 0.3
             nyaw = math.atan2(p[1] - ny, p[0] - nx) if direction != "above" else yaw
-            if not self._base_fits(nx, ny):
+            moves = (nx, ny) != (x, y)
+            # a view from where the base stands needs no room; one from elsewhere must be in this
+            # room (a base move for a view never goes through a wall or a doorway)
+            if moves and not self._base_fits(nx, ny, self.truth.room_of_point((x, y))):
                 return False
             try:
-                if (nx, ny) != (x, y):
+                if moves:
                     self.prims.approach((nx, ny, nyaw))  # round open leaves, like any base move
-                return self.prims.look_at(p, lift=lift, allow_base=False)
+                # from above: as high over the base as the arm reaches (close in, the highest eye
+                # may need the wrist bent further than it goes)
+                lifts = (lift, 2 * lift / 3, lift / 3) if lift > 0 else (0.0,)
+                return any(self.prims.look_at(p, lift=h, allow_base=False) for h in lifts)
             except Cancelled:
                 return False
             finally:
                 self._view = None
 
-    def _base_fits(self, x: float, y: float) -> bool:
-        """The base footprint (as a circle) stays inside a room and off the furniture."""
+    def _base_fits(self, x: float, y: float, room: str | None = None) -> bool:
+        """The base footprint (as a circle) stays inside a room (``room`` if given) and off the
+        furniture."""
         r = 0.42
-        room = self.truth.room_of_point((x, y))
-        if room is None:
+        here = self.truth.room_of_point((x, y))
+        if here is None or (room is not None and here != room):
             return False
+        room = here
         rp = self.plan.rooms[room]
         if not (rp.x0 + r <= x <= rp.x1 - r and rp.y0 + r <= y <= rp.y1 - r):
             return False
