@@ -500,10 +500,8 @@ class Primitives:
             self.open_hand()
             self.home()
             return ActionOutcome(True, f"grasp of {name} closed on nothing")
-        if sit is not None and sit.drops == 0:
-            self.drop_nearby()
-            self.home()
-            return ActionOutcome(True, f"{name} slipped out of the gripper")
+        if (dropped := self._drop_if(sit, 0, f"{name} slipped out of the gripper")) is not None:
+            return dropped
         self.carry()
         return ActionOutcome(True)
 
@@ -616,14 +614,21 @@ class Primitives:
         a = -f.front if cav.open == "front" else np.array([0.0, 0.0, -1.0])
         return p, a
 
+    def _drop_if(self, sit: SituationSpec | None, index: int, message: str) -> ActionOutcome | None:
+        """Table II's "drops nearby" rows for the argument at ``index``: let go and fold the arm;
+        the motion still completed, so the outcome is completed with ``message``."""
+        if sit is None or sit.drops != index:
+            return None
+        self.drop_nearby()
+        self.home()
+        return ActionOutcome(True, message)
+
     def place(self, name: str, where: str, inside: bool, sit: SituationSpec | None, edge: bool = False) -> ActionOutcome:
         if self.truth.held() != name:
             return ActionOutcome(False, f"not holding {name}")
         t = self.scene.things[name]
-        if sit is not None and sit.drops == 0:
-            self.drop_nearby()
-            self.home()
-            return ActionOutcome(True, f"{name} dropped on the way")
+        if (dropped := self._drop_if(sit, 0, f"{name} dropped on the way")) is not None:
+            return dropped
         if inside:
             spot, a = self.cavity_spot(where)
         else:
@@ -849,10 +854,8 @@ class Primitives:
         if self.truth.held() != name:
             return ActionOutcome(False, f"not holding {name}")
         t = self.scene.things[name]
-        if sit is not None and sit.drops == 0:
-            self.drop_nearby()
-            self.home()
-            return ActionOutcome(True, f"{name} slipped out")
+        if (dropped := self._drop_if(sit, 0, f"{name} slipped out")) is not None:
+            return dropped
         f = self.scene.things[sink].furniture
         tap = f.to_world((0.0, -f.kind.size[1] / 2 + 0.2, f.kind.size[2] + 0.08))
         self.approach(self.work_pose(tap, f.front, "top", sink))
@@ -872,10 +875,8 @@ class Primitives:
     def cut(self, name: str, knife: str, sit: SituationSpec | None) -> ActionOutcome:
         if self.truth.held() != knife:
             return ActionOutcome(False, f"not holding {knife}")
-        if sit is not None and sit.drops == 1:
-            self.drop_nearby()
-            self.home()
-            return ActionOutcome(True, f"{knife} slipped out")
+        if (dropped := self._drop_if(sit, 1, f"{knife} slipped out")) is not None:
+            return dropped
         t = self.scene.things[name]
         c = self.truth.center(name)
         support = self.truth.support_of(name)
