@@ -1,0 +1,162 @@
+"""Object tracks: one object's geometry fused across the views that saw it.
+
+A single view shows one side of an object, so its cloud's centroid is pulled towards the camera
+and its box is too shallow. An :class:`ObjectTrack` accumulates every view of an object (the
+detector's instance name is the track's identity): the new view's cleaned cloud is merged with the
+old and voxel-downsampled again, which keeps the density even however often a side was seen.
+
+Merging is right only while the object stays put. When a view puts the object evidently
+elsewhere, the object has moved (a person carried it off, it fell), and the old geometry
+describes a place the object no longer is: the new view replaces it. "Evidently elsewhere" takes
+two tests (:class:`FusionParams`):
+
+* the centroid shifted further than a partial view can explain: half the object's box diagonal
+  (a view of one side has its centroid at most that far from the whole's), and at least
+  ``moved_min`` so that noise on a small item is not taken for a move;
+* and neither cloud lies mostly within the other's box: a close view of a table's corner after
+  a view of the whole table (or the whole after the corner) shifts the centroid a lot, yet is the
+  same table seen partly.
+
+:class:`Tracks` holds the tracks of a scene and integrates whole frames into them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+import numpy as np
+import open3d as o3d
+
+from vap_bt.robot.frame import Frame
+from vap_bt.scene.pointcloud import CloudParams, downsample, frame_clouds
+
+Box = tuple[float, float, float, float, float, float]  # xmin, ymin, zmin, xmax, ymax, zmax (m, map frame)
+
+
+@dataclass(frozen=True)
+class FusionParams:
+    """When a new view is merged into a track and when it replaces the track's geometry."""
+
+    #: smallest centroid shift taken for a move: above a view's noise and partial-view bias on a
+    #: 6 cm cup (about 2 cm each), below the 10 cm a person's move of an object amounts to at least
+    moved_min: float = 0.05
+    #: a shift beyond this share of the track's box diagonal is a move (see the module docstring)
+    moved_share: float = 0.5
+    #: a cloud with at least this share of its points within the other's box (grown by
+    #: ``moved_min``) is the same object seen partly: a majority, so stray points do not decide
+    contained_share: float = 0.5
+
+
+def cloud_box(cloud: o3d.geometry.PointCloud) -> Box:
+    """Axis-aligned bounding box of a non-empty cloud."""
+    bb = cloud.get_axis_aligned_bounding_box()
+    return (*map(float, bb.min_bound), *map(float, bb.max_bound))  # type: ignore[return-value]
+
+
+def box_diagonal(box: Box) -> float:
+    return float(np.linalg.norm(np.subtract(box[3:], box[:3])))
+
+
+@dataclass
+class ObjectTrack:
+    """One object's fused cloud (map frame), with its centroid and box, and how it was seen."""
+
+    name: str
+    label: str
+    cloud: o3d.geometry.PointCloud
+    centroid: tuple[float, float, float]
+    box: Box
+    views: int = 1  # views fused since the geometry was last replaced
+    last_frame: str = ""
+    #: frame in which a view last replaced the geometry because the object had moved
+    moved_in: str | None = None
+
+    @classmethod
+    def start(cls, name: str, label: str, cloud: o3d.geometry.PointCloud, frame_id: str) -> "ObjectTrack":
+        return cls(name, label, cloud, _centroid(cloud), cloud_box(cloud), 1, frame_id)
+
+    @property
+    def points(self) -> np.ndarray:
+        """(N, 3) float64 points, map frame."""
+        return np.asarray(self.cloud.points)
+
+    def moved(self, view: o3d.geometry.PointCloud, params: FusionParams) -> bool:
+        """Does ``view`` put the object somewhere else than this track?"""
+        shift = float(np.linalg.norm(np.subtract(_centroid(view), self.centroid)))
+        if shift <= max(params.moved_min, params.moved_share * box_diagonal(self.box)):
+            return False
+        new = np.asarray(view.points)
+        return max(_share_within(new, self.box, params.moved_min),
+                   _share_within(self.points, cloud_box(view), params.moved_min)) < params.contained_share
+
+    def fuse(self, view: o3d.geometry.PointCloud, frame_id: str, cloud_params: CloudParams,
+             params: FusionParams) -> None:
+        """Merge ``view`` (a cleaned cloud) into the track, or replace the geometry if it moved."""
+        if self.moved(view, params):
+            merged, self.views, self.moved_in = view, 1, frame_id
+        else:
+            merged = downsample(self.cloud + view, cloud_params)
+            self.views += 1
+        self.cloud, self.centroid, self.box = merged, _centroid(merged), cloud_box(merged)
+        self.last_frame = frame_id
+
+
+def _share_within(points: np.ndarray, box: Box, grow: float) -> float:
+    """Share of ``points`` inside ``box`` grown by ``grow`` on every side."""
+    lo, hi = np.asarray(box[:3]) - grow, np.asarray(box[3:]) + grow
+    return float(np.mean(np.all((points >= lo) & (points <= hi), axis=1)))
+
+
+def _centroid(cloud: o3d.geometry.PointCloud) -> tuple[float, float, float]:
+    c = cloud.get_center()
+    return (float(c[0]), float(c[1]), float(c[2]))
+
+
+@dataclass
+class Tracks:
+    """The object tracks of one scene, by instance name."""
+
+    cloud_params: CloudParams = field(default_factory=CloudParams)
+    fusion: FusionParams = field(default_factory=FusionParams)
+    _tracks: dict[str, ObjectTrack] = field(default_factory=dict, repr=False)
+
+    def integrate(self, frame: Frame) -> list[str]:
+        """Fuse every detection of ``frame`` that has a mask and enough depth into its track;
+        returns the names of the tracks started or updated, in detection order."""
+        labels = {d.name: d.label for d in frame.detections}
+        clouds = frame_clouds(frame, self.cloud_params)
+        for name, cloud in clouds.items():
+            self.add_view(name, labels[name], cloud, frame.frame_id)
+        return list(clouds)
+
+    def add_view(self, name: str, label: str, cloud: o3d.geometry.PointCloud, frame_id: str) -> ObjectTrack:
+        """Fuse one cleaned cloud of ``name`` into its track (started if new)."""
+        track = self._tracks.get(name)
+        if track is None:
+            track = self._tracks[name] = ObjectTrack.start(name, label, cloud, frame_id)
+        else:
+            track.fuse(cloud, frame_id, self.cloud_params, self.fusion)
+        return track
+
+    def forget(self, name: str) -> ObjectTrack | None:
+        """Drop a track (the object is gone, or is being re-surveyed from scratch)."""
+        return self._tracks.pop(name, None)
+
+    def get(self, name: str) -> ObjectTrack | None:
+        return self._tracks.get(name)
+
+    def __getitem__(self, name: str) -> ObjectTrack:
+        return self._tracks[name]
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._tracks
+
+    def __iter__(self) -> Iterator[ObjectTrack]:
+        return iter(list(self._tracks.values()))
+
+    def __len__(self) -> int:
+        return len(self._tracks)
+
+    def names(self) -> list[str]:
+        return list(self._tracks)
