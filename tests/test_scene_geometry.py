@@ -29,7 +29,10 @@ from vap_bt.scene.tracks import FusionParams, Tracks
 TH = THRESHOLDS
 W, H = 320, 240
 FX = FY = 307.5  # the wrist camera's focal length at the simulator's 320 x 240
-CX, CY = (W - 1) / 2, (H - 1) / 2  # pixel centres: the optical axis passes between the middle two
+# where pybullet's TinyRenderer puts the optical axis, measured: column W/2 and, rows being
+# flipped from OpenGL's bottom-up order, row H/2 - 1 (a 60 cm plate 2 m ahead covers columns
+# 114..206 and rows 73..165)
+CX, CY = W / 2, H / 2 - 1
 INTRINSICS = (FX, FY, CX, CY)
 
 # ---------------------------------------------------------------- a site and its vocabulary
