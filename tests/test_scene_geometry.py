@@ -534,3 +534,27 @@ def test_a_cup_moved_by_a_person_is_relocated_from_the_next_frame(lab, household
     assert np.linalg.norm(np.subtract(cup.centroid, moved_to)) < 0.03
     assert cup.box[3] < moved_to[0] + 0.045  # nothing of the old place is left
     assert Atom("on", ("cup", "table")) in scene_relations(tracks, LAB_MAP, Signatures(household, LAB_TYPES))
+
+
+def test_a_cup_taken_away_is_missing_from_the_next_frame_but_a_hidden_one_is_not(lab):
+    pb, cid, bodies = lab
+    tracks = Tracks()
+    tracks.integrate(lab_frame(lab, *FRONT_VIEW, "before"))
+    assert tracks.missing(lab_frame(lab, *FRONT_VIEW, "again")) == []
+    pb.resetBasePositionAndOrientation(bodies["cup"], (5.0, 5.0, 0.05), (0, 0, 0, 1), physicsClientId=cid)
+    try:
+        gone = lab_frame(lab, *FRONT_VIEW, "gone")
+        assert tracks.missing(gone) == ["cup"]
+        assert tracks.missing(gone, min_pixels=10_000) == []  # too small to be detected from here anyway
+        eye, target = FRONT_VIEW
+        between = np.add(eye, 0.45 * np.subtract(CUP_AT, eye))  # a box floating in front of where the cup was
+        vis = pb.createVisualShape(pb.GEOM_BOX, halfExtents=(0.1, 0.1, 0.1), physicsClientId=cid)
+        screen = pb.createMultiBody(0, -1, vis, tuple(between), physicsClientId=cid)
+        try:
+            hidden = lab_frame(lab, *FRONT_VIEW, "hidden")
+            assert "cup" not in hidden.detected() and tracks.missing(hidden) == []  # no evidence either way
+        finally:
+            pb.removeBody(screen, physicsClientId=cid)
+    finally:
+        pb.resetBasePositionAndOrientation(bodies["cup"], CUP_AT, (0, 0, 0, 1), physicsClientId=cid)
+    assert tracks.missing(Frame("symbolic", 0.0)) == []

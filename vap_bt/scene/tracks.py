@@ -17,11 +17,15 @@ two tests (:class:`FusionParams`):
   a view of the whole table (or the whole after the corner) shifts the centroid a lot, yet is the
   same table seen partly.
 
-:class:`Tracks` holds the tracks of a scene and integrates whole frames into them.
+:class:`Tracks` holds the tracks of a scene and integrates whole frames into them. It also says
+which tracked objects a frame should have shown but did not (:meth:`Tracks.missing`): the camera
+looked where the object was, nothing stood in front, and the detector found nothing — the object
+is not where belief puts it, and someone has to go and look.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
@@ -102,6 +106,28 @@ class ObjectTrack:
         self.last_frame = frame_id
 
 
+def in_plain_view(track: ObjectTrack, frame: Frame, min_pixels: int = 0, max_range: float = math.inf) -> bool:
+    """Would ``frame`` show the object if it were where its track puts it?
+
+    Its centroid must project into the image within ``max_range``, the depth there must not
+    be nearer than the object's own near side (else something stands in front of it), and it
+    must look big enough to be detected (``min_pixels``: its box's circumscribed disc, projected).
+    A pixel without a depth return is no evidence either way."""
+    if frame.depth is None or frame.intrinsics is None or frame.camera_pose is None:
+        return False
+    fx, fy, cx, cy = frame.intrinsics
+    x, y, z = (np.linalg.inv(frame.camera_pose) @ np.array([*track.centroid, 1.0]))[:3]
+    h, w = frame.depth.shape
+    if not 0.0 < z <= max_range:
+        return False
+    u, v = int(round(fx * x / z + cx)), int(round(fy * y / z + cy))
+    if not (0 <= u < w and 0 <= v < h):
+        return False
+    radius = box_diagonal(track.box) / 2
+    seen = float(frame.depth[v, u])
+    return seen > 0.0 and seen >= z - radius and math.pi * (fx * radius / z) ** 2 >= min_pixels
+
+
 def _share_within(points: np.ndarray, box: Box, grow: float) -> float:
     """Share of ``points`` inside ``box`` grown by ``grow`` on every side."""
     lo, hi = np.asarray(box[:3]) - grow, np.asarray(box[3:]) + grow
@@ -138,6 +164,13 @@ class Tracks:
         else:
             track.fuse(cloud, frame_id, self.cloud_params, self.fusion)
         return track
+
+    def missing(self, frame: Frame, min_pixels: int = 0) -> list[str]:
+        """Tracks that ``frame`` should have shown (see :func:`in_plain_view`) but did not detect:
+        evidence that the object is no longer where its track puts it."""
+        detected = frame.detected()
+        return [t.name for t in self._tracks.values()
+                if t.name not in detected and in_plain_view(t, frame, min_pixels, self.cloud_params.max_range)]
 
     def forget(self, name: str) -> ObjectTrack | None:
         """Drop a track (the object is gone, or is being re-surveyed from scratch)."""
