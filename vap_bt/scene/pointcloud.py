@@ -56,10 +56,10 @@ class CloudParams:
     #: steps (about a microsecond a point each); a 1.1 x 0.7 m table top at 600 points is still
     #: sampled every 3.5 cm, and a box needs no more
     max_points: int = 600
-    #: most pixels back-projected per instance (sampled with a stride above it): several times
-    #: ``max_points``, so the voxels still average several pixels each, while a table filling
+    #: most pixels back-projected per instance (sampled with a stride above it): about three
+    #: times ``max_points``, so the voxels still average a few pixels each, while a table filling
     #: half the image costs a fraction of a millisecond to back-project and voxelize
-    max_pixels: int = 4000
+    max_pixels: int = 2000
     #: DBSCAN neighbourhood in point spacings (:func:`spacing`): three, so a surface stays one
     #: cluster however sparsely it is sampled, while a gap of a few spacings (3 cm at the
     #: finest) splits it
