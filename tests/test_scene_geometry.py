@@ -229,6 +229,14 @@ def test_a_moved_object_replaces_its_old_geometry():
     assert np.allclose(track.box, (*(CUP_LO + shift), *(CUP_HI + shift)), atol=0.006)
 
 
+def test_a_move_just_past_the_threshold_is_a_move():
+    tracks = tracked(("cup", box_surface(CUP_LO, CUP_HI)))
+    threshold = max(FusionParams().moved_min, FusionParams().moved_share * float(np.linalg.norm(CUP_HI - CUP_LO)))
+    shift = np.array([threshold + 0.005, 0.0, 0.0])
+    track = tracks.add_view("cup", "cup", clean(pcd(box_surface(CUP_LO + shift, CUP_HI + shift)), tracks.cloud_params), "f2")
+    assert track.moved_in == "f2"
+
+
 def test_a_shift_within_noise_is_merged_not_taken_for_a_move():
     tracks = tracked(("cup", box_surface(CUP_LO, CUP_HI)))
     shift = np.array([0.8 * FusionParams().moved_min, 0.0, 0.0])

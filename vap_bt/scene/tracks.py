@@ -48,8 +48,11 @@ class FusionParams:
     #: a shift beyond this share of the track's box diagonal is a move (see the module docstring)
     moved_share: float = 0.5
     #: a cloud with at least this share of its points within the other's box (grown by
-    #: ``moved_min``) is the same object seen partly: a majority, so stray points do not decide
+    #: ``contained_margin``) is the same object seen partly: a majority, so stray points do not
+    #: decide
     contained_share: float = 0.5
+    #: a voxel: how far a box's faces move with noise between views of an unmoved object
+    contained_margin: float = 0.01
 
 
 def cloud_box(cloud: o3d.geometry.PointCloud) -> Box:
@@ -91,8 +94,8 @@ class ObjectTrack:
         if shift <= max(params.moved_min, params.moved_share * box_diagonal(self.box)):
             return False
         new = np.asarray(view.points)
-        return max(_share_within(new, self.box, params.moved_min),
-                   _share_within(self.points, cloud_box(view), params.moved_min)) < params.contained_share
+        return max(_share_within(new, self.box, params.contained_margin),
+                   _share_within(self.points, cloud_box(view), params.contained_margin)) < params.contained_share
 
     def fuse(self, view: o3d.geometry.PointCloud, frame_id: str, cloud_params: CloudParams,
              params: FusionParams) -> None:
