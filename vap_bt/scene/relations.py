@@ -271,10 +271,10 @@ def scene_relations(objects: Iterable[Located], site_map: SiteMap, sig: Signatur
     atoms: set[Atom] = set(room_atoms(site_map, sig))
     support: dict[str, Atom] = {}
     for o in placed:
-        if sig.fits("on", 0, o.name) or sig.fits("inside", 0, o.name):
-            best = _best_support(o, list(surfaces.values()), containers, th)
-            if best is not None:
-                support[o.name] = best
+        best = _best_support(o, list(surfaces.values()) if sig.fits("on", 0, o.name) else [],
+                             containers if sig.fits("inside", 0, o.name) else [], th)
+        if best is not None:
+            support[o.name] = best
         atoms |= {Atom("in_room", (o.name, r)) for r in room_of(o, site_map)}
     atoms |= set(support.values())
     if sig.has("near", 2):
