@@ -36,9 +36,8 @@ def tree_for(task, actions, mode: str):
     from vap_bt.bt.compiler import compile_plan
     from vap_bt.bt.context import ExecutionContext, VerifyMode
     from vap_bt.scene.graph import SceneGraph
-    from vap_bt.world import SceneSnapshot
 
-    ctx = ExecutionContext(graph=SceneGraph.from_snapshot(SceneSnapshot([], set(task.init))), vlm=None,
+    ctx = ExecutionContext(graph=SceneGraph.of_facts(task.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(mode))
     return compile_plan(ctx, actions, task.goal, task.knowledge)
 

@@ -34,17 +34,36 @@ def test_household_task_succeeds_without_situations(name):
     assert r["situations"] == [] and r["replans"] == 0
 
 
+def unsettled_at_survey(report: dict) -> set[str]:
+    """Atoms the initial survey asked about and could not settle, with their complements."""
+    out = set()
+    for s in report["perception"]["surveys"][0]["states"]:
+        if s["value"] is None:
+            args = s["predicate"][s["predicate"].index("("):]
+            out |= {s["predicate"], "closed" + args, "open" + args}
+    return out
+
+
 @pytest.mark.slow
 def test_every_injected_situation_is_detected_and_recovered():
-    """Noise off: each situation the world injects is detected once, at its action or later."""
+    """Noise off (VLM and detector): each situation the world injects is noticed once — as a
+    situation at its action or later, or by the gripper feeling empty while another situation is
+    handled — and the only other situations are the camera correcting a state the survey could
+    not settle (a default belief about a door, say), caught as a precondition."""
     episodes = 0
     for name in HOUSEHOLD_TASKS:
-        s = session(name, vlm_error=0.0, max_replans=20)
+        s = session(name, vlm_error=0.0, max_replans=20, miss_rate=0.0, relation_error=0.0)
         for seed in range(8):
             r = s.episode(seed)
             episodes += 1
             inj, det = r["injected"], r["situations"]
-            assert len(det) == len(inj), (name, seed, inj, det)
+            unsettled = unsettled_at_survey(r)
+            corrections = [d for d in det if d["kind"] == "precondition" and d["predicate"] in unsettled]
+            felt = [c for c in r["belief_changes"] if c["cause"] == "gripper" and any(
+                a.startswith("holding(") for a in c["removed"])]
+            # no phantom situation; every injected one a situation, unless the gripper felt it first
+            assert len(inj) + len(corrections) - len(felt) <= len(det) <= len(inj) + len(corrections), \
+                (name, seed, inj, det, felt)
             assert r["replans"] == len(det)
             if r["success"]:
                 assert r["goal_satisfied"], "a claimed success the world denies"
@@ -52,15 +71,16 @@ def test_every_injected_situation_is_detected_and_recovered():
 
 
 def test_effect_failure_is_undone_then_corrected():
-    # seed 1 of boil_water injects a failed turnon: heated(cup) is checked and found false
-    r = session("boil_water.yaml", vlm_error=0.0).episode(1)
+    # the first seed of boil_water that injects a failed turnon: heated(cup) is checked and found false
+    s = session("boil_water.yaml", vlm_error=0.0, miss_rate=0.0, relation_error=0.0)
+    r = next(r for r in map(s.episode, range(40)) if any(i["kind"] == "turnon_fails_object_off" for i in r["injected"]))
     kinds = [(s["kind"], s["predicate"]) for s in r["situations"]]
     assert ("effect", "heated(cup)") in kinds and r["success"] and r["goal_satisfied"]
     causes = [c["cause"] for c in r["belief_changes"]]
     # the expected effects were applied, then taken back when the camera contradicted them
     assert causes.count("apply") >= 1 and "undo" in causes
-    undo = next(c for c in r["belief_changes"] if c["cause"] == "undo")
-    assert "heated(cup)" in undo["removed"]
+    undone = [c for c in r["belief_changes"] if c["cause"] == "undo"]
+    assert any("heated(cup)" in c["removed"] for c in undone)
     assert r["plans"][1]["engine"] in ("reuse", "cache", "search")
 
 
@@ -90,7 +110,10 @@ def test_report_has_everything_to_rerun(tmp_path, cli):
     for key in ("success", "goal_satisfied", "seed", "plans", "actions_executed", "situations", "replans",
                 "vlm_queries", "wall_s", "versions", "config", "vlm", "world", "command", "injected"):
         assert key in r, key
-    assert r["seed"] == 3 and r["vlm"]["backend"] == "symbolic" and "error_rate" in r["vlm"]
+    assert r["seed"] == 3 and r["vlm"]["backend"] == "sim" and "error_rate" in r["vlm"]
+    graph = r["perception"]["graph"]["initial"]
+    assert graph["relations"]["precision"] <= 1.0 and graph["views"] > 0 and "build_s" in graph
+    assert r["world"]["detector"]["miss_rate"] == r["config"]["miss_rate"]
     assert code == (0 if r["success"] and r["goal_satisfied"] else 1)
     # the same seed gives the same episode
     code2, _, _ = cli("run", TREES / "collect_cup.yaml", "--seed", "3", "--report", tmp_path / "r2.json", "-q")

@@ -18,7 +18,8 @@ from skills.base import WorldActionSkill
 from vap_bt import plugins
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import GoalState, Skill, SkillResult
-from vap_bt.transport.inprocess import InProcessCamera, InProcessSkillClient
+from vap_bt.robot.camera import Aim
+from vap_bt.transport.inprocess import InProcessRobot, InProcessSkillClient
 
 BUILTIN = {"navigate": "base", "find": "base", "grasp": "ur5e", "takeout": "ur5e", "placein": "ur5e",
            "placeon": "ur5e", "open": "ur5e", "close": "ur5e", "turnon": "ur5e", "cut": "ur5e",
@@ -124,7 +125,7 @@ def test_inprocess_client_finishes_goals_inside_send_goal():
     skills = {**plugins.instantiate(world), "echo": Echo(world)}
     client = InProcessSkillClient(skills)
     grasp = client.send_goal("grasp", ("cup", "table"))
-    assert grasp.state() is GoalState.SUCCEEDED and world.holds(Atom("holding", ("cup",)))
+    assert grasp.state() is GoalState.SUCCEEDED and world.oracle.holds(Atom("holding", ("cup",)))
     assert grasp.feedback().progress == 1.0
     again = client.send_goal("grasp", ("cup", "table"))
     assert again.state() is GoalState.ABORTED and "preconditions" in again.result().message
@@ -137,9 +138,12 @@ def test_inprocess_client_finishes_goals_inside_send_goal():
     client.close()
 
 
-def test_inprocess_camera_asks_the_world():
+def test_inprocess_robot_forwards_the_robot_interfaces_and_nothing_else():
     world = FactWorld()
-    camera = InProcessCamera(world)
-    assert camera.observe(("cup",)).visibility == {"cup": 1.0}
-    assert camera.move_view("cup", "above") and world.view == 1
-    assert Atom("hand_empty") in camera.survey().facts
+    robot = InProcessRobot(world)
+    frame = robot.capture(Aim(("cup",)))
+    assert frame.detected() == {"cup"} and frame.aim == ("cup",) and world.view == 1
+    assert robot.move_view(Aim(("cup",)), "above") and world.view == 2
+    assert robot.state().room == "kitchen" and robot.state().gripper_holding is False
+    assert {r.name for r in robot.site_map().rooms} == {"kitchen", "hall"}
+    assert not hasattr(robot, "oracle") and not hasattr(robot, "__dict__")  # no way to the truth

@@ -29,29 +29,30 @@ def test_initial_truth_matches_layout(path):
     task = load(path)
     world = PybulletWorld(task, seed=0, injection=False, image_size=(160, 120))
     try:
-        snap = world.survey()
         expected = {a for a in layout_facts(task.spec.scene) if a.predicate in CHECKED}
-        assert expected <= snap.facts, sorted(map(str, expected - snap.facts))
-        for a in expected:
-            assert world.holds(a)
-        names = {o.name for o in snap.objects}
-        assert set(task.spec.scene.items) <= names and set(task.spec.scene.furniture) <= names
+        wrong = sorted(str(a) for a in expected if not world.oracle.holds(a))
+        assert not wrong, wrong
+        site = world.site_map()
+        assert {f.name for f in site.furniture} == set(task.spec.scene.furniture)
+        assert {r.name for r in site.rooms} == set(task.spec.scene.rooms)
+        assert all(r.bounds is not None for r in site.rooms) and all(f.pose for f in site.furniture)
     finally:
         world.close()
 
 
-def test_observation_images_and_visibility():
+def test_frames_carry_images_masks_and_detections():
     world = PybulletWorld(load(TREES[0].parent / "pick_plate.yaml"), injection=False)
     try:
-        obs = world.observe(("mug",))
+        obs = world.capture(world.aim_at(("mug",)))
         h, w = obs.rgb.shape[:2]
-        assert obs.rgb.dtype == np.uint8 and obs.depth.shape == (h, w) and obs.segmentation.shape == (h, w)
+        assert obs.rgb.dtype == np.uint8 and obs.depth.shape == (h, w) and obs.masks.shape == (h, w)
         assert 0.1 < float(obs.depth.min()) and float(obs.depth.max()) <= 5.0
-        seen = {obs.segment_names[i] for i in np.unique(obs.segmentation) if i >= 0}
+        seen = {d.name for d in obs.detections if (obs.masks == d.mask_id).sum() == d.pixels}
         assert {"mug", "bowl", "dining_table"} <= seen
-        assert obs.visibility["mug"] > 0.3
-        assert Atom("on", ("mug", "dining_table")) in obs.relations
-        assert world.holds(Atom("inview", ("mug",)))
-        assert obs.intrinsics is not None and len(obs.camera_pose) == 7
+        threshold = world.detector.pixel_threshold(w, h)
+        assert all(d.pixels >= threshold for d in obs.detections) and not any(d.relations for d in obs.detections)
+        assert world.captures.get(obs.frame_id).visibility["mug"] > 0.3
+        assert world.oracle.holds(Atom("inview", ("mug",)))
+        assert obs.intrinsics is not None and obs.camera_pose.shape == (4, 4)
     finally:
         world.close()

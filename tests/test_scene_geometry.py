@@ -288,6 +288,16 @@ def test_a_long_stick_sticking_out_of_a_basket_is_inside_it_and_nowhere_else(sig
         Atom("inside", ("stick", "basket")), Atom("in_room", ("stick", "kitchen")), Atom("reachable", ("stick",))}
 
 
+def test_a_cup_on_the_floor_in_front_of_an_open_cabinet_is_on_the_floor_not_inside(sig):
+    # the open door leaf swings out over the floor in front: the cabinet's observed box reaches
+    # there, and the cup that fell on the floor below it lies within that box
+    leaf = box_surface((0.20, 3.20, 0.05), (0.25, 3.62, 1.20), step=0.01)
+    cabinet = np.vstack([CABINET_FRONT, leaf])
+    cup = box_surface((0.40, 3.30, 0.0), (0.46, 3.36, 0.09))
+    atoms = scene_relations(tracked(("cabinet", cabinet), ("cup", cup)), SITE, sig)
+    assert Atom("on", ("cup", "floor_kitchen")) in atoms and Atom("inside", ("cup", "cabinet")) not in atoms
+
+
 def test_a_ball_resting_on_a_closed_cabinet_is_not_inside_it_and_a_cabinet_supports_nothing(sig):
     ball = box_surface((0.47, 3.55, 1.252), (0.55, 3.63, 1.33))
     atoms = scene_relations(tracked(("cabinet", CABINET_FRONT), ("ball", ball)), SITE, sig)

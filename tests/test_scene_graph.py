@@ -5,7 +5,6 @@ from __future__ import annotations
 from vap_bt.domain.atoms import Atom
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.taskfile import load
-from vap_bt.world import SceneSnapshot
 
 from conftest import TREES
 
@@ -14,7 +13,7 @@ A = Atom.parse
 
 def graph_for(name: str) -> tuple[SceneGraph, object]:
     task = load(TREES / name).planning
-    return SceneGraph.from_snapshot(SceneSnapshot([], set(task.init)), tracks_hand=True), task
+    return SceneGraph.of_facts(task.init, tracks_hand=True), task
 
 
 def test_apply_then_undo_restores_belief():

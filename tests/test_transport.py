@@ -19,7 +19,8 @@ from skills.manipulation import Grasp, Open, PlaceOn
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import GoalState, Skill, SkillResult
 from vap_bt.transport import keys
-from vap_bt.transport.client import ZenohCamera, ZenohSkillClient
+from vap_bt.robot.camera import Aim, Viewpoint
+from vap_bt.transport.client import ZenohRobot, ZenohSkillClient
 from vap_bt.transport.messages import GoalRequest, encode
 from vap_bt.transport.server import SkillServer
 
@@ -66,7 +67,7 @@ def test_goal_reports_feedback_then_result(net):
     assert handle.result().success and "grasp done" in handle.result().message
     assert progress and min(progress) < 1.0  # feedback arrived while the goal ran
     assert handle.feedback().progress == 1.0
-    assert world.holds(Atom("holding", ("cup",)))
+    assert world.oracle.holds(Atom("holding", ("cup",)))
 
 
 def test_failed_action_is_aborted_with_the_worlds_reason(net):
@@ -92,7 +93,7 @@ def test_cancel_reaches_the_skill(net):
     handle.cancel()
     assert handle.wait(2) is GoalState.CANCELED
     assert "stopped by cancel" in handle.result().message
-    assert not world.holds(Atom("holding", ("cup",)))
+    assert not world.oracle.holds(Atom("holding", ("cup",)))
 
 
 def test_unknown_action_is_rejected(net):
@@ -130,24 +131,27 @@ def test_garbage_and_foreign_schema_requests_get_an_error_reply(net):
     frame = encode(GoalRequest("x-1", "grasp", ("cup", "table")))
     foreign = frame[:4] + struct.pack("<I", 9) + frame[8:]  # the schema field
     replies = list(s_cli.get(key, payload=foreign, timeout=2))
-    assert "peer speaks message schema 9, this side speaks 3" in replies[0].err.payload.to_string()
+    assert "peer speaks message schema 9, this side speaks 4" in replies[0].err.payload.to_string()
 
 
-def test_camera_over_zenoh(net):
+def test_robot_interfaces_over_zenoh(net):
     world, _, _, s_cli = net
-    camera = ZenohCamera(s_cli, "ur5e", timeout=3)
-    obs = camera.observe(("cup", "ghost"))
-    local = world.observe(("cup", "ghost"))
-    assert obs.visibility == {"cup": 1.0, "ghost": 0.0}
-    for name, dtype in (("rgb", np.uint8), ("depth", np.float32), ("segmentation", np.int32)):
-        assert getattr(obs, name).dtype == dtype
-        np.testing.assert_array_equal(getattr(obs, name), getattr(local, name))
-    assert obs.segment_names == {7: "cup"} and obs.intrinsics == (500.0, 500.0, 3.0, 2.0)
-    snap = camera.survey()
-    assert Atom("on", ("cup", "table")) in snap.facts and {o.name for o in snap.objects} >= {"cup"}
-    assert camera.move_view("cup", "left") is True
-    assert camera.move_view("cup", "sideways") is False
-    camera.close()
+    robot = ZenohRobot(s_cli, "ur5e", timeout=3)
+    frame = robot.capture(Aim(("cup", "ghost"), (1.0, 2.0, 0.5)))
+    local = world.capture(Aim(("cup", "ghost")))
+    assert frame.detected() == {"cup"} and frame.aim == ("cup", "ghost") and frame.frame_id != local.frame_id
+    for name, dtype in (("rgb", np.uint8), ("depth", np.float32), ("masks", np.int32)):
+        assert getattr(frame, name).dtype == dtype
+        np.testing.assert_array_equal(getattr(frame, name), getattr(local, name))
+    assert frame.intrinsics == (500.0, 500.0, 3.0, 2.0) and frame.camera_pose.shape == (4, 4)
+    assert frame.mask("cup").sum() == 4
+    assert robot.state().room == "kitchen" and robot.state().gripper_holding is False
+    assert [r.name for r in robot.site_map().rooms] == ["kitchen", "hall"]
+    assert robot.goto_view(Viewpoint("kitchen", Aim(("table",)))) is True
+    assert robot.goto_view(Viewpoint("attic", Aim(("table",)))) is False
+    assert robot.move_view(Aim(("cup",)), "left") is True
+    assert robot.move_view(Aim(("cup",)), "sideways") is False
+    robot.close()
 
 
 def test_two_robots_do_not_see_each_others_goals():

@@ -13,7 +13,12 @@ from vap_bt.skill import Feedback, GoalState, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
 from vap_bt.transport.messages import (CancelRequest, GoalReply, GoalRequest, GoalStatus, MessageError,
                                        SchemaMismatch, decode, encode)
-from vap_bt.world import ObjectInfo, Observation, SceneSnapshot
+from vap_bt.perception.vlm import Answer, Query
+from vap_bt.robot.camera import Aim, Viewpoint
+from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.state import RobotState
+from vap_bt.transport.messages import CaptureRequest, ViewRequest, VlmRequest
 
 
 def test_messages_round_trip():
@@ -27,17 +32,26 @@ def test_messages_round_trip():
     for msg in (GoalReply("g-3", False, "busy: tête à tête ✓", "arm"), GoalRequest("g-4", "say", ("", "ü"), ""),
                 CancelRequest("g-5"), GoalStatus("g-6", GoalState.ACTIVE, Feedback(0.25, "¼ done"), None, "arm")):
         assert decode(encode(msg), type(msg)) == msg
-    snap = SceneSnapshot([ObjectInfo("cup", "cup", "kitchen", (1.0, 2.0, 0.5))], {Atom("on", ("cup", "t"))})
-    assert decode(encode(snap), SceneSnapshot) == snap
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 4.0)),),
+                   (DoorInfo("d", ("kitchen", "hall"), (4.0, 2.0, 0.0), 1.2),),
+                   (FurnitureInfo("t", "table", "surface", "kitchen", (1.0, 3.0, 3.14), (1.1, 0.7)),),
+                   frozenset({Atom("clear", ("t",))}))
+    state = RobotState(1.5, "kitchen", (1.0, 2.0, 0.3), (0.1,) * 6, (1.0,) * 7, 0.08, False)
+    view = ViewRequest(Viewpoint("kitchen", Aim(("t",), (1.0, 3.0, 0.7)), (1.0, 1.5, 1.57), "t from the front"))
+    ask = VlmRequest(Query("Is the cup on the t?", about=(Atom("on", ("cup", "t")),), objects=("cup", "t")), "f-1")
+    for msg in (site, state, view, ask, CaptureRequest(None), CaptureRequest(Aim(("cup",))), Answer("yes", True)):
+        assert decode(encode(msg), type(msg)) == msg
 
 
 def test_images_travel_as_raw_bytes_not_json():
     rgb = np.zeros((480, 640, 3), np.uint8)
-    obs = Observation(0, ("cup",), {"cup": 1.0}, rgb=rgb, depth=np.ones((480, 640), np.float64))
+    obs = Frame("f", 0.0, (Detection("cup", "cup", 10, 3, relations=(Atom("on", ("cup", "t")),)),), rgb=rgb,
+                depth=np.ones((480, 640), np.float64), masks=np.zeros((480, 640), np.int64), camera_pose=np.eye(4))
     frame = encode(obs)
-    assert len(frame) < rgb.nbytes + 480 * 640 * 4 + 1024  # pixels plus a small header
-    back = decode(frame, Observation)
-    assert back.depth.dtype == np.float32 and back.rgb.shape == (480, 640, 3)
+    assert len(frame) < rgb.nbytes + 480 * 640 * 8 + 128 + 1024  # pixels plus a small header
+    back = decode(frame, Frame)
+    assert back.depth.dtype == np.float32 and back.rgb.shape == (480, 640, 3) and back.masks.dtype == np.int32
+    assert back.detections == obs.detections and np.array_equal(back.camera_pose, np.eye(4))
 
 
 @pytest.mark.parametrize("frame, message", [
@@ -53,16 +67,16 @@ def test_bad_frames_are_one_message_error(frame, message):
 def test_wrong_kind_truncated_arrays_and_foreign_schema():
     with pytest.raises(MessageError, match="expected a goal_reply message, got goal_request"):
         decode(encode(GoalRequest("g", "a", ())), GoalReply)
-    obs = encode(Observation(0, (), {}, rgb=np.zeros((2, 2, 3), np.uint8)))
+    obs = encode(Frame("f", 0.0, rgb=np.zeros((2, 2, 3), np.uint8)))
     with pytest.raises(MessageError, match="array 'rgb' is truncated"):
-        decode(obs[:-1], Observation)
+        decode(obs[:-1], Frame)
     frame = encode(GoalReply("g", True))
     foreign = frame[:4] + struct.pack("<I", 2) + frame[8:]  # the schema field
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 3"):
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 4"):
         decode(foreign, GoalReply)
     # a schema-1 peer (JSON header for every kind) is recognised as such
     head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 3"):
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 4"):
         decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
 
 

@@ -8,10 +8,12 @@ import pytest
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
-from vap_bt.perception.verification import VoteSettings, vote_round
+from vap_bt.perception.verification import Round, Verdict, VoteSettings, verdict, vote_round
 from vap_bt.perception.vlm import Answer, Query, parse_choice, parse_yes_no
-from vap_bt.sim.symbolic_vlm import SymbolicVLM
-from vap_bt.world import Observation
+from vap_bt.sim.captures import CaptureRecord
+from vap_bt.sim.oracle import FunctionOracle
+from vap_bt.sim.sim_vlm import SimVLM
+from vap_bt.robot.frame import Frame
 
 from conftest import PAPER
 
@@ -65,7 +67,7 @@ class Scripted:
     def __init__(self, answers):
         self.answers = list(answers)
 
-    def ask(self, query: Query, obs: Observation) -> Answer:
+    def ask(self, query: Query, obs: Frame) -> Answer:
         a = self.answers.pop(0)
         return Answer(str(a), a)
 
@@ -73,7 +75,7 @@ class Scripted:
         return {"backend": self.name}
 
 
-OBS = Observation(view_index=0, targets=("cup",), visibility={"cup": 1.0})
+OBS = Frame("f-0", 0.0)
 CUP = Atom("on", ("cup", "table"))
 
 
@@ -97,22 +99,66 @@ def test_early_stop_asks_fewer_questions_with_the_same_outcome():
     assert len(early.answers) == 4  # after four agreeing answers nothing can change
 
 
-def test_symbolic_vlm_error_rate_matches_its_parameter():
+def sim_vlm(truth, visibility: dict[str, float], error_rate: float, seed: int) -> SimVLM:
+    """The simulated VLM over one capture record with the given visibility and truth."""
+    record = CaptureRecord("f-0", 0, visibility, FunctionOracle(truth, lambda: []), lambda: 0)
+    return SimVLM({"f-0": record}.get, error_rate=error_rate, seed=seed)
+
+
+def test_sim_vlm_error_rate_matches_its_parameter():
     truth = {CUP: True}
-    vlm = SymbolicVLM(lambda a: truth[a], error_rate=0.2, seed=7)
+    vlm = sim_vlm(lambda a: truth[a], {"cup": 1.0, "table": 1.0}, error_rate=0.2, seed=7)
     n, wrong = 4000, 0
     for _ in range(n):
-        a = vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")),
-                    Observation(0, (), {"cup": 1.0, "table": 1.0}))
+        a = vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), OBS)
         wrong += a.value is not True
     assert abs(wrong / n - 0.2) < 0.025  # ~4 standard errors
 
 
-def test_symbolic_vlm_guesses_about_what_it_cannot_see_and_knows_it():
-    vlm = SymbolicVLM(lambda a: True, error_rate=0.0, seed=1)
-    hidden = Observation(0, (), {"cup": 0.0, "table": 1.0})
+def test_sim_vlm_does_not_answer_about_a_frame_it_has_no_record_of():
+    vlm = sim_vlm(lambda a: True, {"cup": 1.0}, error_rate=0.0, seed=1)
+    assert vlm.ask(Query("q", about=(CUP,), objects=("cup",)), Frame("from-elsewhere", 0.0)).value is None
+
+
+def test_sim_vlm_guesses_about_what_it_cannot_see_and_knows_it():
+    vlm = sim_vlm(lambda a: True, {"cup": 0.0, "table": 1.0}, error_rate=0.0, seed=1)
+    hidden = OBS
     answers = [vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), hidden).value for _ in range(400)]
     assert 0.35 < sum(answers) / len(answers) < 0.65
     suff = [vlm.ask(Query("q", purpose="sufficiency", about=(CUP,), objects=("cup", "table")), hidden).value
             for _ in range(50)]
     assert not any(suff), "with no noise it must say the view is insufficient every time"
+
+
+def rnd(answers: str, sufficient: bool | None) -> Round:
+    """A round from answers like "yyyyn" (y/n/? for yes/no/abstained), voted as the paper votes."""
+    vals = [{"y": True, "n": False, "?": None}[c] for c in answers]
+    r = vote_round(Scripted(vals), OBS, CUP, VoteSettings())
+    r.sufficient = sufficient if r.consistent else None
+    return r
+
+
+def test_a_settled_first_view_decides_as_in_the_paper():
+    assert verdict([rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+    assert verdict([rnd("nnnny", True)], exhausted=False) == Verdict(False, "settled")
+
+
+def test_one_lucky_view_after_views_that_said_no_does_not_decide():
+    """retrieve_bottles seed 102 (issue 9): three views voted "no" consistently but were judged
+    insufficient; a fourth, with the bottle out of frame and the answers coin flips, voted "yes"
+    4 of 5 and was judged sufficient. That one round must not decide against the other three."""
+    rounds = [rnd("nnnnn", False), rnd("nnnnn", False), rnd("nnnny", False), rnd("yyyny", True)]
+    assert verdict(rounds[:3], exhausted=False) is None
+    assert verdict(rounds, exhausted=False) is None  # keep looking while there is budget
+    assert verdict(rounds, exhausted=True) == Verdict(False, "unsettled")
+
+
+def test_a_coin_flip_view_is_outvoted_only_by_more_settled_views():
+    flip, sure = rnd("nnyny", None), rnd("yyyny", True)
+    assert verdict([flip, sure], exhausted=False) is None
+    assert verdict([flip, sure, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+
+
+def test_with_the_budget_spent_only_views_that_all_agreed_stand():
+    assert verdict([rnd("yyyyy", False), rnd("yyyyn", False)], exhausted=True) == Verdict(True, "agreed")
+    assert verdict([rnd("yyyyy", False), rnd("yyynn", None)], exhausted=True).outcome == "unsettled"

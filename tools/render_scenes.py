@@ -24,7 +24,7 @@ def render_task(path: Path, out: Path) -> list[Path]:
     world = PybulletWorld(task, seed=0, injection=False)
     try:
         goal_objects = [a for lit in task.planning.goal for a in lit.atom.args]
-        obs = world.observe(tuple(goal_objects[:1]))
+        obs = world.capture(world.aim_at(tuple(goal_objects[:1])))
         files = [out / f"{task.name}_overview.png", out / f"{task.name}_wrist.png"]
         cv2.imwrite(str(files[0]), cv2.cvtColor(world.overview(), cv2.COLOR_RGB2BGR), [cv2.IMWRITE_PNG_COMPRESSION, 9])
         cv2.imwrite(str(files[1]), cv2.cvtColor(obs.rgb, cv2.COLOR_RGB2BGR), [cv2.IMWRITE_PNG_COMPRESSION, 9])

@@ -101,12 +101,11 @@ def cmd_export(args) -> int:
     from vap_bt.bt.export import to_btcpp_xml
     from vap_bt.domain.planner import Planner
     from vap_bt.scene.graph import SceneGraph
-    from vap_bt.world import SceneSnapshot
 
     task = _load_run_task(args)
     planning = task.planning
     plan = Planner(planning).plan()
-    ctx = ExecutionContext(graph=SceneGraph.from_snapshot(SceneSnapshot([], set(planning.init))), vlm=None,
+    ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
                            budget=task.options.budget)
     xml = to_btcpp_xml(compile_plan(ctx, plan.actions, planning.goal, planning.knowledge))

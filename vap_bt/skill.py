@@ -17,7 +17,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
 
-from vap_bt.world import GoalContext, Observation, SceneSnapshot, World
+from vap_bt.world import GoalContext, World
 
 ENTRY_POINT_GROUP = "vap_bt.skills"
 
@@ -88,13 +88,3 @@ class SkillClient(Protocol):
     def send_goal(self, action: str, args: tuple[str, ...]) -> GoalHandle: ...
 
     def close(self) -> None: ...
-
-
-class Camera(Protocol):
-    """Where the executive gets observations, moves its viewpoint and surveys the scene."""
-
-    def observe(self, targets: tuple[str, ...]) -> Observation: ...
-
-    def survey(self) -> SceneSnapshot: ...
-
-    def move_view(self, target: str, direction: str) -> bool: ...

@@ -5,12 +5,19 @@ PDDL problem file for domains other than the household), states the goal — as 
 the natural-language instruction beside it — and sets the run's options. Paths are relative to
 the task file. Every mistake is reported once, with the file and the field or line at fault::
 
-    name: collect_cup
-    instruction: Take the cup from the living-room table to the kitchen counter.
+    name: boil_water
+    instruction: Boil some water in a cup.
     domain: ../domains/household.pddl
-    goal: ["on(cup, counter)"]
+    goal: ["filled(cup)", "heated(cup)"]
     scene: {rooms: [...], doors: {...}, robot: {...}, furniture: {...}, items: {...}}
+    belief: ["inside(cup, cabinet)"]
     options: {verify: both, budget: 3, max_replans: 10}
+
+Two parts say different things to different readers. ``scene:`` is the world a simulator builds:
+the executive never reads it. ``belief:`` is what the user tells the robot about things it may
+not be able to see (the cup is in the closed cabinet); it may be wrong, perception overrides it
+and verification catches what neither saw. A ``problem:`` file's initial state is, likewise, the
+user's account of the situation: the executive takes it as its prior belief.
 """
 
 from __future__ import annotations
@@ -48,6 +55,7 @@ class TaskFile(BaseModel):
     problem: str | None = None
     scene: Layout | None = None
     goal: list[str] | None = None
+    belief: list[str] = Field(default_factory=list, description="what the user tells the robot (a prior)")
     world: Literal["symbolic", "pybullet"] = "symbolic"
     options: Options = Field(default_factory=Options)
 
@@ -61,10 +69,15 @@ class TaskFile(BaseModel):
 
 
 class Task:
-    """A loaded task: the file's contents plus the planning task they define."""
+    """A loaded task: the file's contents plus the planning task they define.
 
-    def __init__(self, spec: TaskFile, planning: PlanningTask, path: Path | None) -> None:
+    ``planning.init`` is the scenario's true initial state (for worlds to build, never for the
+    executive); ``prior`` is what the executive is told."""
+
+    def __init__(self, spec: TaskFile, planning: PlanningTask, path: Path | None,
+                 prior: frozenset | None = None) -> None:
         self.spec, self.planning, self.path = spec, planning, path
+        self.prior = planning.init if prior is None else prior
 
     @property
     def name(self) -> str:
@@ -119,15 +132,22 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
         why = planning.check_atom(a.atom)
         if why:
             raise InputError(f"{where}: field goal", why)
-    return Task(spec, planning, Path(where))
+    prior = []
+    for text_atom in spec.belief:
+        lit = _parse(text_atom, where, field="belief")
+        why = planning.check_atom(lit.atom)
+        if why or not lit.positive:
+            raise InputError(f"{where}: field belief", why or f"state what holds, not what does not: {text_atom!r}")
+        prior.append(lit.atom)
+    return Task(spec, planning, Path(where), frozenset(prior))
 
 
-def _parse(text: str, where) -> Lit:
+def _parse(text: str, where, field: str = "goal") -> Lit:
     neg = text.strip().startswith("not ")
     try:
         atom = Atom.parse(text.strip()[4:] if neg else text)
     except AtomSyntaxError as exc:
-        raise InputError(f"{where}: field goal", str(exc)) from None
+        raise InputError(f"{where}: field {field}", str(exc)) from None
     return Lit(atom, not neg)
 
 

@@ -1,72 +1,25 @@
-"""The World contract: what a world (simulated or real) offers the rest of the system.
+"""The World contract: what a world (simulated or real) offers, and what it keeps to itself.
 
-A world owns the truth. The executive never touches it directly: it sends goals to skills (which
-act on a world) and asks for observations (which a world renders). Only two places may read the
-truth itself, and both say so: the run's report (``goal_satisfied``, injected situations) and the
-simulated VLM, whose answers are modelled on what the camera actually shows.
+A world owns the truth. The executive never touches it: it sends goals to skills (which act on a
+world) and perceives through the world's robot interfaces — the camera service (frames with
+detections, viewpoints), proprioception and the site map (:mod:`vap_bt.robot`). A simulated
+world also holds an :class:`~vap_bt.sim.oracle.Oracle` for the runner's report and for its own
+simulated sensors and VLM; nothing on the executive's side is ever given it.
 
 Worlds implement :class:`World`; :mod:`vap_bt.sim.symbolic` is the fast one over ground facts,
-:mod:`vap_bt.sim` also holds the pybullet household. Everything here is plain data so that it can
-cross a process boundary (see :mod:`vap_bt.transport`).
+:mod:`vap_bt.sim.pybullet_world` the pybullet household. Everything here is plain data so that it
+can cross a process boundary (see :mod:`vap_bt.transport`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Protocol, runtime_checkable
+from dataclasses import dataclass
+from typing import Any, Protocol, runtime_checkable
 
-import numpy as np
-
-from vap_bt.domain.atoms import Atom
-
-#: Directions the viewpoint prompt offers (paper appendix, "Viewpoint Selection Prompt").
-VIEW_DIRECTIONS: tuple[str, ...] = ("left", "right", "front", "behind", "above", "closer")
-
-
-@dataclass(frozen=True)
-class ObjectInfo:
-    """One object as perception reports it: the scene graph's node."""
-
-    name: str
-    label: str
-    room: str | None = None
-    centroid: tuple[float, float, float] | None = None
-    #: axis-aligned box as (xmin, ymin, zmin, xmax, ymax, zmax), metres, world frame
-    box: tuple[float, float, float, float, float, float] | None = None
-
-
-@dataclass
-class SceneSnapshot:
-    """What the robot believes at the start: objects and the ground facts that hold among them."""
-
-    objects: list[ObjectInfo]
-    facts: set[Atom]
-
-
-@dataclass
-class Observation:
-    """One camera view. Images are optional so that the symbolic world can answer too.
-
-    ``visibility`` maps object names to the fraction of the object that the view shows (0 when out
-    of view or fully occluded); a pixel world derives it from the segmentation mask.
-
-    ``relations`` are the spatial facts (``on``, ``inside``, ``in_room``, ``holding``) about the
-    objects in view, as the scene-graph builder derives them from geometry (paper Sec. IV-A:
-    centroid above a support surface, box inside a container's volume). They re-locate objects
-    after a situation; truth values of other predicates are for the VLM to judge.
-    """
-
-    view_index: int
-    targets: tuple[str, ...]
-    visibility: dict[str, float]
-    rgb: np.ndarray | None = None  # (H, W, 3) uint8
-    depth: np.ndarray | None = None  # (H, W) float32, metres
-    segmentation: np.ndarray | None = None  # (H, W) int32 object ids, -1 background
-    segment_names: dict[int, str] = field(default_factory=dict)
-    relations: frozenset[Atom] = frozenset()
-    intrinsics: tuple[float, float, float, float] | None = None  # fx, fy, cx, cy
-    camera_pose: tuple[float, ...] | None = None  # x, y, z, qx, qy, qz, qw (world frame)
-    stamp: float = 0.0
+from vap_bt.robot.camera import Aim, Viewpoint
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.site_map import SiteMap
+from vap_bt.robot.state import RobotState
 
 
 @dataclass(frozen=True)
@@ -98,31 +51,27 @@ class GoalContext(Protocol):
 
 @runtime_checkable
 class World(Protocol):
-    """A place where actions happen and cameras look."""
+    """A place where actions happen and a robot perceives."""
 
     name: str
+    #: the truth: for the runner's report and the world's own simulated sensors and VLM only
+    oracle: Any
 
     def reset(self, seed: int) -> None:
         """Restore the task's initial state; every random draw after this follows ``seed``."""
 
-    def survey(self) -> SceneSnapshot:
-        """Explore and build a scene graph of the current state: every object with the facts an
-        RGB-D survey and geometric reasoning establish (the paper's BuildSceneGraph). Called at
-        the start, and again when an object has been lost track of."""
-
     def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
         """Carry out one domain action, with this world's situation injection."""
 
-    def observe(self, targets: tuple[str, ...]) -> Observation:
-        """Render the current view, aimed at ``targets`` (object names)."""
+    # the robot interfaces (vap_bt.robot.camera.Camera and Body)
+    def capture(self, aim: Aim | None = None) -> Frame: ...
 
-    def move_view(self, target: str, direction: str) -> bool:
-        """Move the viewpoint relative to ``target``; False when that view cannot be reached."""
+    def goto_view(self, view: Viewpoint) -> bool: ...
 
-    def holds(self, atom: Atom) -> bool:
-        """Ground truth of one atom (reports and the simulated VLM only)."""
+    def move_view(self, aim: Aim, direction: str) -> bool: ...
 
-    def injected(self) -> list[InjectedSituation]:
-        """Situations injected since the last reset, in order."""
+    def state(self) -> RobotState: ...
+
+    def site_map(self) -> SiteMap: ...
 
     def close(self) -> None: ...

@@ -3,8 +3,8 @@
 It is not shipped as a world. A handful of actions have real preconditions and effects; every
 action takes ``duration`` seconds, split into ``steps`` steps, reporting feedback after each and
 stopping early when the goal is cancelled, so tests can see feedback, cancel and busy resources
-over a real Zenoh transport. Observations carry tiny but real rgb/depth/segmentation arrays so the
-binary path of the wire format is exercised.
+over a real Zenoh transport. Frames carry tiny but real rgb/depth/mask arrays and a camera pose so
+the binary path of the wire format is exercised.
 """
 
 from __future__ import annotations
@@ -14,8 +14,12 @@ import time
 import numpy as np
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.world import (VIEW_DIRECTIONS, ActionOutcome, GoalContext, InjectedSituation, ObjectInfo,
-                          Observation, SceneSnapshot)
+from vap_bt.robot.camera import VIEW_DIRECTIONS, Aim, Viewpoint
+from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.site_map import RoomInfo, SiteMap
+from vap_bt.robot.state import RobotState
+from vap_bt.sim.oracle import FunctionOracle
+from vap_bt.world import ActionOutcome, GoalContext
 
 # action -> (preconditions, added, deleted) over argument positions ?0, ?1
 _SCHEMAS: dict[str, tuple[list[str], list[str], list[str]]] = {
@@ -42,15 +46,13 @@ class FactWorld:
     def __init__(self, duration: float | str = 0.0, steps: int | str = 5) -> None:
         self.duration = float(duration)
         self.steps = max(1, int(steps))
+        self.oracle = FunctionOracle(lambda a: a in self.facts, lambda: [])
         self.reset(0)
 
     def reset(self, seed: int) -> None:
         self.facts = {Atom(t.split()[0], tuple(t.split()[1:])) for t in INITIAL}
         self.view = 0
         self.performed: list[tuple[str, tuple[str, ...]]] = []
-
-    def survey(self) -> SceneSnapshot:
-        return SceneSnapshot([ObjectInfo(n, label) for n, label in OBJECTS.items()], set(self.facts))
 
     def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
         schema = _SCHEMAS.get(action)
@@ -73,32 +75,35 @@ class FactWorld:
         self.performed.append((action, tuple(args)))
         return ActionOutcome(True, f"{action} done")
 
-    def observe(self, targets: tuple[str, ...]) -> Observation:
+    def capture(self, aim: Aim | None = None) -> Frame:
         h, w = 4, 6
-        seg = np.full((h, w), -1, np.int32)
-        seg[1:3, 2:4] = 7
-        return Observation(
-            view_index=self.view,
-            targets=tuple(targets),
-            visibility={t: (1.0 if t in OBJECTS else 0.0) for t in targets},
+        masks = np.full((h, w), -1, np.int32)
+        masks[1:3, 2:4] = 7
+        self.view += 1
+        return Frame(
+            frame_id=f"facts-{self.view}", stamp=float(self.view),
+            detections=(Detection("cup", "cup", pixels=4, mask_id=7),),
             rgb=np.arange(h * w * 3, dtype=np.uint8).reshape(h, w, 3),
             depth=np.linspace(0.5, 2.0, h * w, dtype=np.float32).reshape(h, w),
-            segmentation=seg,
-            segment_names={7: "cup"},
-            intrinsics=(500.0, 500.0, 3.0, 2.0),
-        )
+            masks=masks, intrinsics=(500.0, 500.0, 3.0, 2.0), camera_pose=np.eye(4),
+            aim=aim.names if aim else ())
 
-    def move_view(self, target: str, direction: str) -> bool:
-        if target not in OBJECTS or direction not in VIEW_DIRECTIONS:
+    def goto_view(self, view: Viewpoint) -> bool:
+        self.view += 1
+        return view.room in OBJECTS
+
+    def move_view(self, aim: Aim, direction: str) -> bool:
+        if not set(aim.names) <= set(OBJECTS) or direction not in VIEW_DIRECTIONS:
             return False
         self.view += 1
         return True
 
-    def holds(self, atom: Atom) -> bool:
-        return atom in self.facts
+    def state(self) -> RobotState:
+        room = next((a.args[0] for a in self.facts if a.predicate == "robot_in"), None)
+        return RobotState(float(self.view), room, gripper_holding=any(a.predicate == "holding" for a in self.facts))
 
-    def injected(self) -> list[InjectedSituation]:
-        return []
+    def site_map(self) -> SiteMap:
+        return SiteMap(rooms=tuple(RoomInfo(n, f"floor_{n}") for n, t in OBJECTS.items() if t == "room"))
 
     def close(self) -> None:
         pass

@@ -39,17 +39,17 @@ def episode(path: str, seed: int, injection: bool, size: tuple[int, int], verbos
     for a in plan.actions:
         t = time.perf_counter()
         out = world.perform(a.name, tuple(a.args), Ctx())
-        obs = world.observe(tuple(a.args))
+        vis = world.seen(tuple(a.args))
         per_action.append(time.perf_counter() - t)
         if verbose:
             print(f"  {a}: {'ok' if out.completed else 'FAILED'} {out.message} "
-                  f"({per_action[-1]:.2f} s, targets visible {[round(obs.visibility.get(x, 0), 2) for x in a.args]})")
-    goal = all(world.holds(lit.atom) == lit.positive for lit in task.planning.goal)
+                  f"({per_action[-1]:.2f} s, targets visible {[round(vis.get(x, 0), 2) for x in a.args]})")
+    goal = all(world.oracle.holds(lit.atom) == lit.positive for lit in task.planning.goal)
     wall = time.perf_counter() - t0
     result = {"task": task.name, "seed": seed, "injection": injection, "actions": len(plan.actions),
               "wall_s": round(wall, 2), "build_s": round(build, 2), "sim_s": round(world.ticks * DT, 1),
               "slowest_action_s": round(max(per_action, default=0.0), 2), "goal_satisfied": goal,
-              "injected": [f"{s.action}:{s.kind}" for s in world.injected()]}
+              "injected": [f"{s.action}:{s.kind}" for s in world.oracle.injected()]}
     world.close()
     return result
 

@@ -17,7 +17,8 @@ from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception.verification import Round, VoteSettings
 from vap_bt.perception.vlm import VLM
 from vap_bt.scene.graph import SceneGraph
-from vap_bt.skill import Camera, SkillClient
+from vap_bt.robot.camera import Aim, Camera
+from vap_bt.skill import SkillClient
 
 Phase = Literal["pre", "eff", "goal"]
 SituationKind = Literal["precondition", "effect", "execution", "goal"]
@@ -90,6 +91,8 @@ class ExecutionContext:
     #: goal atoms the final look could not settle: success is not claimed over them
     unconfirmed_goal: list[Atom] = field(default_factory=list)
     actions: list[dict] = field(default_factory=list)
+    #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
+    aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
     t0: float = field(default_factory=time.perf_counter)
 
     def now(self) -> float:

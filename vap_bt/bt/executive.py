@@ -1,7 +1,8 @@
 """The closed-loop executive (paper Algorithm 1) on a behaviour tree.
 
-One episode: survey the scene into a scene graph, plan, compile the plan into a tree, and tick it.
-When the tree fails, a behaviour has left a :class:`~vap_bt.bt.context.Situation` on the
+One episode: look round the site and build the scene graph from what the camera sees
+(:class:`~vap_bt.scene.builder.SceneGraphBuilder`), plan, compile the plan into a tree, and tick
+it. When the tree fails, a behaviour has left a :class:`~vap_bt.bt.context.Situation` on the
 context; the executive handles it and swaps in a new tree:
 
 1. an effect that did not happen first undoes the action-driven update, so belief returns to
@@ -9,12 +10,17 @@ context; the executive handles it and swaps in a new tree:
 2. the contradicted atom is set to its observed value (observation-driven update);
 3. a skill that failed to act makes the robot's placement for it (``inview``) stale, so that the
    new plan approaches the target again rather than retrying from the same spot;
-4. the objects the action touched are re-located from what the camera sees now; an object that
-   belief no longer places anywhere triggers a fresh survey (the paper's UpdateFromObservation);
+4. the objects the action touched are re-located from a fresh frame by the same builder; an
+   object that is not where belief puts it, or that belief no longer places anywhere, sends the
+   robot to look again: a re-survey of the room it was believed in (the paper's
+   UpdateFromObservation), which costs time and is counted in the report;
 5. the planner replans from the corrected graph — reusing the old plan's tail when it still
    works — within the replanning budget.
 
-The executive talks only to protocols (SkillClient, Camera, VLM): it never sees a world.
+The executive talks only to protocols — skills (:class:`~vap_bt.skill.SkillClient`), the camera
+service and the body (:mod:`vap_bt.robot.camera`), a VLM — and to the task file's words; it never
+sees a world or its truth. Every way an episode ends halts the tree (``root.stop``), so no goal
+is left in flight.
 """
 
 from __future__ import annotations
@@ -28,13 +34,19 @@ from py_trees.common import Status
 
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, VerifyMode
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import UnsolvableError
+from vap_bt.perception.prompts import verifiable
+from vap_bt.perception.state_survey import StateAnswer, survey_states
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import VLM
+from vap_bt.robot.camera import Aim, Body, Camera
+from vap_bt.scene import belief
+from vap_bt.scene.builder import GEOMETRIC_PREDICATES, Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph
-from vap_bt.skill import Camera, SkillClient
+from vap_bt.skill import SkillClient
 
 #: PDDL types whose objects are placed somewhere (and so can be lost track of)
 PORTABLE_TYPES = ("item",)
@@ -54,6 +66,21 @@ class ExecutiveSettings:
 
 
 @dataclass
+class Survey:
+    """One look round: why, the sweep, and what was asked of the VLM."""
+
+    reason: str  # "initial" or "lost <objects>"
+    sweep: SweepRecord
+    states: list[StateAnswer] = field(default_factory=list)
+    facts: frozenset[Atom] = frozenset()  # belief right after it
+    prior_only: tuple[str, ...] = ()  # items placed only by the task file's prior
+
+    def to_json(self) -> dict:
+        return {"reason": self.reason, **self.sweep.to_json(), "states": [s.to_json() for s in self.states],
+                "prior_only": list(self.prior_only)}
+
+
+@dataclass
 class EpisodeOutcome:
     success: bool  # the executive's own claim: its tree reached GoalCheck and it held
     reason: str
@@ -61,33 +88,43 @@ class EpisodeOutcome:
     situations: list[Situation]
     replans: int
     replan_seconds: list[float]
-    surveys: int
+    surveys: list[Survey]
     ticks: int
     graph: SceneGraph
     context: ExecutionContext
 
 
 class Executive:
-    def __init__(self, task: PlanningTask, planner: Planner, skills: SkillClient, camera: Camera,
+    """Runs one task to its end: perceive, plan, tick, handle situations, replan."""
+
+    def __init__(self, task: PlanningTask, planner: Planner, skills: SkillClient, camera: Camera, body: Body,
                  vlm: VLM | None, settings: ExecutiveSettings | None = None,
                  progress: Callable[[str], None] = lambda m: None,
-                 on_tree: Callable[[py_trees.trees.BehaviourTree, int], None] | None = None) -> None:
-        self.task, self.planner, self.skills, self.camera, self.vlm = task, planner, skills, camera, vlm
+                 on_tree: Callable[[py_trees.trees.BehaviourTree, int], None] | None = None,
+                 prior: frozenset[Atom] = frozenset(),
+                 geometry: Callable[..., Geometry] | None = None,
+                 on_survey: Callable[[Survey, SceneGraph], None] | None = None) -> None:
+        self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
+            task, planner, skills, camera, body, vlm
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
+        self.on_survey = on_survey or (lambda survey, graph: None)
+        self.prior = frozenset(prior)
+        self.geometry = geometry
         #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
         self.outcome: EpisodeOutcome | None = None
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
             raise ValueError("verification needs a VLM; use verify mode 'none' to run without one")
 
+    # -- the loop ----------------------------------------------------------------------------
+
     def run(self) -> EpisodeOutcome:
-        k = self.task.knowledge
-        graph = SceneGraph.from_snapshot(self.camera.survey(),
-                                         tracks_hand={"holding", "hand_empty"} <= set(k.predicates))
+        graph, survey = self._perceive()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
-                               mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress)
-        out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], 1, 0, graph, ctx)
+                               mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
+                               aim=self.builder.aim)
+        out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
             plan = self.planner.plan(graph.state(), self.task.goal)
         except UnsolvableError as exc:
@@ -96,6 +133,13 @@ class Executive:
         out.plans.append(plan)
         self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
         tree = self._tree(ctx, plan)
+        try:
+            return self._tick_until_done(tree, ctx, plan, out)
+        finally:
+            self.halt(tree)
+
+    def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome) -> EpisodeOutcome:
+        graph = out.graph
         while out.ticks < self.s.max_ticks:
             tree.tick()
             out.ticks += 1
@@ -121,13 +165,15 @@ class Executive:
                 out.reason = f"replanning budget ({self.s.max_replans}) exhausted"
                 return out
             t0 = time.perf_counter()
-            out.surveys += self._correct(graph, situation)
+            survey = self._correct(graph, situation)
+            if survey is not None:
+                out.surveys.append(survey)
             try:
                 plan = self.planner.replan(graph.state(), plan.actions[situation.step:], self.task.goal)
             except UnsolvableError as exc:
                 out.reason = f"no plan after {situation.kind} situation: {exc}"
                 return out
-            tree.interrupt()
+            self.halt(tree)
             tree = self._tree(ctx, plan)
             out.replan_seconds.append(time.perf_counter() - t0)
             out.replans += 1
@@ -137,11 +183,81 @@ class Executive:
         out.reason = f"tick budget ({self.s.max_ticks}) exhausted"
         return out
 
+    @staticmethod
+    def halt(tree: py_trees.trees.BehaviourTree) -> None:
+        """Stop every running behaviour (each cancels what it has in flight in ``terminate``)."""
+        if tree.root.status == Status.RUNNING:
+            tree.root.stop(Status.INVALID)
+
     def _tree(self, ctx: ExecutionContext, plan: Plan) -> py_trees.trees.BehaviourTree:
         return py_trees.trees.BehaviourTree(compile_plan(ctx, plan.actions, self.task.goal, self.task.knowledge))
 
-    def _correct(self, graph: SceneGraph, s: Situation) -> int:
-        """Bring belief in line with what was observed; returns how many surveys it took."""
+    # -- perception ----------------------------------------------------------------------------
+
+    def _perceive(self) -> tuple[SceneGraph, Survey]:
+        """BuildSceneGraph: sweep every room the robot can reach, then assemble the belief."""
+        k = self.task.knowledge
+        site_map = self.body.site_map()
+        self.builder = SceneGraphBuilder(k, self.task.objects, site_map, self.geometry)
+        start = self.body.state().room
+        rooms = sweep_order(site_map, start)
+        self.progress(f"survey: {len(rooms)} room(s) {', '.join(rooms) or '(no map rooms)'}")
+        sweep = self.builder.sweep(self.camera, rooms)
+        items = [o for o in self.task.objects if self._portable(o)]
+        unplaced = [o for o in items if not self.builder.placed(o) and not self._said_where(o)]
+        if unplaced:  # a detector misses things now and then: look round once more before giving up
+            self.progress(f"survey: {', '.join(unplaced)} not seen; looking again")
+            again = self.builder.sweep(self.camera, rooms)
+            sweep = again.after(sweep)
+        state = self.body.state()
+        located, prior_only = belief.item_facts(self.builder, items, self.prior)
+        facts = belief.map_facts(site_map) | belief.robot_facts(state, sweep, site_map) | belief.hand_facts(state, self.builder)
+        facts |= located
+        # the prior's other statements (states, and anything of a domain without a site map)
+        surveyed = bool(site_map.rooms)  # without a site to look round, the prior is all there is
+        facts |= {a for a in self.prior if not surveyed or a.predicate not in GEOMETRIC_PREDICATES
+                  | belief.ROBOT_PREDICATES | belief.HAND_PREDICATES}
+        graph = SceneGraph({n: self.builder.node(n) for n in self.task.objects},
+                           belief.typed(facts, k, self.task.objects),
+                           tracks_hand={"holding", "hand_empty"} <= set(k.predicates))
+        for n, obj in graph.objects.items():
+            if obj.centroid is not None:
+                graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
+        states = self._ask_states(graph)
+        graph.facts |= belief.typed(belief.closed_world_defaults(graph.facts, site_map, self.task.objects, k),
+                                    k, self.task.objects)
+        survey = Survey("initial", sweep, states, graph.state(), tuple(sorted(prior_only)))
+        self.progress(f"survey: {sweep.frames} frames from {sweep.reached}/{sweep.views} views in "
+                      f"{sweep.seconds:.2f} s; {len(sweep.detected)} objects seen"
+                      + (f"; placed by the task file only: {', '.join(sorted(prior_only))}" if prior_only else ""))
+        self.on_survey(survey, graph)
+        return graph, survey
+
+    def _said_where(self, obj: str) -> bool:
+        return any(a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj for a in self.prior)
+
+    def _ask_states(self, graph: SceneGraph) -> list[StateAnswer]:
+        """Ask the VLM whether each container and door seen is open; believe what settles."""
+        if self.vlm is None or not verifiable("open") or "open" not in self.task.knowledge.predicates:
+            return []
+        k = self.task.knowledge
+        sig = k.predicates["open"][0]
+        openable = {a.args[0] for a in self.builder.site_map.facts if a.predicate == "openable"}
+        containers = {f.name for f in self.builder.site_map.furniture if "container" in k.parents
+                      and k.is_subtype(f.type, "container")}
+        candidates = [n for n in sorted(self.builder.evidence) if n in openable | containers
+                      and k.is_subtype(self.task.objects[n], sig)]
+        answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote)
+        complement = k.complements.get("open")
+        for a in answers:
+            if a.value is not None:
+                graph.correct(a.atom, a.value)
+                if complement:  # open and closed are exclusive: the answer settles both
+                    graph.correct(Atom(complement, a.atom.args), not a.value)
+        return answers
+
+    def _correct(self, graph: SceneGraph, s: Situation) -> Survey | None:
+        """Bring belief in line with what was observed; returns the re-survey it took, if any."""
         if s.kind == "effect" and s.action is not None:
             graph.undo(s.action)
         if s.atom is not None and s.observed is not None:
@@ -150,25 +266,81 @@ class Executive:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == VIEW_PREDICATE:
                     graph.correct(lit.atom, False)
-        involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()))))
+        dropped = self._feel_hand(graph)
+        involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()),
+                                        *dropped)))
         portable = [o for o in involved if self._portable(o)]
         if not portable:
-            return 0
-        obs = self.camera.observe(tuple(portable))
-        lost = []
-        for o in portable:
-            if obs.visibility.get(o, 0.0) > 0.0:
-                seen = {a for a in obs.relations if a.args and a.args[0] == o}
-                if seen:
-                    graph.relocate(o, seen)
-            elif self._expected_in_sight(graph, o):
-                lost.append(o)  # the camera turned toward where belief puts it, and it is not there
+            return None
+        lost = self._relocate(graph, portable)
         lost += [o for o in portable if o not in lost
                  and not any(a.predicate in ("on", "inside", "holding") for a in graph.location(o))]
-        if lost:
-            graph.merge_survey(self.camera.survey())
-            return 1
-        return 0
+        if not lost:
+            return None
+        return self._resurvey(graph, lost)
+
+    def _feel_hand(self, graph: SceneGraph) -> list[str]:
+        """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
+        belief had in the hand: it is somewhere else now, and must be looked for."""
+        if self.body.state().gripper_holding is not False:
+            return []
+        held = sorted(a for a in graph.facts if a.predicate == "holding")
+        for a in held:
+            graph.correct(a, False, cause="gripper")
+        if held and "hand_empty" in self.task.knowledge.predicates:
+            graph.correct(Atom("hand_empty"), True, cause="gripper")
+        return [a.args[0] for a in held]
+
+    def _relocate(self, graph: SceneGraph, portable: list[str]) -> list[str]:
+        """Look where belief puts ``portable``; re-locate what the frame shows. Returns the objects
+        that should have been in sight and were not."""
+        aim = self.builder.aim(graph, tuple(portable))
+        self.builder.forget(portable)
+        frame = self.camera.capture(aim)
+        seen = self.builder.integrate(frame)
+        lost = []
+        in_hand = self._in_hand(graph)
+        for o in portable:
+            if o in in_hand:
+                continue  # belief holds it and the gripper feels something: it is in the hand
+            observed = self.builder.observed(o, in_hand) if o in seen else set()
+            if self.builder.placed(o, in_hand):
+                graph.relocate(o, observed)
+                graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
+            elif self._expected_in_sight(graph, o):
+                lost.append(o)  # the camera turned toward where belief puts it, and it is not there
+        return lost
+
+    def _resurvey(self, graph: SceneGraph, lost: list[str]) -> Survey:
+        """Sweep the rooms belief put the lost objects in and the robot's own; if that does not
+        find them, the rest of the house. Every item the sweep saw is re-located."""
+        here = self.body.state().room
+        near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == "in_room" and a.args[0] == o}
+                      - {here}) + ([here] if here else [])
+        self.progress(f"    lost track of {', '.join(lost)}: re-surveying {', '.join(near)}")
+        items = [o for o in self.task.objects if self._portable(o)]
+        self.builder.forget(items)
+        sweep = self.builder.sweep(self.camera, near)
+        rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
+        in_hand = self._in_hand(graph)
+        if rest and not all(self.builder.placed(o, in_hand) for o in lost):
+            self.progress(f"    not there: searching {', '.join(rest)}")
+            sweep = self.builder.sweep(self.camera, rest).after(sweep)
+        for o in items:
+            observed = self.builder.observed(o, in_hand)
+            if o not in in_hand and self.builder.placed(o, in_hand):
+                graph.relocate(o, observed)
+                graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
+        graph.replace_predicates(belief.ROBOT_PREDICATES, belief.robot_facts(self.body.state(), sweep, self.builder.site_map), "survey")
+        survey = Survey(f"lost {', '.join(lost)}", sweep, facts=graph.state())
+        self.on_survey(survey, graph)
+        return survey
+
+    def _in_hand(self, graph: SceneGraph) -> set[str]:
+        """What belief holds, while the gripper feels something between its fingers."""
+        if self.body.state().gripper_holding is False:
+            return set()
+        return {a.args[0] for a in graph.facts if a.predicate == "holding"}
 
     @staticmethod
     def _expected_in_sight(graph: SceneGraph, obj: str) -> bool:
@@ -179,7 +351,31 @@ class Executive:
         rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"}
         return any(a.predicate == "in_room" and a.args[1] in rooms for a in loc)
 
+    def _situated(self) -> bool:
+        return bool(LOCATION_PREDICATES & set(self.task.knowledge.predicates))
+
     def _portable(self, obj: str) -> bool:
         t = self.task.objects.get(obj)
         return t is not None and any(self.task.knowledge.is_subtype(t, p) for p in PORTABLE_TYPES) \
-            and bool(LOCATION_PREDICATES & set(self.task.knowledge.predicates))
+            and self._situated()
+
+
+def sweep_order(site_map, start: str | None) -> list[str]:
+    """Rooms in the order the sweep visits them: farthest first (by doors), so that it ends back
+    in the room where the robot started."""
+    if not site_map.rooms:
+        return []
+    nbrs: dict[str, set[str]] = {r.name: set() for r in site_map.rooms}
+    for d in site_map.doors:
+        a, b = d.rooms
+        nbrs[a].add(b)
+        nbrs[b].add(a)
+    first = start if start in nbrs else site_map.rooms[0].name
+    order, todo = [], [first]
+    while todo:
+        r = todo.pop(0)
+        if r not in order:
+            order.append(r)
+            todo += sorted(nbrs[r] - set(order))
+    order += [r.name for r in site_map.rooms if r.name not in order]
+    return order[::-1]

@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
 from vap_bt.perception.vlm import VLM, Query
-from vap_bt.world import VIEW_DIRECTIONS, Observation
+from vap_bt.robot.camera import VIEW_DIRECTIONS
+from vap_bt.robot.frame import Frame
 
 
 @dataclass(frozen=True)
@@ -29,7 +30,7 @@ class VoteSettings:
 
 @dataclass
 class Round:
-    view: int
+    view: str  # the frame's id
     questions: list[str] = field(default_factory=list)
     answers: list[bool | None] = field(default_factory=list)
     vote: bool | None = None
@@ -52,10 +53,10 @@ def objects_of(atom: Atom) -> tuple[str, ...]:
     return atom.args
 
 
-def vote_round(vlm: VLM, obs: Observation, atom: Atom, s: VoteSettings) -> Round:
+def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings) -> Round:
     """Ask the paraphrases of ``atom`` about ``obs`` and vote (paper Alg. 2, lines 2–4)."""
     qs = prompts.questions(atom, s.paraphrases)
-    r = Round(view=obs.view_index)
+    r = Round(view=obs.frame_id)
     need = s.agreement * len(qs)
     for q in qs:
         ans = vlm.ask(Query(prompts.predicate_query(q), about=(atom,), objects=objects_of(atom)), obs).value
@@ -81,14 +82,14 @@ def _decided(answers: list[bool | None], total: int, need: float) -> bool:
     return vote_fixed and consistency_fixed
 
 
-def check_sufficiency(vlm: VLM, obs: Observation, atom: Atom, question: str) -> bool | None:
+def check_sufficiency(vlm: VLM, obs: Frame, atom: Atom, question: str) -> bool | None:
     """The view-sufficiency prompt (appendix) for the round's first question."""
     q = Query(prompts.view_sufficiency(question), purpose="sufficiency", about=(atom,), objects=objects_of(atom))
     ans = vlm.ask(q, obs).value
     return ans if isinstance(ans, bool) else None
 
 
-def suggest_viewpoint(vlm: VLM, obs: Observation, atom: Atom, question: str, target: str) -> str | None:
+def suggest_viewpoint(vlm: VLM, obs: Frame, atom: Atom, question: str, target: str) -> str | None:
     """The viewpoint-selection prompt (appendix): one of left/right/front/behind/above/closer."""
     q = Query(prompts.viewpoint_selection(question, target), kind="choice", purpose="viewpoint",
               about=(atom,), objects=objects_of(atom), options=VIEW_DIRECTIONS)
@@ -99,3 +100,37 @@ def suggest_viewpoint(vlm: VLM, obs: Observation, atom: Atom, question: str, tar
 def target_of(atom: Atom) -> str:
     """The object to look at for an atom: its first argument (the robot for hand_empty)."""
     return atom.args[0] if atom.args else "gripper"
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What a check's views say together: a value and how it was reached, or nothing yet."""
+
+    value: bool
+    outcome: str  # "settled" (views agree), "agreed" (budget spent, every view agreed), "unsettled"
+
+
+def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
+    """Weigh every view of one check (the paper's Alg. 2 takes the first settled round; one lucky
+    round after views that said otherwise is too close to a guess to rewrite belief):
+
+    * a settled round decides at once when no other view voted otherwise;
+    * when views disagree, a value needs more settled rounds for it than views voting against it
+      (a coin-flip view that happened to look sure is outvoted by the views that did not);
+    * with the budget spent (``exhausted``) and nothing decided, a value stands only if every
+      view's answers agreed on it (independent views agreeing is evidence); otherwise the check
+      is ``unsettled``: it does not overturn belief.
+
+    Returns None while the check should keep looking."""
+    votes = [r.vote for r in rounds if r.vote is not None]
+    for value in (True, False):
+        settled = sum(r.settled and r.vote == value for r in rounds)
+        against = sum(v != value for v in votes)
+        if settled and (against == 0 or settled > against):
+            return Verdict(value, "settled")
+    if not exhausted:
+        return None
+    agreed = {r.vote for r in rounds}
+    if all(r.consistent for r in rounds) and len(agreed) == 1 and None not in agreed:
+        return Verdict(agreed.pop(), "agreed")
+    return Verdict(False, "unsettled")

@@ -1,7 +1,7 @@
 """The vision-language model protocol: a yes/no question or a choice among options, about one image.
 
 Every backend — the simulated one, OpenAI-compatible servers, Gemini — answers a :class:`Query`
-about an :class:`~vap_bt.world.Observation` with an :class:`Answer`. Answers are parsed
+about a :class:`~vap_bt.robot.frame.Frame` with an :class:`Answer`. Answers are parsed
 strictly: anything that is not clearly "yes"/"no" (or one of the options) is ``None``, which the
 vote treats as uncertainty. A timeout is the same: uncertainty, never a crash.
 
@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from typing import Literal, Protocol
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.world import Observation
+from vap_bt.robot.frame import Frame
 
 Purpose = Literal["predicate", "sufficiency", "viewpoint", "action"]
 
@@ -44,7 +44,7 @@ class Answer:
 class VLM(Protocol):
     name: str
 
-    def ask(self, query: Query, observation: Observation) -> Answer: ...
+    def ask(self, query: Query, frame: Frame) -> Answer: ...
 
     def describe(self) -> dict:
         """Backend name and every parameter that shapes its answers (for the report)."""
@@ -79,12 +79,12 @@ class MeteredVLM:
         self.counts: dict[str, int] = {}
         self.seconds = 0.0
 
-    def ask(self, query: Query, observation: Observation) -> Answer:
+    def ask(self, query: Query, frame: Frame) -> Answer:
         import time
 
         t0 = time.perf_counter()
         try:
-            return self.inner.ask(query, observation)
+            return self.inner.ask(query, frame)
         finally:
             self.seconds += time.perf_counter() - t0
             self.counts[query.purpose] = self.counts.get(query.purpose, 0) + 1

@@ -1,7 +1,8 @@
 """The scene graph G = (O, R): the objects the robot knows and the ground facts it believes.
 
-It is the executive's state, and the planner's initial state on every replan. It changes in the
-two ways the paper names (Sec. IV-A, "Maintenance"), plus the bookkeeping they need:
+It is the executive's state, and the planner's initial state on every replan. It is built by
+looking (:mod:`vap_bt.scene.builder`) and changes in the two ways the paper names (Sec. IV-A,
+"Maintenance"), plus the bookkeeping they need:
 
 * **action-driven** — :meth:`apply` removes an action's delete list and adds its add list, and
   remembers what it changed so that :meth:`undo` can take it back when the camera shows the
@@ -10,20 +11,44 @@ two ways the paper names (Sec. IV-A, "Maintenance"), plus the bookkeeping they n
   :meth:`relocate` replaces what is believed about where an object is (``on``, ``inside``,
   ``in_room``, ``holding``) by what the scene-graph builder sees now.
 
-Every change is logged with its cause, so a report can show how belief evolved.
+Every change is logged with its cause, so a report can show how belief evolved. Each object
+records where its node came from: the site ``map``, ``perceived`` (detected in a frame), or a
+``prior`` the task file stated (believed, not yet seen).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import Literal
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.world import ObjectInfo, SceneSnapshot
 
 #: Predicates that say where an object is; an object's location is the set of these atoms whose
 #: first argument is the object. ``hand_empty`` follows from ``holding``.
 LOCATION_PREDICATES = frozenset({"on", "inside", "in_room", "holding"})
+
+Source = Literal["map", "perceived", "prior"]
+
+
+@dataclass(frozen=True)
+class SceneObject:
+    """One node of the graph: an object with what perception knows of its geometry."""
+
+    name: str
+    label: str
+    source: Source = "prior"
+    room: str | None = None
+    centroid: tuple[float, float, float] | None = None
+    #: axis-aligned box as (xmin, ymin, zmin, xmax, ymax, zmax), metres, map frame
+    box: tuple[float, float, float, float, float, float] | None = None
+    frames: int = 0  # frames it was detected in
+    #: where belief placed it when ``centroid`` was measured; once belief moves it (an action
+    #: carried it away), the centroid is stale and its support says where to look instead
+    located: frozenset[Atom] = frozenset()
+
+    def seen(self, **changes) -> "SceneObject":
+        return replace(self, **changes)
 
 
 @dataclass
@@ -38,7 +63,9 @@ class Change:
 
 @dataclass
 class SceneGraph:
-    objects: dict[str, ObjectInfo]
+    """Objects and believed facts, with the log of every change."""
+
+    objects: dict[str, SceneObject]
     facts: set[Atom]
     #: keep hand_empty consistent with holding (domains that have both, like the household)
     tracks_hand: bool = False
@@ -46,8 +73,9 @@ class SceneGraph:
     _applied: list[tuple[GroundAction, Change]] = field(default_factory=list, repr=False)
 
     @classmethod
-    def from_snapshot(cls, snap: SceneSnapshot, tracks_hand: bool = False) -> "SceneGraph":
-        return cls({o.name: o for o in snap.objects}, set(snap.facts), tracks_hand=tracks_hand)
+    def of_facts(cls, facts, tracks_hand: bool = False) -> "SceneGraph":
+        """A graph of bare facts, without object nodes (planning and tests)."""
+        return cls({}, set(facts), tracks_hand=tracks_hand)
 
     def state(self) -> frozenset[Atom]:
         return frozenset(self.facts)
@@ -78,15 +106,16 @@ class SceneGraph:
         self._change("undo", set(ch.removed), set(ch.added))
         return True
 
-    def correct(self, atom: Atom, value: bool, complement: str | None = None) -> Change:
+    def correct(self, atom: Atom, value: bool, complement: str | None = None, cause: str = "correct") -> Change:
         """Set ``atom`` to ``value``; with ``complement`` (open for closed, say) set that atom over
-        the same arguments to the opposite, if belief held either of the pair before."""
+        the same arguments to the opposite, if belief held either of the pair before. ``cause``
+        names the sense that said so ("correct": a verification; "gripper": proprioception)."""
         add, remove = ({atom}, set()) if value else (set(), {atom})
         if complement is not None:
             other = Atom(complement, atom.args)
             if atom in self.facts or other in self.facts:
                 (remove if value else add).add(other)
-        return self._change("correct", add, remove)
+        return self._change(cause, add, remove)
 
     def location(self, obj: str) -> set[Atom]:
         return {a for a in self.facts if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj}
@@ -98,15 +127,11 @@ class SceneGraph:
         self._sync_hand()
         return ch
 
-    def merge_survey(self, snap: SceneSnapshot) -> Change:
-        """A fresh survey replaces every location fact; other facts are kept (they were verified)."""
-        for o in snap.objects:
-            self.objects.setdefault(o.name, o)
-        old = {a for a in self.facts if a.predicate in LOCATION_PREDICATES}
-        new = {a for a in snap.facts if a.predicate in LOCATION_PREDICATES}
-        ch = self._change("survey", new, old - new)
-        self._sync_hand()
-        return ch
+    def replace_predicates(self, predicates: frozenset[str] | set[str], atoms: set[Atom], cause: str) -> Change:
+        """Believe exactly ``atoms`` for ``predicates`` (where the robot is and what it sees, after
+        it moved to look: localization and the last frame say so)."""
+        old = {a for a in self.facts if a.predicate in predicates}
+        return self._change(cause, {a for a in atoms if a.predicate in predicates}, old)
 
     def _sync_hand(self) -> None:
         # hand_empty is believed exactly when nothing is believed held

@@ -21,7 +21,11 @@ From these:
 
 A furniture piece's extent is the hull of its observed box and its map footprint: the map knows
 how deep a cabinet is when the camera has seen only its front, and an open drawer's tray, which
-slides beyond the footprint, is in the observed box.
+slides beyond the footprint, is in the observed box. An open door leaf swings out of the
+footprint too, and sweeps the floor in front of the piece, so the hull alone would put a cup that
+fell in front of an open microwave inside it: a thing lying on the floor outside a piece's
+footprint is never inside that piece (a drawer's tray, beyond the footprint, is far above the
+floor; a basket's cavity, at floor level, is within its own footprint).
 
 An item gets at most one support: of the ``on``/``inside`` candidates that hold, an ``inside``
 wins over an ``on`` (an item in a basket on the floor also rests near the floor; the container is
@@ -95,6 +99,8 @@ class Extent:
     lo: np.ndarray  # (3,) xmin, ymin, zmin
     hi: np.ndarray  # (3,) xmax, ymax, zmax
     front: tuple[float, float] | None = None  # unit vector in x/y; None: no front (floors)
+    #: the map footprint's x/y bounds (xmin, ymin, xmax, ymax), for mapped furniture
+    footprint: tuple[float, float, float, float] | None = None
 
     @property
     def top(self) -> float:
@@ -131,11 +137,13 @@ def object_extent(obj: Located, site_map: SiteMap) -> Extent:
     if piece is None:
         return Extent(obj.name, lo, hi)
     corners = footprint_corners(piece)
+    footprint = None
     if len(corners):
         lo[:2] = np.minimum(lo[:2], corners.min(axis=0))
         hi[:2] = np.maximum(hi[:2], corners.max(axis=0))
         lo[2] = min(lo[2], 0.0)  # mapped furniture stands on the floor
-    return Extent(obj.name, lo, hi, piece.front)
+        footprint = (*map(float, corners.min(axis=0)), *map(float, corners.max(axis=0)))
+    return Extent(obj.name, lo, hi, piece.front, footprint)
 
 
 def floor_extent(room: RoomInfo) -> Extent | None:
@@ -161,6 +169,11 @@ def lies_inside(obj: Located, container: Extent, th: Thresholds = THRESHOLDS) ->
     centroid must stay below the container's top)."""
     lo, hi = np.asarray(obj.box[:3], float), np.asarray(obj.box[3:], float)
     m = th.inside_margin
+    if container.footprint is not None and lo[2] <= th.on_above:  # lying on the floor ...
+        fx0, fy0, fx1, fy1 = container.footprint
+        cx, cy = obj.centroid[0], obj.centroid[1]
+        if not (fx0 - m <= cx <= fx1 + m and fy0 - m <= cy <= fy1 + m):
+            return False  # ... outside the footprint: in front of the piece, not in it
     return bool(np.all(lo >= container.lo - m) and np.all(hi[:2] <= container.hi[:2] + m)
                 and obj.centroid[2] <= container.top)
 

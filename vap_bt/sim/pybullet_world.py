@@ -3,10 +3,19 @@
 ``PybulletWorld(task)`` arranges the task's Layout (:mod:`pb_layout`), builds it from the
 catalogue (:mod:`pb_scene`), loads the robot (:mod:`pb_robot`) and then only ever changes the
 scene by running physics: primitives (:mod:`pb_primitives`) command joint trajectories, steps
-run, the truth (:mod:`pb_truth`) is read off the result, the wrist camera (:mod:`pb_camera`)
-renders it. Situation injection draws once per action from :class:`SituationModel` (Table II)
-and changes the motion so that the situation physically happens; scripted disturbances (a person
-moves an object, a door left half open) apply before the action they name.
+run, the truth (:mod:`pb_truth`) is read off the result — through :attr:`oracle`, for the report
+and the simulated VLM only. Situation injection draws once per action from
+:class:`SituationModel` (Table II) and changes the motion so that the situation physically
+happens; scripted disturbances (a person moves an object, a door left half open) apply before
+the action they name.
+
+Its robot interfaces are what a real robot's drivers would give: the wrist camera
+(:mod:`pb_camera`) renders RGB-D and the segmentation stands for an instance detector
+(:class:`~vap_bt.sim.detector.DetectorModel`: instances below a pixel threshold are missed); it
+aims at the point it is given, never at a name; viewpoints are reached by driving the base; the
+body reports the base pose, the room localization puts it in, the arm's joints, the TCP pose and
+whether the gripper holds something; the site map has the rooms' outlines, the doors and the
+furniture's footprints, nothing that moves.
 
 Disturbances are dicts: ``{"at": 2, "move": "cup", "to": "counter"}`` (before the third action,
 the cup is put on the counter) or ``{"at": 0, "door": "door_lk", "open": 0.4}`` (the door swung
@@ -24,7 +33,14 @@ import numpy as np
 import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.scene.layout import layout_facts
+from vap_bt.robot.camera import VIEW_DIRECTIONS, Aim, Viewpoint
+from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.state import RobotState, quat_xyzw
+from vap_bt.scene.layout import floor_of, layout_facts
+from vap_bt.sim.captures import CaptureLog, CaptureRecord
+from vap_bt.sim.detector import DetectorModel
+from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.pb_camera import FILL, Render, look_pose, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_layout import plan_scene
@@ -34,12 +50,15 @@ from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_scene import build_scene
 from vap_bt.sim.pb_truth import Truth
 from vap_bt.sim.situations import SituationModel
-from vap_bt.world import (VIEW_DIRECTIONS, ActionOutcome, GoalContext, InjectedSituation, ObjectInfo, Observation,
-                          SceneSnapshot)
+from vap_bt.world import ActionOutcome, GoalContext, InjectedSituation
 
 DT = 1.0 / 60.0
 SOLVER_ITERATIONS = 20
-LOCATIONS = ("on", "inside", "in_room", "holding")
+#: a viewpoint counts as reached when the base stops this close to it (m)
+VIEW_REACHED = 0.25
+#: a "front" view steps back to this distance from the point, squarely facing it: far enough to
+#: see all of a tall piece of furniture (a 1.05 m shelf needs about 1.8 m)
+FRONT_VIEW = 1.8
 
 
 class _NoContext:
@@ -50,11 +69,14 @@ class _NoContext:
 
 
 class PybulletWorld:
+    """The pybullet household: physics, Table II injection, disturbances, the oracle, and the
+    robot interfaces of a mobile UR5e with a wrist RGB-D camera."""
+
     name = "pybullet"
 
     def __init__(self, task, seed: int = 0, gui: bool = False, injection: bool = True,
                  situations: SituationModel | None = None, disturbances: list[dict] | None = None,
-                 image_size: tuple[int, int] = (320, 240)) -> None:
+                 image_size: tuple[int, int] = (320, 240), detector: DetectorModel | None = None) -> None:
         self.task = task
         self.layout = task.spec.scene
         if self.layout is None:
@@ -64,6 +86,9 @@ class PybulletWorld:
         self.situations = situations or SituationModel(enabled=injection, seed=seed)
         self.disturbances = list(disturbances or [])
         self.camera = _camera(image_size)
+        self.detector = detector or DetectorModel()
+        self.captures = CaptureLog()
+        self.oracle = FunctionOracle(self._holds, self.injected)
         self._lock = threading.RLock()
         self.cid = -1
         self.reset(seed)
@@ -98,6 +123,8 @@ class PybulletWorld:
             self._view: Render | None = None
             self._view_tick = -1
             self.view_index = 0
+            self.captures.clear()
+            self._map = self._site_map()
             for name, it in self.layout.items.items():
                 if it.held:
                     self._start_held(name)
@@ -203,9 +230,9 @@ class PybulletWorld:
     def injected(self) -> list[InjectedSituation]:
         return list(self._injected)
 
-    # ------------------------------------------------------------ truth
+    # ------------------------------------------------------------ truth (the oracle's)
 
-    def holds(self, atom: Atom) -> bool:
+    def _holds(self, atom: Atom) -> bool:
         with self._lock:
             return self.truth.holds(atom)
 
@@ -222,70 +249,44 @@ class PybulletWorld:
         counts = pixel_counts(r, self.scene.by_body())
         return {n for n, c in counts.items() if c >= r.pixel_threshold()}
 
-    def atoms(self) -> list[Atom]:
-        """Every atom of the household predicates over this scene's objects (typed)."""
-        by: dict[str, list[str]] = {}
-        for n, t in self.types.items():
-            by.setdefault(t, []).append(n)
-        items = by.get("item", []) + by.get("knife", [])
-        things = [n for n, t in self.types.items() if t != "room"]
-        surfaces = by.get("surface", [])
-        containers = by.get("container", []) + by.get("appliance", [])
-        rooms = by.get("room", [])
-        out = [Atom("hand_empty")]
-        out += [Atom("robot_in", (r,)) for r in rooms]
-        out += [Atom("in_room", (x, r)) for x in things for r in rooms]
-        out += [Atom(p, (x,)) for p in ("robot_at", "inview", "open", "closed") for x in things]
-        out += [Atom("on", (o, s)) for o in items for s in surfaces]
-        out += [Atom("inside", (o, c)) for o in items for c in containers]
-        out += [Atom(p, (o,)) for p in ("holding", "reachable", "filled", "sliced", "heated") for o in items]
-        out += [Atom("blocking", (b, o)) for b in items for o in items if b != o]
-        out += [Atom("turned_on", (a,)) for a in by.get("appliance", [])]
-        return out
+    # ------------------------------------------------------------ robot interfaces: camera
 
-    def survey(self) -> SceneSnapshot:
+    def capture(self, aim: Aim | None = None) -> Frame:
+        """Aim at ``aim.point`` (if given and not already aimed there), render, detect."""
         with self._lock:
-            objects = []
-            for n, t in self.scene.things.items():
-                if self.types.get(n) == "room":
-                    continue
-                box = self.truth.aabb(n)
-                c = self.truth.center(n)
-                label = t.kind.name if t.kind is not None else self.types.get(n, "thing")
-                room = self.truth.room_of_point(c) if t.item is not None else (
-                    t.furniture.room if t.furniture else (t.room or (t.door.low if t.door else None)))
-                objects.append(ObjectInfo(n, label, room, tuple(map(float, c)), tuple(map(float, box))))
-            facts = {a for a in self.atoms() if self.truth.holds(a)}
-            facts |= self.truth.rigid
-            return SceneSnapshot(objects, facts)
-
-    # ------------------------------------------------------------ camera
-
-    def observe(self, targets: tuple[str, ...]) -> Observation:
-        with self._lock:
-            known = [t for t in targets if t in self.scene.things and self.truth.held() != t]
-            if known:
-                point = np.mean([self.prims.target_point(t) for t in known], axis=0)
+            if aim is not None and aim.point is not None:
+                point = np.asarray(aim.point, float)
                 if not self.prims.aimed_at(point):
                     self.prims.look_at(point)
-            r = self.wrist_view()
-            names = self.scene.by_body()
-            ids = {n: i for i, n in enumerate(sorted(self.scene.things))}
-            counts = pixel_counts(r, names)
-            boxes = {n: self.truth.aabb(n) for n in counts if n in self.scene.things}
-            fills = {n: self._fill(n) for n in boxes}
-            vis = visibility(r, counts, boxes, fills)
-            for t in targets:
-                vis.setdefault(t, 0.0)
-            rel = set()
-            for n in counts:
-                if counts[n] >= r.pixel_threshold():
-                    rel |= {a for a in self.atoms() if a.predicate in LOCATIONS and n in a.args[:1] and self.truth.holds(a)}
-            self.view_index += 1
-            return Observation(
-                view_index=self.view_index, targets=tuple(targets), visibility=vis, rgb=r.rgb, depth=r.depth,
-                segmentation=name_image(r, names, ids), segment_names={i: n for n, i in ids.items()},
-                relations=frozenset(rel), intrinsics=r.intrinsics, camera_pose=r.pose7, stamp=self.ticks * DT)
+            return self._frame(aim)
+
+    def _frame(self, aim: Aim | None) -> Frame:
+        r = self.wrist_view()
+        names = self.scene.by_body()
+        counts = pixel_counts(r, names)
+        threshold = self.detector.pixel_threshold(r.camera.width, r.camera.height)
+        seen = sorted(n for n, c in counts.items() if c >= threshold and self._detectable(n))
+        ids = {n: i for i, n in enumerate(seen)}
+        masks = name_image(r, {b: n for b, n in names.items() if n in ids}, ids)
+        dets = tuple(Detection(n, self._label(n), int(counts[n]), ids[n]) for n in seen)
+        # the simulated VLM's record: how much of each object this frame shows (world side only)
+        boxes = {n: self.truth.aabb(n) for n in counts if n in self.scene.things}
+        vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
+        self.view_index += 1
+        frame_id = f"pb-{self.seed}-{self.view_index}"
+        self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks))
+        return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
+                     intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
+
+    def _detectable(self, name: str) -> bool:
+        t = self.scene.things.get(name)
+        return t is not None and t.room is None  # rooms and floors are the map's
+
+    def _label(self, name: str) -> str:
+        t = self.scene.things[name]
+        if t.door is not None:
+            return "door"
+        return t.kind.name if t.kind is not None else t.pddl_type
 
     def _fill(self, name: str) -> float:
         t = self.scene.things[name]
@@ -293,11 +294,32 @@ class PybulletWorld:
             return FILL.get(t.kind.shape, 0.8)
         return FILL["door"] if t.door is not None else FILL["furniture"]
 
-    def move_view(self, target: str, direction: str) -> bool:
-        if direction not in VIEW_DIRECTIONS or target not in self.scene.things:
+    def goto_view(self, view: Viewpoint) -> bool:
+        """Drive to the viewpoint's base pose (through doors, stopping at a shut one) and aim."""
+        with self._lock:
+            try:
+                if view.base_pose is not None:
+                    x, y = view.base_pose[:2]
+                    if self.truth.room_of_point((x, y)) is None or not self._base_fits(x, y):
+                        return False
+                    self.prims.approach(tuple(view.base_pose))
+                    bx, by, _ = self.robot.base_pose
+                    if math.hypot(bx - x, by - y) > VIEW_REACHED:
+                        return False
+                if view.aim.point is None:
+                    return True
+                return self.prims.look_at(np.asarray(view.aim.point, float))
+            except Cancelled:
+                return False
+            finally:
+                self._view = None
+
+    def move_view(self, aim: Aim, direction: str) -> bool:
+        """Move the viewpoint relative to the point the executive believes its target is at."""
+        if direction not in VIEW_DIRECTIONS or aim.point is None:
             return False
         with self._lock:
-            p = self.prims.target_point(target)
+            p = np.asarray(aim.point, float)
             x, y, yaw = self.robot.base_pose
             lift = 0.0
             if direction in ("left", "right"):
@@ -311,8 +333,10 @@ class PybulletWorld:
                 if step <= 0.02:
                     return False
                 nx, ny = np.array([x, y]) + v / np.linalg.norm(v) * step
-            elif direction == "front":
-                nx, ny, _ = self.prims.standoff(target)
+            elif direction == "front":  # square on to the point, from a good viewing distance
+                v = np.array([x - p[0], y - p[1]])
+                v = v / (np.linalg.norm(v) or 1.0)
+                nx, ny = p[0] + v[0] * FRONT_VIEW, p[1] + v[1] * FRONT_VIEW
             elif direction == "behind":
                 nx, ny = 2 * p[0] - x, 2 * p[1] - y
             else:  # above
@@ -334,6 +358,45 @@ class PybulletWorld:
                 return False
             finally:
                 self._view = None
+
+    def aim_at(self, names: tuple[str, ...]) -> Aim:
+        """An aim at where ``names`` truly are — for tests and tools that stage a view. It reads
+        the truth: the executive never calls it (it aims from belief)."""
+        with self._lock:
+            known = [n for n in names if n in self.scene.things and self.truth.held() != n]
+            point = np.mean([self.prims.target_point(n) for n in known], axis=0) if known else None
+            return Aim(tuple(names), None if point is None else tuple(map(float, point)))
+
+    def seen(self, names: tuple[str, ...]) -> dict[str, float]:
+        """Capture a frame aimed at ``names`` (see :meth:`aim_at`); their visibility in it."""
+        frame = self.capture(self.aim_at(names))
+        vis = self.captures.get(frame.frame_id).visibility
+        return {n: vis.get(n, 0.0) for n in names}
+
+    # ------------------------------------------------------------ robot interfaces: body and map
+
+    def state(self) -> RobotState:
+        with self._lock:
+            x, y, yaw = self.robot.base_pose
+            T = self.robot.link_pose("tcp")
+            return RobotState(self.ticks * DT, self.plan.room_at(x, y), (x, y, yaw),
+                              tuple(float(v) for v in self.robot.q()[3:]),
+                              (*map(float, T[:3, 3]), *quat_xyzw(T[:3, :3])),
+                              float(np.sum(self.robot.finger_q())),
+                              # the fingers stopped on something: what a gripper's object detection says
+                              self.robot.grip is not None and self.robot.grip.link == -1)
+
+    def site_map(self) -> SiteMap:
+        return self._map
+
+    def _site_map(self) -> SiteMap:
+        plan = self.plan
+        rooms = tuple(RoomInfo(r.name, floor_of(r.name), (r.x0, r.y0, r.x1, r.y1)) for r in plan.rooms.values())
+        doors = tuple(DoorInfo(d.name, (d.low, d.high), (d.x, d.center_y, 0.0), d.width) for d in plan.doors.values())
+        furniture = tuple(FurnitureInfo(f.name, f.kind.name, self.types[f.name], f.room,
+                                        (f.x, f.y, math.atan2(f.front[1], f.front[0])),
+                                        (f.kind.size[0], f.kind.size[1])) for f in plan.furniture.values())
+        return SiteMap(rooms, doors, furniture, frozenset(self.truth.rigid))
 
     def _base_fits(self, x: float, y: float, room: str | None = None) -> bool:
         """The base footprint (as a circle) stays inside a room (``room`` if given) and off the

@@ -1,4 +1,4 @@
-"""ZenohSkillClient and ZenohCamera: the executive's side of the Zenoh transport.
+"""ZenohSkillClient, ZenohRobot and ZenohVLM: the executive's side of the Zenoh transport.
 
 ``send_goal`` never blocks. It picks a goal id, sends a :class:`GoalRequest` through a cached
 Querier on ``vap/<robot>/skill/<action>`` and returns a :class:`ZenohGoalHandle` in PENDING.
@@ -44,14 +44,21 @@ from vap_bt.transport.messages import (
     GoalRequest,
     GoalStatus,
     MessageError,
+    CaptureRequest,
+    MapRequest,
     MoveViewReply,
     MoveViewRequest,
-    ObserveRequest,
-    SurveyRequest,
+    StateRequest,
+    ViewRequest,
+    VlmRequest,
     decode,
     encode,
 )
-from vap_bt.world import Observation, SceneSnapshot
+from vap_bt.perception.vlm import Answer, Query
+from vap_bt.robot.camera import Aim, Viewpoint
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.site_map import SiteMap
+from vap_bt.robot.state import RobotState
 
 #: how long a goal request may wait for its server's accept/reject
 ACCEPT_TIMEOUT_S = 5.0
@@ -320,34 +327,22 @@ class ZenohSkillClient:
         )
 
 
-class ZenohCamera:
-    """A :class:`~vap_bt.skill.Camera` served by a robot's skill server; calls block."""
+class _Queries:
+    """Blocking request/reply calls on a robot's interface keys, one cached Querier per key."""
 
-    def __init__(self, session: zenoh.Session, robot: str, timeout: float = CAMERA_TIMEOUT_S) -> None:
-        self.robot = keys.chunk("robot", robot)
-        self.timeout = timeout
-        self._queriers = {
-            verb: session.declare_querier(keys.camera(robot, verb), timeout=timeout)
-            for verb in ("observe", "survey", "move")
-        }
-
-    def observe(self, targets: tuple[str, ...]) -> Observation:
-        return self._ask("observe", ObserveRequest(tuple(targets)), Observation)
-
-    def survey(self) -> SceneSnapshot:
-        return self._ask("survey", SurveyRequest(), SceneSnapshot)
-
-    def move_view(self, target: str, direction: str) -> bool:
-        return self._ask("move", MoveViewRequest(target, direction), MoveViewReply).reachable
+    def __init__(self, session: zenoh.Session, robot: str, key_of: dict[str, str], timeout: float,
+                 what: str) -> None:
+        self.robot, self.timeout, self.what = keys.chunk("robot", robot), timeout, what
+        self._queriers = {verb: session.declare_querier(key, timeout=timeout) for verb, key in key_of.items()}
 
     def close(self) -> None:
         for querier in self._queriers.values():
             querier.undeclare()
 
-    def _ask(self, verb: str, request: Any, expect: type) -> Any:
+    def ask(self, verb: str, request: Any, expect: type) -> Any:
         for reply in self._queriers[verb].get(payload=encode(request)):
             if reply.ok is None:
-                raise TransportError(f"camera {verb} on robot {self.robot}: {_error_text(reply)}")
+                raise TransportError(f"{self.what} {verb} on robot {self.robot}: {_error_text(reply)}")
             payload = reply.ok.payload.to_bytes()
             try:
                 return decode(payload, expect)
@@ -356,10 +351,63 @@ class ZenohCamera:
                     reason = decode(payload, ErrorReply).reason
                 except MessageError:
                     reason = str(exc)
-                raise TransportError(f"camera {verb} on robot {self.robot}: {reason}") from None
+                raise TransportError(f"{self.what} {verb} on robot {self.robot}: {reason}") from None
         raise TransportError(
-            f"no camera on robot {self.robot!r} answered {verb} within {self.timeout:g} s"
+            f"no {self.what} on robot {self.robot!r} answered {verb} within {self.timeout:g} s"
         )
+
+
+class ZenohRobot:
+    """The camera service and body (:mod:`vap_bt.robot.camera`) of a robot's server; calls block."""
+
+    def __init__(self, session: zenoh.Session, robot: str, timeout: float = CAMERA_TIMEOUT_S) -> None:
+        key_of = {**{v: keys.camera(robot, v) for v in ("capture", "view", "move")},
+                  **{v: keys.body(robot, v) for v in ("state", "map")}}
+        self._q = _Queries(session, robot, key_of, timeout, "camera")
+        self._map: SiteMap | None = None
+
+    def capture(self, aim: Aim | None = None) -> Frame:
+        return self._q.ask("capture", CaptureRequest(aim), Frame)
+
+    def goto_view(self, view: Viewpoint) -> bool:
+        return self._q.ask("view", ViewRequest(view), MoveViewReply).reachable
+
+    def move_view(self, aim: Aim, direction: str) -> bool:
+        return self._q.ask("move", MoveViewRequest(aim, direction), MoveViewReply).reachable
+
+    def state(self) -> RobotState:
+        return self._q.ask("state", StateRequest(), RobotState)
+
+    def site_map(self) -> SiteMap:
+        if self._map is None:  # the map is static: asked once
+            self._map = self._q.ask("map", MapRequest(), SiteMap)
+        return self._map
+
+    def close(self) -> None:
+        self._q.close()
+
+
+class ZenohVLM:
+    """A world-side VLM reached over Zenoh: the question and the frame's id travel, not the pixels
+    (the world that took the frame answers about it). A lost link is no answer, never a crash."""
+
+    def __init__(self, session: zenoh.Session, robot: str, description: dict | None = None,
+                 timeout: float = CAMERA_TIMEOUT_S) -> None:
+        self._q = _Queries(session, robot, {"ask": keys.vlm(robot)}, timeout, "vlm")
+        self._description = dict(description or {"backend": "sim (over zenoh)"})
+        self.name = str(self._description.get("backend", "sim"))
+
+    def ask(self, query: Query, frame: Frame) -> Answer:
+        try:
+            return self._q.ask("ask", VlmRequest(query, frame.frame_id), Answer)
+        except TransportError as exc:
+            return Answer(f"transport: {exc}", None)
+
+    def describe(self) -> dict:
+        return dict(self._description)
+
+    def close(self) -> None:
+        self._q.close()
 
 
 def _recv_until(replies: Any, deadline: float) -> zenoh.Reply | None:

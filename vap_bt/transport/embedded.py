@@ -2,10 +2,12 @@
 
 ``vap-bt run`` needs no separate ``vap-bt serve``: this starts one Zenoh session for the
 servers (listening on a free loopback port, or on what the user configured), a skill server per
-robot that the skills name (the wrist camera on the arm's server), and a second session for the
-executive that connects to the first. Goals, feedback, results, cancels, camera requests and
-liveliness all cross a real Zenoh link — the same path a multi-machine deployment takes — only
-the machine is one. The world sits behind a lock because the servers' worker threads share it.
+robot that the skills name (the robot interfaces — camera, body, map — and the world-side
+simulated VLM on the arm's server), and a second session for the executive that connects to the
+first. Goals, feedback, results, cancels, frames, robot state, VLM questions and liveliness all
+cross a real Zenoh link — the same path a multi-machine deployment takes — only the machine is
+one; the executive's side holds Zenoh clients and nothing of the world. The world (and the VLM
+that reads its capture records) sits behind one lock because the servers' threads share it.
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from vap_bt.skill import Skill
-from vap_bt.transport.client import ZenohCamera, ZenohSkillClient
+from vap_bt.transport.client import ZenohRobot, ZenohSkillClient, ZenohVLM
 from vap_bt.transport.config import TransportSettings, open_session
 from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
@@ -33,6 +35,7 @@ class EmbeddedTransport:
 
     world: Any
     skills: dict[str, Skill]
+    vlm: Any | None = None  # a world-side VLM to serve beside the camera
     camera_robot: str = "ur5e"
     server_settings: TransportSettings | None = None
     servers: list[SkillServer] = field(default_factory=list, init=False)
@@ -48,15 +51,21 @@ class EmbeddedTransport:
         camera_robot = self.camera_robot if self.camera_robot in robots else robots[0]
         for robot in robots:
             mine = {a: type(s)(self.locked) for a, s in self.skills.items() if s.robot == robot}
-            self.servers.append(SkillServer(self._server_session, robot, mine,
-                                            camera=self.locked if robot == camera_robot else None).start())
+            here = robot == camera_robot
+            vlm = LockedWorld(self.vlm, self.locked.lock) if here and self.vlm is not None else None
+            self.servers.append(SkillServer(self._server_session, robot, mine, camera=self.locked if here else None,
+                                            vlm=vlm).start())
         self._client_session = open_session(client_conf)
         self.client = ZenohSkillClient(self._client_session, routes)
-        self.camera = ZenohCamera(self._client_session, camera_robot)
+        self.robot = ZenohRobot(self._client_session, camera_robot)
+        self.vlm_client = None if self.vlm is None else ZenohVLM(self._client_session, camera_robot,
+                                                                 self.vlm.describe())
 
     def close(self) -> None:
         self.client.close()
-        self.camera.close()
+        self.robot.close()
+        if self.vlm_client is not None:
+            self.vlm_client.close()
         for s in self.servers:
             s.close()
         self._client_session.close()

@@ -1,4 +1,4 @@
-"""Skills and camera in the executive's own process: the fast path for symbolic campaigns.
+"""Skills and robot interfaces in the executive's own process: the fast path for symbolic campaigns.
 
 :class:`InProcessSkillClient` runs each goal to the end inside ``send_goal`` — no threads, no
 queues — and hands back a handle that is already terminal. A behaviour ticking it sees RUNNING
@@ -14,7 +14,11 @@ from dataclasses import dataclass
 
 from vap_bt.skill import Feedback, GoalState, Skill, SkillResult
 from vap_bt.transport.execution import GoalRun, run_goal, unknown_action
-from vap_bt.world import Observation, SceneSnapshot, World
+from vap_bt.robot.camera import Aim, Viewpoint
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.site_map import SiteMap
+from vap_bt.robot.state import RobotState
+from vap_bt.world import World
 
 
 @dataclass
@@ -59,20 +63,30 @@ class InProcessSkillClient:
         """Nothing held."""
 
 
-class InProcessCamera:
-    """A :class:`~vap_bt.skill.Camera` that asks the world directly."""
+class InProcessRobot:
+    """The camera service and body (:mod:`vap_bt.robot.camera`) of a world in this process.
+
+    It forwards the robot-interface calls and nothing else: the executive holding it can capture
+    frames, move to look, read the robot's state and the map, and cannot reach the world's truth
+    through it (there is no attribute to reach it by)."""
+
+    __slots__ = ("_capture", "_goto_view", "_move_view", "_state", "_site_map")
 
     def __init__(self, world: World) -> None:
-        self.world = world
+        self._capture, self._goto_view, self._move_view = world.capture, world.goto_view, world.move_view
+        self._state, self._site_map = world.state, world.site_map
 
-    def observe(self, targets: tuple[str, ...]) -> Observation:
-        return self.world.observe(tuple(targets))
+    def capture(self, aim: Aim | None = None) -> Frame:
+        return self._capture(aim)
 
-    def survey(self) -> SceneSnapshot:
-        return self.world.survey()
+    def goto_view(self, view: Viewpoint) -> bool:
+        return self._goto_view(view)
 
-    def move_view(self, target: str, direction: str) -> bool:
-        return self.world.move_view(target, direction)
+    def move_view(self, aim: Aim, direction: str) -> bool:
+        return self._move_view(aim, direction)
 
-    def survey(self) -> SceneSnapshot:
-        return self.world.survey()
+    def state(self) -> RobotState:
+        return self._state()
+
+    def site_map(self) -> SiteMap:
+        return self._site_map()

@@ -6,9 +6,12 @@ other's goals (a client subscribes to its robots' namespaces only)::
     vap/<robot>/skill/<action>        queryable: start a goal (GoalRequest -> GoalReply)
     vap/<robot>/goal/<id>/status      published: feedback and the final result (GoalStatus)
     vap/<robot>/goal/<id>/cancel      published: ask the server to cancel (CancelRequest)
-    vap/<robot>/camera/observe        queryable: ObserveRequest -> Observation
-    vap/<robot>/camera/survey         queryable: SurveyRequest -> SceneSnapshot
+    vap/<robot>/camera/capture        queryable: CaptureRequest -> Frame
+    vap/<robot>/camera/view           queryable: ViewRequest -> MoveViewReply (go to a viewpoint)
     vap/<robot>/camera/move           queryable: MoveViewRequest -> MoveViewReply
+    vap/<robot>/body/state            queryable: StateRequest -> RobotState
+    vap/<robot>/body/map              queryable: MapRequest -> SiteMap
+    vap/<robot>/vlm/ask               queryable: VlmRequest -> Answer (a world-side VLM)
     vap/<robot>/alive/<server>        liveliness token of a running skill server
 
 Robot, action, server and goal names are single key chunks: no ``/`` and none of Zenoh's
@@ -51,8 +54,17 @@ def all_goal_cancel(robot: str) -> str:
 
 
 def camera(robot: str, verb: str) -> str:
-    """``verb`` is one of observe, survey, move."""
+    """``verb`` is one of capture, view, move."""
     return f"{ROOT}/{chunk('robot', robot)}/camera/{chunk('camera verb', verb)}"
+
+
+def body(robot: str, verb: str) -> str:
+    """``verb`` is one of state, map."""
+    return f"{ROOT}/{chunk('robot', robot)}/body/{chunk('body verb', verb)}"
+
+
+def vlm(robot: str) -> str:
+    return f"{ROOT}/{chunk('robot', robot)}/vlm/ask"
 
 
 def alive(robot: str, server: str) -> str:

@@ -22,6 +22,10 @@ class LockedWorld:
         self._lock = lock or threading.RLock()
 
     @property
+    def lock(self) -> threading.RLock:
+        return self._lock
+
+    @property
     def unwrapped(self) -> Any:
         return self._world
 

@@ -23,15 +23,19 @@ the kind:
   UTF-8 bytes, concatenated`` (one decode for all of them); the status
   ``flags`` are bit 0 "has feedback", bit 1 "has result", bit 2 "result succeeded"; ``state`` is
   the :class:`~vap_bt.skill.GoalState` value; ``result data`` is JSON (empty for ``{}``).
-* **Everything else** (camera requests and replies, observations, scene snapshots, errors) has
+* **Everything else** (robot-interface requests and replies: frames, robot state, the site map,
+  viewpoints; VLM queries and answers; errors) has
   ``u32 length | UTF-8 JSON object`` with the message's own fields. Numeric arrays never go
   through JSON: the header lists them as ``[name, dtype, shape]`` under ``arrays`` and their raw
   little-endian bytes follow in that order, so a 640x480 RGB-D frame costs its pixels plus a few
   hundred bytes. Images are normalised on the way out: rgb ``uint8 (H, W, 3)``, depth
-  ``float32 (H, W)`` metres, segmentation ``int32 (H, W)``.
+  ``float32 (H, W)`` metres, instance masks ``int32 (H, W)``; a frame's camera pose travels as a
+  ``float64 (4, 4)`` array.
 
 Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
-for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above. A schema-1 frame is still recognised (its byte 8, the
+for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above; 4 — the
+robot interfaces (frames with detections, state, map, viewpoints) and the VLM service replace
+schema 3's observations and scene snapshots. A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -54,9 +58,13 @@ import numpy as np
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, SkillResult
-from vap_bt.world import ObjectInfo, Observation, SceneSnapshot
+from vap_bt.perception.vlm import Answer, Query
+from vap_bt.robot.camera import Aim, Viewpoint
+from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.state import RobotState
 
-SCHEMA = 3
+SCHEMA = 4
 MAGIC = b"VAPB"
 _PREFIX = struct.Struct("<4sIB")  # magic, schema, kind
 _U32 = struct.Struct("<I")
@@ -113,19 +121,43 @@ class CancelRequest:
 
 
 @dataclass(frozen=True)
-class ObserveRequest:
-    targets: tuple[str, ...]
+class CaptureRequest:
+    """Aim the camera (None: as it is) and take a frame."""
+
+    aim: Aim | None = None
 
 
 @dataclass(frozen=True)
-class SurveyRequest:
-    pass
+class ViewRequest:
+    """Go to a viewpoint of an exploration sweep."""
+
+    view: Viewpoint
 
 
 @dataclass(frozen=True)
 class MoveViewRequest:
-    target: str
+    """Move the viewpoint ``direction`` relative to ``aim``."""
+
+    aim: Aim
     direction: str
+
+
+@dataclass(frozen=True)
+class StateRequest:
+    """Ask for the robot's state (proprioception and localization)."""
+
+
+@dataclass(frozen=True)
+class MapRequest:
+    """Ask for the site map."""
+
+
+@dataclass(frozen=True)
+class VlmRequest:
+    """Ask the world-side VLM ``query`` about a frame that world's camera took."""
+
+    query: Query
+    frame_id: str
 
 
 @dataclass(frozen=True)
@@ -146,7 +178,7 @@ Arrays = dict[str, np.ndarray]
 Packer = Callable[[Any], tuple[dict[str, Any], Arrays]]
 Unpacker = Callable[[dict[str, Any], Arrays], Any]
 
-_IMAGE_DTYPES = {"rgb": np.uint8, "depth": np.float32, "segmentation": np.int32}
+_IMAGE_DTYPES = {"rgb": np.uint8, "depth": np.float32, "masks": np.int32}
 
 
 def _pack_flat(msg: Any) -> tuple[dict[str, Any], Arrays]:
@@ -160,52 +192,100 @@ def _flat_unpacker(cls: type) -> Unpacker:
     return unpack
 
 
-def _pack_observation(o: Observation) -> tuple[dict[str, Any], Arrays]:
-    arrays = {
-        name: np.ascontiguousarray(getattr(o, name), dtype=dtype)
-        for name, dtype in _IMAGE_DTYPES.items()
-        if getattr(o, name) is not None
-    }
-    return {
-        "view_index": o.view_index,
-        "targets": list(o.targets),
-        "visibility": o.visibility,
-        "segment_names": {str(k): v for k, v in o.segment_names.items()},
-        "intrinsics": o.intrinsics,
-        "camera_pose": o.camera_pose,
-        "stamp": o.stamp,
-    }, arrays
+def _atoms_out(atoms) -> list:
+    return [[a.predicate, list(a.args)] for a in atoms]
 
 
-def _unpack_observation(d: dict[str, Any], arrays: Arrays) -> Observation:
-    return Observation(
-        view_index=int(d["view_index"]),
-        targets=tuple(d["targets"]),
-        visibility={k: float(v) for k, v in d["visibility"].items()},
-        rgb=arrays.get("rgb"),
-        depth=arrays.get("depth"),
-        segmentation=arrays.get("segmentation"),
-        segment_names={int(k): v for k, v in d["segment_names"].items()},
-        intrinsics=None if d["intrinsics"] is None else tuple(d["intrinsics"]),
-        camera_pose=None if d["camera_pose"] is None else tuple(d["camera_pose"]),
-        stamp=float(d["stamp"]),
-    )
+def _atoms_in(rows) -> tuple[Atom, ...]:
+    return tuple(Atom(p, tuple(args)) for p, args in rows)
 
 
-def _pack_snapshot(s: SceneSnapshot) -> tuple[dict[str, Any], Arrays]:
-    objects = [{f.name: getattr(o, f.name) for f in fields(o)} for o in s.objects]
-    facts = sorted([a.predicate, list(a.args)] for a in s.facts)
-    return {"objects": objects, "facts": facts}, {}
+def _tuple_or_none(v):
+    return None if v is None else tuple(v)
 
 
-def _unpack_snapshot(d: dict[str, Any], _: Arrays) -> SceneSnapshot:
-    def obj(o: dict[str, Any]) -> ObjectInfo:
-        return ObjectInfo(**{k: tuple(v) if isinstance(v, list) else v for k, v in o.items()})
+def _aim_out(a: Aim | None) -> dict | None:
+    return None if a is None else {"names": list(a.names), "point": a.point}
 
-    return SceneSnapshot(
-        objects=[obj(o) for o in d["objects"]],
-        facts={Atom(p, tuple(args)) for p, args in d["facts"]},
-    )
+
+def _aim_in(d: dict | None) -> Aim | None:
+    return None if d is None else Aim(tuple(d["names"]), _tuple_or_none(d["point"]))
+
+
+def _pack_capture(m: CaptureRequest) -> tuple[dict[str, Any], Arrays]:
+    return {"aim": _aim_out(m.aim)}, {}
+
+
+def _unpack_capture(d: dict[str, Any], _: Arrays) -> CaptureRequest:
+    return CaptureRequest(_aim_in(d["aim"]))
+
+
+def _pack_view(m: ViewRequest) -> tuple[dict[str, Any], Arrays]:
+    v = m.view
+    return {"room": v.room, "aim": _aim_out(v.aim), "base_pose": v.base_pose, "label": v.label}, {}
+
+
+def _unpack_view(d: dict[str, Any], _: Arrays) -> ViewRequest:
+    return ViewRequest(Viewpoint(d["room"], _aim_in(d["aim"]), _tuple_or_none(d["base_pose"]), d["label"]))
+
+
+def _pack_move(m: MoveViewRequest) -> tuple[dict[str, Any], Arrays]:
+    return {"aim": _aim_out(m.aim), "direction": m.direction}, {}
+
+
+def _unpack_move(d: dict[str, Any], _: Arrays) -> MoveViewRequest:
+    return MoveViewRequest(_aim_in(d["aim"]), d["direction"])
+
+
+def _pack_frame(f: Frame) -> tuple[dict[str, Any], Arrays]:
+    arrays = {name: np.ascontiguousarray(getattr(f, name), dtype=dtype)
+              for name, dtype in _IMAGE_DTYPES.items() if getattr(f, name) is not None}
+    if f.camera_pose is not None:
+        arrays["camera_pose"] = np.ascontiguousarray(f.camera_pose, dtype=np.float64)
+    dets = [{"name": d.name, "label": d.label, "pixels": d.pixels, "mask_id": d.mask_id, "score": d.score,
+             "relations": _atoms_out(d.relations)} for d in f.detections]
+    return {"frame_id": f.frame_id, "stamp": f.stamp, "detections": dets, "intrinsics": f.intrinsics,
+            "aim": list(f.aim), "extra": f.extra}, arrays
+
+
+def _unpack_frame(d: dict[str, Any], arrays: Arrays) -> Frame:
+    dets = tuple(Detection(x["name"], x["label"], int(x["pixels"]), int(x["mask_id"]), float(x["score"]),
+                           _atoms_in(x["relations"])) for x in d["detections"])
+    return Frame(d["frame_id"], float(d["stamp"]), dets, rgb=arrays.get("rgb"), depth=arrays.get("depth"),
+                 masks=arrays.get("masks"), intrinsics=_tuple_or_none(d["intrinsics"]),
+                 camera_pose=arrays.get("camera_pose"), aim=tuple(d["aim"]), extra=dict(d["extra"]))
+
+
+def _unpack_state(d: dict[str, Any], _: Arrays) -> RobotState:
+    return RobotState(float(d["stamp"]), d["room"], _tuple_or_none(d["base_pose"]), tuple(d["joints"]),
+                      _tuple_or_none(d["tcp_pose"]), d["gripper_width"], d["gripper_holding"])
+
+
+def _pack_map(m: SiteMap) -> tuple[dict[str, Any], Arrays]:
+    return {"rooms": [[r.name, r.floor, r.bounds] for r in m.rooms],
+            "doors": [[x.name, list(x.rooms), x.pose, x.width] for x in m.doors],
+            "furniture": [[f.name, f.label, f.type, f.room, f.pose, f.footprint] for f in m.furniture],
+            "facts": _atoms_out(sorted(m.facts))}, {}
+
+
+def _unpack_map(d: dict[str, Any], _: Arrays) -> SiteMap:
+    return SiteMap(
+        rooms=tuple(RoomInfo(n, fl, _tuple_or_none(b)) for n, fl, b in d["rooms"]),
+        doors=tuple(DoorInfo(n, tuple(r), _tuple_or_none(p), w) for n, r, p, w in d["doors"]),
+        furniture=tuple(FurnitureInfo(n, lb, t, r, _tuple_or_none(p), _tuple_or_none(fp))
+                        for n, lb, t, r, p, fp in d["furniture"]),
+        facts=frozenset(_atoms_in(d["facts"])))
+
+
+def _pack_vlm(m: VlmRequest) -> tuple[dict[str, Any], Arrays]:
+    q = m.query
+    return {"frame_id": m.frame_id, "prompt": q.prompt, "kind": q.kind, "purpose": q.purpose,
+            "about": _atoms_out(q.about), "objects": list(q.objects), "options": list(q.options)}, {}
+
+
+def _unpack_vlm(d: dict[str, Any], _: Arrays) -> VlmRequest:
+    q = Query(d["prompt"], d["kind"], d["purpose"], _atoms_in(d["about"]), tuple(d["objects"]), tuple(d["options"]))
+    return VlmRequest(q, d["frame_id"])
 
 
 # -- goal traffic: binary headers ------------------------------------------------------------
@@ -302,9 +382,12 @@ def _dec_status(data: bytes, offset: int) -> GoalStatus:
 
 #: kind name -> the u8 that names it on the wire (never reuse a code; add new ones at the end)
 KIND_CODES = {
-    "goal_request": 1, "goal_reply": 2, "goal_status": 3, "cancel": 4, "observe": 5,
-    "survey": 6, "move_view": 7, "move_view_reply": 8, "error": 9, "observation": 10,
-    "scene_snapshot": 11,
+    "goal_request": 1, "goal_reply": 2, "goal_status": 3, "cancel": 4,
+    "move_view": 7, "move_view_reply": 8, "error": 9,
+    # schema 4: the robot interfaces and the world-side VLM (5, 6, 10, 11 were schema 3's
+    # observe/survey/observation/scene_snapshot: retired, never reused)
+    "capture": 12, "frame": 13, "view": 14, "state_request": 15, "robot_state": 16, "map_request": 17,
+    "site_map": 18, "vlm_request": 19, "answer": 20,
 }
 
 Encoder = Callable[[Any], bytes]
@@ -319,13 +402,18 @@ _BINARY: dict[str, tuple[type, Encoder, Decoder]] = {
 }
 # kinds with a JSON header: (class, packer, unpacker)
 _JSON: dict[str, tuple[type, Packer, Unpacker]] = {
-    "observe": (ObserveRequest, _pack_flat, _flat_unpacker(ObserveRequest)),
-    "survey": (SurveyRequest, _pack_flat, _flat_unpacker(SurveyRequest)),
-    "move_view": (MoveViewRequest, _pack_flat, _flat_unpacker(MoveViewRequest)),
+    "move_view": (MoveViewRequest, _pack_move, _unpack_move),
     "move_view_reply": (MoveViewReply, _pack_flat, _flat_unpacker(MoveViewReply)),
     "error": (ErrorReply, _pack_flat, _flat_unpacker(ErrorReply)),
-    "observation": (Observation, _pack_observation, _unpack_observation),
-    "scene_snapshot": (SceneSnapshot, _pack_snapshot, _unpack_snapshot),
+    "capture": (CaptureRequest, _pack_capture, _unpack_capture),
+    "frame": (Frame, _pack_frame, _unpack_frame),
+    "view": (ViewRequest, _pack_view, _unpack_view),
+    "state_request": (StateRequest, _pack_flat, _flat_unpacker(StateRequest)),
+    "robot_state": (RobotState, _pack_flat, _unpack_state),
+    "map_request": (MapRequest, _pack_flat, _flat_unpacker(MapRequest)),
+    "site_map": (SiteMap, _pack_map, _unpack_map),
+    "vlm_request": (VlmRequest, _pack_vlm, _unpack_vlm),
+    "answer": (Answer, _pack_flat, _flat_unpacker(Answer)),
 }
 _KIND_OF = {cls: kind for kind, (cls, _, _) in [*_BINARY.items(), *_JSON.items()]}
 # class -> its frame prefix and encoder (binary kinds) or packer (JSON kinds)
@@ -343,7 +431,7 @@ _DECODERS: dict[int, tuple[str, type, Decoder | None, Unpacker | None]] = {
 
 
 def encode(msg: Any) -> bytes:
-    """One frame for ``msg`` (any message class above, Observation or SceneSnapshot)."""
+    """One frame for ``msg`` (any message class above, a Frame, RobotState, SiteMap or Answer)."""
     codec = _ENCODERS.get(type(msg))
     if codec is None:
         raise TypeError(f"{type(msg).__name__} is not a transport message")

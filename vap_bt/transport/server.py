@@ -13,9 +13,11 @@ The server's presence is a liveliness token ``vap/<robot>/alive/<name>``, declar
 queryable so that a client always learns of the server before its first reply; when the process
 dies or hangs, Zenoh drops the token and clients fail that server's goals at once.
 
-Given a world (or any :class:`~vap_bt.skill.Camera`), the server also answers
-``vap/<robot>/camera/{observe,survey,move}``; those run on Zenoh's Python callback thread, not
-its network threads, and a failing world becomes an error reply, never a dead server.
+Given a world (or anything with the camera and body interfaces of :mod:`vap_bt.robot.camera`),
+the server also answers ``vap/<robot>/camera/{capture,view,move}`` and
+``vap/<robot>/body/{state,map}``; given a world-side VLM (the simulated one), ``vap/<robot>/vlm/ask``.
+Those run on Zenoh's Python callback thread, not its network threads, and a failing world
+becomes an error reply, never a dead server.
 """
 
 from __future__ import annotations
@@ -39,13 +41,17 @@ from vap_bt.transport.messages import (
     GoalRequest,
     GoalStatus,
     MessageError,
+    CaptureRequest,
+    MapRequest,
     MoveViewReply,
     MoveViewRequest,
-    ObserveRequest,
-    SurveyRequest,
+    StateRequest,
+    ViewRequest,
+    VlmRequest,
     decode,
     encode,
 )
+from vap_bt.robot.frame import Frame
 
 log = logging.getLogger(__name__)
 
@@ -71,11 +77,13 @@ class SkillServer:
         skills: dict[str, Skill],
         camera: Any | None = None,
         name: str | None = None,
+        vlm: Any | None = None,
     ) -> None:
         self.session = session
         self.robot = keys.chunk("robot", robot)
         self.skills = dict(skills)
         self.camera = camera
+        self.vlm = vlm
         self.name = keys.chunk("server", name or f"{robot}-{os.getpid()}-{str(session.zid())[:8]}")
         self._lock = threading.Lock()
         self._goals: dict[str, _Goal] = {}
@@ -103,9 +111,12 @@ class SkillServer:
             on_query = fast(lambda q, a=action, k=key: self._on_goal(q, a, k))
             self._declared.append(declare(key, on_query))
         if self.camera is not None:
-            for verb, handler in (("observe", self._observe), ("survey", self._survey),
-                                  ("move", self._move_view)):
+            for verb, handler in (("capture", self._capture), ("view", self._goto_view), ("move", self._move_view)):
                 self._declared.append(declare(keys.camera(self.robot, verb), _camera_reply(handler)))
+            for verb, handler in (("state", self._state), ("map", self._map)):
+                self._declared.append(declare(keys.body(self.robot, verb), _camera_reply(handler)))
+        if self.vlm is not None:
+            self._declared.append(declare(keys.vlm(self.robot), _camera_reply(self._ask)))
         # announce last: a client that sees the token must find every queryable already there
         self._token = self.session.liveliness().declare_token(keys.alive(self.robot, self.name))
         log.info("skill server %s hosts %s on robot %s", self.name, sorted(self.skills), self.robot)
@@ -212,16 +223,28 @@ class SkillServer:
 
     # -- camera ----------------------------------------------------------------------------------
 
-    def _observe(self, payload: bytes) -> Any:
-        return self.camera.observe(decode(payload, ObserveRequest).targets)
+    def _capture(self, payload: bytes) -> Any:
+        return self.camera.capture(decode(payload, CaptureRequest).aim)
 
-    def _survey(self, payload: bytes) -> Any:
-        decode(payload, SurveyRequest)
-        return self.camera.survey()
+    def _goto_view(self, payload: bytes) -> Any:
+        return MoveViewReply(bool(self.camera.goto_view(decode(payload, ViewRequest).view)))
 
     def _move_view(self, payload: bytes) -> Any:
         req = decode(payload, MoveViewRequest)
-        return MoveViewReply(bool(self.camera.move_view(req.target, req.direction)))
+        return MoveViewReply(bool(self.camera.move_view(req.aim, req.direction)))
+
+    def _state(self, payload: bytes) -> Any:
+        decode(payload, StateRequest)
+        return self.camera.state()
+
+    def _map(self, payload: bytes) -> Any:
+        decode(payload, MapRequest)
+        return self.camera.site_map()
+
+    def _ask(self, payload: bytes) -> Any:
+        req = decode(payload, VlmRequest)
+        # the world-side VLM knows its camera's frames by id: the pixels need not travel back
+        return self.vlm.ask(req.query, Frame(req.frame_id, 0.0))
 
 
 def _network_callback(fn: Callable[[Any], None]) -> zenoh.handlers.Callback:

@@ -213,8 +213,9 @@ class TreeRecorder:
             view_no = self.views
             self.stream.set_time(L.VIEW, sequence=self.views)
             classes = segment_classes(obs)
-            if classes is not None and obs.segment_names != self._classes:
-                self._classes = dict(obs.segment_names)
+            names = {d.mask_id: d.name for d in obs.detections if d.mask_id >= 0}
+            if classes is not None and names != self._classes:
+                self._classes = names
                 self.stream.log(f"{L.WORLD}/camera/segmentation", classes, static=True)
             for path, archetype in camera_entities(obs):
                 self.stream.log(path, archetype)

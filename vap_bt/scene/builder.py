@@ -1,0 +1,301 @@
+"""BuildSceneGraph (paper Sec. IV-A; Alg. 1, line 1): the scene graph from what the robot sees.
+
+The builder chooses an exploration sweep from the site map — for every room the robot can reach,
+a look at each piece of furniture and door from in front of it and a look round the floor — and
+the robot executes it through its camera service. Every frame is integrated:
+
+* in a frame with depth, each detected instance's mask and depth become points in the map frame,
+  fused across views into one cleaned cloud per object (:mod:`vap_bt.scene.geometry`); its
+  centroid and box give the relations ``on``, ``inside``, ``in_room``, ``near`` by geometry
+  (:mod:`vap_bt.scene.relations`, thresholds in one place);
+* in a frame without pixels (the symbolic world), the relations come with the detection, as that
+  world's relation detector reports them (possibly wrong); reports are voted across views.
+
+Either way the result per object is its *observed location*: the atoms that say where it is.
+Objects never detected keep what the task file says of them (a ``prior``, which may be wrong);
+the map gives rooms, doors, furniture and rigid facts. After a situation the same builder
+re-locates the objects involved from a fresh frame, and re-surveys a room when an object is not
+where belief puts it.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections import Counter
+from dataclasses import dataclass, field
+from typing import Callable, Protocol
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.knowledge import DomainKnowledge
+from vap_bt.robot.camera import Aim, Camera, Viewpoint
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.site_map import SiteMap
+from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph, SceneObject
+
+#: frames kept per object (the best views of it), for questions asked after the sweep
+KEEP_FRAMES = 3
+#: the relations the builder establishes about items (by geometry, or from a relation detector)
+GEOMETRIC_PREDICATES = LOCATION_PREDICATES | {"blocking", "reachable", "near"}
+SUPPORT_PREDICATES = ("on", "inside")
+
+# -- where the sweep looks from (metres, radians); a view that cannot be reached is skipped --------
+#: base centre to the front face of a piece of furniture when looking at it
+VIEW_STANDOFF = 1.05
+#: the height aimed at on furniture whose height perception has not measured yet
+FURNITURE_AIM_HEIGHT = 0.7
+#: a look round the floor: this far from the room's centre, in these directions
+FLOOR_LOOK_DISTANCE = 1.3
+FLOOR_LOOK_HEADINGS = (-math.pi / 2, 0.0, math.pi, math.pi / 2)
+#: a door is looked at from this far inside the room, at this height
+DOOR_VIEW_DISTANCE = 1.6
+DOOR_AIM_HEIGHT = 0.8
+
+
+class Geometry(Protocol):
+    """Fused per-object geometry from frames with depth (see :mod:`vap_bt.scene.geometry`)."""
+
+    def integrate(self, frame: Frame) -> list[str]: ...
+
+    def forget(self, names) -> None: ...
+
+    def relations(self, name: str, held=()) -> set[Atom]: ...
+
+    def centroid(self, name: str) -> tuple[float, float, float] | None: ...
+
+    def box(self, name: str) -> tuple[float, ...] | None: ...
+
+
+@dataclass
+class Evidence:
+    """What the frames so far say about one object."""
+
+    label: str
+    frames: int = 0
+    reports: Counter = field(default_factory=Counter)  # relation atom -> frames that reported it
+    last_frame: str = ""
+    #: the frames that showed it best (most pixels first; the latest first on a tie)
+    best: list[tuple[int, int, Frame]] = field(default_factory=list)
+
+
+@dataclass
+class SweepRecord:
+    """One exploration sweep: where it looked, what it found, what it cost."""
+
+    rooms: tuple[str, ...]
+    views: int = 0
+    reached: int = 0
+    frames: int = 0
+    seconds: float = 0.0
+    detected: frozenset[str] = frozenset()
+    unreached_rooms: tuple[str, ...] = ()
+    last_view: Viewpoint | None = None
+    last_frame: Frame | None = None
+
+    def after(self, earlier: "SweepRecord") -> "SweepRecord":
+        """This sweep and an earlier one as one record (the robot ends where this one ended)."""
+        return SweepRecord(earlier.rooms + self.rooms, earlier.views + self.views, earlier.reached + self.reached,
+                           earlier.frames + self.frames, earlier.seconds + self.seconds,
+                           earlier.detected | self.detected, self.unreached_rooms,
+                           self.last_view or earlier.last_view, self.last_frame or earlier.last_frame)
+
+    def to_json(self) -> dict:
+        return {"rooms": list(self.rooms), "views": self.views, "reached": self.reached, "frames": self.frames,
+                "seconds": round(self.seconds, 4), "detected": sorted(self.detected),
+                "unreached_rooms": list(self.unreached_rooms)}
+
+
+class SceneGraphBuilder:
+    """Builds and refreshes the scene graph's objects and location facts from frames."""
+
+    def __init__(self, knowledge: DomainKnowledge, objects: dict[str, str], site_map: SiteMap,
+                 geometry: Callable[[DomainKnowledge, dict[str, str], SiteMap], Geometry] | None = None) -> None:
+        self.knowledge, self.objects, self.site_map = knowledge, objects, site_map
+        self.geometry = geometry(knowledge, objects, site_map) if geometry is not None else None
+        self.evidence: dict[str, Evidence] = {}
+        self._static = site_map.static_names()
+
+    # -- the sweep ---------------------------------------------------------------------------
+
+    def views(self, room: str) -> list[Viewpoint]:
+        """Where to look from in ``room``: every piece of furniture and door from in front of it,
+        then round the floor from the room's middle (where the sweep of a room ends)."""
+        info = self.site_map.room(room)
+        out: list[Viewpoint] = []
+        for f in self.site_map.furniture:
+            if f.room == room:
+                out.append(self._furniture_view(f))
+        for d in self.site_map.doors:
+            if room in d.rooms:
+                out.append(self._door_view(d, room))
+        if info is not None and info.bounds is not None:
+            x0, y0, x1, y1 = info.bounds
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            for h in FLOOR_LOOK_HEADINGS:
+                point = (cx + FLOOR_LOOK_DISTANCE * math.cos(h), cy + FLOOR_LOOK_DISTANCE * math.sin(h), 0.0)
+                out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
+        elif info is not None and info.floor in self.objects:
+            out.append(Viewpoint(room, Aim((info.floor,)), None, f"{room} floor"))
+        return out
+
+    def _furniture_view(self, f) -> Viewpoint:
+        if f.pose is None:
+            return Viewpoint(f.room, Aim((f.name,)), None, f"{f.name}")
+        x, y, yaw = f.pose
+        depth = f.footprint[1] if f.footprint else 0.5
+        c = self.geometry.centroid(f.name) if self.geometry else None
+        point = (x, y, c[2] if c else FURNITURE_AIM_HEIGHT)
+        d = depth / 2 + VIEW_STANDOFF
+        base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
+        return Viewpoint(f.room, Aim((f.name,), point), base, f"{f.name} from the front")
+
+    def _door_view(self, d, room: str) -> Viewpoint:
+        if d.pose is None or self.site_map.room(room).bounds is None:
+            return Viewpoint(room, Aim((d.name,)), None, f"{d.name}")
+        x, y, _ = d.pose
+        x0, y0, x1, y1 = self.site_map.room(room).bounds
+        # stand inside this room on the line through the doorway's centre, facing it
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        ux, uy = cx - x, cy - y
+        n = math.hypot(ux, uy) or 1.0
+        bx, by = x + ux / n * DOOR_VIEW_DISTANCE, y + uy / n * DOOR_VIEW_DISTANCE
+        return Viewpoint(room, Aim((d.name,), (x, y, DOOR_AIM_HEIGHT)), (bx, by, math.atan2(y - by, x - bx)), f"{d.name} from {room}")
+
+    def sweep(self, camera: Camera, rooms: list[str]) -> SweepRecord:
+        """Go round ``rooms`` in order, looking from each of their views; integrate every frame."""
+        t0 = time.perf_counter()
+        rec = SweepRecord(tuple(rooms))
+        detected: set[str] = set()
+        unreached = []
+        for room in rooms:
+            reached_here = 0
+            for view in self.views(room):
+                rec.views += 1
+                if not camera.goto_view(view):
+                    continue
+                reached_here += 1
+                frame = camera.capture(view.aim)
+                rec.frames += 1
+                detected |= self.integrate(frame)
+                rec.last_view, rec.last_frame = view, frame
+            rec.reached += reached_here
+            if not reached_here:
+                unreached.append(room)
+        rec.detected, rec.unreached_rooms = frozenset(detected), tuple(unreached)
+        rec.seconds = time.perf_counter() - t0
+        return rec
+
+    # -- frames ------------------------------------------------------------------------------
+
+    def integrate(self, frame: Frame) -> set[str]:
+        """Fold one frame into the evidence; returns the names detected in it."""
+        names = set()
+        for d in frame.detections:
+            if d.name not in self.objects:
+                continue  # a detection outside the task's vocabulary: not an object of this plan
+            ev = self.evidence.setdefault(d.name, Evidence(d.label))
+            ev.frames += 1
+            ev.last_frame = frame.frame_id
+            ev.reports.update(set(d.relations))
+            ev.best = sorted([*ev.best, (d.pixels, ev.frames, frame)], key=lambda b: (-b[0], -b[1]))[:KEEP_FRAMES]
+            names.add(d.name)
+        if self.geometry is not None and frame.depth is not None:
+            self.geometry.integrate(frame)
+        return names
+
+    def forget(self, names) -> None:
+        """Drop what earlier frames said of ``names`` (they may have moved since)."""
+        for n in names:
+            self.evidence.pop(n, None)
+        if self.geometry is not None:
+            self.geometry.forget(names)
+
+    def detected(self, name: str) -> bool:
+        return name in self.evidence
+
+    def best_frames(self) -> dict[str, list[Frame]]:
+        """For every object seen, the frames that showed it best, best first."""
+        return {n: [f for _, _, f in ev.best] for n, ev in self.evidence.items() if ev.best}
+
+    def observed(self, name: str, held=()) -> set[Atom]:
+        """What the frames say of where ``name`` is (its location and blocking facts); empty when
+        they never showed it. ``held``: items the hand holds (geometry gives them no place)."""
+        ev = self.evidence.get(name)
+        if ev is None:
+            return set()
+        if self.geometry is not None and self.geometry.centroid(name) is not None:
+            return self.geometry.relations(name, held)
+        return self._voted(name, ev)
+
+    def placed(self, name: str, held=()) -> bool:
+        """Whether the frames put ``name`` on or in something (or in the hand)."""
+        return any(a.predicate in (*SUPPORT_PREDICATES, "holding") and a.args[0] == name
+                   for a in self.observed(name, held))
+
+    def _voted(self, name: str, ev: Evidence) -> set[Atom]:
+        """Reports voted across the frames that saw the object: one support, one room, and every
+        other fact more than half of them reported."""
+        out: set[Atom] = set()
+        for preds in (SUPPORT_PREDICATES, ("in_room",)):
+            cands = [(n, a) for a, n in ev.reports.items() if a.predicate in preds and a.args[0] == name]
+            if cands:
+                out.add(max(cands, key=lambda c: (c[0], str(c[1])))[1])
+        out |= {a for a, n in ev.reports.items() if a.predicate not in (*SUPPORT_PREDICATES, "in_room")
+                and n * 2 > ev.frames}
+        return out
+
+    def node(self, name: str) -> SceneObject:
+        """The graph node for ``name`` as perception knows it now."""
+        label = self.objects.get(name, "object")
+        if name in self._static:
+            piece = self.site_map.piece(name)
+            src = "map"
+            room = piece.room if piece else None
+        else:
+            src = "perceived" if name in self.evidence else "prior"
+            room = None
+        ev = self.evidence.get(name)
+        geo = self.geometry
+        c = geo.centroid(name) if geo else None
+        box = geo.box(name) if geo else None
+        if room is None and c is not None:
+            room = self.site_map.room_at(c[0], c[1])
+        return SceneObject(name, ev.label if ev else label, src, room, c, box, ev.frames if ev else 0)
+
+    # -- where to look ----------------------------------------------------------------------
+
+    def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
+        """Aim at the first of ``names`` that belief can place (the object a question is about,
+        else what it rests on); no point when belief places none of them (or holds them)."""
+        for n in names:
+            p = self.point_of(graph, n)
+            if p is not None:
+                return Aim(tuple(names), p)
+        return Aim(tuple(names), None)
+
+    def point_of(self, graph: SceneGraph, name: str, depth: int = 0) -> tuple[float, float, float] | None:
+        """Where belief puts ``name``, in the map frame: its measured centroid while belief still
+        places it where it was measured, else a point of what belief says it rests on or in."""
+        if Atom("holding", (name,)) in graph.facts or depth > 3:
+            return None
+        obj = graph.objects.get(name)
+        if obj is not None and obj.centroid is not None and obj.located == frozenset(graph.location(name)):
+            return obj.centroid
+        for a in sorted(graph.location(name)):
+            if a.predicate in SUPPORT_PREDICATES:
+                return self.point_of(graph, a.args[1], depth + 1)
+        return self._map_point(name)
+
+    def _map_point(self, name: str) -> tuple[float, float, float] | None:
+        piece = self.site_map.piece(name)
+        if piece is not None and piece.pose is not None:
+            c = self.geometry.centroid(name) if self.geometry else None
+            return (piece.pose[0], piece.pose[1], c[2] if c else FURNITURE_AIM_HEIGHT)
+        door = self.site_map.door(name)
+        if door is not None and door.pose is not None:
+            return (door.pose[0], door.pose[1], DOOR_AIM_HEIGHT)
+        room = next((r for r in self.site_map.rooms if r.floor == name or r.name == name), None)
+        if room is not None and room.bounds is not None:
+            x0, y0, x1, y1 = room.bounds
+            return ((x0 + x1) / 2, (y0 + y1) / 2, 0.0)
+        return None

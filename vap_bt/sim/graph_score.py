@@ -1,0 +1,66 @@
+"""How well the robot's scene graph matches the world: precision and recall against the oracle.
+
+Scored when a graph is built (the initial survey) and after every re-survey, at that moment, by
+the runner (which holds the oracle); the executive never sees the score.
+
+* **relations** — ``on``, ``inside`` and ``in_room`` atoms whose first argument is an item (the
+  things that move; furniture's rooms are the map's and would only flatter the figure), over every
+  typed candidate: true positives are believed atoms that hold. Reported over all items, and
+  over the items the camera actually saw (``perceived``), so that what the task file's prior
+  supplied is not counted as perception;
+* **detections** — the objects perception reported (items, furniture, doors) against the objects
+  the scene has; recall says how much the sweep found (what is shut in a closed container cannot
+  be found); precision is 1 unless a detector reports a thing the scene does not have.
+"""
+
+from __future__ import annotations
+
+from itertools import product
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.task import PlanningTask
+from vap_bt.sim.oracle import Oracle
+
+RELATIONS = ("on", "inside", "in_room")
+
+
+def _pr(believed: set[Atom], true: set[Atom]) -> dict:
+    tp = len(believed & true)
+    return {"precision": round(tp / len(believed), 4) if believed else 1.0,
+            "recall": round(tp / len(true), 4) if true else 1.0,
+            "tp": tp, "fp": len(believed - true), "fn": len(true - believed)}
+
+
+def candidates(task: PlanningTask, items: list[str]) -> set[Atom]:
+    k = task.knowledge
+    out = set()
+    for p in RELATIONS:
+        sig = k.predicates.get(p)
+        if sig is None or len(sig) != 2:
+            continue
+        for o, x in product(items, task.objects):
+            if k.is_subtype(task.objects[o], sig[0]) and k.is_subtype(task.objects[x], sig[1]) and o != x:
+                out.add(Atom(p, (o, x)))
+    return out
+
+
+def score_graph(oracle: Oracle, task: PlanningTask, facts: frozenset[Atom], perceived: set[str],
+                detectable: set[str]) -> dict:
+    """The figures described in the module docstring, for one graph at the moment it was built.
+    ``detectable`` are the scene's objects a detector could report (items, furniture, doors)."""
+    k = task.knowledge
+    items = sorted(o for o, t in task.objects.items() if "item" in k.parents and k.is_subtype(t, "item"))
+    cands = candidates(task, items)
+    true = set(oracle.true_atoms(cands))
+    believed = {a for a in facts if a in cands}
+    seen = set(items) & perceived
+    out = {"relations": _pr(believed, true),
+           "relations_perceived": _pr({a for a in believed if a.args[0] in seen}, {a for a in true if a.args[0] in seen}),
+           "detections": {**_pr(set(perceived), set(detectable)), "missed": sorted(set(detectable) - perceived)},
+           "by_predicate": {p: _pr({a for a in believed if a.predicate == p}, {a for a in true if a.predicate == p})
+                            for p in RELATIONS if any(a.predicate == p for a in cands)}}
+    if believed - true:
+        out["wrong"] = sorted(map(str, believed - true))
+    if true - believed:
+        out["missing"] = sorted(map(str, true - believed))
+    return out
