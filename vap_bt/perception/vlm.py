@@ -33,12 +33,29 @@ class Query:
 
 @dataclass(frozen=True)
 class Answer:
+    """A model's reply, read strictly.
+
+    ``confidence`` is the probability the model gave its own answer, renormalised over the
+    options (yes/no, or the choice's options), from the first answer token's log-probabilities;
+    ``None`` when the backend returned none (the simulated ones, servers without logprobs).
+    ``latency_s`` is the wall time of the whole query, retries included, where measured.
+    """
+
     raw: str
     value: bool | str | None  # None: no usable answer
+    confidence: float | None = None
+    latency_s: float | None = None
 
     @property
     def usable(self) -> bool:
         return self.value is not None
+
+    @property
+    def p_yes(self) -> float | None:
+        """The model's probability of "yes" for a yes/no answer with a confidence, else None."""
+        if not isinstance(self.value, bool) or self.confidence is None:
+            return None
+        return self.confidence if self.value else 1.0 - self.confidence
 
 
 class VLM(Protocol):

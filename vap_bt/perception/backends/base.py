@@ -1,0 +1,229 @@
+"""A VLM served over HTTP: the one way every hosted backend asks, reads and records a query.
+
+:meth:`HttpVLM.ask` is a template. A protocol (:mod:`.openai_compat`, :mod:`.gemini`) says only
+where to POST, how to put the prompt, the frame and the options into a request, how to read its
+reply, and which headers carry the key. Everything else is done once, here:
+
+* the frame is encoded (lossless PNG, cached per frame), a frame without pixels is an abstention
+  without a request;
+* the request is sent through the shared :class:`~.http.Transport` (timeout, retries, deadline);
+* *optional features* — constrained decoding, logprobs, thinking off — are sent by default, and
+  a server that rejects one with a 400 naming it gets the request again without it; the feature
+  stays off for that backend (it is listed in ``describe()["dropped"]``). Servers that ignore
+  unknown fields (vLLM, Ollama, llama.cpp) simply answer;
+* the reply is read strictly (:mod:`.reply`) and every query is recorded (:mod:`.record`).
+
+``ask`` never raises: whatever goes wrong — the network, the server, the reply, a bug here — is
+an :class:`~vap_bt.perception.vlm.Answer` with ``value=None`` and a record saying why. It is
+safe to call from many threads at once.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from dataclasses import dataclass
+from typing import Any, Callable
+
+import httpx
+import numpy as np
+
+from vap_bt.perception.backends.http import Exchange, RetryPolicy, Transport, retry_after
+from vap_bt.perception.backends.image import EncodedImage, ImageCache
+from vap_bt.perception.backends.record import RequestLog, RequestRecord
+from vap_bt.perception.backends.reply import (
+    YES_NO, TokenChoice, is_refusal, option_confidence, option_name, read_answer)
+from vap_bt.perception.vlm import Answer, Query
+from vap_bt.robot.frame import Frame
+
+log = logging.getLogger("vap_bt.vlm")
+
+ERROR_BODY_CHARS = 2000  # of an error body kept in a record: enough for any server's message
+
+
+@dataclass(frozen=True)
+class Feature:
+    """An optional part of a request, dropped if the server rejects it (400 naming a marker)."""
+
+    name: str
+    markers: tuple[str, ...]  # lower-case words a rejection of this feature names
+
+
+@dataclass(frozen=True)
+class Reply:
+    """A protocol's reply, read into what the template needs."""
+
+    text: str | None
+    finish_reason: str | None = None
+    refused: str | None = None  # the server's own refusal or block, in words
+    tokens: tuple[TokenChoice, ...] = ()
+
+
+def dig(data: Any, *path: str | int) -> Any:
+    """``data[p0][p1]...``, or None where the path does not exist (replies may be any shape)."""
+    for key in path:
+        if isinstance(key, int) and isinstance(data, list) and -len(data) <= key < len(data):
+            data = data[key]
+        elif isinstance(key, str) and isinstance(data, dict):
+            data = data.get(key)
+        else:
+            return None
+    return data
+
+
+def options_of(query: Query) -> tuple[str, ...]:
+    return YES_NO if query.kind == "yesno" else tuple(o.lower() for o in query.options)
+
+
+class HttpVLM:
+    """Base of the HTTP backends: ``ask(query, frame) -> Answer``, ``describe()``, ``requests``."""
+
+    name = "http"
+    features: tuple[Feature, ...] = ()
+
+    def __init__(self, url: str, model: str, api_key: str = "", policy: RetryPolicy = RetryPolicy(),
+                 max_tokens: int = 8, top_logprobs: int = 5,
+                 on_request: Callable[[RequestRecord], None] | None = None) -> None:
+        self.url = url.rstrip("/")
+        self.model = model
+        self.policy = policy
+        self.max_tokens = max_tokens
+        self.top_logprobs = top_logprobs  # 0: logprobs not asked for
+        self._has_key = bool(api_key)
+        self._log = RequestLog(on_request)
+        self._images = ImageCache()
+        self._transport = Transport(policy, self.auth_headers(api_key), self.retry_hint)
+        self._dropped: set[str] = set()
+        self._lock = threading.Lock()
+
+    # --- what a protocol says -------------------------------------------------------------------
+    def endpoint(self) -> str:
+        raise NotImplementedError
+
+    def auth_headers(self, api_key: str) -> dict[str, str]:
+        raise NotImplementedError
+
+    def request(self, prompt: str, image: EncodedImage, options: tuple[str, ...],
+                features: frozenset[str]) -> dict:
+        """The request body; ``features`` names the optional features to include."""
+        raise NotImplementedError
+
+    def read(self, data: Any) -> Reply:
+        raise NotImplementedError
+
+    def retry_hint(self, response: httpx.Response) -> float | None:
+        return retry_after(response)
+
+    # --- the template ---------------------------------------------------------------------------
+    def ask(self, query: Query, frame: Frame) -> Answer:
+        t0 = time.perf_counter()
+        # read by name so that a capture type with the same fields (the older Observation, which
+        # has rgb but no frame_id) is asked about too
+        rgb, frame_id = getattr(frame, "rgb", None), str(getattr(frame, "frame_id", ""))
+        rec = RequestRecord(backend=self.name, model=self.model, purpose=query.purpose, kind=query.kind,
+                            prompt=query.prompt, options=options_of(query), frame_id=frame_id)
+        try:
+            self._ask(query, rgb, rec, time.monotonic() + self.policy.deadline_s)
+        except Exception as e:  # the contract: an abstention, never an exception out of ask
+            log.exception("VLM %s: query failed", self.name)
+            rec.outcome, rec.value, rec.confidence, rec.error = "error", None, None, f"{type(e).__name__}: {e}"
+        rec.latency_s = time.perf_counter() - t0
+        rec.dropped = self.dropped
+        self._log.add(rec)
+        raw = rec.reply if rec.status == 200 else ""  # an error body is for the record, not an answer's text
+        return Answer(raw=raw, value=rec.value, confidence=rec.confidence, latency_s=rec.latency_s)
+
+    def _ask(self, query: Query, rgb: np.ndarray | None, rec: RequestRecord, deadline: float) -> None:
+        if rgb is None:
+            rec.outcome, rec.error = "no_image", "the frame has no pixels to show"
+            return
+        if not rec.options:
+            rec.outcome, rec.error = "error", "a choice query without options"
+            return
+        try:
+            image = self._images.encode(rgb)
+        except ValueError as e:  # not an (H, W, 3) uint8 image
+            rec.outcome, rec.error = "no_image", str(e)
+            return
+        rec.frame_sha1, rec.image_size = image.sha1, (image.width, image.height)
+        ex = self._post(query.prompt, image, rec.options, deadline, rec)
+        rec.status = ex.status
+        if ex.failure:
+            rec.outcome, rec.error, rec.reply = ex.failure, ex.detail, ex.text[:ERROR_BODY_CHARS]
+            return
+        if ex.status != 200:
+            rec.outcome, rec.error, rec.reply = "http_error", f"HTTP {ex.status}", ex.text[:ERROR_BODY_CHARS]
+            return
+        data = ex.json()
+        if not isinstance(data, dict):
+            rec.outcome, rec.error, rec.reply = "malformed", "the body is not a JSON object", ex.text[:ERROR_BODY_CHARS]
+            return
+        self._interpret(query, self.read(data), rec)
+
+    def _post(self, prompt: str, image: EncodedImage, options: tuple[str, ...], deadline: float,
+              rec: RequestRecord) -> Exchange:
+        """POST, and once more without each optional feature the server rejects (bounded by their number)."""
+        while True:
+            sent = self._enabled()
+            ex = self._transport.post(self.endpoint(), self.request(prompt, image, options, sent), deadline)
+            rec.attempts += ex.attempts
+            # each round trip sends strictly fewer features than the one before: the loop ends
+            rejected = self._rejected(ex.text, sent) if ex.status == 400 else set()
+            if not rejected:
+                return ex
+            log.warning("VLM %s at %s rejects %s: sending without", self.name, self.url, sorted(rejected))
+            with self._lock:
+                self._dropped |= rejected
+
+    def _interpret(self, query: Query, reply: Reply, rec: RequestRecord) -> None:
+        rec.reply, rec.finish_reason = reply.text or "", reply.finish_reason
+        if reply.refused:
+            rec.outcome, rec.error = "refusal", reply.refused
+        elif not rec.reply.strip():
+            rec.outcome, rec.error = "empty", "the reply has no text"
+        elif is_refusal(rec.reply):
+            rec.outcome, rec.error = "refusal", "the model refused or hedged"
+        else:
+            rec.value = read_answer(rec.reply, query.kind, rec.options)
+            rec.outcome = "answer" if rec.value is not None else "unparsed"
+            rec.confidence = option_confidence(reply.tokens, rec.options, option_name(rec.value))
+
+    def _enabled(self) -> frozenset[str]:
+        with self._lock:
+            return frozenset(f.name for f in self.features if f.name not in self._dropped)
+
+    def _rejected(self, error_body: str, sent: frozenset[str]) -> set[str]:
+        """The features of this request that a 400's body names."""
+        text = error_body.lower()
+        return {f.name for f in self.features if f.name in sent and any(m in text for m in f.markers)}
+
+    # --- for the report -------------------------------------------------------------------------
+    @property
+    def dropped(self) -> tuple[str, ...]:
+        with self._lock:
+            return tuple(sorted(self._dropped))
+
+    @property
+    def requests(self) -> list[RequestRecord]:
+        """Every query so far, in completion order."""
+        return self._log.records()
+
+    def describe(self) -> dict:
+        """Backend, endpoint, model and every parameter that shapes the answers; never the key."""
+        p = self.policy
+        return {"backend": self.name, "url": self.url, "model": self.model, "api_key": "set" if self._has_key else "unset",
+                "temperature": 0, "max_tokens": self.max_tokens, "top_logprobs": self.top_logprobs,
+                "timeout_s": p.timeout_s, "deadline_s": p.deadline_s, "attempts": p.attempts,
+                "backoff_s": p.backoff_s, "backoff_max_s": p.backoff_max_s,
+                "features": sorted(self._enabled()), "dropped": list(self.dropped)}
+
+    def close(self) -> None:
+        """Close the connection pool and cut short any wait for a retry."""
+        self._transport.close()
+
+    def __enter__(self) -> "HttpVLM":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
