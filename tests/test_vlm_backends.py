@@ -30,7 +30,7 @@ from vap_bt.perception.backends import GeminiVLM, OpenAICompatVLM, RetryPolicy, 
 from vap_bt.perception.backends.reply import TokenChoice, option_confidence, read_answer
 from vap_bt.perception.vlm import Query
 from vap_bt.robot.frame import Frame
-from vap_bt.world import VIEW_DIRECTIONS, Observation
+from vap_bt.robot.camera import VIEW_DIRECTIONS
 
 HANG = "hang"  # a scripted "reply": keep the connection open and never answer
 CUP = Atom("on", ("cup", "table"))
@@ -361,13 +361,6 @@ def test_a_frame_without_an_rgb_image_is_an_abstention_and_sends_nothing(serve, 
     with openai(server) as vlm:
         answer = vlm.ask(YESNO, Frame(frame_id="symbolic-1", stamp=0.0, rgb=rgb))
     assert answer.value is None and vlm.requests[0].outcome == "no_image" and server.seen == []
-
-
-def test_the_older_observation_with_pixels_is_asked_about_too(serve):
-    server = serve(chat("yes"))
-    with openai(server) as vlm:
-        answer = vlm.ask(YESNO, Observation(view_index=0, targets=("cup",), visibility={"cup": 1.0}, rgb=RGB))
-    assert answer.value is True and vlm.requests[0].frame_sha1 == hashlib.sha1(RGB.tobytes()).hexdigest()
 
 
 def test_close_cuts_a_retry_wait_short(serve):

@@ -118,9 +118,7 @@ class HttpVLM:
     # --- the template ---------------------------------------------------------------------------
     def ask(self, query: Query, frame: Frame) -> Answer:
         t0 = time.perf_counter()
-        # read by name so that a capture type with the same fields (the older Observation, which
-        # has rgb but no frame_id) is asked about too
-        rgb, frame_id = getattr(frame, "rgb", None), str(getattr(frame, "frame_id", ""))
+        rgb, frame_id = frame.rgb, frame.frame_id
         rec = RequestRecord(backend=self.name, model=self.model, purpose=query.purpose, kind=query.kind,
                             prompt=query.prompt, options=options_of(query), frame_id=frame_id)
         try:
