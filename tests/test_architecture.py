@@ -1,6 +1,7 @@
 """The layering rules of the design, checked on the source: data flows one way.
 
-* the executive (domain, scene, perception, bt) never imports pybullet;
+* the executive (domain, scene, perception, bt, robot) never imports pybullet or the simulator
+  (vap_bt.sim, vap_bt.world), never reads an oracle, and holds nothing that reaches one;
 * skills and the transport never import py_trees;
 * only vap_bt/viz imports rerun;
 * motion is pure array code: no pybullet, no py_trees.
@@ -50,3 +51,106 @@ def test_only_viz_imports_rerun():
     offenders = [str(p.relative_to(ROOT)) for p in files("vap_bt", "skills", "robots")
                  if "rerun" in imports(p) and "vap_bt/viz" not in str(p)]
     assert not offenders, offenders
+
+
+EXECUTIVE_ROOMS = ("vap_bt/domain", "vap_bt/scene", "vap_bt/perception", "vap_bt/bt", "vap_bt/robot")
+
+
+def module_imports(path: Path) -> set[str]:
+    """Dotted names of the modules ``path`` imports (absolute imports only)."""
+    tree = ast.parse(path.read_text(), filename=str(path))
+    out: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out |= {a.name for a in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            out.add(node.module)
+    return out
+
+
+def test_the_executive_side_never_imports_the_simulator():
+    offenders = {str(p.relative_to(ROOT)): sorted(m for m in module_imports(p) if m == "vap_bt.sim"
+                                                  or m.startswith("vap_bt.sim.") or m == "vap_bt.world")
+                 for p in files(*EXECUTIVE_ROOMS)}
+    assert not {k: v for k, v in offenders.items() if v}
+
+
+def identifiers(path: Path) -> list[tuple[str, str]]:
+    """(identifier, what it belongs to) for every name, attribute and argument in the code
+    (docstrings and comments are not code)."""
+    out = []
+    for node in ast.walk(ast.parse(path.read_text(), filename=str(path))):
+        if isinstance(node, ast.Name):
+            out.append((node.id, ""))
+        elif isinstance(node, ast.Attribute):
+            out.append((node.attr, ast.unparse(node.value)))
+        elif isinstance(node, ast.arg):
+            out.append((node.arg, ""))
+    return out
+
+
+def test_the_executive_side_never_reads_an_oracle():
+    """No executive-side code names an oracle or a truth, or asks anything but its own scene
+    graph whether an atom holds."""
+    hits = [f"{p.relative_to(ROOT)}: {owner + '.' if owner else ''}{name}" for p in files(*EXECUTIVE_ROOMS)
+            for name, owner in identifiers(p)
+            if "oracle" in name.lower() or "truth" in name.lower()
+            or (name == "holds" and owner and not owner.endswith("graph") and owner != "self")]
+    assert not hits, hits
+
+
+def reachable(root: object, skip: set[int] = frozenset(), limit: int = 200_000):
+    """Every object reachable from ``root`` through references (modules, classes and functions'
+    globals are not followed: they lead everywhere and hold no episode's state; nor are the
+    objects in ``skip``)."""
+    import gc
+    import types
+
+    seen, todo = {id(root), *skip}, [root]
+    while todo and len(seen) < limit:
+        obj = todo.pop()
+        yield obj
+        for ref in gc.get_referents(obj):
+            if isinstance(ref, (types.ModuleType, type)) or id(ref) in seen:
+                continue
+            if isinstance(ref, dict) and "__builtins__" in ref:  # a module's or function's globals
+                continue
+            seen.add(id(ref))
+            todo.append(ref)
+
+
+@pytest.mark.slow
+def test_no_object_the_executive_holds_can_reach_the_oracle():
+    """Over the embedded Zenoh transport (the default), everything the executive is handed — skill
+    client, camera and body, VLM, planner, task — and everything it builds leads to no world and
+    no oracle: its senses are Zenoh clients."""
+    from vap_bt import taskfile
+    from vap_bt.bt.executive import Executive
+    from vap_bt.runner import RunConfig, Session
+    from vap_bt.sim.oracle import FunctionOracle
+    from vap_bt.sim.symbolic import SymbolicWorld
+
+    task = taskfile.load(ROOT / "trees" / "collect_cup.yaml")
+    session = Session(task, RunConfig.from_task(task, transport="zenoh", injection=False, vlm_error=0.0))
+    held: list[Executive] = []
+    original = Executive.run
+
+    def keep(self):
+        held.append(self)
+        return original(self)
+
+    Executive.run = keep
+    try:
+        report = session.episode(0)
+    finally:
+        Executive.run = original
+        session.close()
+    assert report["success"] and held
+    executive = held[0]
+    # the runner's instrumentation (progress lines, the rerun recorder, the survey scorer) is
+    # handed information and returns none; it is where the walk stops
+    hooks = {id(executive.progress), id(executive.on_tree), id(executive.on_survey)}
+    found = [type(o).__name__ for o in reachable(executive, skip=hooks) if isinstance(o, (FunctionOracle, SymbolicWorld))]
+    assert not found, found
+    # and the check itself can see an oracle where there is one
+    assert any(isinstance(o, FunctionOracle) for o in reachable(session))

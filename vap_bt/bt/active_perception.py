@@ -11,7 +11,11 @@ child again — at most K moves. With the budget spent and nothing decided, a va
 every view's answers agreed on it; otherwise the check does not overturn belief and is recorded as
 *unsettled* (the paper returns the last vote here; one vote from a view the VLM judged insufficient
 is too close to a guess to rewrite the scene graph).
-An unsettled *goal* atom withholds the executive's claim of success.
+An unsettled *goal* atom withholds the executive's claim of success; an unsettled effect lets the
+plan go on (the next action's preconditions are checked before it acts); an unsettled
+*precondition* follows the context's ``unseen`` policy — by default it is a situation of kind
+``unseen``: the action does not run, the executive looks for what the check was about and
+replans.
 """
 
 from __future__ import annotations
@@ -61,6 +65,11 @@ class ActivePerception(py_trees.decorators.Decorator):
                                                    v.atom, v.expected, value, outcome, list(self.rounds)))
         if self.phase == "goal" and outcome == "unsettled":
             self.ctx.unconfirmed_goal.append(v.atom)
+        if outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on":
+            self.ctx.situation = Situation("unseen", self.action, self.step, v.atom, v.expected, None,
+                                           detail=f"could not see whether {v.atom} holds")
+            self.ctx.progress(f"    situation: could not see {'' if v.expected else 'not '}{v.atom}")
+            return Status.FAILURE
         if outcome != "contradicted":
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]

@@ -21,7 +21,12 @@ from vap_bt.robot.camera import Aim, Camera
 from vap_bt.skill import SkillClient
 
 Phase = Literal["pre", "eff", "goal"]
-SituationKind = Literal["precondition", "effect", "execution", "goal"]
+SituationKind = Literal["precondition", "effect", "execution", "goal", "unseen"]
+#: what a precondition check that could not settle does (:class:`ExecutionContext.unseen`):
+#: "look" — stop before the action and look for what it is about, then replan (the default: a plan
+#: does not go on over a precondition nobody could see); "go_on" — believe it and act; "stop" —
+#: end the episode
+UnseenPolicy = Literal["look", "go_on", "stop"]
 
 
 @dataclass(frozen=True)
@@ -91,6 +96,7 @@ class ExecutionContext:
     #: goal atoms the final look could not settle: success is not claimed over them
     unconfirmed_goal: list[Atom] = field(default_factory=list)
     actions: list[dict] = field(default_factory=list)
+    unseen: UnseenPolicy = "look"
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
     t0: float = field(default_factory=time.perf_counter)

@@ -9,7 +9,9 @@ context; the executive handles it and swaps in a new tree:
    what held before the action;
 2. the contradicted atom is set to its observed value (observation-driven update);
 3. a skill that failed to act makes the robot's placement for it (``inview``) stale, so that the
-   new plan approaches the target again rather than retrying from the same spot;
+   new plan approaches the target again rather than retrying from the same spot; so does a
+   precondition ``inview(x)`` the camera could not settle (a situation of kind ``unseen``: the
+   action did not run because nobody could see whether it may);
 4. the objects the action touched are re-located from a fresh frame by the same builder; an
    object that is not where belief puts it, or that belief no longer places anywhere, sends the
    robot to look again: a re-survey of the room it was believed in (the paper's
@@ -63,6 +65,7 @@ class ExecutiveSettings:
     max_replans: int = 10
     max_ticks: int = 2000
     tick_period_s: float = 0.0  # sleep between ticks while a goal runs (0: in-process skills)
+    unseen: str = "look"  # what an unsettled precondition does (see vap_bt.bt.context.UnseenPolicy)
 
 
 @dataclass
@@ -123,7 +126,7 @@ class Executive:
         graph, survey = self._perceive()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim)
+                               aim=self.builder.aim, unseen=self.s.unseen)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
             plan = self.planner.plan(graph.state(), self.task.goal)
@@ -161,6 +164,9 @@ class Executive:
                 out.reason = "the tree failed without a situation"
                 return out
             out.situations.append(situation)
+            if situation.kind == "unseen" and self.s.unseen == "stop":
+                out.reason = f"stopped: {situation.detail}"
+                return out
             if out.replans >= self.s.max_replans:
                 out.reason = f"replanning budget ({self.s.max_replans}) exhausted"
                 return out
@@ -266,6 +272,8 @@ class Executive:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == VIEW_PREDICATE:
                     graph.correct(lit.atom, False)
+        if s.kind == "unseen" and s.atom is not None and s.atom.predicate == VIEW_PREDICATE:
+            graph.correct(s.atom, False)  # what the camera cannot make out is not in view
         dropped = self._feel_hand(graph)
         involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()),
                                         *dropped)))

@@ -17,9 +17,10 @@ body reports the base pose, the room localization puts it in, the arm's joints, 
 whether the gripper holds something; the site map has the rooms' outlines, the doors and the
 furniture's footprints, nothing that moves.
 
-Disturbances are dicts: ``{"at": 2, "move": "cup", "to": "counter"}`` (before the third action,
-the cup is put on the counter) or ``{"at": 0, "door": "door_lk", "open": 0.4}`` (the door swung
-to 40 % of its travel). The simulation steps at ``DT`` with few solver iterations: episodes are
+Disturbances are dicts: ``{"at": 2, "move": "cup", "to": "counter"}`` (as the third action
+starts, the cup is put on the counter), ``{"after": 0, ...}`` (once the first action is done,
+before anything is checked for the next), or ``{"at": 0, "door": "door_lk", "open": 0.4}`` (the
+door swung to 40 % of its travel). The simulation steps at ``DT`` with few solver iterations: episodes are
 meant to be fast, not precise.
 """
 
@@ -177,6 +178,7 @@ class PybulletWorld:
             finally:
                 self.ctx = _NoContext()
                 self._view = None
+                self._disturb(step, action, args, when="after")
 
     def _run(self, action: str, a: tuple[str, ...], spec) -> ActionOutcome:
         p = self.prims
@@ -200,9 +202,9 @@ class PybulletWorld:
             return p.push(a[0], a[1], spec)
         return ActionOutcome(False, f"unknown action {action!r}")
 
-    def _disturb(self, step: int, action: str, args) -> None:
+    def _disturb(self, step: int, action: str, args, when: str = "at") -> None:
         for d in self.disturbances:
-            if d.get("at") != step:
+            if d.get(when) != step:
                 continue
             if "move" in d:
                 name, to = d["move"], d["to"]
