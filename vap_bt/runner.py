@@ -146,8 +146,8 @@ class Session:
 
             self._embedded = EmbeddedTransport(self.world, self.skills, vlm=self.vlm)
 
-    def episode(self, seed: int | None = None) -> dict:
-        cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
+    def _executive(self, cfg: RunConfig, scores: list[dict]) -> tuple[Executive, MeteredVLM]:
+        """A fresh world state for ``cfg.seed`` and an executive wired to it (see the module docstring)."""
         self.world.reset(cfg.seed)
         self.vlm.reseed(cfg.seed)
         skills, robot, vlm = self._transport()
@@ -156,15 +156,28 @@ class Session:
                                      vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=cfg.early_stop),
                                      max_replans=cfg.max_replans, max_ticks=cfg.max_ticks,
                                      tick_period_s=0.0 if cfg.transport == "inproc" else TICK_PERIOD_S)
-        t0 = time.perf_counter()
         progress = self.progress
         if self.recorder is not None:  # progress lines go to the recording's log as well
             progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
-        scores: list[dict] = []
         executive = Executive(self.task.planning, self.planner, skills, robot, robot, metered, settings, progress,
                               on_tree=self.recorder.on_tree if self.recorder is not None else None,
                               prior=self.task.prior, geometry=make_geometry(cfg),
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)))
+        return executive, metered
+
+    def build_graph(self, seed: int | None = None) -> dict:
+        """Only BuildSceneGraph: the initial survey of an episode, scored (for benchmarks)."""
+        cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
+        scores: list[dict] = []
+        executive, metered = self._executive(cfg, scores)
+        executive.perceive()
+        return {**scores[0], "vlm_queries": metered.total}
+
+    def episode(self, seed: int | None = None) -> dict:
+        cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
+        t0 = time.perf_counter()
+        scores: list[dict] = []
+        executive, metered = self._executive(cfg, scores)
         try:
             outcome = self.last_outcome = executive.run()
         except KeyboardInterrupt:

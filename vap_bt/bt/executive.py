@@ -123,7 +123,7 @@ class Executive:
     # -- the loop ----------------------------------------------------------------------------
 
     def run(self) -> EpisodeOutcome:
-        graph, survey = self._perceive()
+        graph, survey = self.perceive()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
                                aim=self.builder.aim, unseen=self.s.unseen)
@@ -200,7 +200,7 @@ class Executive:
 
     # -- perception ----------------------------------------------------------------------------
 
-    def _perceive(self) -> tuple[SceneGraph, Survey]:
+    def perceive(self) -> tuple[SceneGraph, Survey]:
         """BuildSceneGraph: sweep every room the robot can reach, then assemble the belief."""
         k = self.task.knowledge
         site_map = self.body.site_map()

@@ -40,8 +40,11 @@ GEOMETRIC_PREDICATES = LOCATION_PREDICATES | {"blocking", "reachable", "near"}
 SUPPORT_PREDICATES = ("on", "inside")
 
 # -- where the sweep looks from (metres, radians); a view that cannot be reached is skipped --------
-#: base centre to the front face of a piece of furniture when looking at it
+#: base centre to the front face of a piece of furniture when looking at it, and again closer
+#: over a surface's top (from closer in the camera looks down more steeply, over the front row of
+#: things onto what stands behind them)
 VIEW_STANDOFF = 1.05
+TOP_VIEW_STANDOFF = 0.55
 #: the height aimed at on furniture whose height perception has not measured yet
 FURNITURE_AIM_HEIGHT = 0.7
 #: a look round the floor: this far from the room's centre, in these directions
@@ -125,6 +128,8 @@ class SceneGraphBuilder:
         for f in self.site_map.furniture:
             if f.room == room:
                 out.append(self._furniture_view(f))
+                if f.pose is not None and self._supports_things(f.type):
+                    out.append(self._furniture_view(f, TOP_VIEW_STANDOFF, "its top, from close by"))
         for d in self.site_map.doors:
             if room in d.rooms:
                 out.append(self._door_view(d, room))
@@ -138,16 +143,22 @@ class SceneGraphBuilder:
             out.append(Viewpoint(room, Aim((info.floor,)), None, f"{room} floor"))
         return out
 
-    def _furniture_view(self, f) -> Viewpoint:
+    def _supports_things(self, ptype: str) -> bool:
+        """Whether things are put on furniture of this type (the domain's ``on`` takes it)."""
+        sig = self.knowledge.predicates.get("on")
+        return sig is not None and len(sig) == 2 and self.knowledge.is_subtype(ptype, sig[1])
+
+    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front") -> Viewpoint:
         if f.pose is None:
             return Viewpoint(f.room, Aim((f.name,)), None, f"{f.name}")
         x, y, yaw = f.pose
         depth = f.footprint[1] if f.footprint else 0.5
-        c = self.geometry.centroid(f.name) if self.geometry else None
-        point = (x, y, c[2] if c else FURNITURE_AIM_HEIGHT)
-        d = depth / 2 + VIEW_STANDOFF
+        box = self.geometry.box(f.name) if self.geometry else None
+        # the measured top once the piece has been seen (a look at its top), else a usual height
+        z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
+        d = depth / 2 + standoff
         base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
-        return Viewpoint(f.room, Aim((f.name,), point), base, f"{f.name} from the front")
+        return Viewpoint(f.room, Aim((f.name,), (x, y, z)), base, f"{f.name} {label}")
 
     def _door_view(self, d, room: str) -> Viewpoint:
         if d.pose is None or self.site_map.room(room).bounds is None:

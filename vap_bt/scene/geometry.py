@@ -24,7 +24,7 @@ class PointCloudGeometry:
     def __init__(self, knowledge: DomainKnowledge, objects: dict[str, str], site_map: SiteMap) -> None:
         self.sig = Signatures(knowledge, objects)
         self.site_map = site_map
-        self.tracks = Tracks()
+        self.tracks = Tracks(static=site_map.static_names())
         self._relations: dict[frozenset[str], frozenset[Atom]] = {}
 
     def integrate(self, frame: Frame) -> list[str]:

@@ -5,8 +5,10 @@ and its box is too shallow. An :class:`ObjectTrack` accumulates every view of an
 detector's instance name is the track's identity): the new view's cleaned cloud is merged with the
 old and voxel-downsampled again, which keeps the density even however often a side was seen.
 
-Merging is right only while the object stays put. When a view puts the object evidently
-elsewhere, the object has moved (a person carried it off, it fell), and the old geometry
+Merging is right only while the object stays put. Things the site map places (furniture, doors)
+stay put by definition: their views always merge, however different the part they show (a view
+of one table leg from across the room is the same table). When a view puts any other object
+evidently elsewhere, the object has moved (a person carried it off, it fell), and the old geometry
 describes a place the object no longer is: the new view replaces it. "Evidently elsewhere" takes
 two tests (:class:`FusionParams`):
 
@@ -98,9 +100,10 @@ class ObjectTrack:
                    _share_within(self.points, cloud_box(view), params.contained_margin)) < params.contained_share
 
     def fuse(self, view: o3d.geometry.PointCloud, frame_id: str, cloud_params: CloudParams,
-             params: FusionParams) -> None:
-        """Merge ``view`` (a cleaned cloud) into the track, or replace the geometry if it moved."""
-        if self.moved(view, params):
+             params: FusionParams, static: bool = False) -> None:
+        """Merge ``view`` (a cleaned cloud) into the track, or replace the geometry if it moved
+        (never for a ``static`` thing: one the map places)."""
+        if not static and self.moved(view, params):
             merged, self.views, self.moved_in = view, 1, frame_id
         else:
             merged = downsample(self.cloud + view, cloud_params)
@@ -148,6 +151,8 @@ class Tracks:
 
     cloud_params: CloudParams = field(default_factory=CloudParams)
     fusion: FusionParams = field(default_factory=FusionParams)
+    #: names of things that never move (the site map's furniture and doors)
+    static: frozenset[str] = frozenset()
     _tracks: dict[str, ObjectTrack] = field(default_factory=dict, repr=False)
 
     def integrate(self, frame: Frame) -> list[str]:
@@ -165,7 +170,7 @@ class Tracks:
         if track is None:
             track = self._tracks[name] = ObjectTrack.start(name, label, cloud, frame_id)
         else:
-            track.fuse(cloud, frame_id, self.cloud_params, self.fusion)
+            track.fuse(cloud, frame_id, self.cloud_params, self.fusion, static=name in self.static)
         return track
 
     def missing(self, frame: Frame, min_pixels: int = 0) -> list[str]:
