@@ -189,6 +189,7 @@ class Session:
             "ticks": out.ticks,
             "vlm_queries": vlm.total,
             "verifications": [v.to_json() for v in ctx.verifications],
+            "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],
             "wall_s": round(wall, 4),
             "versions": versions(),

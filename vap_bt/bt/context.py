@@ -75,6 +75,21 @@ class Verification:
                 "rounds": [r.to_json() for r in self.rounds]}
 
 
+@dataclass(frozen=True)
+class Unchecked:
+    """An atom a compiled tree does not look at, and why (the report lists them)."""
+
+    phase: Phase
+    action: str
+    atom: Atom
+    expected: bool
+    reason: str
+
+    def to_json(self) -> dict:
+        return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
+                "name": self.atom.predicate, "expected": self.expected, "reason": self.reason}
+
+
 @dataclass
 class ExecutionContext:
     graph: SceneGraph
@@ -90,6 +105,8 @@ class ExecutionContext:
     #: goal atoms the final look could not settle: success is not claimed over them
     unconfirmed_goal: list[Atom] = field(default_factory=list)
     actions: list[dict] = field(default_factory=list)
+    #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
+    unchecked: dict[tuple, Unchecked] = field(default_factory=dict)
     t0: float = field(default_factory=time.perf_counter)
 
     def now(self) -> float:
