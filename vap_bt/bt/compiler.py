@@ -52,10 +52,6 @@ def unchecked_reason(predicate: str, knowledge: DomainKnowledge) -> str | None:
     return None
 
 
-def checked(literals, knowledge: DomainKnowledge) -> list[Literal]:
-    return [l for l in literals if unchecked_reason(l.atom.predicate, knowledge) is None]
-
-
 def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None, step: int,
             knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
     asked = []

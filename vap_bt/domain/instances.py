@@ -21,7 +21,7 @@ costs 1.
 
 from __future__ import annotations
 
-from typing import Iterator
+import threading
 
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.formula import FALSE, TRUE, And, Formula, conjunction, from_up
@@ -45,6 +45,9 @@ class UPInstances:
         self._static = GrounderHelper(problem, prune_actions=True)
         self._metric = next((m for m in problem.quality_metrics if m.is_minimize_action_costs()), None)
         self._statics = Simplifier(problem.environment, problem)
+        # unified-planning's expression manager is not thread-safe, and the symbolic world's
+        # skill servers ground actions on their own threads while the executive plans
+        self._lock = threading.Lock()
 
     @property
     def has_costs(self) -> bool:
@@ -54,12 +57,17 @@ class UPInstances:
         """The problem's goal, quantifiers removed."""
         return conjunction([from_up(g) for g in self.problem.goals])
 
-    def candidates(self, name: str) -> Iterator[tuple[str, ...]]:
+    def candidates(self, name: str) -> list[tuple[str, ...]]:
         """Parameter tuples of action ``name`` that the static (rigid) facts do not rule out."""
-        for params in self._static.get_possible_parameters(self._actions[name]):
-            yield tuple(p.object().name for p in params)
+        with self._lock:
+            return [tuple(p.object().name for p in params)
+                    for params in self._static.get_possible_parameters(self._actions[name])]
 
     def ground(self, name: str, args: tuple[str, ...]) -> GroundAction:
+        with self._lock:
+            return self._ground(name, args)
+
+    def _ground(self, name: str, args: tuple[str, ...]) -> GroundAction:
         action = self._actions[name]
         params = []
         for p, a in zip(action.parameters, args):

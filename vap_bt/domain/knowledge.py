@@ -142,9 +142,12 @@ class ActionSchema:
 
 
 class Instantiator(Protocol):
-    """Grounds one action instance (see :mod:`vap_bt.domain.instances`)."""
+    """Grounds action instances (see :mod:`vap_bt.domain.instances`)."""
 
     def ground(self, name: str, args: tuple[str, ...]) -> GroundAction: ...
+
+    def candidates(self, name: str) -> list[tuple[str, ...]]:
+        """Argument tuples of ``name`` worth grounding (rigid facts rule the others out)."""
 
 
 @dataclass
