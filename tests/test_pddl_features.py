@@ -18,6 +18,7 @@ from unified_planning.io import PDDLReader
 from unified_planning.plans import ActionInstance, SequentialPlan
 from unified_planning.shortcuts import FluentExp, PlanValidator, SequentialSimulator
 
+from vap_bt import taskfile
 from vap_bt.domain import either
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.expectation import expect
@@ -25,6 +26,7 @@ from vap_bt.domain.grounding import ground
 from vap_bt.domain.pddl import load_task
 from vap_bt.domain.planner import Planner
 from vap_bt.domain.requirements import Source
+from vap_bt.runner import RunConfig, Session
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.symbolic import SymbolicWorld
 from vap_bt.world import SceneSnapshot
@@ -287,3 +289,66 @@ def test_unsupported_requirements_are_one_clear_error(cli, domain, requirement, 
     assert code == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     assert f"{domain}:{line}:" in err and requirement in err
+
+
+def test_quantified_goal_becomes_literals_and_a_disjunctive_goal_is_refused(cli, tmp_path):
+    text = (DOMAINS / "lamps-p1.pddl").read_text()
+    start = text.index("(:goal")
+    quantified = tmp_path / "all-off.pddl"
+    quantified.write_text(text[:start] + "(:goal (forall (?l - lamp) (not (turned_on ?l)))))\n")
+    task = load_task(DOMAINS / "lamps-domain.pddl", quantified)
+    assert sorted(map(str, task.goal)) == ["not turned_on(ceiling_lamp)", "not turned_on(desk_lamp)",
+                                           "not turned_on(porch_lamp)"]
+    either_lamp = tmp_path / "one-on.pddl"
+    either_lamp.write_text(text[:start] + "(:goal (or (turned_on porch_lamp) (turned_on desk_lamp))))\n")
+    code, out, err = cli("plan", DOMAINS / "lamps-domain.pddl", either_lamp)
+    assert code == 2 and "one-on.pddl" in err and "disjunctive goals" in err and "Traceback" not in err
+
+
+def test_a_precondition_too_large_for_the_search_is_left_to_fast_downward(tmp_path):
+    """(forall (?x) (or (a ?x) (b ?x))) over 13 objects has 2^13 disjuncts: no search rows for it."""
+    domain = tmp_path / "wide-domain.pddl"
+    domain.write_text("""(define (domain wide)
+  (:requirements :typing :universal-preconditions :disjunctive-preconditions)
+  (:types thing)
+  (:predicates (a ?x - thing) (b ?x - thing) (done))
+  (:action mark-a :parameters (?x - thing) :precondition (not (a ?x)) :effect (a ?x))
+  (:action mark-b :parameters (?x - thing) :precondition (not (b ?x)) :effect (b ?x))
+  (:action finish :parameters () :precondition (forall (?x - thing) (or (a ?x) (b ?x))) :effect (done)))
+""")
+    problem = tmp_path / "wide-p.pddl"
+    things = " ".join(f"t{i}" for i in range(13))
+    problem.write_text(f"(define (problem w) (:domain wide) (:objects {things} - thing) (:init (b t0)) "
+                       "(:goal (done)))\n")
+    task = load_task(domain, problem)
+    planner = Planner(task, first_engine="search")
+    plan = planner.plan()
+    assert planner.grounded is None and plan.engine == "fast-downward"
+    assert str(plan.actions[-1]) == "finish()" and len(plan) == 13
+
+
+def test_a_failed_conditional_effect_is_undone_whole_and_recovered():
+    """Table II's failed turnon in the microwave domain: the effect check finds the pie cold, the
+    executive takes back everything the action-driven update believed (the soup's heat too) and
+    replans; the world confirms the goal."""
+    spec = taskfile.TaskFile(name="microwave", domain=str(DOMAINS / "microwave-domain.pddl"),
+                             problem=str(DOMAINS / "microwave-p1.pddl"))
+    task = taskfile.from_spec(spec, base=DOMAINS, where="microwave")
+    session = Session(task, RunConfig.from_task(task, planner="search", vlm_error=0.0, transport="inproc"))
+    r = session.episode(6)  # seed 6 draws turnon_fails_object_off (Table II) for the first turnon
+    assert [i["kind"] for i in r["injected"]] == ["turnon_fails_object_off"]
+    assert [(s["kind"], s["predicate"]) for s in r["situations"]] == [("effect", "heated(pie)")]
+    undo = next(c for c in r["belief_changes"] if c["cause"] == "undo")
+    assert set(undo["removed"]) == {"heated(pie)", "heated(soup)", "turned_on(microwave)"}
+    assert r["success"] and r["goal_satisfied"] and r["replans"] == 1
+
+
+@pytest.mark.parametrize("engine", ["fast-downward", "search"])
+def test_an_action_whose_cost_is_undefined_never_applies(engine, tmp_path):
+    """As IPC elevators leaves travel costs undefined where no lift goes: here f0 -> f1."""
+    problem = tmp_path / "elevators-no-f0-f1.pddl"
+    problem.write_text((DOMAINS / "elevators-p1.pddl").read_text().replace("(= (travel f0 f1) 1)", ""))
+    task = load_task(DOMAINS / "elevators-domain.pddl", problem)
+    assert not task.knowledge.ground("move", ("f0", "f1")).applicable(task.init)
+    plan = Planner(task, first_engine=engine).plan()
+    assert [str(a) for a in plan.actions] == ["board(p1, f0)", "move(f0, f2)", "leave(p1, f2)"] and plan.cost == 12

@@ -9,10 +9,17 @@ Fluent facts of the initial state are never used: the executive replans from cor
 
 The search wants literal sets, so each precondition is put in disjunctive normal form: one *row*
 per disjunct (most actions have exactly one), with its positive and negative literals as CSR
-matrices over atom ids, for a vectorised applicability test. Conditional effects are kept as
-they are — compiling them away multiplies actions by two per effect — and enter the relaxed
-planning graph as *units*: one per row and effect (unconditional, or one disjunct of a
-condition), whose precondition is the row's plus the condition's positive literals.
+matrices over atom ids, for a vectorised applicability test. This is done here, on ground
+formulas after the rigid facts are in, rather than with unified-planning's disjunctive-conditions
+remover, which works on lifted actions before any fact is known: a fridge-like
+``(forall (?s - screw) (imply (holds ?s ?b) (not (fastened ?s))))`` would become one action copy
+per subset of screws, where the static ``holds`` facts leave a single conjunction (the remover
+also turns disjunctive goals into extra actions and fluents the executive would have to hide).
+Conditional effects are kept as they are, for the same reason — unified-planning's
+conditional-effects remover makes an action per combination of effect conditions, 2^n for a
+briefcase holding n things — and enter the relaxed planning graph as *units*: one per row and
+effect (unconditional, or one disjunct of a condition), whose precondition is the row's plus the
+condition's positive literals.
 """
 
 from __future__ import annotations
@@ -45,6 +52,8 @@ class _Effects:
 
 @dataclass
 class GroundedTask:
+    """The task as the search sees it: instances, atom ids, precondition rows, relaxed units."""
+
     actions: list[GroundAction]
     atoms: list[Atom]
     index: dict[Atom, int]

@@ -79,26 +79,26 @@ class UPInstances:
             params.append(self.problem.environment.expression_manager.ObjectExp(obj))
         ground = self._exact.ground_action(action, tuple(params))
         cost = self._cost(action, tuple(params))
-        if ground is None:
+        if ground is None or cost is None:
             # unified-planning's grounder drops an instance whose precondition is contradictory
-            # (``(not (= ?x ?y))`` with x = y) or whose effects conflict; either way it never applies
-            return GroundAction(name, tuple(args), (), frozenset(), frozenset(), condition=FALSE, cost=cost)
+            # (``(not (= ?x ?y))`` with x = y) or whose effects conflict; an instance whose cost is
+            # undefined in the initial state is inapplicable (PDDL 2.1). Either way it never applies
+            return GroundAction(name, tuple(args), (), frozenset(), frozenset(), condition=FALSE, cost=cost or 0)
         pre = conjunction([from_up(p) for p in ground.preconditions])
         required, rest = _split(pre)
         add, delete, conditional = _effects(ground.effects)
         return GroundAction(name, tuple(args), required, add, delete, condition=rest, conditional=conditional,
                             cost=cost)
 
-    def _cost(self, action, params) -> int:
+    def _cost(self, action, params) -> int | None:
+        """The instance's cost; None where it is undefined (a cost fluent without a value)."""
         if self._metric is None:
             return 1
         expr = self._metric.get_action_cost(action)
         if expr is None:
             return 0
         value = self._statics.simplify(expr.substitute(dict(zip(action.parameters, params))))
-        if not value.is_constant():
-            raise ValueError(f"the cost of {action.name} does not evaluate to a number: {value}")
-        return int(value.constant_value())
+        return int(value.constant_value()) if value.is_constant() else None
 
 
 def _split(pre: Formula) -> tuple[tuple[Literal, ...], Formula]:

@@ -48,6 +48,8 @@ FD_COST_CONFIG = "let(hff,ff(),lazy_wastar([hff],preferred=[hff],w=3,cost_type=p
 
 @dataclass
 class Plan:
+    """A sequence of ground actions, with the engine that made it and how long that took."""
+
     actions: list[GroundAction]
     engine: str
     seconds: float
@@ -70,6 +72,8 @@ class Plan:
 
 @dataclass
 class Planner:
+    """Plans and replans one task (see the module docstring for the engines it tries)."""
+
     task: PlanningTask
     first_engine: str = "fast-downward"  # or "search"
     fd_timeout_s: float = 60.0

@@ -30,6 +30,10 @@ SUPPORTED_FEATURES = frozenset({
     "ACTIONS_COST", "PLAN_LENGTH", "STATIC_FLUENTS_IN_ACTIONS_COST", "INT_NUMBERS_IN_ACTIONS_COST",
     # PDDL's ``number`` is read as a real; that the values are integers is checked separately
     "REAL_NUMBERS_IN_ACTIONS_COST",
+    # a cost left undefined (IPC elevators defines travel costs only where a lift can travel):
+    # PDDL 2.1 makes an action that uses an undefined value inapplicable. Other numeric fluents
+    # are refused by their own features, so this one only ever concerns action costs here
+    "UNDEFINED_INITIAL_NUMERIC",
 })
 
 
@@ -57,7 +61,7 @@ _FEATURES: dict[str, Requirement] = {
                      "NUMERIC_FLUENTS", "INCREASE_EFFECTS", "DECREASE_EFFECTS", "INCREASE_CONTINUOUS_EFFECTS",
                      "DECREASE_CONTINUOUS_EFFECTS", "NON_LINEAR_CONTINUOUS_EFFECTS",
                      "STATIC_FLUENTS_IN_NUMERIC_ASSIGNMENTS", "FLUENTS_IN_NUMERIC_ASSIGNMENTS", "BOUNDED_TYPES",
-                     "FLUENTS_IN_ACTIONS_COST", "UNDEFINED_INITIAL_NUMERIC"), _NUMERIC),
+                     "FLUENTS_IN_ACTIONS_COST"), _NUMERIC),
     **dict.fromkeys(("OBJECT_FLUENTS", "FLUENTS_IN_OBJECT_ASSIGNMENTS", "STATIC_FLUENTS_IN_OBJECT_ASSIGNMENTS"),
                     Requirement(":object-fluents", "object fluents", r"\(\s*:functions")),
     **dict.fromkeys(("FINAL_VALUE", "MAKESPAN", "OVERSUBSCRIPTION", "TEMPORAL_OVERSUBSCRIPTION"),

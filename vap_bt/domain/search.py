@@ -32,6 +32,8 @@ INF = np.iinfo(np.int32).max
 
 @dataclass
 class SearchResult:
+    """A search's outcome and effort."""
+
     plan: list[int] | None  # action indices
     expanded: int
     evaluated: int
