@@ -352,3 +352,18 @@ def test_an_action_whose_cost_is_undefined_never_applies(engine, tmp_path):
     assert not task.knowledge.ground("move", ("f0", "f1")).applicable(task.init)
     plan = Planner(task, first_engine=engine).plan()
     assert [str(a) for a in plan.actions] == ["board(p1, f0)", "move(f0, f2)", "leave(p1, f2)"] and plan.cost == 12
+
+
+def test_a_fractional_action_cost_is_bad_input(cli, tmp_path):
+    problem = tmp_path / "elevators-half.pddl"
+    problem.write_text((DOMAINS / "elevators-p1.pddl").read_text().replace("(= (travel f0 f1) 1)",
+                                                                          "(= (travel f0 f1) 1.5)"))
+    code, out, err = cli("plan", DOMAINS / "elevators-domain.pddl", problem)
+    assert code == 2 and "elevators-half.pddl:5:" in err and "non-negative integers" in err
+
+
+def test_an_executive_planner_grounds_with_its_first_plan():
+    task = task_of("conditional effects")
+    eager, lazy = Planner(task, ground_eagerly=True), Planner(task)
+    eager.plan(), lazy.plan()
+    assert eager._grounded is not None and lazy._grounded is None

@@ -110,7 +110,7 @@ class Session:
     world: World = field(init=False)
 
     def __post_init__(self) -> None:
-        self.planner = Planner(self.task.planning, first_engine=self.cfg.planner)
+        self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
         self.world = make_world(self.task, self.cfg)
         self.skills = make_skills(self.task, self.world)
         self._embedded = None

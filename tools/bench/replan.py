@@ -38,7 +38,7 @@ class RecordingPlanner(Planner):
     """A planner that remembers the states it was asked to replan from."""
 
     def __init__(self, task):
-        super().__init__(task)
+        super().__init__(task, ground_eagerly=True)  # as the runner's Session does
         self.states = []
 
     def replan(self, state, previous=None, goal=None):

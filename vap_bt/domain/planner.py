@@ -7,8 +7,10 @@ a situation tries, cheapest first:
    (a grasp that failed with the object unchanged leaves the rest of the plan intact);
 2. ``cache``  — a plan found before for this exact state and goal;
 3. ``search`` — in-process greedy best-first search with the FF heuristic over the grounded task
-   (:mod:`vap_bt.domain.search`), grounded once per object set;
-4. ``fast-downward`` — when the search runs out of its node budget.
+   (:mod:`vap_bt.domain.search`), grounded once per object set (with the first plan, for an
+   executive's planner: ``ground_eagerly``);
+4. ``fast-downward`` — when the search runs out of its node budget, when the belief holds atoms
+   or rigid facts the grounding did not assume, or when a precondition is too large for it.
 
 Every plan carries the engine that made it, the time it took and its cost (the sum of its
 actions' costs: PDDL ``:action-costs``, or 1 per action). A plan a planner produced is checked
@@ -16,7 +18,8 @@ twice before it is returned — with our semantics and with unified-planning's `
 (:mod:`vap_bt.domain.validation`) — so a plan that does not reach the goal is never handed out. A
 reused tail is re-checked from the corrected state with our semantics only: it is a suffix of a
 plan the validator accepted, our semantics are tested against unified-planning's simulator, and
-the validator's ~50–100 ms per call would dominate replanning (docs/BENCHMARKS.md).
+the validator's 20–70 ms per call, times every tail tried, would dominate replanning
+(docs/BENCHMARKS.md).
 
 Tasks with action costs are planned with them: Fast Downward runs a cost-aware weighted A*
 (``lazy_wastar`` with the FF heuristic; its default, ``lama-first``, ignores costs) and the
@@ -78,6 +81,9 @@ class Planner:
     first_engine: str = "fast-downward"  # or "search"
     fd_timeout_s: float = 60.0
     max_expansions: int = 20000
+    #: ground the task for the in-process search along with the first plan, so that the first
+    #: situation does not wait for grounding (an executive wants this; a one-off plan does not)
+    ground_eagerly: bool = False
     _grounded: GroundedTask | None = field(default=None, init=False, repr=False)
     _too_large: bool = field(default=False, init=False, repr=False)
     _cache: dict = field(default_factory=dict, init=False, repr=False)
@@ -101,7 +107,10 @@ class Planner:
         if key in self._cache:
             return Plan(list(self._cache[key]), "cache", time.perf_counter() - t0)
         found = self._fast_downward(task) if self.first_engine == "fast-downward" else self._search_or_fd(task)
-        return self._accept(task, *found, t0)
+        plan = self._accept(task, *found, t0)
+        if self.ground_eagerly:
+            _ = self.grounded
+        return plan
 
     def replan(self, state: frozenset[Atom], previous: list[GroundAction] | None = None,
                goal: tuple[Literal, ...] | None = None) -> Plan:
