@@ -2,7 +2,7 @@
 
 ``vap-bt plan DOMAIN PROBLEM``       print a plan (Fast Downward through unified-planning)
 ``vap-bt run TASK.yaml``             run a task end to end and print a JSON report
-``vap-bt run --domain D --problem P`` the same for any typed STRIPS domain
+``vap-bt run --domain D --problem P`` the same for any classical PDDL domain (what Fast Downward runs)
 ``vap-bt export TASK.yaml``          print the compiled tree as BehaviorTree.CPP XML
 ``vap-bt skills``                    list the installed skill plugins
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
@@ -34,7 +34,7 @@ def cmd_plan(args) -> int:
     task = load_task(args.domain, args.problem)
     plan = Planner(task, first_engine=args.engine).plan()
     print(plan)
-    print(f"; {len(plan)} actions, {plan.engine}, {plan.seconds:.3f} s", file=sys.stderr)
+    print(f"; {len(plan)} actions, cost {plan.cost}, {plan.engine}, {plan.seconds:.3f} s", file=sys.stderr)
     return EXIT_OK
 
 
@@ -89,6 +89,9 @@ def cmd_run(args) -> int:
     summary["situations"] = rep["situations"]
     summary["injected"] = rep["injected"]
     summary["plans"] = [p["actions"] for p in rep["plans"]]
+    summary["plan_costs"] = [p["cost"] for p in rep["plans"]]
+    # which predicates the trees did not look at, and why (the full report lists every atom)
+    summary["unchecked"] = {u["name"]: u["reason"] for u in rep.get("unchecked", [])}
     print(json.dumps(rep if args.full else summary, indent=2, default=str))
     ok = rep["success"] and rep["goal_satisfied"]
     return EXIT_OK if ok else EXIT_GOAL_NOT_REACHED

@@ -136,7 +136,7 @@ class Session:
     last_outcome: EpisodeOutcome | None = field(init=False, default=None)
 
     def __post_init__(self) -> None:
-        self.planner = Planner(self.task.planning, first_engine=self.cfg.planner)
+        self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
         self.world = make_world(self.task, self.cfg)
         self.skills = make_skills(self.task, self.world)
         self.vlm = make_vlm(self.task, self.world, self.cfg)
@@ -244,6 +244,7 @@ class Session:
             "ticks": out.ticks,
             "vlm_queries": vlm.total,
             "verifications": [v.to_json() for v in ctx.verifications],
+            "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],
             "wall_s": round(wall, 4),
             "versions": versions(),

@@ -5,7 +5,10 @@ Runs symbolic episodes of every task in trees/ with Table II injection on. Each 
 executive replans, the corrected state is recorded together with the executive's own latency
 (graph correction + replan + compiling the new tree). Afterwards, for each recorded state, the
 baseline — ``OneshotPlanner(name="fast-downward").solve(problem)`` with the problem already built —
-is timed on the same machine. Prints medians, p90 and the ratio.
+is timed on the same machine. Prints medians, p90 and the ratio; then what the in-process path
+spends once per object set (unified-planning's grounder), and what unified-planning's
+PlanValidator costs on the replanned plans — every plan a planner produced goes through it; a
+reused or cached plan does not, and this line is why.
 
     python tools/bench/replan.py [--seeds 20] [--baseline-samples 40]
 """
@@ -25,6 +28,8 @@ sys.path.insert(0, str(ROOT))
 from unified_planning.shortcuts import OneshotPlanner  # noqa: E402
 
 from vap_bt import taskfile  # noqa: E402
+from vap_bt.domain import validation  # noqa: E402
+from vap_bt.domain.grounding import ground  # noqa: E402
 from vap_bt.domain.planner import Planner  # noqa: E402
 from vap_bt.runner import RunConfig, Session  # noqa: E402
 
@@ -33,12 +38,13 @@ class RecordingPlanner(Planner):
     """A planner that remembers the states it was asked to replan from."""
 
     def __init__(self, task):
-        super().__init__(task)
+        super().__init__(task, ground_eagerly=True)  # as the runner's Session does
         self.states = []
 
     def replan(self, state, previous=None, goal=None):
-        self.states.append(state)
-        return super().replan(state, previous, goal)
+        plan = super().replan(state, previous, goal)
+        self.states.append((state, plan.actions))
+        return plan
 
 
 def pct(xs, q):
@@ -64,13 +70,27 @@ def main() -> int:
                 by_engine.setdefault(p["engine"], []).append(ms / 1000)
         samples += [(task.planning, st) for st in s.planner.states]
     random.Random(0).shuffle(samples)
-    base = []
-    for planning, state in samples[: args.baseline_samples]:
+    base, up_check, our_check = [], [], []
+    for planning, (state, _) in samples[: args.baseline_samples]:
         problem = planning.with_state(state).to_up()
         with OneshotPlanner(name="fast-downward") as fd:
             t0 = time.perf_counter()
             fd.solve(problem)
             base.append(time.perf_counter() - t0)
+    for planning, (state, actions) in samples[: args.baseline_samples]:
+        task = planning.with_state(state)
+        t0 = time.perf_counter()
+        assert validation.validate(task, actions).valid
+        up_check.append(time.perf_counter() - t0)
+        t0 = time.perf_counter()
+        assert task.validate(actions)
+        our_check.append(time.perf_counter() - t0)
+    grounding = []
+    for f in sorted((ROOT / "trees").glob("*.yaml")):
+        planning = taskfile.load(f).planning
+        t0 = time.perf_counter()
+        ground(planning)
+        grounding.append(time.perf_counter() - t0)
     m_ours, m_base = statistics.median(ours), statistics.median(base)
     print(f"replans measured: {len(ours)} (engines: {engines}); baseline calls: {len(base)}")
     print(f"{'':38s} {'median':>9s} {'p90':>9s}")
@@ -82,6 +102,14 @@ def main() -> int:
     print(f"ratio (ours / baseline, median): {m_ours / m_base:.3f}   target <= 0.333")
     worst = max(statistics.median(xs) for xs in by_engine.values())
     print(f"ratio of the slowest engine (in-process search) alone: {worst / m_base:.3f}")
+    print(f"{'grounding, once per task (UP grounder)':38s} {statistics.median(grounding) * 1000:8.2f}ms "
+          f"{max(grounding) * 1000:8.2f}ms (max)")
+    print(f"{'UP PlanValidator on a replanned plan':38s} {statistics.median(up_check) * 1000:8.2f}ms "
+          f"{pct(up_check, .9) * 1000:8.2f}ms")
+    print(f"{'our semantics on the same plans':38s} {statistics.median(our_check) * 1000:8.3f}ms "
+          f"{pct(our_check, .9) * 1000:8.3f}ms")
+    print(f"validating every replan with UP would add {statistics.median(up_check) / m_base:.3f} "
+          "of the baseline to the median")
     return 0
 
 

@@ -13,7 +13,8 @@ every view's answers agreed on it; otherwise the check does not overturn belief 
 is too close to a guess to rewrite the scene graph).
 An unsettled *goal* atom withholds the executive's claim of success; an unsettled effect lets the
 plan go on (the next action's preconditions are checked before it acts); an unsettled
-*precondition* follows the context's ``unseen`` policy — by default it is a situation of kind
+*precondition* first asks the body (``ctx.felt``: the gripper knows whether it holds
+something), then follows the context's ``unseen`` policy — by default it is a situation of kind
 ``unseen``: the action does not run, the executive looks for what the check was about and
 replans.
 """
@@ -56,6 +57,9 @@ class ActivePerception(py_trees.decorators.Decorator):
             self.moves += 1
             return Status.RUNNING
         if v.outcome == "unsettled":
+            felt = self.ctx.felt(self.ctx.graph, self.verify.atom)
+            if felt is not None:  # the camera could not tell; the gripper can
+                return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted")
             return self._settle(self.verify.expected, "unsettled")
         return self._settle(v.value, "confirmed" if v.value == self.verify.expected else "contradicted")
 
@@ -70,7 +74,7 @@ class ActivePerception(py_trees.decorators.Decorator):
                                            detail=f"could not see whether {v.atom} holds")
             self.ctx.progress(f"    situation: could not see {'' if v.expected else 'not '}{v.atom}")
             return Status.FAILURE
-        if outcome != "contradicted":
+        if outcome != "contradicted":  # confirmed, felt, or unsettled where the plan may go on
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]
         self.ctx.situation = Situation(kind, self.action, self.step, v.atom, v.expected, value)

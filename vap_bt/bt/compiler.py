@@ -13,12 +13,18 @@ node that succeeded is not ticked again while a later one runs::
      ├─ Sequence "goal"   ActivePerception(K) ─ VerifyPredicate(on cup counter) …
      └─ GoalCheck
 
-Which atoms are checked: the preconditions (``pre``) and the add effects (``eff``, the paper's
-Eff+) whose predicate the camera can judge (there are paraphrases for it) and that some action
-can change (rigid facts are map knowledge). Before claiming success, the goal's atoms are looked
-at once more (``goal``, with the effect checks): an effect confirmed minutes ago may have been
-undone since (a bottle rolled off the counter). The verification mode removes whole phases:
-``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``.
+Which atoms are checked is decided from the states the plan expects
+(:mod:`vap_bt.domain.expectation`: the belief the tree is compiled from, then each action applied
+in turn): before an action, the precondition literals that hold it in the expected state (all of
+a conjunction; of a disjunction, the disjunct believed true); after it, the state difference it
+makes there — every atom it adds (the paper's Eff+, conditional effects included where their
+conditions are expected to hold) and the deleted atoms the rest of the plan needs false. Of
+those, the camera is asked about atoms whose predicate it can judge (there are paraphrases for
+it) and that some action can change (rigid facts are map knowledge); every other atom is recorded
+on the context as unchecked, with the reason, for the report. Before claiming success, the goal's
+atoms are looked at once more (``goal``, with the effect checks): an effect confirmed minutes ago
+may have been undone since (a bottle rolled off the counter). The verification mode removes whole
+phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``.
 """
 
 from __future__ import annotations
@@ -27,41 +33,58 @@ import py_trees
 
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
-from vap_bt.bt.context import ExecutionContext, Phase
+from vap_bt.bt.context import ExecutionContext, Phase, Unchecked
 from vap_bt.bt.execute_skill import ExecuteSkill
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.domain.atoms import Literal
+from vap_bt.domain.expectation import StepExpectation, expect
 from vap_bt.domain.knowledge import DomainKnowledge, GroundAction
 from vap_bt.perception.prompts import verifiable
 
 
-def checked(literals, knowledge: DomainKnowledge) -> list[Literal]:
-    return [l for l in literals if verifiable(l.atom.predicate) and not knowledge.is_rigid(l.atom.predicate)]
+def unchecked_reason(predicate: str, knowledge: DomainKnowledge) -> str | None:
+    """Why atoms of ``predicate`` are not asked of the camera (None: they are)."""
+    if knowledge.is_rigid(predicate):
+        return f"{predicate!r} is rigid: no action changes it (map knowledge, not looked at)"
+    if not verifiable(predicate):
+        return f"no paraphrases for {predicate!r}: the camera cannot be asked yet (no perception profile)"
+    return None
 
 
-def _checks(ctx: ExecutionContext, phase: Phase, literals: list[Literal], action: GroundAction | None,
-            step: int) -> py_trees.composites.Sequence:
+def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None, step: int,
+            knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
+    asked = []
+    for l in literals:
+        reason = unchecked_reason(l.atom.predicate, knowledge)
+        if reason is None:
+            asked.append(l)
+        else:
+            name = str(action) if action else "goal"
+            ctx.unchecked.setdefault((phase, name, l), Unchecked(phase, name, l.atom, l.positive, reason))
     return py_trees.composites.Sequence(phase, memory=True, children=[
-        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in literals])
+        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in asked])
 
 
-def compile_action(ctx: ExecutionContext, action: GroundAction, step: int,
-                   knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
+def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowledge: DomainKnowledge,
+                   expected: StepExpectation | None = None) -> py_trees.composites.Sequence:
+    """One plan step; ``expected`` is what the plan expects of it (default: the action applied to
+    the current belief)."""
+    expected = expected or expect(ctx.graph.state(), [action])[0]
     children: list[py_trees.behaviour.Behaviour] = []
     if ctx.mode.pre:
-        children.append(_checks(ctx, "pre", checked(action.preconditions, knowledge), action, step))
-    children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action)]
+        children.append(_checks(ctx, "pre", expected.support, action, step, knowledge))
+    children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action, expected.diff)]
     if ctx.mode.eff:
-        adds = [Literal(a) for a in sorted(action.add - action.pre_pos)]  # Eff+ that the action changes
-        children.append(_checks(ctx, "eff", checked(adds, knowledge), action, step))
+        children.append(_checks(ctx, "eff", expected.effects, action, step, knowledge))
     return py_trees.composites.Sequence(f"a{step}: {action}", memory=True, children=children)
 
 
 def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Literal, ...],
                  knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
-    nodes = [compile_action(ctx, a, i, knowledge) for i, a in enumerate(plan)]
+    steps = expect(ctx.graph.state(), plan, goal)
+    nodes = [compile_action(ctx, a, i, knowledge, e) for i, (a, e) in enumerate(zip(plan, steps))]
     if ctx.mode.eff:
-        nodes.append(_checks(ctx, "goal", checked(goal, knowledge), None, len(plan)))
+        nodes.append(_checks(ctx, "goal", goal, None, len(plan), knowledge))
     nodes.append(GoalCheck(ctx, goal, len(plan)))
     return py_trees.composites.Sequence("plan", memory=True, children=nodes)

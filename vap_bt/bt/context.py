@@ -70,7 +70,7 @@ class Verification:
     atom: Atom
     expected: bool
     value: bool
-    outcome: Literal["confirmed", "contradicted", "unsettled"]
+    outcome: Literal["confirmed", "contradicted", "unsettled", "felt"]
     rounds: list[Round]
 
     def to_json(self) -> dict:
@@ -79,6 +79,21 @@ class Verification:
                 "views": len(self.rounds), "queries": sum(len(r.answers) + (r.sufficient is not None)
                                                           + (r.direction is not None) for r in self.rounds),
                 "rounds": [r.to_json() for r in self.rounds]}
+
+
+@dataclass(frozen=True)
+class Unchecked:
+    """An atom a compiled tree does not look at, and why (the report lists them)."""
+
+    phase: Phase
+    action: str
+    atom: Atom
+    expected: bool
+    reason: str
+
+    def to_json(self) -> dict:
+        return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
+                "name": self.atom.predicate, "expected": self.expected, "reason": self.reason}
 
 
 @dataclass
@@ -97,8 +112,13 @@ class ExecutionContext:
     unconfirmed_goal: list[Atom] = field(default_factory=list)
     actions: list[dict] = field(default_factory=list)
     unseen: UnseenPolicy = "look"
+    #: what the body itself says of an atom the camera could not settle (the gripper of
+    #: ``holding``/``hand_empty``), or None: proprioception decides where looking could not
+    felt: Callable[[SceneGraph, Atom], bool | None] = lambda graph, atom: None
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
+    #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
+    unchecked: dict[tuple, Unchecked] = field(default_factory=dict)
     t0: float = field(default_factory=time.perf_counter)
 
     def now(self) -> float:

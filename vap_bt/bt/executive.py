@@ -10,8 +10,9 @@ context; the executive handles it and swaps in a new tree:
 2. the contradicted atom is set to its observed value (observation-driven update);
 3. a skill that failed to act makes the robot's placement for it (``inview``) stale, so that the
    new plan approaches the target again rather than retrying from the same spot; so does a
-   precondition ``inview(x)`` the camera could not settle (a situation of kind ``unseen``: the
-   action did not run because nobody could see whether it may);
+   precondition the camera could not settle (a situation of kind ``unseen``: the action did not
+   run because nobody could see whether it may) drops ``inview`` of the things it is about, so
+   the new plan goes to look at them;
 4. the objects the action touched are re-located from a fresh frame by the same builder; an
    object that is not where belief puts it, or that belief no longer places anywhere, sends the
    robot to look again: a re-survey of the room it was believed in (the paper's
@@ -126,7 +127,7 @@ class Executive:
         graph, survey = self.perceive()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, unseen=self.s.unseen)
+                               aim=self.builder.aim, unseen=self.s.unseen, felt=self._felt)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
             plan = self.planner.plan(graph.state(), self.task.goal)
@@ -272,8 +273,8 @@ class Executive:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == VIEW_PREDICATE:
                     graph.correct(lit.atom, False)
-        if s.kind == "unseen" and s.atom is not None and s.atom.predicate == VIEW_PREDICATE:
-            graph.correct(s.atom, False)  # what the camera cannot make out is not in view
+        if s.kind == "unseen" and s.atom is not None:
+            self._look_at(graph, s.atom.args)
         dropped = self._feel_hand(graph)
         involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()),
                                         *dropped)))
@@ -286,6 +287,20 @@ class Executive:
         if not lost:
             return None
         return self._resurvey(graph, lost)
+
+    def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
+        """Go and look at what a check could not make out: the sweep's own view of it (or of what
+        it rests on). What could not be made out is not in view: the new plan re-approaches it."""
+        for a in names:
+            if Atom(VIEW_PREDICATE, (a,)) in graph.facts:
+                graph.correct(Atom(VIEW_PREDICATE, (a,)), False)
+        view = next((v for n in names if not self._portable(n) and (v := self.builder.view_of(graph, n))), None)
+        if view is not None and self.camera.goto_view(view):
+            self.progress(f"    looking again: {view.label}")
+            sweep = SweepRecord((view.room,), 1, 1, 0, last_view=view, last_frame=self.camera.capture(view.aim))
+            self.builder.integrate(sweep.last_frame)
+            graph.replace_predicates(belief.ROBOT_PREDICATES - {VIEW_PREDICATE},
+                                     belief.robot_facts(self.body.state(), sweep, self.builder.site_map), "look")
 
     def _feel_hand(self, graph: SceneGraph) -> list[str]:
         """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
@@ -343,6 +358,18 @@ class Executive:
         survey = Survey(f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
+
+    def _felt(self, graph: SceneGraph, atom: Atom) -> bool | None:
+        """Proprioception's word on ``holding(x)`` and ``hand_empty``: the gripper reports whether
+        its fingers closed on something; which thing it is, is belief's."""
+        holding = self.body.state().gripper_holding
+        if holding is None:
+            return None
+        if atom.predicate == "hand_empty" and not atom.args:
+            return not holding
+        if atom.predicate == "holding" and len(atom.args) == 1:
+            return holding and atom in graph.facts
+        return None
 
     def _in_hand(self, graph: SceneGraph) -> set[str]:
         """What belief holds, while the gripper feels something between its fingers."""

@@ -1,7 +1,10 @@
 """Reading PDDL files into a :class:`~vap_bt.domain.task.PlanningTask`, with clear errors.
 
-unified-planning does the parsing; this module translates its problem into the flat form of
-:mod:`vap_bt.domain.knowledge` and turns every parser complaint into one
+unified-planning does the parsing (after :mod:`vap_bt.domain.either` widened the ``either``
+types it cannot read); :mod:`vap_bt.domain.requirements` refuses what vap_bt does not run; this
+module translates the problem into :mod:`vap_bt.domain.knowledge`'s form — types,
+predicates, action schemas (with :mod:`vap_bt.domain.instances` grounding them through
+unified-planning), the initial state and the goal — and turns every parser complaint into one
 :class:`~vap_bt.errors.InputError` naming the file and, when the parser knows it, the line.
 """
 
@@ -10,8 +13,12 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
+from vap_bt.domain import either
 from vap_bt.domain.atoms import Atom, Literal
-from vap_bt.domain.knowledge import ActionSchema, DomainKnowledge, LiteralTemplate
+from vap_bt.domain.formula import TRUE, And
+from vap_bt.domain.instances import UPInstances
+from vap_bt.domain.knowledge import ActionSchema, DomainKnowledge, EffectTemplate
+from vap_bt.domain.requirements import Source, check_costs, check_kind, explain_unreadable
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import InputError
 
@@ -27,7 +34,7 @@ def _reader():
     return PDDLReader()
 
 
-def _parse_error(path: Path, exc: Exception) -> InputError:
+def _parse_error(path: Path | str, exc: Exception) -> InputError:
     line = getattr(exc, "lineno", None)
     where = f"{path}:{line}" if line else str(path)
     msg = getattr(exc, "msg", None) or str(exc).splitlines()[0] if str(exc) else type(exc).__name__
@@ -40,16 +47,19 @@ def load_task(domain_file: str | Path, problem_file: str | Path) -> PlanningTask
     for p in (domain_path, problem_path):
         if not p.is_file():
             raise InputError(str(p), "no such file")
+    domain, problem = Source.read(domain_path), Source.read(problem_path)
+    domain_text = either.rewrite(domain)
     reader = _reader()
     try:
-        reader.parse_problem(str(domain_path))
+        reader.parse_problem_string(domain_text)
     except Exception as exc:  # the parser raises many kinds; all are bad input here
-        raise _parse_error(domain_path, exc) from None
+        raise explain_unreadable([domain]) or _parse_error(domain_path, exc) from None
     try:
-        up_problem = reader.parse_problem(str(domain_path), str(problem_path))
+        up_problem = reader.parse_problem_string(domain_text, problem.text)
     except Exception as exc:
-        raise _parse_error(problem_path, exc) from None
-    return from_up(up_problem, source=f"{domain_path} + {problem_path}", where=problem_path)
+        raise explain_unreadable([problem]) or _parse_error(problem_path, exc) from None
+    return from_up(up_problem, source=f"{domain_path} + {problem_path}", where=problem_path,
+                   sources=[domain, problem])
 
 
 def parse_strings(domain_file: str | Path, problem_text: str, where: str) -> PlanningTask:
@@ -57,47 +67,46 @@ def parse_strings(domain_file: str | Path, problem_text: str, where: str) -> Pla
     domain_path = Path(domain_file)
     if not domain_path.is_file():
         raise InputError(str(domain_path), "no such file")
+    domain = Source.read(domain_path)
     reader = _reader()
     try:
-        up_problem = reader.parse_problem_string(domain_path.read_text(), problem_text)
+        up_problem = reader.parse_problem_string(either.rewrite(domain), problem_text)
     except Exception as exc:
-        raise _parse_error(Path(where), exc) from None
-    return from_up(up_problem, source=f"{domain_path} + {where}", where=where)
+        raise explain_unreadable([domain]) or _parse_error(where, exc) from None
+    return from_up(up_problem, source=f"{domain_path} + {where}", where=where,
+                   sources=[domain, Source(where, problem_text)])
 
 
-def from_up(problem, source: str, where: Path | str) -> PlanningTask:
-    """Translate a unified-planning problem (typed STRIPS) into a :class:`PlanningTask`."""
+def from_up(problem, source: str, where: Path | str, sources: list[Source] | None = None) -> PlanningTask:
+    """Translate a unified-planning problem into a :class:`PlanningTask` (refusing what vap_bt
+    does not run)."""
+    sources = sources or [Source(str(where), "")]
+    kind = problem.kind
+    check_kind(kind, sources)
+    check_costs(problem, sources)
+    instances = UPInstances(problem, has_quantifiers=kind.has_existential_conditions()
+                            or kind.has_universal_conditions() or kind.has_forall_effects())
+    compiled = instances.problem
     parents = {t.name: (t.father.name if t.father is not None else None) for t in problem.user_types}
     predicates = {f.name: tuple(p.type.name if p.type.is_user_type() else "object" for p in f.signature)
-                  for f in problem.fluents}
-    for f in problem.fluents:
-        if not f.type.is_bool_type():
-            raise InputError(str(where), f"fluent {f.name!r} is not boolean: only STRIPS is supported")
-    schemas = {a.name: _schema(a, where) for a in problem.actions}
+                  for f in problem.fluents if f.type.is_bool_type()}
+    schemas = {a.name: _schema(a) for a in compiled.actions}
     objects = {o.name: o.type.name for o in problem.all_objects}
-    knowledge = DomainKnowledge(name=problem.name, parents=parents, predicates=predicates, schemas=schemas)
-    init = frozenset(_atom(k) for k, v in problem.initial_values.items() if v.is_true())
-    goal = tuple(l for g in problem.goals for l in _literals(g, where, "the goal"))
+    knowledge = DomainKnowledge(name=problem.name, parents=parents, predicates=predicates, schemas=schemas,
+                                instances=instances, has_costs=instances.has_costs)
+    init = frozenset(_atom(k) for k, v in problem.initial_values.items() if k.type.is_bool_type() and v.is_true())
+    goal = _goal(instances, where)
     return PlanningTask(knowledge=knowledge, objects=objects, init=init, goal=goal,
                         name=problem.name, source=source, up_problem=problem)
 
 
-def _schema(action, where) -> ActionSchema:
-    from unified_planning.model import InstantaneousAction
-
-    if not isinstance(action, InstantaneousAction):
-        raise InputError(str(where), f"action {action.name!r}: only instantaneous actions are supported")
+def _schema(action) -> ActionSchema:
     params = tuple((f"?{p.name}", p.type.name if p.type.is_user_type() else "object") for p in action.parameters)
-    pre: list[LiteralTemplate] = []
-    for c in action.preconditions:
-        pre.extend(_templates(c, where, f"action {action.name!r}"))
-    add, delete = [], []
-    for e in action.effects:
-        if e.is_conditional() or e.is_forall() or not e.value.is_bool_constant():
-            raise InputError(str(where), f"action {action.name!r}: only unconditional STRIPS effects are supported")
-        t = _template(e.fluent, where, f"action {action.name!r}")
-        (add if e.value.is_true() else delete).append(t)
-    return ActionSchema(action.name, params, tuple(pre), tuple(add), tuple(delete))
+    effects = tuple(
+        EffectTemplate(e.fluent.fluent().name, tuple(_term(a) for a in e.fluent.args), e.value.is_true(),
+                       str(e.condition) if e.is_conditional() else "")
+        for e in action.effects if e.fluent.type.is_bool_type())
+    return ActionSchema(action.name, params, effects)
 
 
 def _term(node) -> str:
@@ -105,32 +114,22 @@ def _term(node) -> str:
         return f"?{node.parameter().name}"
     if node.is_object_exp():
         return node.object().name
-    raise ValueError(node)
-
-
-def _template(node, where, what, positive=True) -> LiteralTemplate:
-    if not node.is_fluent_exp():
-        raise InputError(str(where), f"{what}: unsupported expression {node}")
-    try:
-        terms = tuple(_term(a) for a in node.args)
-    except ValueError:
-        raise InputError(str(where), f"{what}: unsupported argument in {node}") from None
-    return LiteralTemplate(node.fluent().name, terms, positive)
-
-
-def _templates(node, where, what) -> list[LiteralTemplate]:
-    if node.is_and():
-        return [t for a in node.args for t in _templates(a, where, what)]
-    if node.is_not():
-        return [_template(node.arg(0), where, what, positive=False)]
-    if node.is_bool_constant() and node.is_true():
-        return []
-    return [_template(node, where, what)]
+    return str(node)
 
 
 def _atom(node) -> Atom:
     return Atom(node.fluent().name, tuple(a.object().name for a in node.args))
 
 
-def _literals(node, where, what) -> list[Literal]:
-    return [t.bind({}) for t in _templates(node, where, what)]
+def _goal(instances: UPInstances, where) -> tuple[Literal, ...]:
+    try:
+        goal = instances.goal()
+    except ValueError as exc:
+        raise InputError(str(where), f"the goal: {exc}") from None
+    if goal == TRUE:
+        return ()
+    parts = goal.parts if isinstance(goal, And) else (goal,)
+    if not all(isinstance(p, Literal) for p in parts):
+        raise InputError(str(where), f"the goal {goal} is not a conjunction of literals: disjunctive goals "
+                                     "are not supported (the executive checks each goal atom)")
+    return tuple(parts)

@@ -7,20 +7,35 @@ a situation tries, cheapest first:
    (a grasp that failed with the object unchanged leaves the rest of the plan intact);
 2. ``cache``  — a plan found before for this exact state and goal;
 3. ``search`` — in-process greedy best-first search with the FF heuristic over the grounded task
-   (:mod:`vap_bt.domain.search`), grounded once per object set;
-4. ``fast-downward`` — when the search runs out of its node budget.
+   (:mod:`vap_bt.domain.search`), grounded once per object set (with the first plan, for an
+   executive's planner: ``ground_eagerly``);
+4. ``fast-downward`` — when the search runs out of its node budget, when the belief holds atoms
+   or rigid facts the grounding did not assume, or when a precondition is too large for it.
 
-Every plan carries the engine that made it and the time it took, and is checked against the
-task's semantics before it is returned: a plan that does not reach the goal is never handed out.
+Every plan carries the engine that made it, the time it took and its cost (the sum of its
+actions' costs: PDDL ``:action-costs``, or 1 per action). A plan a planner produced is checked
+twice before it is returned — with our semantics and with unified-planning's ``PlanValidator``
+(:mod:`vap_bt.domain.validation`) — so a plan that does not reach the goal is never handed out. A
+reused tail is re-checked from the corrected state with our semantics only: it is a suffix of a
+plan the validator accepted, our semantics are tested against unified-planning's simulator, and
+the validator's 20–70 ms per call, times every tail tried, would dominate replanning
+(docs/BENCHMARKS.md).
+
+Tasks with action costs are planned with them: Fast Downward runs a cost-aware weighted A*
+(``lazy_wastar`` with the FF heuristic; its default, ``lama-first``, ignores costs) and the
+in-process search orders its queue by g + w·h over the costs.
 """
 
 from __future__ import annotations
 
 import time
+import warnings
 from dataclasses import dataclass, field
 from typing import Literal as Lit
 
+from vap_bt.domain import validation
 from vap_bt.domain.atoms import Atom, Literal
+from vap_bt.domain.formula import FormulaTooLarge
 from vap_bt.domain.grounding import GroundedTask, ground
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.domain.search import gbfs
@@ -29,9 +44,15 @@ from vap_bt.errors import UnsolvableError
 
 Engine = Lit["fast-downward", "search", "reuse", "cache"]
 
+#: Fast Downward for tasks with action costs: weighted A* over the costs (plus one, so that
+#: zero-cost actions still count) with the FF heuristic and its preferred operators
+FD_COST_CONFIG = "let(hff,ff(),lazy_wastar([hff],preferred=[hff],w=3,cost_type=plusone))"
+
 
 @dataclass
 class Plan:
+    """A sequence of ground actions, with the engine that made it and how long that took."""
+
     actions: list[GroundAction]
     engine: str
     seconds: float
@@ -39,26 +60,43 @@ class Plan:
     def __len__(self) -> int:
         return len(self.actions)
 
+    @property
+    def cost(self) -> int:
+        """The plan's cost: the sum of its actions' costs (its length without action costs)."""
+        return sum(a.cost for a in self.actions)
+
     def __str__(self) -> str:
         return "\n".join(f"{i}: {a}" for i, a in enumerate(self.actions)) or "(empty plan: goal already holds)"
 
     def to_json(self) -> dict:
-        return {"engine": self.engine, "seconds": round(self.seconds, 6), "actions": [str(a) for a in self.actions]}
+        return {"engine": self.engine, "seconds": round(self.seconds, 6), "cost": self.cost,
+                "actions": [str(a) for a in self.actions]}
 
 
 @dataclass
 class Planner:
+    """Plans and replans one task (see the module docstring for the engines it tries)."""
+
     task: PlanningTask
     first_engine: str = "fast-downward"  # or "search"
     fd_timeout_s: float = 60.0
     max_expansions: int = 20000
+    #: ground the task for the in-process search along with the first plan, so that the first
+    #: situation does not wait for grounding (an executive wants this; a one-off plan does not)
+    ground_eagerly: bool = False
     _grounded: GroundedTask | None = field(default=None, init=False, repr=False)
+    _too_large: bool = field(default=False, init=False, repr=False)
     _cache: dict = field(default_factory=dict, init=False, repr=False)
 
     @property
-    def grounded(self) -> GroundedTask:
-        if self._grounded is None:
-            self._grounded = ground(self.task)
+    def grounded(self) -> GroundedTask | None:
+        """The grounded task for the in-process search; None when it is too large for it (a
+        precondition with thousands of disjuncts), which leaves Fast Downward."""
+        if self._grounded is None and not self._too_large:
+            try:
+                self._grounded = ground(self.task)
+            except FormulaTooLarge:
+                self._too_large = True
         return self._grounded
 
     def plan(self, state: frozenset[Atom] | None = None, goal: tuple[Literal, ...] | None = None) -> Plan:
@@ -69,7 +107,10 @@ class Planner:
         if key in self._cache:
             return Plan(list(self._cache[key]), "cache", time.perf_counter() - t0)
         found = self._fast_downward(task) if self.first_engine == "fast-downward" else self._search_or_fd(task)
-        return self._accept(task, *found, t0)
+        plan = self._accept(task, *found, t0)
+        if self.ground_eagerly:
+            _ = self.grounded
+        return plan
 
     def replan(self, state: frozenset[Atom], previous: list[GroundAction] | None = None,
                goal: tuple[Literal, ...] | None = None) -> Plan:
@@ -96,27 +137,37 @@ class Planner:
 
     def _search_or_fd(self, task: PlanningTask) -> tuple[list[GroundAction], str]:
         g = self.grounded
-        unknown = [a for a in task.init if a not in g.index and not task.knowledge.is_rigid(a.predicate)]
-        if not unknown:
-            init = g.ids(task.init)
-            pos = [l.atom for l in task.goal if l.positive]
-            neg = [l.atom for l in task.goal if not l.positive]
-            if all(a in g.index for a in pos):
-                res = gbfs(g, init, g.ids(pos), g.ids(neg), self.max_expansions)
-                if res.plan is not None:
-                    return [g.actions[i] for i in res.plan], "search"
-                if res.exhausted:
-                    raise UnsolvableError(f"no plan reaches the goal from this state ({task.name})")
-            else:
+        k = task.knowledge
+        # the grounding assumed the task's rigid facts and knows the atoms actions can reach; a
+        # belief outside that (a rigid fact corrected, an unknown atom) is Fast Downward's to plan
+        if g is not None and g.rigid == frozenset(a for a in task.init if k.is_rigid(a.predicate)) and all(
+                a in g.index for a in task.init if not k.is_rigid(a.predicate)):
+            rigid_goal = [l for l in task.goal if k.is_rigid(l.atom.predicate)]
+            if any((l.atom in task.init) != l.positive for l in rigid_goal):
+                raise UnsolvableError(f"no action changes {[str(l) for l in rigid_goal]}: the goal cannot hold")
+            fluent_goal = [l for l in task.goal if not k.is_rigid(l.atom.predicate)]
+            pos = [l.atom for l in fluent_goal if l.positive]
+            neg = [l.atom for l in fluent_goal if not l.positive]
+            if not all(a in g.index for a in pos):
                 raise UnsolvableError(f"no action can make {[str(a) for a in pos if a not in g.index]} true")
+            res = gbfs(g, g.ids(task.init), g.ids(pos), g.ids(neg), self.max_expansions, use_costs=k.has_costs)
+            if res.plan is not None:
+                return [g.actions[i] for i in res.plan], "search"
+            if res.exhausted:
+                raise UnsolvableError(f"no plan reaches the goal from this state ({task.name})")
         return self._fast_downward(task)
 
     def _fast_downward(self, task: PlanningTask) -> tuple[list[GroundAction], str]:
         from unified_planning.engines import PlanGenerationResultStatus as S
         from unified_planning.shortcuts import OneshotPlanner
 
-        with OneshotPlanner(name="fast-downward") as engine:
-            result = engine.solve(task.to_up(), timeout=self.fd_timeout_s)
+        params = {"fast_downward_search_config": FD_COST_CONFIG} if task.knowledge.has_costs else {}
+        with warnings.catch_warnings():
+            # integral PDDL ``number`` costs are reals to unified-planning, which then cannot tell
+            # whether Fast Downward takes them (it does; requirements.check_costs saw they are integers)
+            warnings.simplefilter("ignore")
+            with OneshotPlanner(name="fast-downward", params=params) as engine:
+                result = engine.solve(task.to_up(), timeout=self.fd_timeout_s)
         if result.status in (S.SOLVED_SATISFICING, S.SOLVED_OPTIMALLY):
             k = task.knowledge
             return [k.ground(ai.action.name, tuple(p.object().name for p in ai.actual_parameters))
@@ -128,5 +179,12 @@ class Planner:
     def _accept(self, task: PlanningTask, actions: list[GroundAction], engine: str, t0: float) -> Plan:
         if not task.validate(actions):
             raise RuntimeError(f"{engine} returned a plan that does not reach the goal: {[str(a) for a in actions]}")
+        verdict = validation.validate(task, actions)
+        if not verdict.valid:
+            raise RuntimeError(f"unified-planning's validator rejects the {engine} plan "
+                               f"{[str(a) for a in actions]}: {verdict.reason}")
+        if verdict.cost is not None and verdict.cost != sum(a.cost for a in actions):
+            raise RuntimeError(f"unified-planning costs the {engine} plan {verdict.cost}, "
+                               f"our grounding {sum(a.cost for a in actions)}")
         self._cache[(task.init, task.goal)] = tuple(actions)
         return Plan(actions, engine, time.perf_counter() - t0)

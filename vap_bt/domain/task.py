@@ -61,7 +61,8 @@ class PlanningTask:
         fluents = {f.name: f for f in problem.fluents}
         objs = {o.name: o for o in problem.all_objects}
         for k in list(problem.explicit_initial_values):
-            problem.set_initial_value(k, False)
+            if k.type.is_bool_type():  # numeric values (action costs) are static: they stay
+                problem.set_initial_value(k, False)
         for a in self.init:
             problem.set_initial_value(fluents[a.predicate](*(objs[x] for x in a.args)), True)
         for l in self.goal:

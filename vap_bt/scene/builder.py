@@ -43,8 +43,8 @@ SUPPORT_PREDICATES = ("on", "inside")
 #: base centre to the front face of a piece of furniture when looking at it, and again closer
 #: over a surface's top (from closer in the camera looks down more steeply, over the front row of
 #: things onto what stands behind them)
-VIEW_STANDOFF = 1.05
-TOP_VIEW_STANDOFF = 0.55
+VIEW_STANDOFF = 1.6
+TOP_VIEW_STANDOFF = 1.0
 #: the height aimed at on furniture whose height perception has not measured yet
 FURNITURE_AIM_HEIGHT = 0.7
 #: a look round the floor: this far from the room's centre, in these directions
@@ -274,6 +274,26 @@ class SceneGraphBuilder:
         return SceneObject(name, ev.label if ev else label, src, room, c, box, ev.frames if ev else 0)
 
     # -- where to look ----------------------------------------------------------------------
+
+    def view_of(self, graph: SceneGraph, name: str) -> Viewpoint | None:
+        """The sweep's own view of ``name`` (a piece of furniture, a door), or of what belief says
+        an item rests on or in, or of the floor of the room belief puts it in."""
+        for _ in range(3):
+            piece, door = self.site_map.piece(name), self.site_map.door(name)
+            if piece is not None:
+                return self._furniture_view(piece)
+            if door is not None:
+                rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"} & set(door.rooms)
+                return self._door_view(door, sorted(rooms)[0] if rooms else door.rooms[0])
+            support = [a.args[1] for a in sorted(graph.location(name)) if a.predicate in SUPPORT_PREDICATES]
+            if not support:
+                break
+            name = support[0]
+        room = next((r for r in self.site_map.rooms if r.floor == name), None)
+        rooms = [a.args[1] for a in graph.facts if a.predicate == "in_room" and a.args[0] == name]
+        room = room or (self.site_map.room(rooms[0]) if rooms else None)
+        views = self.views(room.name) if room is not None else []
+        return views[-1] if views else None  # the look round its floor
 
     def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
         """Aim at the first of ``names`` that belief can place (the object a question is about,

@@ -4,7 +4,9 @@ It is the executive's state, and the planner's initial state on every replan. It
 looking (:mod:`vap_bt.scene.builder`) and changes in the two ways the paper names (Sec. IV-A,
 "Maintenance"), plus the bookkeeping they need:
 
-* **action-driven** — :meth:`apply` removes an action's delete list and adds its add list, and
+* **action-driven** — :meth:`apply` makes the state difference of the action in current belief
+  (:meth:`GroundAction.diff <vap_bt.domain.knowledge.GroundAction.diff>`: its delete list goes,
+  its add list comes, and conditional effects only where their conditions are believed), and
   remembers what it changed so that :meth:`undo` can take it back when the camera shows the
   action did not happen;
 * **observation-driven** — :meth:`correct` sets one atom to its verified value, and
@@ -94,7 +96,8 @@ class SceneGraph:
         return ch
 
     def apply(self, action: GroundAction) -> Change:
-        ch = self._change("apply", set(action.add), set(action.delete - action.add))
+        diff = action.diff(self.facts)
+        ch = self._change("apply", set(diff.added), set(diff.deleted))
         self._applied.append((action, ch))
         return ch
 

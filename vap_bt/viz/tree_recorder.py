@@ -192,7 +192,7 @@ class TreeRecorder:
             if entry is not None:
                 self._text(L.EV_ACTIONS, *ev.action_result_text(entry))
         if isinstance(node, ApplyEffects) and node.status == Status.SUCCESS and self._first(node):
-            c = _pop(applied, lambda c: c.added <= node.action.add and c.removed <= node.action.delete)
+            c = _pop(applied, lambda c: c.added <= node.action.may_add and c.removed <= node.action.may_delete)
             if c is not None:
                 self._text(L.EV_BELIEF, ev.change_text(c))
         if isinstance(node, ActivePerception):

@@ -1,0 +1,1 @@
+(define (problem d1) (:domain der) (:objects a - thing) (:init) (:goal (ok a)))

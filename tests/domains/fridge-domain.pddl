@@ -1,0 +1,23 @@
+; Fridge-like (after the ADL fridge domain): remove the backplane once no screw holding it is
+; fastened (forall/imply), switch on only with some backplane attached (exists), fix a compressor
+; while the fridge is off or the compressor broken (or).
+(define (domain fridge)
+  (:requirements :typing :adl)
+  (:types screw backplane compressor fridge)
+  (:predicates (fastened ?s - screw) (holds ?s - screw ?b - backplane) (attached ?b - backplane ?f - fridge)
+               (fridge-on ?f - fridge) (ok ?c - compressor) (in ?c - compressor ?f - fridge) (covers ?b - backplane ?c - compressor)
+               (free ?b - backplane))
+  (:action unfasten :parameters (?s - screw ?b - backplane ?f - fridge)
+    :precondition (and (fastened ?s) (holds ?s ?b) (not (fridge-on ?f)))
+    :effect (not (fastened ?s)))
+  (:action remove-backplane :parameters (?b - backplane ?f - fridge)
+    :precondition (and (attached ?b ?f) (not (fridge-on ?f)) (forall (?s - screw) (imply (holds ?s ?b) (not (fastened ?s)))))
+    :effect (and (free ?b) (not (attached ?b ?f))))
+  (:action switch-off :parameters (?f - fridge)
+    :precondition (fridge-on ?f) :effect (not (fridge-on ?f)))
+  (:action switch-on :parameters (?f - fridge)
+    :precondition (and (not (fridge-on ?f)) (exists (?b - backplane) (attached ?b ?f)))
+    :effect (fridge-on ?f))
+  (:action fix :parameters (?c - compressor ?f - fridge)
+    :precondition (and (in ?c ?f) (exists (?b - backplane) (and (covers ?b ?c) (free ?b))) (or (not (fridge-on ?f)) (not (ok ?c))))
+    :effect (ok ?c)))

@@ -1,0 +1,5 @@
+(define (problem hiking-couple) (:domain hiking)
+  (:objects ann bob - person car1 - car tent1 - tent start lake - place)
+  (:init (at-person ann start) (at-person bob start) (at-car car1 start) (at-tent tent1 start) (up tent1)
+         (next start lake))
+  (:goal (and (walked ann lake) (walked bob lake))))

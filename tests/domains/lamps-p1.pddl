@@ -1,0 +1,6 @@
+(define (problem lamps-night) (:domain lamps)
+  (:objects hall kitchen study - room desk_lamp ceiling_lamp porch_lamp - lamp)
+  (:init (robot-at hall) (door hall kitchen) (door kitchen hall) (door hall study) (door study hall)
+         (lamp-in desk_lamp study) (lamp-in ceiling_lamp kitchen) (lamp-in porch_lamp hall)
+         (turned_on desk_lamp) (turned_on ceiling_lamp))
+  (:goal (and (not (turned_on desk_lamp)) (not (turned_on ceiling_lamp)) (turned_on porch_lamp))))

@@ -1,0 +1,5 @@
+(define (problem storage-1) (:domain storage)
+  (:objects h0 - hoist c0 - crate depot0 - depot sa0 sa1 - storearea)
+  (:init (at h0 sa1) (available h0) (on c0 sa0) (in c0 depot0) (in sa0 depot0) (in sa1 depot0)
+         (connected sa0 sa1) (connected sa1 sa0))
+  (:goal (and (on c0 sa1))))
