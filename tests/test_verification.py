@@ -99,20 +99,29 @@ def test_early_stop_asks_fewer_questions_with_the_same_outcome():
     assert len(early.answers) == 4  # after four agreeing answers nothing can change
 
 
-def sim_vlm(truth, visibility: dict[str, float], error_rate: float, seed: int) -> SimVLM:
-    """The simulated VLM over one capture record with the given visibility and truth."""
-    record = CaptureRecord("f-0", 0, visibility, FunctionOracle(truth, lambda: []), lambda: 0)
-    return SimVLM({"f-0": record}.get, error_rate=error_rate, seed=seed)
+def sim_vlm(truth, visibility: dict[str, float], error_rate: float, seed: int, frames: int = 1) -> SimVLM:
+    """The simulated VLM over capture records f-0, f-1, ... with the given visibility and truth."""
+    oracle = FunctionOracle(truth, lambda: [])
+    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, visibility, oracle, lambda: 0) for i in range(frames)}
+    return SimVLM(records.get, error_rate=error_rate, seed=seed)
 
 
 def test_sim_vlm_error_rate_matches_its_parameter():
     truth = {CUP: True}
-    vlm = sim_vlm(lambda a: truth[a], {"cup": 1.0, "table": 1.0}, error_rate=0.2, seed=7)
     n, wrong = 4000, 0
-    for _ in range(n):
-        a = vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), OBS)
+    vlm = sim_vlm(lambda a: truth[a], {"cup": 1.0, "table": 1.0}, error_rate=0.2, seed=7, frames=n)
+    for i in range(n):  # one question about each of n frames: independent draws
+        a = vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0))
         wrong += a.value is not True
     assert abs(wrong / n - 0.2) < 0.025  # ~4 standard errors
+
+
+def test_sim_vlm_answers_do_not_depend_on_the_order_questions_arrive_in():
+    vlm = sim_vlm(lambda a: True, {"cup": 0.6, "table": 1.0}, error_rate=0.3, seed=3, frames=50)
+    qs = [(Query(f"q{j}", about=(CUP,), objects=("cup",)), Frame(f"f-{i}", 0.0)) for i in range(50) for j in range(3)]
+    forward = [vlm.ask(q, f).value for q, f in qs]
+    backward = [vlm.ask(q, f).value for q, f in reversed(qs)][::-1]
+    assert forward == backward and 0 < sum(forward) < len(forward)
 
 
 def test_sim_vlm_does_not_answer_about_a_frame_it_has_no_record_of():
@@ -121,12 +130,12 @@ def test_sim_vlm_does_not_answer_about_a_frame_it_has_no_record_of():
 
 
 def test_sim_vlm_guesses_about_what_it_cannot_see_and_knows_it():
-    vlm = sim_vlm(lambda a: True, {"cup": 0.0, "table": 1.0}, error_rate=0.0, seed=1)
-    hidden = OBS
-    answers = [vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), hidden).value for _ in range(400)]
+    vlm = sim_vlm(lambda a: True, {"cup": 0.0, "table": 1.0}, error_rate=0.0, seed=1, frames=400)
+    answers = [vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
+               for i in range(400)]
     assert 0.35 < sum(answers) / len(answers) < 0.65
-    suff = [vlm.ask(Query("q", purpose="sufficiency", about=(CUP,), objects=("cup", "table")), hidden).value
-            for _ in range(50)]
+    suff = [vlm.ask(Query("q", purpose="sufficiency", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
+            for i in range(50)]
     assert not any(suff), "with no noise it must say the view is insufficient every time"
 
 

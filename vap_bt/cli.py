@@ -59,7 +59,8 @@ def cmd_run(args) -> int:
     cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
                               vlm_error=args.vlm_error, injection=False if args.no_injection else None,
                               max_replans=args.max_replans, planner=args.planner, transport=args.transport,
-                              early_stop=args.early_stop or None)
+                              early_stop=args.early_stop or None, protocol=args.protocol,
+                              viewpoints=args.viewpoints)
     progress = _progress(args.quiet)
     progress(f"task {task.name}: {task.spec.instruction or task.planning.source} "
              f"(world {cfg.world}, seed {cfg.seed}, verify {cfg.verify})")
@@ -141,6 +142,11 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--vlm-error", type=float, help="symbolic VLM per-query error rate (default 0.05)")
     sr.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
     sr.add_argument("--early-stop", action="store_true", help="stop a vote once it is decided")
+    sr.add_argument("--protocol", choices=["paper", "lean"],
+                    help="how checks ask: the paper's Alg. 2 (default), or lean (early stop, questions in flight "
+                         "at once, no re-asking what nothing changed, one confident logprob answer for N votes)")
+    sr.add_argument("--viewpoints", choices=["vlm", "greedy"],
+                    help="where to look from next: the VLM's suggestion (default) or a fixed round (paper H2)")
     sr.add_argument("--max-replans", type=int)
     sr.add_argument("--planner", choices=["fast-downward", "search"], help="engine of the first plan")
     sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",

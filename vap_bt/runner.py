@@ -14,13 +14,14 @@ task and the planner's cache), which is what makes symbolic campaigns fast.
 from __future__ import annotations
 
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from typing import Any, Callable
 
 from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.domain.planner import Planner
+from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import MeteredVLM
 from vap_bt.report import versions
@@ -55,7 +56,7 @@ class RunConfig:
     paraphrases: int = 5
     early_stop: bool = False
     max_replans: int = 10
-    max_ticks: int = 2000
+    max_seconds: float = 900.0
     injection: bool = True
     vlm: str = "sim"
     vlm_error: float = 0.05
@@ -63,12 +64,15 @@ class RunConfig:
     relation_error: float = _DETECTOR.relation_error  # symbolic relation detector
     transport: str = "inproc"
     planner: str = "fast-downward"
+    protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
+    viewpoints: str = "vlm"  # where to look from next: vlm | greedy
+    unseen: str = "look"  # an unsettled precondition: look | go_on | stop
 
     @classmethod
     def from_task(cls, task: Task, **overrides) -> "RunConfig":
         o = task.options
         base = cls(world=task.spec.world, verify=o.verify, budget=o.budget, paraphrases=o.paraphrases,
-                   max_replans=o.max_replans, max_ticks=o.max_ticks, injection=o.injection)
+                   max_replans=o.max_replans, max_seconds=o.max_seconds, injection=o.injection)
         return cls(**{**asdict(base), **{k: v for k, v in overrides.items() if v is not None}})
 
     def detector(self) -> DetectorModel:
@@ -152,17 +156,24 @@ class Session:
         self.vlm.reseed(cfg.seed)
         skills, robot, vlm = self._transport()
         metered = MeteredVLM(vlm)
+        protocol = Protocol.parse(cfg.protocol)
+        if cfg.early_stop:
+            protocol = replace(protocol, early_stop=True)
+        remote = cfg.transport != "inproc"
         settings = ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
-                                     vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=cfg.early_stop),
-                                     max_replans=cfg.max_replans, max_ticks=cfg.max_ticks,
-                                     tick_period_s=0.0 if cfg.transport == "inproc" else TICK_PERIOD_S)
+                                     vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
+                                     max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
+                                     tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
+                                     protocol=protocol, viewpoints=cfg.viewpoints, threads=remote)
         progress = self.progress
         if self.recorder is not None:  # progress lines go to the recording's log as well
             progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
         executive = Executive(self.task.planning, self.planner, skills, robot, robot, metered, settings, progress,
                               on_tree=self.recorder.on_tree if self.recorder is not None else None,
                               prior=self.task.prior, geometry=make_geometry(cfg),
-                              on_survey=lambda survey, graph: scores.append(self._score(survey, graph)))
+                              on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
+                              on_verification=self._score_verification)
+        self._verified: list[bool] = []
         return executive, metered
 
     def build_graph(self, seed: int | None = None) -> dict:
@@ -204,6 +215,12 @@ class Session:
             return InProcessSkillClient(self.skills), InProcessRobot(self.world), self.vlm
         raise ValueError(f"unknown transport {self.cfg.transport!r}")
 
+    def _score_verification(self, v) -> None:
+        """Whether a settled value matched the world at that moment (nothing happens between a
+        check's last frame and its verdict, so the truth now is the truth the frame showed)."""
+        if v.outcome in ("confirmed", "contradicted", "felt", "reused"):
+            self._verified.append(self.world.oracle.holds(v.atom) == v.value)
+
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
         perceived = set(survey.sweep.detected)
@@ -232,7 +249,10 @@ class Session:
                       "detector": detector.describe() if detector is not None else None},
             "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts)},
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
-                           "surveys": [s.to_json() for s in out.surveys]},
+                           "surveys": [s.to_json() for s in out.surveys],
+                           "verifications": {"n": len(self._verified), "correct": sum(self._verified),
+                                             "unsettled": sum(v.outcome == "unsettled" for v in ctx.verifications),
+                                             "reused": sum(v.outcome == "reused" for v in ctx.verifications)}},
             "plans": [p.to_json() for p in out.plans],
             "actions_executed": ctx.actions,
             "situations": [s.to_json() for s in out.situations],
@@ -244,6 +264,7 @@ class Session:
             "ticks": out.ticks,
             "vlm_queries": vlm.total,
             "verifications": [v.to_json() for v in ctx.verifications],
+            "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints},
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],
             "wall_s": round(wall, 4),

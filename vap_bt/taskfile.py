@@ -42,7 +42,7 @@ class Options(BaseModel):
     budget: int = Field(3, ge=0, description="viewpoint budget K of active perception")
     paraphrases: int = Field(5, ge=1, le=5, description="N paraphrases asked per predicate")
     max_replans: int = Field(10, ge=0)
-    max_ticks: int = Field(2000, ge=1)
+    max_seconds: float = Field(900.0, gt=0, description="the episode's budget of wall-clock time")
     injection: bool = True  # Table II situation injection in the world
 
 

@@ -1,72 +1,150 @@
 """ActivePerception: the retry decorator that moves the camera until a verification settles.
 
-It wraps a :class:`~vap_bt.bt.verify_predicate.VerifyPredicate` (paper Alg. 2). After each of
-the child's rounds it weighs every view of the check so far
+It wraps a check — a child that, each time it runs, produces one typed :class:`Round` (today a
+:class:`~vap_bt.bt.verify_predicate.VerifyPredicate`) — and reads nothing of it but its status
+and that round (paper Alg. 2). After each round it weighs every view of the check so far
 (:func:`~vap_bt.perception.verification.verdict`): a settled round decides when no other view
 said otherwise, and views that disagree need more settled rounds to be outvoted. A decided value
 stands: SUCCESS if it matches the expectation; otherwise a *situation* is recorded on the context
-and the decorator fails, which fails the plan's tree and hands control to the executive. While
-nothing is decided, the decorator asks the VLM where to look from, moves there, and ticks the
-child again — at most K moves. With the budget spent and nothing decided, a value stands only if
-every view's answers agreed on it; otherwise the check does not overturn belief and is recorded as
-*unsettled* (the paper returns the last vote here; one vote from a view the VLM judged insufficient
-is too close to a guess to rewrite the scene graph).
+and the decorator fails, which fails the plan's tree and hands control to the executive.
+
+While nothing is decided the decorator moves the camera — at most K times — and runs the child
+again: the viewpoint strategy (:mod:`vap_bt.perception.viewpoints`) gives the direction (the
+VLM's suggestion about the last frame, or the next of the greedy round), and the move is work in
+flight like any other; the child is not ticked meanwhile. With the budget spent and nothing
+decided, a value stands only if every view's answers agreed on it; otherwise the check is
+*unsettled* (the paper returns the last vote here; one vote from a view the VLM judged
+insufficient is too close to a guess to rewrite the scene graph).
+
 An unsettled *goal* atom withholds the executive's claim of success; an unsettled effect lets the
 plan go on (the next action's preconditions are checked before it acts); an unsettled
 *precondition* first asks the body (``ctx.felt``: the gripper knows whether it holds
 something), then follows the context's ``unseen`` policy — by default it is a situation of kind
 ``unseen``: the action does not run, the executive looks for what the check was about and
-replans.
+replans. Under the lean protocol an atom verified earlier, that no action since could have
+changed, is not asked again (``ctx.verified``).
 """
 
 from __future__ import annotations
+
+from concurrent.futures import Future
 
 import py_trees
 from py_trees.common import Status
 
 from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
-from vap_bt.bt.verify_predicate import VerifyPredicate
+from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.perception.verification import suggest_viewpoint, target_of, verdict
+from vap_bt.perception.verification import Round, choice, target_of, verdict
 
 
 class ActivePerception(py_trees.decorators.Decorator):
-    def __init__(self, ctx: ExecutionContext, child: VerifyPredicate, phase: Phase,
+    """Look again, from elsewhere, until a check's views decide (budget K)."""
+
+    def __init__(self, ctx: ExecutionContext, child: py_trees.behaviour.Behaviour, phase: Phase,
                  action: GroundAction | None, step: int) -> None:
         super().__init__(name=f"look(K={ctx.budget})", child=child)
         self.ctx, self.phase, self.action, self.step = ctx, phase, action, step
         self.verify = child
-        self.rounds = []
+        self.rounds: list[Round] = []
         self.moves = 0
+        self._job: Future | None = None  # the viewpoint answer, then the move, in flight
+        self._stage = "look"
+
+    @property
+    def atom(self):
+        return self.verify.atom
 
     def initialise(self) -> None:
-        self.rounds, self.moves = [], 0
+        self.rounds, self.moves, self._job, self._stage = [], 0, None, "look"
+
+    def tick(self):
+        if self.status != Status.RUNNING:
+            self.initialise()
+            reused = self.ctx.verified.get(self.atom)
+            if reused is not None:  # lean: verified before, and nothing since could have changed it
+                self._end_tick(self._settle(reused, "reused"))
+                yield self
+                return
+        if self._stage == "look":  # while a viewpoint is chosen or reached, the check waits
+            yield from self.decorated.tick()
+        self._end_tick(self.update())
+        yield self
+
+    def _end_tick(self, new: Status) -> None:
+        if new != Status.RUNNING:
+            self.stop(new)
+        self.status = new
 
     def update(self) -> Status:
+        if self._stage == "look":
+            if self.verify.status == Status.RUNNING:
+                return Status.RUNNING
+            return self._weigh()
+        if self._stage == "choose":
+            return self._chosen()
+        return self._moved()
+
+    def _weigh(self) -> Status:
         r = self.verify.round
         if r is None:  # the child did not run (interrupted)
             return Status.FAILURE
         self.rounds.append(r)
         v = verdict(self.rounds, exhausted=self.moves >= self.ctx.budget)
         if v is None:
-            atom = self.verify.atom
-            target = target_of(atom)
-            r.direction = suggest_viewpoint(self.ctx.vlm, self.verify.observation, atom, r.questions[0], target)
-            aim = self.ctx.aim(self.ctx.graph, (target, *atom.args))
-            r.moved = self.ctx.camera.move_view(aim, r.direction) if r.direction else False
-            self.moves += 1
+            nxt = self.ctx.viewpoints.next(self.moves, self.atom, r.questions[0] if r.questions else str(self.atom),
+                                           target_of(self.atom))
+            if isinstance(nxt, str):
+                return self._move(nxt)
+            self._job, self._stage = self.ctx.submit(self.ctx.vlm.ask, nxt, self.verify.observation), "choose"
             return Status.RUNNING
         if v.outcome == "unsettled":
-            felt = self.ctx.felt(self.ctx.graph, self.verify.atom)
+            felt = self.ctx.felt(self.ctx.graph, self.atom)
             if felt is not None:  # the camera could not tell; the gripper can
                 return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted")
             return self._settle(self.verify.expected, "unsettled")
         return self._settle(v.value, "confirmed" if v.value == self.verify.expected else "contradicted")
 
+    def _chosen(self) -> Status:
+        if not self._job.done():
+            return Status.RUNNING
+        try:
+            direction = choice(self._job.result())
+        except Exception:  # noqa: BLE001 - no answer: the move is lost, the budget is not refunded
+            direction = None
+        return self._move(direction)
+
+    def _move(self, direction: str | None) -> Status:
+        r = self.rounds[-1]
+        r.direction = direction
+        self.moves += 1
+        if direction is None:
+            r.moved = False
+            self._stage = "look"
+            return Status.RUNNING
+        aim = self.ctx.aim(self.ctx.graph, (target_of(self.atom), *self.atom.args))
+        self._job, self._stage = self.ctx.submit(self.ctx.camera.move_view, aim, direction), "move"
+        return Status.RUNNING
+
+    def _moved(self) -> Status:
+        if not self._job.done():
+            return Status.RUNNING
+        self.rounds[-1].moved = bool(self._job.result())
+        self._job, self._stage = None, "look"
+        return Status.RUNNING  # the child runs again next tick, from the new view
+
+    def terminate(self, new_status: Status) -> None:
+        if new_status == Status.INVALID:
+            cancel_all([self._job])
+            self._job, self._stage = None, "look"
+
     def _settle(self, value: bool, outcome: str) -> Status:
         v = self.verify
         self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
                                                    v.atom, v.expected, value, outcome, list(self.rounds)))
+        self.ctx.record(self.ctx.verifications[-1])
+        if outcome in ("confirmed", "contradicted", "felt"):
+            self.ctx.verified.remember(v.atom, value)
         if self.phase == "goal" and outcome == "unsettled":
             self.ctx.unconfirmed_goal.append(v.atom)
         if outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on":
@@ -74,7 +152,7 @@ class ActivePerception(py_trees.decorators.Decorator):
                                            detail=f"could not see whether {v.atom} holds")
             self.ctx.progress(f"    situation: could not see {'' if v.expected else 'not '}{v.atom}")
             return Status.FAILURE
-        if outcome != "contradicted":  # confirmed, felt, or unsettled where the plan may go on
+        if outcome != "contradicted":  # confirmed, felt, reused, or unsettled where the plan may go on
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]
         self.ctx.situation = Situation(kind, self.action, self.step, v.atom, v.expected, value)

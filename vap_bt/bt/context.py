@@ -9,12 +9,16 @@ executive reads it to decide what to do when a tree fails.
 from __future__ import annotations
 
 import time
+from concurrent.futures import Executor, Future
 from dataclasses import dataclass, field
 from typing import Callable, Literal
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
+from vap_bt.bt.inflight import InlineExecutor
+from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.verification import Round, VoteSettings
+from vap_bt.perception.viewpoints import ViewpointStrategy
 from vap_bt.perception.vlm import VLM
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.robot.camera import Aim, Camera
@@ -70,7 +74,7 @@ class Verification:
     atom: Atom
     expected: bool
     value: bool
-    outcome: Literal["confirmed", "contradicted", "unsettled", "felt"]
+    outcome: Literal["confirmed", "contradicted", "unsettled", "felt", "reused"]
     rounds: list[Round]
 
     def to_json(self) -> dict:
@@ -96,6 +100,35 @@ class Unchecked:
                 "name": self.atom.predicate, "expected": self.expected, "reason": self.reason}
 
 
+class Verified:
+    """Atoms verified earlier and not changeable since (the lean protocol's reuse).
+
+    An entry lives until an executed action could have changed its atom: one whose arguments
+    include one of the atom's objects, or one of whose effects (conditional ones included) could
+    add or delete that atom; the hand's atoms (no arguments, or ``holding``) go after every
+    action, as the hand can lose things on any move. Disabled (always empty) unless the protocol
+    reuses."""
+
+    HAND = frozenset({"holding", "hand_empty"})
+
+    def __init__(self, enabled: bool = False) -> None:
+        self.enabled = enabled
+        self._values: dict[Atom, bool] = {}
+
+    def get(self, atom: Atom) -> bool | None:
+        return self._values.get(atom) if self.enabled else None
+
+    def remember(self, atom: Atom, value: bool) -> None:
+        if self.enabled:
+            self._values[atom] = value
+
+    def executed(self, action: GroundAction) -> None:
+        """``action`` ran (or tried to): forget what it could have changed."""
+        args, changed = set(action.args), action.may_add | action.may_delete
+        self._values = {a: v for a, v in self._values.items()
+                        if not (args & set(a.args) or a in changed or a.predicate in self.HAND or not a.args)}
+
+
 @dataclass
 class ExecutionContext:
     graph: SceneGraph
@@ -117,9 +150,19 @@ class ExecutionContext:
     felt: Callable[[SceneGraph, Atom], bool | None] = lambda graph, atom: None
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
+    protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
+    viewpoints: ViewpointStrategy = field(default_factory=ViewpointStrategy)
+    verified: Verified = field(default_factory=Verified)
+    #: where work in flight runs (a thread pool against a remote model; inline in-process)
+    executor: Executor = field(default_factory=InlineExecutor)
+    #: the runner's record of each verification (scored against the world there; returns nothing)
+    record: Callable[["Verification"], None] = lambda v: None
     #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
     unchecked: dict[tuple, Unchecked] = field(default_factory=dict)
     t0: float = field(default_factory=time.perf_counter)
+
+    def submit(self, fn, *args) -> Future:
+        return self.executor.submit(fn, *args)
 
     def now(self) -> float:
         return round(time.perf_counter() - self.t0, 6)

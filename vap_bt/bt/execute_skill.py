@@ -37,6 +37,7 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         if not state.terminal:
             return Status.RUNNING
         result = self.handle.result()
+        self.ctx.verified.executed(self.action)  # whatever it did, what it touched must be looked at again
         ok = state == GoalState.SUCCEEDED and result is not None and result.success
         self.ctx.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
                                  "message": result.message if result else "", "sent_s": self._sent_at,

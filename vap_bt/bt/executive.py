@@ -36,12 +36,15 @@ import py_trees
 from py_trees.common import Status
 
 from vap_bt.bt.compiler import compile_plan
-from vap_bt.bt.context import ExecutionContext, Situation, VerifyMode
+from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
+from vap_bt.bt.inflight import make_executor
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import UnsolvableError
 from vap_bt.perception.prompts import verifiable
+from vap_bt.perception.protocol import Protocol
+from vap_bt.perception.viewpoints import ViewpointStrategy
 from vap_bt.perception.state_survey import StateAnswer, survey_states
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import VLM
@@ -64,9 +67,15 @@ class ExecutiveSettings:
     budget: int = 3
     vote: VoteSettings = field(default_factory=VoteSettings)
     max_replans: int = 10
-    max_ticks: int = 2000
+    #: the episode's budget in wall-clock seconds (the tree is ticked as fast as work completes,
+    #: so ticks measure nothing; what the robot may spend is time)
+    max_seconds: float = 900.0
     tick_period_s: float = 0.0  # sleep between ticks while a goal runs (0: in-process skills)
     unseen: str = "look"  # what an unsettled precondition does (see vap_bt.bt.context.UnseenPolicy)
+    protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
+    viewpoints: str = "vlm"  # where to look from next: the VLM's suggestion, or the greedy round
+    #: work in flight on a thread pool (a remote model or robot); False: done at once, in-process
+    threads: bool = False
 
 
 @dataclass
@@ -107,13 +116,15 @@ class Executive:
                  on_tree: Callable[[py_trees.trees.BehaviourTree, int], None] | None = None,
                  prior: frozenset[Atom] = frozenset(),
                  geometry: Callable[..., Geometry] | None = None,
-                 on_survey: Callable[[Survey, SceneGraph], None] | None = None) -> None:
+                 on_survey: Callable[[Survey, SceneGraph], None] | None = None,
+                 on_verification: Callable[[Verification], None] | None = None) -> None:
         self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
             task, planner, skills, camera, body, vlm
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
         self.on_survey = on_survey or (lambda survey, graph: None)
+        self.on_verification = on_verification or (lambda v: None)
         self.prior = frozenset(prior)
         self.geometry = geometry
         #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
@@ -125,26 +136,34 @@ class Executive:
 
     def run(self) -> EpisodeOutcome:
         graph, survey = self.perceive()
+        executor = make_executor(self.s.threads)
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, unseen=self.s.unseen, felt=self._felt)
+                               aim=self.builder.aim, unseen=self.s.unseen, felt=self._felt,
+                               protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
+                               verified=Verified(self.s.protocol.reuse), executor=executor,
+                               record=self.on_verification)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
-            plan = self.planner.plan(graph.state(), self.task.goal)
-        except UnsolvableError as exc:
-            out.reason = f"no initial plan: {exc}"
-            return out
-        out.plans.append(plan)
-        self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
-        tree = self._tree(ctx, plan)
-        try:
-            return self._tick_until_done(tree, ctx, plan, out)
+            try:
+                plan = self.planner.plan(graph.state(), self.task.goal)
+            except UnsolvableError as exc:
+                out.reason = f"no initial plan: {exc}"
+                return out
+            out.plans.append(plan)
+            self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
+            tree = self._tree(ctx, plan)
+            try:
+                return self._tick_until_done(tree, ctx, plan, out)
+            finally:
+                self.halt(tree)
         finally:
-            self.halt(tree)
+            executor.shutdown(wait=False, cancel_futures=True)
 
     def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome) -> EpisodeOutcome:
         graph = out.graph
-        while out.ticks < self.s.max_ticks:
+        deadline = time.monotonic() + self.s.max_seconds
+        while time.monotonic() < deadline:
             tree.tick()
             out.ticks += 1
             self.on_tree(tree, out.ticks)
@@ -187,7 +206,7 @@ class Executive:
             out.plans.append(plan)
             self.progress(f"replan #{out.replans} ({plan.engine}, {out.replan_seconds[-1] * 1000:.1f} ms): "
                           f"{len(plan)} actions")
-        out.reason = f"tick budget ({self.s.max_ticks}) exhausted"
+        out.reason = f"time budget ({self.s.max_seconds:g} s) exhausted"
         return out
 
     @staticmethod

@@ -6,17 +6,20 @@ good enough. A round is *settled* when the answers agree and the view is suffici
 active perception (the BT decorator in :mod:`vap_bt.bt.active_perception`) asks the viewpoint
 prompt, moves, and runs another round, up to its budget K.
 
-Two switches go beyond the paper and are off unless asked for: ``early_stop`` stops asking once
-neither the vote nor its consistency can change, and the caller may run rounds concurrently.
+How much is asked, and when, is the verification protocol's business
+(:mod:`vap_bt.perception.protocol`: the paper's, or a lean one); :class:`RoundAsker` carries a
+round out under either without ever waiting for an answer.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
-from vap_bt.perception.vlm import VLM, Query
+from vap_bt.perception.protocol import Protocol
+from vap_bt.perception.vlm import VLM, Answer, Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 from vap_bt.robot.frame import Frame
 
@@ -53,23 +56,100 @@ def objects_of(atom: Atom) -> tuple[str, ...]:
     return atom.args
 
 
-def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings) -> Round:
-    """Ask the paraphrases of ``atom`` about ``obs`` and vote (paper Alg. 2, lines 2–4)."""
-    qs = prompts.questions(atom, s.paraphrases)
-    r = Round(view=obs.frame_id)
-    need = s.agreement * len(qs)
-    for q in qs:
-        ans = vlm.ask(Query(prompts.predicate_query(q), about=(atom,), objects=objects_of(atom)), obs).value
-        r.questions.append(q)
-        r.answers.append(ans if isinstance(ans, bool) else None)
-        if s.early_stop and _decided(r.answers, len(qs), need):
-            break
-    yes = sum(a is True for a in r.answers)
-    no = sum(a is False for a in r.answers)
-    # v_p = 1[mean(y) > 0.5] over the usable answers; with none usable there is no vote
-    r.vote = (yes * 2 > yes + no) if yes + no else None
-    r.consistent = max(yes, no) >= need
-    return r
+class RoundAsker:
+    """One round of questions about one frame, asked as a protocol says, fed answers as they come.
+
+    It never waits: :meth:`to_ask` says which questions to send now (their indices), the caller
+    sends them however it likes (in flight at once, or one after another) and hands each answer
+    to :meth:`give`; :attr:`done` says when the round is decided, and :meth:`finish` votes it.
+    Which questions go when:
+
+    * paper (sequential, no early stop): one after another, every one of the N;
+    * early stop: sequential, stopping once nothing left could change the vote or its consistency;
+    * concurrent: in waves — the fewest answers that could decide the round, all at once, then
+      as many more as could still decide it;
+    * logprobs: the first question alone; an answer whose confidence reaches the agreement share
+      stands for the whole vote, otherwise the others are asked as above.
+    """
+
+    def __init__(self, atom: Atom, frame: Frame, s: VoteSettings, protocol: Protocol | None = None) -> None:
+        self.atom, self.frame, self.s = atom, frame, s
+        self.protocol = protocol or Protocol("paper", early_stop=s.early_stop)
+        self.questions = prompts.questions(atom, s.paraphrases)
+        self.queries = [Query(prompts.predicate_query(q), about=(atom,), objects=objects_of(atom)) for q in self.questions]
+        self.need = s.agreement * len(self.questions)
+        self.answers: dict[int, bool | None] = {}
+        self.asked: list[int] = []
+        self.confident: bool | None = None  # the one logprob answer that stood for the vote
+
+    def _counts(self) -> tuple[int, int]:
+        vals = list(self.answers.values())
+        return sum(a is True for a in vals), sum(a is False for a in vals)
+
+    @property
+    def outstanding(self) -> int:
+        return len(self.asked) - len(self.answers)
+
+    @property
+    def done(self) -> bool:
+        if self.confident is not None:
+            return True
+        if len(self.answers) == len(self.questions):
+            return True
+        early = self.protocol.early_stop or self.protocol.concurrent
+        return early and not self.outstanding and _decided(self._ordered(), len(self.questions), self.need)
+
+    def _ordered(self) -> list[bool | None]:
+        return [self.answers[i] for i in sorted(self.answers)]
+
+    def to_ask(self) -> list[int]:
+        """Indices of the questions to send now (empty: wait, or the round is done)."""
+        if self.done or self.outstanding:
+            return []
+        left = [i for i in range(len(self.questions)) if i not in self.asked]
+        if self.protocol.logprobs and not self.asked:
+            wave = left[:1]
+        elif not self.protocol.concurrent:
+            wave = left[:1]
+        elif not self.protocol.early_stop:
+            wave = left
+        else:
+            yes, no = self._counts()
+            wave = left[:max(1, math.ceil(self.need - 1e-9) - max(yes, no))]
+        self.asked += wave
+        return wave
+
+    def give(self, index: int, answer: Answer) -> None:
+        value = answer.value if isinstance(answer.value, bool) else None
+        self.answers[index] = value
+        if (self.protocol.logprobs and len(self.asked) == 1 and value is not None and answer.confidence is not None
+                and answer.confidence >= self.s.agreement):
+            self.confident = value
+
+    def finish(self) -> Round:
+        """The round as asked: its questions, answers, vote v_p = 1[mean(y) > 0.5] over the usable
+        answers (none usable: no vote) and whether they agree enough to be consistent."""
+        r = Round(view=self.frame.frame_id)
+        for i in sorted(self.answers):
+            r.questions.append(self.questions[i])
+            r.answers.append(self.answers[i])
+        yes, no = self._counts()
+        if self.confident is not None:
+            r.vote, r.consistent = self.confident, True
+            return r
+        r.vote = (yes * 2 > yes + no) if yes + no else None
+        r.consistent = max(yes, no) >= self.need
+        return r
+
+
+def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings, protocol: Protocol | None = None) -> Round:
+    """Ask the paraphrases of ``atom`` about ``obs`` and vote (paper Alg. 2, lines 2–4), waiting
+    for each answer (the survey, and tests; behaviours use :class:`RoundAsker` without waiting)."""
+    asker = RoundAsker(atom, obs, s, protocol)
+    while not asker.done:
+        for i in asker.to_ask():
+            asker.give(i, vlm.ask(asker.queries[i], obs))
+    return asker.finish()
 
 
 def _decided(answers: list[bool | None], total: int, need: float) -> bool:
@@ -77,24 +157,38 @@ def _decided(answers: list[bool | None], total: int, need: float) -> bool:
     yes = sum(a is True for a in answers)
     no = sum(a is False for a in answers)
     left = total - len(answers)
-    vote_fixed = yes > no + left or no + 0 >= yes + left  # ties go to False, as mean(y) > 0.5 does
+    vote_fixed = yes > no + left or no >= yes + left  # ties go to False, as mean(y) > 0.5 does
     consistency_fixed = max(yes, no) >= need or max(yes, no) + left < need
     return vote_fixed and consistency_fixed
 
 
+def sufficiency_query(atom: Atom, question: str) -> Query:
+    """The view-sufficiency prompt (appendix) for a round's first question."""
+    return Query(prompts.view_sufficiency(question), purpose="sufficiency", about=(atom,), objects=objects_of(atom))
+
+
+def viewpoint_query(atom: Atom, question: str, target: str) -> Query:
+    """The viewpoint-selection prompt (appendix): one of left/right/front/behind/above/closer."""
+    return Query(prompts.viewpoint_selection(question, target), kind="choice", purpose="viewpoint",
+                 about=(atom,), objects=objects_of(atom), options=VIEW_DIRECTIONS)
+
+
+def yes_no(answer: Answer) -> bool | None:
+    return answer.value if isinstance(answer.value, bool) else None
+
+
+def choice(answer: Answer) -> str | None:
+    return answer.value if isinstance(answer.value, str) else None
+
+
 def check_sufficiency(vlm: VLM, obs: Frame, atom: Atom, question: str) -> bool | None:
-    """The view-sufficiency prompt (appendix) for the round's first question."""
-    q = Query(prompts.view_sufficiency(question), purpose="sufficiency", about=(atom,), objects=objects_of(atom))
-    ans = vlm.ask(q, obs).value
-    return ans if isinstance(ans, bool) else None
+    """Ask the view-sufficiency question and wait for the answer."""
+    return yes_no(vlm.ask(sufficiency_query(atom, question), obs))
 
 
 def suggest_viewpoint(vlm: VLM, obs: Frame, atom: Atom, question: str, target: str) -> str | None:
-    """The viewpoint-selection prompt (appendix): one of left/right/front/behind/above/closer."""
-    q = Query(prompts.viewpoint_selection(question, target), kind="choice", purpose="viewpoint",
-              about=(atom,), objects=objects_of(atom), options=VIEW_DIRECTIONS)
-    ans = vlm.ask(q, obs).value
-    return ans if isinstance(ans, str) else None
+    """Ask the viewpoint-selection question and wait for the answer."""
+    return choice(vlm.ask(viewpoint_query(atom, question, target), obs))
 
 
 def target_of(atom: Atom) -> str:

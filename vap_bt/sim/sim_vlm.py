@@ -13,7 +13,10 @@ on how much of the named objects that frame shows, never on which strategy asked
   fully visible object, up to twice that for a barely visible one.
 
 Truth for a predicate question is that every atom it concerns holds (for the action-level
-baselines, every atom the action implies). View sufficiency is judged with the visible-object
+baselines, every atom the action implies). The draw for a query is seeded by the run's seed, the
+frame and the prompt, so answers do not depend on the order in which concurrent questions
+arrive (and a question asked twice about one frame gets one answer, as from a model at
+temperature 0). View sufficiency is judged with the visible-object
 rate even at ``v = 0`` (a model can tell that it does not see the thing asked about), its truth
 being ``v >= 0.5``. The viewpoint choice is uniform over the options (a frame-based choice is
 future work). A frame the log does not know (too old, or from elsewhere) gets no answer.
@@ -46,7 +49,6 @@ class SimVLM:
 
     def reseed(self, seed: int) -> None:
         self.seed = seed
-        self.rng = random.Random(seed ^ 0xB1A5)
 
     def describe(self) -> dict:
         return {"backend": self.name, "error_rate": self.error_rate, "seed": self.seed,
@@ -58,14 +60,15 @@ class SimVLM:
         if record is None:
             return Answer("", None)
         v = self._visibility(query, record)
+        rng = random.Random(f"{self.seed}|{frame.frame_id}|{query.kind}|{query.prompt}")
         if query.kind == "choice":
-            choice = self.rng.choice(query.options)
+            choice = rng.choice(query.options)
             return Answer(choice, choice)
         sufficiency = query.purpose == "sufficiency"
         true = (v >= SUFFICIENT_VISIBILITY) if sufficiency else all(map(record.holds, query.about))
         # whether a view shows enough is judgeable even when it shows nothing: no coin flip there
         p = self._p_seen(v) if sufficiency else self._p_wrong(v)
-        value = true != (self.rng.random() < p)
+        value = true != (rng.random() < p)
         return Answer("yes" if value else "no", value)
 
     def _visibility(self, query: Query, record: CaptureRecord) -> float:

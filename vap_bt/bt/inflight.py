@@ -1,0 +1,45 @@
+"""Work in flight: what a behaviour starts and then polls, instead of waiting for it.
+
+py_trees' rule is that ``update()`` never blocks. A camera capture, a VLM question and a
+viewpoint move all take time (a real model answers in hundreds of milliseconds), so behaviours
+hand them to an executor and keep the :class:`~concurrent.futures.Future`: each tick they look
+whether it is done and return RUNNING meanwhile; ``terminate()`` cancels what has not started
+(a question already on the wire is let finish and its answer dropped).
+
+Two executors serve: a bounded thread pool, so that a round's questions are in flight at once
+against a remote model, and :class:`InlineExecutor`, which does the work at submission — for the
+symbolic world's in-process campaigns, where every answer is immediate and threads would only
+cost time (the behaviours are the same; their futures are simply done when they first look).
+"""
+
+from __future__ import annotations
+
+from concurrent.futures import Executor, Future, ThreadPoolExecutor
+from typing import Any, Callable
+
+#: questions to a VLM in flight at once: a round's five paraphrases and its sufficiency question
+MAX_IN_FLIGHT = 8
+
+
+class InlineExecutor(Executor):
+    """Runs each submission at once in the caller's thread; the future is done on return."""
+
+    def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> Future:
+        f: Future = Future()
+        try:
+            f.set_result(fn(*args, **kwargs))
+        except BaseException as exc:  # the behaviour reads it from the future, as from a thread
+            f.set_exception(exc)
+        return f
+
+
+def make_executor(concurrent: bool) -> Executor:
+    """A thread pool for work that takes time, or the inline executor for immediate answers."""
+    return ThreadPoolExecutor(MAX_IN_FLIGHT, thread_name_prefix="inflight") if concurrent else InlineExecutor()
+
+
+def cancel_all(futures) -> None:
+    """Cancel every future that has not started; the rest finish unheard."""
+    for f in futures:
+        if f is not None:
+            f.cancel()
