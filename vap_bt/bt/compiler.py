@@ -18,7 +18,10 @@ Eff+) whose predicate the camera can judge (there are paraphrases for it) and th
 can change (rigid facts are map knowledge). Before claiming success, the goal's atoms are looked
 at once more (``goal``, with the effect checks): an effect confirmed minutes ago may have been
 undone since (a bottle rolled off the counter). The verification mode removes whole phases:
-``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``.
+``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase with nothing to check
+(``find`` has no precondition the camera judges) is left out rather than compiled to an empty
+sequence: an empty sequence does nothing in py_trees, clutters every view of the tree, and is a
+load error in BehaviorTree.CPP ("must have 1 or more children").
 """
 
 from __future__ import annotations
@@ -41,20 +44,23 @@ def checked(literals, knowledge: DomainKnowledge) -> list[Literal]:
 
 
 def _checks(ctx: ExecutionContext, phase: Phase, literals: list[Literal], action: GroundAction | None,
-            step: int) -> py_trees.composites.Sequence:
-    return py_trees.composites.Sequence(phase, memory=True, children=[
-        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in literals])
+            step: int) -> list[py_trees.composites.Sequence]:
+    """The phase's check sequence, as a list of one — or none when there is nothing to check."""
+    if not literals:
+        return []
+    return [py_trees.composites.Sequence(phase, memory=True, children=[
+        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in literals])]
 
 
 def compile_action(ctx: ExecutionContext, action: GroundAction, step: int,
                    knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
     children: list[py_trees.behaviour.Behaviour] = []
     if ctx.mode.pre:
-        children.append(_checks(ctx, "pre", checked(action.preconditions, knowledge), action, step))
+        children += _checks(ctx, "pre", checked(action.preconditions, knowledge), action, step)
     children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action)]
     if ctx.mode.eff:
         adds = [Literal(a) for a in sorted(action.add - action.pre_pos)]  # Eff+ that the action changes
-        children.append(_checks(ctx, "eff", checked(adds, knowledge), action, step))
+        children += _checks(ctx, "eff", checked(adds, knowledge), action, step)
     return py_trees.composites.Sequence(f"a{step}: {action}", memory=True, children=children)
 
 
@@ -62,6 +68,6 @@ def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Li
                  knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
     nodes = [compile_action(ctx, a, i, knowledge) for i, a in enumerate(plan)]
     if ctx.mode.eff:
-        nodes.append(_checks(ctx, "goal", checked(goal, knowledge), None, len(plan)))
+        nodes += _checks(ctx, "goal", checked(goal, knowledge), None, len(plan))
     nodes.append(GoalCheck(ctx, goal, len(plan)))
     return py_trees.composites.Sequence("plan", memory=True, children=nodes)
