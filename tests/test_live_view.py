@@ -53,7 +53,9 @@ CHROMIUM_ARGS = ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no
                  "--disable-background-networking", "--disable-component-update", "--disable-sync",
                  "--no-first-run"]
 WIDTH, HEIGHT = 1920, 1080
-#: the behaviour-tree panel of the default blueprint in that window (left 9/20, above the event log)
+#: the behaviour-tree panel of the default blueprint in that window (left 9/20, above the event
+#: log): its drawing area (inside the borders, under the title bar), and a box within it for counting ink
+TREE_CONTENT = (2, 60, 858, 848)
 TREE_PANEL = (0, 60, 850, 800)
 #: the collapsed time panel's strip at the bottom of the window: a click there sets the time
 TIME_STRIP_Y = HEIGHT - 14
@@ -244,16 +246,17 @@ def _drawing_at(rows: dict, tick: int) -> dict:
     return [d for d in tree_rows(rows) if d["tick"] <= tick][-1]
 
 
-@pytest.mark.slow
-def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
+@contextmanager
+def viewer(rrd: Path, last_tick: int, tmp_path: Path):
+    """The recording in the web viewer in headless chromium; yields the page once it has loaded:
+    the viewer names the recording's id and follows its tick timeline to ``last_tick``."""
     if not os.access(CHROMIUM, os.X_OK):
         pytest.fail(f"{CHROMIUM} is missing: tools/setup.sh installs Debian's chromium")
     from playwright.sync_api import sync_playwright
     from rerun.chunk import RrdReader
 
-    recording_id = RrdReader(boil.path).recordings()[0].recording_id
-    last_tick = boil.report["ticks"]
-    with served(boil.path, tmp_path / "rerun.log") as url, sync_playwright() as pw:
+    recording_id = RrdReader(rrd).recordings()[0].recording_id
+    with served(rrd, tmp_path / "rerun.log") as url, sync_playwright() as pw:
         browser = pw.chromium.launch_persistent_context(
             tempfile.mkdtemp(prefix="chromium-", dir=tmp_path), executable_path=CHROMIUM, headless=True,
             args=CHROMIUM_ARGS, viewport={"width": WIDTH, "height": HEIGHT})
@@ -262,7 +265,6 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
             page.route("**/*", lambda r: r.continue_() if r.request.url.startswith("http://127.0.0.1:") else r.abort())
             page.goto(url)
             page.wait_for_function("() => window._handle !== undefined", timeout=60_000)
-            # loaded: the viewer names our recording and follows its tick timeline to the end
             deadline, state = time.monotonic() + LOAD_TIMEOUT_S, None
             while time.monotonic() < deadline:
                 state = ViewerState.read(page)
@@ -272,36 +274,88 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
             assert state is not None and state.recording_id == recording_id, state
             assert state.ends.get("tick") == last_tick and state.current == ("tick", last_tick), state
             time.sleep(2.0)  # let the last frames render
-            end = _shot(page, tmp_path / "end.png")
-            green, orange = _ink(end, Status.SUCCESS), _ink(end, Status.RUNNING)
-            assert green > 1000, f"the finished tree's green labels are not drawn ({green} px)"
-            assert orange < 30, f"nothing runs at the end, yet orange is drawn in the tree panel ({orange} px)"
-
-            # a tick in the middle, where an action is spread out: set by clicking the time strip,
-            # whose pixel-to-tick scale is read off two calibration clicks
-            target = max((d for d in tree_rows(boil.rows) if 0.3 * last_tick < d["tick"] < 0.7 * last_tick),
-                         key=lambda d: len(d["ids"]))["tick"]
-            xs, ticks = (0.3 * WIDTH, 0.7 * WIDTH), []
-            for x in xs:
-                page.mouse.click(x, TIME_STRIP_Y)
-                time.sleep(1.0)
-                ticks.append(ViewerState.read(page).current[1])
-            assert ticks[1] > ticks[0], f"clicking the time strip did not move the time: {ticks}"
-            x = xs[0] + (target - ticks[0]) * (xs[1] - xs[0]) / (ticks[1] - ticks[0])
-            page.mouse.click(x, TIME_STRIP_Y)
-            page.mouse.move(WIDTH / 2, HEIGHT / 2)
-            time.sleep(3.0)
-            shown = ViewerState.read(page).current[1]
-            drawing = _drawing_at(boil.rows, shown)
-            assert abs(shown - target) <= 0.05 * last_tick, (shown, target)
-            assert any(i.count(".") >= 2 for i in drawing["ids"]), f"no action is spread out at tick {shown}"
-            assert Status.RUNNING in drawing["statuses"]
-            middle = _shot(page, SCREENSHOT)
-            green, orange = _ink(middle, Status.SUCCESS), _ink(middle, Status.RUNNING)
-            assert orange > 100, f"the running path's orange labels are not drawn ({orange} px)"
-            assert green > 100, f"the finished actions' green labels are not drawn ({green} px)"
-            # the camera panel shows the frame of the current verification, not an empty view
-            camera = middle[60:400, 1350:1640, :3]
-            assert camera.std() > 20, "the camera panel is blank"
+            yield page
         finally:
             browser.close()
+
+
+@pytest.mark.slow
+def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
+    last_tick = boil.report["ticks"]
+    with viewer(boil.path, last_tick, tmp_path) as page:
+        end = _shot(page, tmp_path / "end.png")
+        green, orange = _ink(end, Status.SUCCESS), _ink(end, Status.RUNNING)
+        assert green > 1000, f"the finished tree's green labels are not drawn ({green} px)"
+        assert orange < 30, f"nothing runs at the end, yet orange is drawn in the tree panel ({orange} px)"
+
+        # a tick in the middle, where an action is spread out: set by clicking the time strip,
+        # whose pixel-to-tick scale is read off two calibration clicks
+        target = max((d for d in tree_rows(boil.rows) if 0.3 * last_tick < d["tick"] < 0.7 * last_tick),
+                     key=lambda d: len(d["ids"]))["tick"]
+        xs, ticks = (0.3 * WIDTH, 0.7 * WIDTH), []
+        for x in xs:
+            page.mouse.click(x, TIME_STRIP_Y)
+            time.sleep(1.0)
+            ticks.append(ViewerState.read(page).current[1])
+        assert ticks[1] > ticks[0], f"clicking the time strip did not move the time: {ticks}"
+        x = xs[0] + (target - ticks[0]) * (xs[1] - xs[0]) / (ticks[1] - ticks[0])
+        page.mouse.click(x, TIME_STRIP_Y)
+        page.mouse.move(WIDTH / 2, HEIGHT / 2)
+        time.sleep(3.0)
+        shown = ViewerState.read(page).current[1]
+        drawing = _drawing_at(boil.rows, shown)
+        assert abs(shown - target) <= 0.05 * last_tick, (shown, target)
+        assert any(i.count(".") >= 2 for i in drawing["ids"]), f"no action is spread out at tick {shown}"
+        assert Status.RUNNING in drawing["statuses"]
+        middle = _shot(page, SCREENSHOT)
+        green, orange = _ink(middle, Status.SUCCESS), _ink(middle, Status.RUNNING)
+        assert orange > 100, f"the running path's orange labels are not drawn ({orange} px)"
+        assert green > 100, f"the finished actions' green labels are not drawn ({green} px)"
+        _assert_not_cut_off(middle)
+        # the camera panel shows the frame of the current verification, not an empty view
+        camera = middle[60:400, 1350:1640, :3]
+        assert camera.std() > 20, "the camera panel is blank"
+
+
+@pytest.mark.slow
+def test_a_20_action_plan_is_drawn_whole_in_the_tree_panel(tmp_path):
+    """The recorder itself, fed a compiled 20-action tree as ticking leaves it (action k running,
+    the ones before it done), one tick per action: every label of the drawing lies inside the
+    tree panel at the viewer's default zoom (screenshot: docs/live-view-20.png)."""
+    import py_trees
+
+    from test_viz_tree import compiled, plan_of, running_at
+    from vap_bt.viz import TreeRecorder
+
+    _, a = plan_of("gather_kindling.yaml")
+    _, b = plan_of("retrieve_bottles.yaml")
+    root = compiled(actions=(list(a) + list(b))[:20])
+    tree = py_trees.trees.BehaviourTree(root)
+    rrd = tmp_path / "twenty.rrd"
+    with TreeRecorder.open(["save", str(rrd)], name="20 actions") as rec:
+        for k in range(20):
+            running_at(root, k, checks_done=1)
+            rec.on_tree(tree, k + 1)
+    drawn = tree_rows(read(rrd))
+    assert [d["tick"] for d in drawn] == list(range(1, 21))
+    with viewer(rrd, 20, tmp_path) as page:
+        shot = _shot(page, ROOT / "docs" / "live-view-20.png")
+    # the drawing at tick 20 (a19 open): its orange running path and 19 green finished actions
+    orange, green = _ink(shot, Status.RUNNING), _ink(shot, Status.SUCCESS)
+    assert orange > 100 and green > 1000, (orange, green)
+    _assert_not_cut_off(shot)
+
+
+def _assert_not_cut_off(shot: np.ndarray) -> None:
+    """Nothing of the tree is cut off: its ink ends short of every edge of the panel's drawing area."""
+    x0, y0, x1, y1 = TREE_CONTENT
+    ink = _ink_box(shot, TREE_CONTENT)
+    assert x0 + 3 < ink[0] and ink[2] < x1 - 3 and y0 + 3 < ink[1] and ink[3] < y1 - 3, (ink, TREE_CONTENT)
+
+
+def _ink_box(image: np.ndarray, box) -> tuple[int, int, int, int]:
+    """Bounding box, in window pixels, of what is drawn in ``box`` on the view's white background:
+    label frames, edges and arrowheads (dark) and label text (coloured or grey)."""
+    x0, y0, x1, y1 = box
+    ys, xs = np.nonzero(image[y0:y1, x0:x1, :3].min(axis=2) < 200)
+    return x0 + int(xs.min()), y0 + int(ys.min()), x0 + int(xs.max()), y0 + int(ys.max())
