@@ -241,6 +241,22 @@ def _shot(page, path: Path) -> np.ndarray:
     return cv2.cvtColor(cv2.imread(str(path)), cv2.COLOR_BGR2RGB)
 
 
+def _skill_in_flight(rows: dict, first_step: int = 2) -> int:
+    """The middle tick of the first stretch where action ``first_step`` or a later one is open
+    with ``✓ pre`` and its ``execute`` node running: the moment docs/live-view.png shows."""
+    def shows(d: dict) -> bool:
+        at = dict(zip(d["ids"], zip(d["labels"], d["statuses"])))
+        return any(i.count(".") == 1 and int(i.split(".")[1]) >= first_step and
+                   at.get(f"{i}.0", ("", None))[0] == "✓ pre" and at.get(f"{i}.1", ("", None))[1] == Status.RUNNING
+                   for i in at)
+
+    ticks = [d["tick"] for d in tree_rows(rows)]
+    flags = [shows(d) for d in tree_rows(rows)]
+    start = flags.index(True)
+    end = next((k for k in range(start, len(flags)) if not flags[k]), len(flags))
+    return (ticks[start] + ticks[end - 1]) // 2 if end - 1 > start else ticks[start]
+
+
 def _drawing_at(rows: dict, tick: int) -> dict:
     """The tree drawing the viewer shows at ``tick``: the last one logged at or before it."""
     return [d for d in tree_rows(rows) if d["tick"] <= tick][-1]
@@ -288,10 +304,10 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         assert green > 1000, f"the finished tree's green labels are not drawn ({green} px)"
         assert orange < 30, f"nothing runs at the end, yet orange is drawn in the tree panel ({orange} px)"
 
-        # a tick in the middle, where an action is spread out: set by clicking the time strip,
-        # whose pixel-to-tick scale is read off two calibration clicks
-        target = max((d for d in tree_rows(boil.rows) if 0.3 * last_tick < d["tick"] < 0.7 * last_tick),
-                     key=lambda d: len(d["ids"]))["tick"]
+        # a tick where a later action is spread out, its preconditions confirmed and its skill in
+        # flight (the middle of that stretch), set by clicking the time strip, whose pixel-to-tick
+        # scale is read off two calibration clicks
+        target = _skill_in_flight(boil.rows)
         xs, ticks = (0.3 * WIDTH, 0.7 * WIDTH), []
         for x in xs:
             page.mouse.click(x, TIME_STRIP_Y)
@@ -306,7 +322,7 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         drawing = _drawing_at(boil.rows, shown)
         assert abs(shown - target) <= 0.05 * last_tick, (shown, target)
         assert any(i.count(".") >= 2 for i in drawing["ids"]), f"no action is spread out at tick {shown}"
-        assert Status.RUNNING in drawing["statuses"]
+        assert Status.RUNNING in drawing["statuses"] and Status.SUCCESS in drawing["statuses"]
         middle = _shot(page, SCREENSHOT)
         green, orange = _ink(middle, Status.SUCCESS), _ink(middle, Status.RUNNING)
         assert orange > 100, f"the running path's orange labels are not drawn ({orange} px)"
