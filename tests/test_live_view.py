@@ -9,8 +9,8 @@ One recording, made as a user makes it — ``vap-bt run trees/boil_water.yaml --
 * served with ``rerun --serve-web --bind 127.0.0.1`` (web viewer and gRPC proxy on loopback only)
   and opened in Debian's headless ``chromium``, driven by Playwright (which cannot download
   browsers here, hence ``executable_path``). WebGL runs on SwiftShader (``--use-angle=swiftshader
-  --enable-unsafe-swiftshader``); ``--disable-gpu`` is not passed, as it would turn WebGL off and
-  the viewer would not draw. Every request that is not to 127.0.0.1 (fonts, telemetry, the
+  --enable-unsafe-swiftshader``); ``--disable-gpu`` is left out: it is not needed (tried: the
+  viewer draws with or without it). Every request that is not to 127.0.0.1 (fonts, telemetry, the
   version check) is aborted by the page's router, so nothing leaves the machine.
 
 The page counts as having loaded the recording when the viewer's own state
