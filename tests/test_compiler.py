@@ -7,6 +7,7 @@ import pytest
 
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
+from vap_bt.bt.compiler import unchecked_reason
 from vap_bt.bt.execute_skill import ExecuteSkill
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
@@ -29,11 +30,17 @@ def test_tree_shape_for_both(cup):
     assert [c.name for c in root.children[:-2]] == [f"a{i}: {a}" for i, a in enumerate(actions)]
     assert isinstance(root.children[-1], GoalCheck)
     assert root.children[-2].name == "goal" and checks(root.children[-2]) == ["on(cup, counter)"]
-    for step in root.children[:-2]:
+    for step, action in zip(root.children[:-2], actions):
         assert step.memory
         kinds = [type(c) for c in step.children]
-        assert kinds == [py_trees.composites.Sequence, ExecuteSkill, ApplyEffects, py_trees.composites.Sequence]
-        assert [step.children[0].name, step.children[3].name] == ["pre", "eff"]
+        # a phase with nothing to check is left out (find: no precondition the camera judges)
+        has_pre = any(unchecked_reason(l.atom.predicate, task.knowledge) is None for l in action.preconditions)
+        assert kinds == [py_trees.composites.Sequence] * has_pre + [
+            ExecuteSkill, ApplyEffects, py_trees.composites.Sequence]
+        assert [c.name for c in step.children if isinstance(c, py_trees.composites.Sequence)] == (
+            ["pre"] * has_pre + ["eff"])
+    assert any(a.name == "find" for a in actions), "the plan should hold an action without checked preconditions"
+    assert not all(isinstance(s.children[0], py_trees.composites.Sequence) for s in root.children[:-2])
 
 
 def test_grasp_checks_what_the_camera_can_judge(cup):

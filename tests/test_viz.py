@@ -96,34 +96,49 @@ def test_recording_is_a_valid_rrd_with_the_tree_graph(recorded):
     assert verify.returncode == 0, verify.stderr
     printed = subprocess.run([str(RERUN), "rrd", "print", str(path)], capture_output=True, text=True, env=env,
                              timeout=60).stdout
-    assert "/tree - data columns: [GraphEdges:edges" in printed
-    assert "/tree - data columns: [GraphNodes:colors GraphNodes:labels GraphNodes:node_ids" in printed
-    for entity in ("/tree", "/events/plan", "/events/actions", "/events/rounds", "/events/verifications",
-                   "/events/situations", "/events/belief", "/scene/facts", "/scene/graph", "/verification/round"):
+    assert ("/tree - data columns: [GraphEdges:edges GraphEdges:graph_type GraphNodes:colors GraphNodes:labels "
+            "GraphNodes:node_ids GraphNodes:positions") in printed
+    assert "/tree_text - data columns: [TextDocument:media_type TextDocument:text]" in printed
+    for entity in ("/tree", "/tree_text", "/events/plan", "/events/actions", "/events/rounds", "/events/verifications",
+                   "/events/situations", "/events/belief", "/scene/facts", "/scene/graph", "/verification/round",
+                   "/stats/vlm_queries", "/stats/replans"):
         assert rows[entity], f"nothing logged at {entity}"
 
 
-def test_tree_structure_per_plan_and_status_colours_per_tick(recorded):
+def tree_rows(rows: dict) -> list[dict]:
+    """The drawing of the tree per logged tick: ids, labels, positions, statuses, edges."""
+    return [{"tick": r["tick"], "ids": r["GraphNodes:node_ids"], "labels": r["GraphNodes:labels"],
+             "positions": r["GraphNodes:positions"], "statuses": [STATUS_OF[rgb(c)] for c in r["GraphNodes:colors"]],
+             "edges": [(e["first"], e["second"]) for e in r["GraphEdges:edges"]]}
+            for r in rows["/tree"] if r.get("GraphNodes:node_ids")]
+
+
+def test_tree_drawing_per_tick_folds_what_is_not_running(recorded):
     _, outcome, rows = recorded
-    edges = [r for r in rows["/tree"] if r.get("GraphEdges:edges")]
-    nodes = [r for r in rows["/tree"] if r.get("GraphNodes:node_ids")]
-    assert len(edges) == len(outcome.plans) == 2  # the first tree and the one swapped in by the replan
-    situation_tick = edges[1]["tick"] - 1
-    ticks = [r["tick"] for r in nodes]
+    drawn = tree_rows(rows)
+    ticks = [d["tick"] for d in drawn]
     assert ticks == sorted(set(ticks)) and ticks[0] == 1 and ticks[-1] == outcome.ticks
-    assert edges[0]["tick"] == 1 and 1 < edges[1]["tick"] <= outcome.ticks
-    for r in nodes:  # a tree: every node but the root has one parent
-        ids = r["GraphNodes:node_ids"]
-        assert len(set(ids)) == len(ids) and ids[0] == "0"
-    statuses = {r["tick"]: [STATUS_OF[rgb(c)] for c in r["GraphNodes:colors"]] for r in nodes}
-    labels = {r["tick"]: r["GraphNodes:labels"] for r in nodes}
-    assert labels[1][0] == "plan" and labels[1][-1] == "goal check"
-    assert statuses[situation_tick][0] == Status.FAILURE  # the tick the effect check failed
-    assert statuses[outcome.ticks][0] == Status.SUCCESS and statuses[outcome.ticks][-1] == Status.SUCCESS
-    # logged only on change: two consecutive rows of one tree never carry the same colours
-    for a, b in zip(nodes, nodes[1:]):
-        if a["GraphNodes:node_ids"] == b["GraphNodes:node_ids"]:
-            assert a["GraphNodes:colors"] != b["GraphNodes:colors"]
+    for d in drawn:  # a tree over the visible nodes: each node but the root hangs from its parent
+        assert d["ids"][0] == "0" and len(set(d["ids"])) == len(d["ids"])
+        assert sorted(b for _, b in d["edges"]) == sorted(d["ids"][1:])
+        assert all(b.rsplit(".", 1)[0] == a for a, b in d["edges"])
+    first, last = drawn[0], drawn[-1]
+    assert first["labels"][0].startswith("▶ plan") and first["statuses"][0] == Status.RUNNING
+    assert any(i.count(".") >= 2 for i in first["ids"]), "the running first action is spread out"
+    # the tick the effect check failed: the failing action stays open, its check marked ✗
+    failed = next(d for d in drawn if d["statuses"][0] == Status.FAILURE)
+    sit = outcome.situations[0]
+    failing = [l for l, st in zip(failed["labels"], failed["statuses"]) if st == Status.FAILURE]
+    assert failing[0].startswith("✗ plan") and failing[-1].split("\n")[0] == f"✗ {sit.atom}"
+    assert failing[1] == f"✗ a{sit.step}: {sit.action}" and failing[2] == f"✗ {sit.kind[:3]}"
+    # the final tick: every node of the replanned tree succeeded, each action folded to one node
+    assert last["statuses"] and set(last["statuses"]) == {Status.SUCCESS}
+    assert all(i.count(".") <= 1 for i in last["ids"]) and last["labels"][-1] == "✓ goal check"
+    # logged only on change
+    for a, b in zip(drawn, drawn[1:]):
+        assert (a["labels"], a["statuses"], a["ids"]) != (b["labels"], b["statuses"], b["ids"])
+    text = rows["/tree_text"][-1]["TextDocument:text"][0]
+    assert text.startswith("{-} plan [✓]") and "[-]" not in text and "[✕]" not in text
 
 
 def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
@@ -150,6 +165,8 @@ def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
     plan = [t for t in texts(rows, "/events/plan") if t.startswith(("episode ", "plan: ", "replan #"))]
     assert plan[0].startswith("episode 1") and plan[1].startswith("plan: ") and plan[2].startswith("replan #1")
     assert any(t.startswith("survey: ") for t in texts(rows, "/events/plan"))
+    levels = {r["TextLog:text"][0].split(":")[0]: r["TextLog:level"][0] for r in rows["/events/plan"]}
+    assert levels["replan #1"] == "WARN" and levels["plan"] == "INFO", "a replan is a warning"
 
 
 def test_belief_is_logged_when_it_changes(recorded):
@@ -175,6 +192,9 @@ def test_episodes_of_one_session_share_a_timeline(symbolic, tmp_path):
         "episode 1", "episode 2"]
     ticks = [r["tick"] for r in rows["/tree"]]
     assert ticks == sorted(ticks) and ticks[-1] == first.ticks + second.ticks
+    queries = [r["Scalars:scalars"][0] for r in rows["/stats/vlm_queries"]]
+    assert queries == sorted(queries) and queries[-1] == sum(
+        v.to_json()["queries"] for o in (first, second) for v in o.context.verifications)
 
 
 @pytest.mark.slow

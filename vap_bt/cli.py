@@ -4,6 +4,7 @@
 ``vap-bt run TASK.yaml``             run a task end to end and print a JSON report
 ``vap-bt run --domain D --problem P`` the same for any classical PDDL domain (what Fast Downward runs)
 ``vap-bt export TASK.yaml``          print the compiled tree as BehaviorTree.CPP XML
+``vap-bt tree TASK.yaml``            print the compiled tree (ascii, dot or xml) without running it
 ``vap-bt skills``                    list the installed skill plugins
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
 
@@ -98,11 +99,13 @@ def cmd_run(args) -> int:
     return EXIT_OK if ok else EXIT_GOAL_NOT_REACHED
 
 
-def cmd_export(args) -> int:
-    """Plan a task and print its compiled tree as BehaviorTree.CPP XML."""
+def _compiled_tree(args):
+    """Plan a task from its stated initial state and compile the plan into the executive's tree.
+
+    Planning only: no world runs and nothing is perceived, so the tree is the one the executive
+    would start from if the first survey saw exactly what the task file states."""
     from vap_bt.bt.compiler import compile_plan
     from vap_bt.bt.context import ExecutionContext, VerifyMode
-    from vap_bt.bt.export import to_btcpp_xml
     from vap_bt.domain.planner import Planner
     from vap_bt.scene.graph import SceneGraph
 
@@ -112,26 +115,83 @@ def cmd_export(args) -> int:
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
                            budget=task.options.budget)
-    xml = to_btcpp_xml(compile_plan(ctx, plan.actions, planning.goal, planning.knowledge))
-    if args.output:
-        Path(args.output).write_text(xml)
+    return compile_plan(ctx, plan.actions, planning.goal, planning.knowledge)
+
+
+def _write(text: str, output: str | None) -> None:
+    if output:
+        Path(output).write_text(text)
     else:
-        sys.stdout.write(xml)
+        sys.stdout.write(text)
+
+
+def cmd_export(args) -> int:
+    """Plan a task and print its compiled tree as BehaviorTree.CPP XML."""
+    from vap_bt.bt.export import to_btcpp_xml
+
+    _write(to_btcpp_xml(_compiled_tree(args)), args.output)
     return EXIT_OK
 
 
+def _dot(graph) -> str:
+    """py_trees' dot graph as text, its node IDs quoted: py_trees names a node by its behaviour's
+    name, and pydot leaves ``a0: find(cup)`` bare, which Graphviz reads as node ``a0``, port ``find(cup)``."""
+    def quoted(name: str) -> str:
+        return name if name.startswith('"') else '"' + name.replace('"', '\\"') + '"'
+
+    for node in graph.get_nodes():  # pydot has split the name at its colon into name and "port"
+        node.obj_dict["name"] = quoted(node.get_name() + (node.obj_dict.pop("port", None) or ""))
+    for edge in graph.get_edges():
+        edge.obj_dict["points"] = tuple(quoted(x) for x in edge.obj_dict["points"])
+    return graph.to_string()
+
+
+def cmd_tree(args) -> int:
+    """Plan a task and print its compiled tree without running it: py_trees' ascii or dot display,
+    or the BehaviorTree.CPP v4 XML of ``export``."""
+    import py_trees
+
+    from vap_bt.bt.export import to_btcpp_xml
+
+    root = _compiled_tree(args)
+    if args.format == "xml":
+        text = to_btcpp_xml(root)
+    elif args.format == "dot":
+        text = _dot(py_trees.display.dot_tree(root))
+    else:
+        text = py_trees.display.ascii_tree(root)
+    _write(text, args.output)
+    return EXIT_OK
+
+
+def _examples(*lines: str) -> dict:
+    """``add_parser``/``ArgumentParser`` keywords that end a command's ``--help`` with examples."""
+    return {"epilog": "examples:\n" + "\n".join(f"  {l}" for l in lines),
+            "formatter_class": argparse.RawDescriptionHelpFormatter}
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans")
+    p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans",
+                                **_examples("vap-bt run trees/collect_cup.yaml",
+                                            "vap-bt tree trees/collect_cup.yaml",
+                                            "vap-bt run trees/boil_water.yaml --world pybullet --rerun save run.rrd",
+                                            "vap-bt COMMAND --help   (examples for each command)"))
     p.add_argument("-v", "--verbose", action="store_true", help="debug logging")
     sub = p.add_subparsers(dest="command", required=True)
 
-    sp = sub.add_parser("plan", help="print a plan for a PDDL domain and problem")
+    sp = sub.add_parser("plan", help="print a plan for a PDDL domain and problem", **_examples(
+        "vap-bt plan tests/domains/gripper-domain.pddl tests/domains/gripper-p4.pddl",
+        "vap-bt plan tests/domains/blocksworld-domain.pddl tests/domains/blocksworld-p6.pddl --engine search"))
     sp.add_argument("domain")
     sp.add_argument("problem")
     sp.add_argument("--engine", choices=["fast-downward", "search"], default="fast-downward")
     sp.set_defaults(func=cmd_plan)
 
-    sr = sub.add_parser("run", help="run a task (or a PDDL problem) end to end")
+    sr = sub.add_parser("run", help="run a task (or a PDDL problem) end to end", **_examples(
+        "vap-bt run trees/collect_cup.yaml --seed 3 --report out/r.json",
+        "vap-bt run trees/boil_water.yaml --world pybullet --no-injection --rerun save run.rrd",
+        "vap-bt run trees/boil_water.yaml --verify none          # the closed-world baseline",
+        "vap-bt run --domain D.pddl --problem P.pddl --world symbolic --no-injection"))
     sr.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
     sr.add_argument("--domain")
     sr.add_argument("--problem")
@@ -160,13 +220,30 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
     sr.set_defaults(func=cmd_run)
 
-    se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML")
+    se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML", **_examples(
+        "vap-bt export trees/collect_cup.yaml -o tree.xml",
+        "vap-bt export trees/pick_plate.yaml --verify eff"))
     se.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
     se.add_argument("--domain")
     se.add_argument("--problem")
     se.add_argument("--verify", choices=["both", "pre", "eff", "none"])
     se.add_argument("-o", "--output", help="write the XML here instead of stdout")
     se.set_defaults(func=cmd_export)
+
+    st = sub.add_parser("tree", help="plan a task and print its compiled tree without running it", **_examples(
+        "vap-bt tree trees/collect_cup.yaml                      # py_trees' ascii tree",
+        "vap-bt tree trees/collect_cup.yaml --format dot | dot -Tsvg > tree.svg",
+        "vap-bt tree trees/boil_water.yaml --format xml --verify eff   # BehaviorTree.CPP v4 XML"),
+        description="Plans from the task file's stated initial state (planning only: no world runs, "
+                    "nothing is perceived) and prints the tree the executive would start with.")
+    st.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
+    st.add_argument("--domain")
+    st.add_argument("--problem")
+    st.add_argument("--verify", choices=["both", "pre", "eff", "none"])
+    st.add_argument("--format", choices=["ascii", "dot", "xml"], default="ascii",
+                    help="ascii (default) and dot: py_trees' own display; xml: the BehaviorTree.CPP v4 export")
+    st.add_argument("-o", "--output", help="write the tree here instead of stdout")
+    st.set_defaults(func=cmd_tree)
 
     _add_transport_commands(sub)
     return p
@@ -178,11 +255,14 @@ def _add_transport_commands(sub) -> None:
     except ImportError:  # the transport room is optional for plan/run
         return
     if hasattr(serve, "add_skills_arguments"):
-        sk = sub.add_parser("skills", help="list installed skill plugins")
+        sk = sub.add_parser("skills", help="list installed skill plugins", **_examples(
+            "vap-bt skills", "vap-bt skills --json"))
         serve.add_skills_arguments(sk)
         sk.set_defaults(func=serve.run_skills)
     if hasattr(serve, "add_serve_arguments"):
-        sv = sub.add_parser("serve", help="host a robot's skills over Zenoh")
+        sv = sub.add_parser("serve", help="host a robot's skills over Zenoh", **_examples(
+            "vap-bt serve --robot ur5e --world symbolic --task trees/collect_cup.yaml",
+            "vap-bt serve --robot base --robot ur5e --world pybullet --task trees/boil_water.yaml"))
         serve.add_serve_arguments(sv)
         sv.set_defaults(func=serve.run_serve)
 

@@ -24,7 +24,10 @@ it) and that some action can change (rigid facts are map knowledge); every other
 on the context as unchecked, with the reason, for the report. Before claiming success, the goal's
 atoms are looked at once more (``goal``, with the effect checks): an effect confirmed minutes ago
 may have been undone since (a bottle rolled off the counter). The verification mode removes whole
-phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``.
+phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase with nothing to
+check (``find`` has no precondition the camera judges) is left out rather than compiled to an
+empty sequence: an empty sequence does nothing in py_trees, clutters every view of the tree, and
+is a load error in BehaviorTree.CPP ("must have 1 or more children").
 """
 
 from __future__ import annotations
@@ -53,7 +56,8 @@ def unchecked_reason(predicate: str, knowledge: DomainKnowledge) -> str | None:
 
 
 def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None, step: int,
-            knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
+            knowledge: DomainKnowledge) -> list[py_trees.composites.Sequence]:
+    """The phase's check sequence, as a list of one — or none when there is nothing to check."""
     asked = []
     for l in literals:
         reason = unchecked_reason(l.atom.predicate, knowledge)
@@ -62,8 +66,10 @@ def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction 
         else:
             name = str(action) if action else "goal"
             ctx.unchecked.setdefault((phase, name, l), Unchecked(phase, name, l.atom, l.positive, reason))
-    return py_trees.composites.Sequence(phase, memory=True, children=[
-        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in asked])
+    if not asked:
+        return []
+    return [py_trees.composites.Sequence(phase, memory=True, children=[
+        ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in asked])]
 
 
 def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowledge: DomainKnowledge,
@@ -73,10 +79,10 @@ def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowl
     expected = expected or expect(ctx.graph.state(), [action])[0]
     children: list[py_trees.behaviour.Behaviour] = []
     if ctx.mode.pre:
-        children.append(_checks(ctx, "pre", expected.support, action, step, knowledge))
+        children += _checks(ctx, "pre", expected.support, action, step, knowledge)
     children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action, expected.diff)]
     if ctx.mode.eff:
-        children.append(_checks(ctx, "eff", expected.effects, action, step, knowledge))
+        children += _checks(ctx, "eff", expected.effects, action, step, knowledge)
     return py_trees.composites.Sequence(f"a{step}: {action}", memory=True, children=children)
 
 
@@ -85,6 +91,6 @@ def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Li
     steps = expect(ctx.graph.state(), plan, goal)
     nodes = [compile_action(ctx, a, i, knowledge, e) for i, (a, e) in enumerate(zip(plan, steps))]
     if ctx.mode.eff:
-        nodes.append(_checks(ctx, "goal", goal, None, len(plan), knowledge))
+        nodes += _checks(ctx, "goal", goal, None, len(plan), knowledge)
     nodes.append(GoalCheck(ctx, goal, len(plan)))
     return py_trees.composites.Sequence("plan", memory=True, children=nodes)

@@ -6,7 +6,13 @@ failure and resumes a running child, which is BT.CPP's ``Sequence``; without mem
 ``ReactiveSequence``; selectors map to ``Fallback``/``ReactiveFallback`` likewise. The executive's
 own nodes are declared in a ``TreeNodesModel`` with their ports, and their parameters become port
 attributes (``action``, ``args``, ``predicate``, ...), so a BT.CPP runtime that registers nodes of
-those IDs could tick the same tree.
+those IDs ticks the same tree (``tests/test_btcpp.py`` loads and ticks every task's export in
+BehaviorTree.CPP 4 itself).
+
+BT.CPP refuses a control node without children, where py_trees ticks it to its result at once
+(an empty sequence succeeds, an empty selector fails). The compiler emits none, but a tree built
+by hand may hold one: it is written as the leaf with that result (``AlwaysSuccess`` /
+``AlwaysFailure``) under the same name, so the export stays node for node and always loads.
 """
 
 from __future__ import annotations
@@ -25,7 +31,7 @@ from vap_bt.bt.verify_predicate import VerifyPredicate
 NODE_MODELS: dict[str, tuple[str, tuple[str, ...]]] = {
     "ExecuteSkill": ("Action", ("action", "args")),
     "ApplyEffects": ("Action", ("action", "args")),
-    "VerifyPredicate": ("Condition", ("predicate", "args", "expected")),
+    "VerifyPredicate": ("Action", ("predicate", "args", "expected")),  # RUNNING while its round is in flight
     "ActivePerception": ("Decorator", ("budget", "phase")),
     "GoalCheck": ("Condition", ("goal",)),
 }
@@ -36,7 +42,9 @@ def _args(xs) -> str:
 
 
 def _element(node: py_trees.behaviour.Behaviour) -> ET.Element:
-    if isinstance(node, py_trees.composites.Sequence):
+    if isinstance(node, py_trees.composites.Composite) and not node.children:
+        el = ET.Element("AlwaysFailure" if isinstance(node, py_trees.composites.Selector) else "AlwaysSuccess")
+    elif isinstance(node, py_trees.composites.Sequence):
         el = ET.Element("Sequence" if node.memory else "ReactiveSequence")
     elif isinstance(node, py_trees.composites.Selector):
         el = ET.Element("Fallback" if node.memory else "ReactiveFallback")

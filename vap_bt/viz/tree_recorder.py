@@ -8,8 +8,11 @@ history of changes. The recorder reads all of it *incrementally* — it keeps ho
 verifications and belief changes it has logged, and which rounds and goals it has seen — so each
 tick costs only what is new, and logs only what changed:
 
-* the tree (``tree``): its edges and tidy layout when a new tree is swapped in (first plan, each
-  replan), its node colours whenever a status differs from the last logged tick;
+* the tree (``tree``): the drawing of :mod:`~vap_bt.viz.tree_graph` (nodes, positions, status
+  colours, edges) whenever it differs from the last one logged, and beside it (``tree_text``)
+  the whole tree in words with status marks (:mod:`~vap_bt.viz.tree_text`) whenever a status,
+  feedback message or view count changed — unchanged ticks log nothing, which keeps a tick cheap
+  (the check is one pass over the nodes' statuses);
 * the events (``events/*``), in the order the tree ran them: plan and replan, action start and
   result, each round of looking with its questions and answers, each settled verification, each
   situation, each change of belief;
@@ -17,7 +20,9 @@ tick costs only what is new, and logs only what changed:
   with its round because a ``VerifyPredicate`` keeps the observation it voted on until it runs
   again; with the round's question/answer page (``verification/round``);
 * the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes) at the start of an
-  episode and whenever it changed.
+  episode and whenever it changed;
+* counters as time series (``stats/vlm_queries``, ``stats/replans``): the VLM queries of the
+  settled verifications so far, and the replans, whenever they grow.
 
 Timelines: ``tick`` (the executive's tick, counted on across the episodes of a session so time
 never runs backwards), ``time`` (wall clock) and ``view`` (images logged so far: several rounds
@@ -44,7 +49,8 @@ from vap_bt.viz import layout as L
 from vap_bt.viz.observation_view import camera_entities, has_pixels, segment_classes
 from vap_bt.viz.scene_view import facts_document, facts_graph, object_boxes
 from vap_bt.viz.sink import OpenRecording, SinkSpec, open_recording
-from vap_bt.viz.tree_graph import TreeGraph
+from vap_bt.viz.tree_graph import TreeGraph, TreeView
+from vap_bt.viz.tree_text import tree_document
 
 
 class TreeRecorder:
@@ -61,7 +67,10 @@ class TreeRecorder:
         self._ctx: ExecutionContext | None = None
         self._tree: py_trees.trees.BehaviourTree | None = None
         self._graph: TreeGraph | None = None
-        self._statuses: tuple[Status, ...] | None = None
+        self._signature: tuple | None = None
+        self._view: TreeView | None = None
+        self.queries = 0  # VLM queries of the settled verifications (``stats/vlm_queries``)
+        self._tree_bounds: tuple[float, float, float, float] | None = None
         self._reset_indices()
         self._classes = None
 
@@ -101,13 +110,17 @@ class TreeRecorder:
         applied = [c for c in pending_changes if c.cause == "apply"]
         actions = ctx.actions[self._n_actions:]
         self._n_actions = len(ctx.actions)
-        verifications = ctx.verifications[self._n_verifications:]
+        n_before = self._n_verifications
+        verifications = ctx.verifications[n_before:]
         self._n_verifications = len(ctx.verifications)
         self._walk(tree.root, actions, verifications, applied)
         for entry in actions:  # anything the walk could not place (not expected)
             self._text(L.EV_ACTIONS, *ev.action_result_text(entry))
         for v in verifications:
             self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
+        if self._n_verifications > n_before:
+            self.queries += sum(v.to_json()["queries"] for v in ctx.verifications[n_before:])
+            self.stream.log(L.STATS_QUERIES, rr.Scalars(self.queries))
         for c in applied:
             self._text(L.EV_BELIEF, ev.change_text(c))
         if ctx.situation is not None and ctx.situation is not self._situation:
@@ -115,10 +128,7 @@ class TreeRecorder:
             self._text(L.EV_SITUATIONS, ev.situation_text(ctx.situation), ev.WARN)
         if pending_changes:
             self._log_belief(ctx, pending_changes[-1])
-        statuses = self._graph.statuses()
-        if new_tree or statuses != self._statuses:
-            self.stream.log(L.TREE, self._graph.status_nodes(statuses))
-            self._statuses = statuses
+        self._log_tree(new_tree)
 
     # ---- free-form notes and the end ----------------------------------------------------------
 
@@ -160,7 +170,7 @@ class TreeRecorder:
     def _begin_episode(self, ctx: ExecutionContext) -> None:
         if self._ctx is not None:
             self._offset += self._last_tick
-        self._ctx, self._tree, self._graph, self._statuses = ctx, None, None, None
+        self._ctx, self._tree, self._graph, self._signature, self._view = ctx, None, None, None, None
         self._reset_indices()
         self.episodes += 1
         self.stream.set_time(L.TICK, sequence=self._offset)
@@ -176,8 +186,32 @@ class TreeRecorder:
         self._tree, self._graph = tree, TreeGraph.of(tree.root)
         self._replans += 1
         plan = [str(b.action) for b in self._graph.behaviours if isinstance(b, ExecuteSkill)]
-        self._text(L.EV_PLAN, ev.plan_text(plan, self._replans))
-        self.stream.log(L.TREE, self._graph.structure())
+        self._text(L.EV_PLAN, ev.plan_text(plan, self._replans), ev.WARN if self._replans else ev.INFO)
+        self.stream.log(L.STATS_REPLANS, rr.Scalars(self._replans))
+        self._fit_tree_view(self._graph.extent())
+
+    def _fit_tree_view(self, extent: tuple[float, float, float, float]) -> None:
+        """Send the layout again with the tree view's bounds grown to hold ``extent`` — only when
+        they grow, so the zoom of a session changes seldom (sending a layout resets the viewer's)."""
+        old = self._tree_bounds
+        if old is not None and old[0] <= extent[0] and old[1] <= extent[1] and old[2] >= extent[2] \
+                and old[3] >= extent[3]:
+            return
+        self._tree_bounds = extent if old is None else (min(old[0], extent[0]), min(old[1], extent[1]),
+                                                         max(old[2], extent[2]), max(old[3], extent[3]))
+        self.stream.send_blueprint(L.blueprint(self._tree_bounds), make_active=True, make_default=True)
+
+    def _log_tree(self, new_tree: bool) -> None:
+        """The drawing and the text, each only when it changed since the last tick."""
+        signature = self._graph.signature()
+        if not new_tree and signature == self._signature:
+            return
+        self._signature = signature
+        view = self._graph.view()
+        if view != self._view:
+            self.stream.log(L.TREE, view.nodes(), view.links())
+            self._view = view
+        self.stream.log(L.TREE_TEXT, tree_document(self._graph.root))
 
     def _walk(self, node, actions: list[dict], verifications: list, applied: list) -> None:
         """Log what ``node`` and its subtree did this tick, in the order the tree ran it."""

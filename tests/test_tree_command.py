@@ -1,0 +1,88 @@
+"""``vap-bt tree TASK``: the compiled tree, printed without running anything, in three formats;
+and ``--help`` of every command ends with examples."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import py_trees
+import pydot
+import pytest
+
+from conftest import TREES, tree_for
+
+TASK = TREES / "collect_cup.yaml"
+
+
+@pytest.fixture(scope="module")
+def compiled():
+    """The tree ``vap-bt tree`` should print: the first plan from the stated initial state."""
+    from vap_bt.domain.planner import Planner
+    from vap_bt.taskfile import load
+
+    planning = load(TASK).planning
+    return tree_for(planning, Planner(planning).plan().actions, "both")
+
+
+def nodes(root):
+    yield root
+    for c in root.children:
+        yield from nodes(c)
+
+
+def test_ascii_is_py_trees_own_display_of_the_compiled_tree(cli, compiled):
+    code, out, err = cli("tree", TASK)
+    assert code == 0 and err == ""
+    assert out == py_trees.display.ascii_tree(compiled)
+    lines = out.splitlines()
+    assert len(lines) == len(list(nodes(compiled)))
+    assert lines[0] == "{-} plan"
+    actions = [l.strip() for l in lines if l.startswith("    {-} a")]
+    assert actions == [f"{{-}} {c.name}" for c in compiled.children if c.name.startswith("a")]
+    assert "--> goal check" in out and "-^- look(K=3)" in out
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # pydot's parser on a newer pyparsing
+def test_dot_is_a_graph_of_every_node_that_graphviz_can_read(cli, compiled):
+    code, out, _ = cli("tree", TASK, "--format", "dot")
+    assert code == 0
+    graph = pydot.graph_from_dot_data(out)[0]
+    names = {n.get_name().strip('"') for n in graph.get_nodes()} - {"node", "edge", "graph"}
+    edges = [(e.get_source().strip('"'), e.get_destination().strip('"')) for e in graph.get_edges()]
+    ours = list(nodes(compiled))
+    assert len(names) == len(ours) and len(edges) == len(ours) - 1  # a tree: one edge per non-root node
+    assert all(a in names and b in names for a, b in edges), "an edge names a node that is not declared"
+    actions = [c.name for c in compiled.children if c.name.startswith("a")]
+    assert [b for a, b in edges if a == "plan"][:len(actions)] == actions  # ":" survives in the IDs
+
+
+def test_xml_is_the_btcpp_export(cli, compiled, tmp_path):
+    code, out, _ = cli("tree", TASK, "--format", "xml")
+    assert code == 0
+    _, exported, _ = cli("export", TASK)
+    assert out == exported
+    doc = ET.fromstring(out)
+    assert doc.get("BTCPP_format") == "4" and len(list(doc.find("BehaviorTree")[0].iter())) == len(list(nodes(compiled)))
+    dest = tmp_path / "tree.txt"
+    assert cli("tree", TASK, "--verify", "eff", "-o", dest)[0] == 0
+    text = dest.read_text()
+    assert "{-} eff" in text and "{-} pre" not in text
+
+
+def test_a_missing_task_file_is_one_line_and_exit_2(cli, tmp_path):
+    code, out, err = cli("tree", tmp_path / "nope.yaml")
+    assert code == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and "nope.yaml" in err
+
+
+@pytest.mark.parametrize("command", ["plan", "run", "export", "tree", "skills", "serve"])
+def test_every_command_help_ends_with_examples(cli, command):
+    code, out, _ = cli(command, "--help")
+    assert code == 0
+    examples = out.split("examples:\n", 1)[1].splitlines()
+    assert examples and all(l.startswith(f"  vap-bt {command}") for l in examples), out
+
+
+def test_top_level_help_shows_examples(cli):
+    code, out, _ = cli("--help")
+    assert code == 0 and "examples:\n  vap-bt run trees/collect_cup.yaml" in out
