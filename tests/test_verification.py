@@ -171,3 +171,39 @@ def test_a_coin_flip_view_is_outvoted_only_by_more_settled_views():
 def test_with_the_budget_spent_only_views_that_all_agreed_stand():
     assert verdict([rnd("yyyyy", False), rnd("yyyyn", False)], exhausted=True) == Verdict(True, "agreed")
     assert verdict([rnd("yyyyy", False), rnd("yyynn", None)], exhausted=True).outcome == "unsettled"
+
+
+def test_sim_vlm_probabilities_say_something_about_being_right_but_overstate_it():
+    """Its stated probabilities are higher when it is right than when it is wrong (errors come
+    from scores near the boundary) and, on average, higher than its accuracy (overconfident)."""
+    n = 4000
+    vlm = sim_vlm(lambda a: True, {"cup": 0.6}, error_rate=0.1, seed=11, frames=n)
+    answers = [vlm.ask(Query("q", about=(CUP,), objects=("cup",)), Frame(f"f-{i}", 0.0)) for i in range(n)]
+    right = [a.confidence for a in answers if a.value is True]
+    wrong = [a.confidence for a in answers if a.value is False]
+    accuracy = len(right) / n
+    assert abs(accuracy - (1 - 0.1 * (2 - 0.6))) < 0.02
+    assert sum(right) / len(right) > sum(wrong) / len(wrong) + 0.1
+    assert sum(a.confidence for a in answers) / n > accuracy + 0.02
+
+
+def test_sim_vlm_reads_where_to_look_off_the_frame():
+    """Cut by the image's right edge: move right; tiny: come closer; mostly hidden: look from
+    above; never in the picture: a guess among the options."""
+    oracle = FunctionOracle(lambda a: True, lambda: [])
+    shows = {"right": ({"cup": 0.7}, {"cup": (("right",), 0.05)}), "closer": ({"cup": 0.9}, {"cup": ((), 0.002)}),
+             "above": ({"cup": 0.3}, {"cup": ((), 0.05)})}
+    for want, (vis, masks) in shows.items():
+        records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, vis, oracle, lambda: 0, masks=masks) for i in range(40)}
+        vlm = SimVLM(records.get, error_rate=0.0, seed=5)
+        got = {vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(40)}
+        assert got == {want}, (want, got)
+    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {}, oracle, lambda: 0) for i in range(200)}
+    vlm = SimVLM(records.get, error_rate=0.0, seed=5)
+    assert len({vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(200)}) == 6
+
+
+def prompts_viewpoint_query() -> Query:
+    from vap_bt.perception.verification import viewpoint_query
+
+    return viewpoint_query(CUP, "Is the cup on the table?", "cup")

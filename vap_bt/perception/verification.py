@@ -123,7 +123,7 @@ class RoundAsker:
         value = answer.value if isinstance(answer.value, bool) else None
         self.answers[index] = value
         if (self.protocol.logprobs and len(self.asked) == 1 and value is not None and answer.confidence is not None
-                and answer.confidence >= self.s.agreement):
+                and answer.confidence >= self.protocol.confident):
             self.confident = value
 
     def finish(self) -> Round:

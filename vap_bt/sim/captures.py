@@ -33,6 +33,9 @@ class CaptureRecord:
     visibility: dict[str, float]  # object -> visible fraction in this frame (0: not in it)
     oracle: Oracle
     now: Callable[[], int]  # the world's step counter now
+    #: object -> (image edges its mask touches: "left", "right", "top", "bottom"; share of the image
+    #: it covers) — pixel worlds only
+    masks: dict[str, tuple[tuple[str, ...], float]] = field(default_factory=dict)
     _truth: dict[Atom, bool] = field(default_factory=dict)
     late: int = 0
 

@@ -120,3 +120,20 @@ def pixel_counts(r: Render, names: dict[int, str]) -> dict[str, int]:
         if name is not None:
             out[name] = out.get(name, 0) + n
     return out
+
+
+def mask_extents(r: Render, names: dict[int, str]) -> dict[str, tuple[tuple[str, ...], float]]:
+    """For each named object in the image: which image edges its pixels touch and the share of the
+    image it covers (what a model reads off a picture about where to look next)."""
+    h, w = r.bodies.shape
+    out: dict[str, tuple[list[str], int]] = {}
+    for body in np.unique(r.bodies).tolist():
+        name = names.get(body)
+        if name is None:
+            continue
+        rows, cols = np.nonzero(r.bodies == body)
+        edges, n = out.get(name, ([], 0))
+        edges = sorted(set(edges) | {e for e, hit in (("left", cols.min() == 0), ("right", cols.max() == w - 1),
+                                                       ("top", rows.min() == 0), ("bottom", rows.max() == h - 1)) if hit})
+        out[name] = (edges, n + len(rows))
+    return {k: (tuple(e), n / (w * h)) for k, (e, n) in out.items()}

@@ -42,7 +42,7 @@ from vap_bt.scene.layout import floor_of, layout_facts
 from vap_bt.sim.captures import CaptureLog, CaptureRecord
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
-from vap_bt.sim.pb_camera import FILL, Render, look_pose, name_image, pixel_counts, render, visibility
+from vap_bt.sim.pb_camera import FILL, Render, look_pose, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_layout import plan_scene
 from vap_bt.sim.pb_motion import Cancelled, Motion
@@ -276,7 +276,8 @@ class PybulletWorld:
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
-        self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks))
+        self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
+                                        masks=mask_extents(r, names)))
         return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
                      intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
 

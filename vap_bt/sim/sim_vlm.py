@@ -2,30 +2,47 @@
 
 It is a model, not a canned answer, and it lives on the world's side: it is handed the frame id
 and looks up the :class:`~vap_bt.sim.captures.CaptureRecord` the simulated camera wrote when it
-took the frame — how much of each object the frame shows and the truth at capture time. Each
-query is one independent draw from a seeded generator. The chance of a wrong answer depends only
-on how much of the named objects that frame shows, never on which strategy asked:
+took the frame — how much of each object the frame shows, where in the image each object's mask
+lies, and the truth at capture time. It treats every question alike: a question is judged on the
+atoms it concerns (for the action-level baselines, every atom the action implies), whichever
+strategy asked. Its parameters are fixed here with their reasons and printed in every report.
 
-* ``v`` = the least visibility among the objects the question names (rooms excluded; 1 when it
-  names none);
-* ``v = 0`` — the object is not in the picture: the model guesses (wrong with probability 0.5);
-* ``v > 0`` — wrong with probability ``min(0.5, error_rate * (2 - v))``: the base rate for a
-  fully visible object, up to twice that for a barely visible one.
+**Yes/no answers.** ``v`` is the least visibility among the objects the question names (rooms
+excluded; 1 when it names none). The chance of a wrong answer is ``p(v) = min(0.5,
+error_rate * (2 - v))`` for an object in the frame — the base rate when fully visible, up to
+twice that when barely — and 0.5 when it is not in the frame (a guess). Each answer comes from a
+latent score ``z = ±mu(v) + N(0, 1)`` (+ when the truth is yes), answered yes iff ``z > 0``, with
+``mu(v) = Phi^-1(1 - p(v))``: so answers are wrong exactly at the rate ``p(v)``, each query an
+independent draw seeded by the run's seed, the frame and the prompt (answers do not depend on the
+order in which concurrent questions arrive; one question asked twice about one frame gets one
+answer, as from a model at temperature 0).
 
-Truth for a predicate question is that every atom it concerns holds (for the action-level
-baselines, every atom the action implies). The draw for a query is seeded by the run's seed, the
-frame and the prompt, so answers do not depend on the order in which concurrent questions
-arrive (and a question asked twice about one frame gets one answer, as from a model at
-temperature 0). View sufficiency is judged with the visible-object
-rate even at ``v = 0`` (a model can tell that it does not see the thing asked about), its truth
-being ``v >= 0.5``. The viewpoint choice is uniform over the options (a frame-based choice is
-future work). A frame the log does not know (too old, or from elsewhere) gets no answer.
-With ``error_rate = 0`` every answer about a visible object is right: "VLM noise off".
+**Token probabilities.** Every answer carries the probability the model gives it,
+``sigmoid(4 |z|)``: a model's probabilities say something about whether it is right — its
+errors come from scores near the boundary, so they are mostly less sure — but they are not its
+error rate handed back, and the slope 4 makes it overconfident: answering at accuracy 0.95 it
+states 0.96 on average, at 0.90 it states 0.94, at 0.70 it states 0.89, and a pure guess about
+an object it cannot see is stated at 0.87.
+
+**View sufficiency** is judged from visibility even at ``v = 0`` (a model can tell that it does
+not see the thing asked about): true iff ``v >= 0.5``, wrong at ``p(v)``.
+
+**Viewpoints** come from the frame, as a model would read them off the image: the target's mask
+cut by the image's left or right edge → that way; cut by both, or by the top or bottom, or
+filling much of the image → ``front`` (step back, look squarely); small in the image →
+``closer``; in the image but mostly hidden → ``above`` (look over what is in front of it); not in
+the image at all → a uniform guess (nothing in the picture says where it is). The reading is
+wrong (a uniform choice) at the same rate ``p(v)``.
+
+A frame the log does not know (too old, or from elsewhere) gets no answer. With
+``error_rate = 0`` every answer about a visible object is right: "VLM noise off".
 """
 
 from __future__ import annotations
 
+import math
 import random
+from statistics import NormalDist
 from typing import Callable
 
 from vap_bt.perception.vlm import Answer, Query
@@ -33,6 +50,15 @@ from vap_bt.robot.frame import Frame
 from vap_bt.sim.captures import CaptureRecord
 
 SUFFICIENT_VISIBILITY = 0.5
+#: slope of the stated probability in the latent score (see the module docstring: overconfident)
+CONFIDENCE_SLOPE = 4.0
+#: a target smaller than this share of the image is "far": come closer
+SMALL_IN_IMAGE = 0.01
+#: a target larger than this share of the image, or cut by more than one edge, is "too close": step back
+LARGE_IN_IMAGE = 0.5
+#: a target shown less than this is "hidden": look over what hides it
+HIDDEN = 0.5
+_NORMAL = NormalDist()
 
 
 class SimVLM:
@@ -53,7 +79,9 @@ class SimVLM:
     def describe(self) -> dict:
         return {"backend": self.name, "error_rate": self.error_rate, "seed": self.seed,
                 "model": "answers from the world's record of the frame: wrong w.p. min(0.5, error_rate*(2-v)) "
-                         "for visible objects, 0.5 when unseen; sufficient iff v >= 0.5; viewpoint uniform"}
+                         "for visible objects, 0.5 when unseen, via a latent score z = +-Phi^-1(1-p) + N(0,1); "
+                         f"stated probability sigmoid({CONFIDENCE_SLOPE:g}|z|); sufficient iff v >= 0.5; "
+                         "viewpoint read off the target's mask (edges, size, occlusion), uniform when unseen"}
 
     def ask(self, query: Query, frame: Frame) -> Answer:
         record = self.records(frame.frame_id)
@@ -62,14 +90,31 @@ class SimVLM:
         v = self._visibility(query, record)
         rng = random.Random(f"{self.seed}|{frame.frame_id}|{query.kind}|{query.prompt}")
         if query.kind == "choice":
-            choice = rng.choice(query.options)
+            choice = self._direction(query, record, v, rng)
             return Answer(choice, choice)
         sufficiency = query.purpose == "sufficiency"
         true = (v >= SUFFICIENT_VISIBILITY) if sufficiency else all(map(record.holds, query.about))
         # whether a view shows enough is judgeable even when it shows nothing: no coin flip there
         p = self._p_seen(v) if sufficiency else self._p_wrong(v)
-        value = true != (rng.random() < p)
-        return Answer("yes" if value else "no", value)
+        mu = _NORMAL.inv_cdf(1.0 - max(p, 1e-9)) if p < 0.5 else 0.0  # noise off: always right, and sure
+        z = (mu if true else -mu) + rng.gauss(0.0, 1.0)
+        value = z > 0
+        confidence = 1.0 / (1.0 + math.exp(-CONFIDENCE_SLOPE * abs(z)))
+        return Answer("yes" if value else "no", value, confidence=round(confidence, 4))
+
+    def _direction(self, query: Query, record: CaptureRecord, v: float, rng: random.Random) -> str:
+        """The viewpoint the frame suggests for the question's target (its first object)."""
+        options = tuple(query.options)
+        target = next((o for o in query.objects if o not in self.rooms), None)
+        shown = record.masks.get(target) if target is not None else None
+        v = record.visibility.get(target, 0.0) if target is not None else v  # the target's own
+        if shown is None or v <= 0.0 or rng.random() < self._p_seen(v):
+            return rng.choice(options)  # nothing in the picture says where it is (or a misreading)
+        edges, share = shown
+        want = ("front" if len(edges) > 1 or "top" in edges or "bottom" in edges or share > LARGE_IN_IMAGE
+                else edges[0] if edges else "closer" if share < SMALL_IN_IMAGE
+                else "above" if v < HIDDEN else "front")
+        return want if want in options else rng.choice(options)
 
     def _visibility(self, query: Query, record: CaptureRecord) -> float:
         named = [o for o in query.objects if o not in self.rooms]
