@@ -54,14 +54,17 @@ def _load_run_task(args):
 
 
 def cmd_run(args) -> int:
-    from vap_bt.runner import EpisodeInterrupted, RunConfig, Session
+    from vap_bt.perception.goal_parsing import GoalParseError
+    from vap_bt.runner import EpisodeInterrupted, RunConfig, Session, check_config
 
     task = _load_run_task(args)
     cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
                               vlm_error=args.vlm_error, injection=False if args.no_injection else None,
                               max_replans=args.max_replans, planner=args.planner, transport=args.transport,
                               early_stop=args.early_stop or None, protocol=args.protocol,
-                              viewpoints=args.viewpoints)
+                              viewpoints=args.viewpoints, vlm=args.vlm, vlm_url=args.vlm_url,
+                              vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction)
+    check_config(task, cfg)  # bad options in one line, before the first progress line
     progress = _progress(args.quiet)
     progress(f"task {task.name}: {task.spec.instruction or task.planning.source} "
              f"(world {cfg.world}, seed {cfg.seed}, verify {cfg.verify})")
@@ -78,6 +81,9 @@ def cmd_run(args) -> int:
         rep = {**session.episode(), "command": report_mod.command_line()}
     except EpisodeInterrupted as stop:
         rep = {**stop.report, "command": report_mod.command_line(), "interrupted": True}
+        raise
+    except GoalParseError as exc:  # the report keeps what the VLM answered
+        rep = {**rep, "reason": "goal not parsed", "goal_parsing": exc.record.to_json()}
         raise
     finally:
         session.close()
@@ -111,6 +117,9 @@ def _compiled_tree(args):
 
     task = _load_run_task(args)
     planning = task.planning
+    if not planning.goal:
+        raise InputError(f"{task.path}: field goal", "export plans goal: atoms; a goal in words is parsed only "
+                                                     "by a run (vap-bt run --vlm openai|gemini)")
     plan = Planner(planning).plan()
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
@@ -199,7 +208,18 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--seed", type=int, default=0)
     sr.add_argument("--verify", choices=["both", "pre", "eff", "none"])
     sr.add_argument("--budget", type=int, help="viewpoint budget K")
+    sr.add_argument("--vlm", choices=["sim", "openai", "gemini"],
+                    help="sim (default, offline): the world-side simulated VLM; openai: any OpenAI-compatible "
+                         "server (key from OPENAI_API_KEY); gemini: Gemini's REST API (key from GEMINI_API_KEY)")
+    sr.add_argument("--vlm-url", help="API root of the openai/gemini backend, e.g. http://127.0.0.1:8000/v1")
+    sr.add_argument("--vlm-model", help="model name for the openai/gemini backend (openai: the served model)")
     sr.add_argument("--vlm-error", type=float, help="symbolic VLM per-query error rate (default 0.05)")
+    sr.add_argument("--goal", metavar="WORDS",
+                    help="the goal in words, parsed by the VLM after the survey (needs --vlm openai|gemini); "
+                         "without it the task file's goal: atoms run")
+    sr.add_argument("--parse-instruction", action="store_true",
+                    help="parse the task file's instruction: with the VLM even though it has goal: atoms "
+                         "(those are then the report's reference)")
     sr.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
     sr.add_argument("--early-stop", action="store_true", help="stop a vote once it is decided")
     sr.add_argument("--protocol", choices=["paper", "lean"],

@@ -21,6 +21,9 @@ from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.domain.planner import Planner
+from vap_bt.errors import InputError
+from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
+from vap_bt.perception.goal_parsing import GoalParse, GoalParser
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import MeteredVLM
@@ -58,7 +61,9 @@ class RunConfig:
     max_replans: int = 10
     max_seconds: float = 900.0
     injection: bool = True
-    vlm: str = "sim"
+    vlm: str = "sim"  # sim (world-side, offline) | openai | gemini (see make_vlm)
+    vlm_url: str | None = None  # openai/gemini: the API root (--vlm-url)
+    vlm_model: str | None = None  # openai/gemini: the model name (--vlm-model)
     vlm_error: float = 0.05
     miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
     relation_error: float = _DETECTOR.relation_error  # symbolic relation detector
@@ -67,6 +72,8 @@ class RunConfig:
     protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
     viewpoints: str = "vlm"  # where to look from next: vlm | greedy
     unseen: str = "look"  # an unsettled precondition: look | go_on | stop
+    goal: str | None = None  # a goal in words (--goal), parsed by the VLM after the survey
+    parse_instruction: bool = False  # parse the task file's instruction: even when it has goal: atoms
 
     @classmethod
     def from_task(cls, task: Task, **overrides) -> "RunConfig":
@@ -107,13 +114,75 @@ def make_skills(task: Task, world: World) -> dict[str, Skill]:
 
 
 def make_vlm(task: Task, world: World, cfg: RunConfig):
-    """The world-side simulated VLM, reading the world's capture records."""
+    """The VLM the executive asks: ``sim``, the world-side simulated one reading the world's
+    capture records (served beside the camera), or a real backend over HTTP — ``openai`` (any
+    OpenAI-compatible server) or ``gemini`` — at ``cfg.vlm_url`` with ``cfg.vlm_model``, its key
+    from ``OPENAI_API_KEY`` / ``GEMINI_API_KEY``. A real backend is the executive's own client: it
+    is shown the frames' pixels (a frame without any, as in the symbolic world, is an abstention
+    without a request) and is never served from the world's side."""
     if cfg.vlm == "sim":
         from vap_bt.sim.sim_vlm import SimVLM
 
         rooms = frozenset(o for o, t in task.planning.objects.items() if t == "room")
         return SimVLM(world.captures.get, cfg.vlm_error, seed=cfg.seed, rooms=rooms)
-    raise ValueError(f"unknown VLM backend {cfg.vlm!r} (sim)")
+    if cfg.vlm in HTTP_BACKENDS:
+        return make_backend(cfg.vlm, cfg.vlm_url, cfg.vlm_model)
+    raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} (sim, {', '.join(HTTP_BACKENDS)})")
+
+
+@dataclass(frozen=True)
+class GoalWords:
+    """A goal in words to be parsed by the VLM, and the input it came from (named in errors)."""
+
+    text: str
+    source: str  # "--goal" or "instruction"
+    where: str
+
+
+def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
+    """Say bad VLM and goal options in one line before anything starts; returns the goal words."""
+    if cfg.vlm not in ("sim", *HTTP_BACKENDS):
+        raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} (sim, {', '.join(HTTP_BACKENDS)})")
+    if cfg.vlm == "sim" and (cfg.vlm_url or cfg.vlm_model):
+        raise InputError("--vlm-url" if cfg.vlm_url else "--vlm-model",
+                         "only for a real backend (--vlm openai|gemini); the default sim VLM has neither")
+    return goal_words(task, cfg)
+
+
+def goal_words(task: Task, cfg: RunConfig) -> GoalWords | None:
+    """The goal in words an episode parses (ParseGoal, paper Alg. 1 line 2), or None when the
+    task's PDDL goal runs. Words are parsed when
+
+    * ``--goal WORDS`` is given (``cfg.goal``): they replace the task's goal;
+    * the task file has an ``instruction:`` and no ``goal:`` atoms;
+    * ``--parse-instruction`` (``cfg.parse_instruction``) asks for the instruction to be parsed
+      although ``goal:`` atoms exist (they are then the report's reference, ``file_goal``).
+
+    Otherwise — in particular offline, a task file with ``goal:`` and no ``--goal`` — the PDDL goal
+    stands. The simulated VLM does not parse goals: asking for words with ``--vlm sim`` (the
+    default) is bad input, said in one line before anything starts.
+    """
+    instruction = task.spec.instruction.strip()
+    field = f"{task.path}: field instruction" if task.path else "instruction"
+    if cfg.goal is not None:
+        if not cfg.goal.strip():
+            raise InputError("--goal", "empty: say what the robot should achieve")
+        words = GoalWords(cfg.goal.strip(), "--goal", "--goal")
+    elif cfg.parse_instruction or not task.planning.goal:
+        if not instruction:
+            raise InputError(field, "no instruction: to parse (give instruction: words, or --goal)")
+        words = GoalWords(instruction, "instruction", field)
+    else:
+        return None
+    if cfg.vlm not in HTTP_BACKENDS:
+        why = (f"the {cfg.vlm} VLM does not parse goals in words; run with --vlm openai|gemini")
+        if words.source == "--goal":
+            raise InputError("--goal", f"{why}, or leave --goal out and the task file's goal: atoms run")
+        if cfg.parse_instruction:
+            raise InputError("--parse-instruction", why)
+        where = f"{task.path}: field goal" if task.path else "goal"
+        raise InputError(where, f"no goal: atoms, and {why} (or give goal: atoms)")
+    return words
 
 
 def make_geometry(cfg: RunConfig):
@@ -140,26 +209,35 @@ class Session:
     last_outcome: EpisodeOutcome | None = field(init=False, default=None)
 
     def __post_init__(self) -> None:
+        self.words = check_config(self.task, self.cfg)  # bad input is said before a world starts
         self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
         self.world = make_world(self.task, self.cfg)
         self.skills = make_skills(self.task, self.world)
         self.vlm = make_vlm(self.task, self.world, self.cfg)
+        self._world_side_vlm = self.cfg.vlm == "sim"  # a real backend is the executive's own client
+        self._goal_parser: GoalParser | None = None
+        self._first_request = 0
         self._embedded = None
         if self.cfg.transport == "zenoh":
             from vap_bt.transport.embedded import EmbeddedTransport
 
-            self._embedded = EmbeddedTransport(self.world, self.skills, vlm=self.vlm)
+            self._embedded = EmbeddedTransport(self.world, self.skills,
+                                               vlm=self.vlm if self._world_side_vlm else None)
 
     def _executive(self, cfg: RunConfig, scores: list[dict]) -> tuple[Executive, MeteredVLM]:
         """A fresh world state for ``cfg.seed`` and an executive wired to it (see the module docstring)."""
         self.world.reset(cfg.seed)
-        self.vlm.reseed(cfg.seed)
+        if self._world_side_vlm:  # a real model has no seed: it answers at temperature 0
+            self.vlm.reseed(cfg.seed)
+        self._first_request = len(getattr(self.vlm, "requests", ()))
         skills, robot, vlm = self._transport()
         metered = MeteredVLM(vlm)
+        self._goal_parser = None if self.words is None else GoalParser(
+            metered, self.task.planning, self.words.text, self.words.where, self.words.source)
         protocol = Protocol.parse(cfg.protocol)
         if cfg.early_stop:
             protocol = replace(protocol, early_stop=True)
-        remote = cfg.transport != "inproc"
+        remote = cfg.transport != "inproc" or not self._world_side_vlm  # work that takes time: threads
         settings = ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
                                      vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
                                      max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
@@ -172,7 +250,8 @@ class Session:
                               on_tree=self.recorder.on_tree if self.recorder is not None else None,
                               prior=self.task.prior, geometry=make_geometry(cfg),
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
-                              on_verification=self._score_verification)
+                              on_verification=self._score_verification,
+                              goal_parser=self._goal_parser)
         self._verified: list[bool] = []
         return executive, metered
 
@@ -204,11 +283,14 @@ class Session:
     def close(self) -> None:
         if self._embedded is not None:
             self._embedded.close()
+        if not self._world_side_vlm:
+            self.vlm.close()
         self.world.close()
 
     def _transport(self):
         if self._embedded is not None:
-            return self._embedded.client, self._embedded.robot, self._embedded.vlm_client
+            e = self._embedded
+            return e.client, e.robot, e.vlm_client if self._world_side_vlm else self.vlm
         if self.cfg.transport == "inproc":
             from vap_bt.transport.inprocess import InProcessRobot, InProcessSkillClient
 
@@ -231,9 +313,10 @@ class Session:
 
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],
                 wall: float) -> dict:
-        goal = self.task.planning.goal
+        parse = self.goal_parse
+        goal = self.task.planning.goal if parse is None or parse.goal is None else parse.goal  # the goal pursued
         oracle = self.world.oracle
-        satisfied = all(oracle.holds(l.atom) == l.positive for l in goal)
+        satisfied = self._holds(goal)
         ctx = out.context
         detector = cfg.detector() if self.world.name == "symbolic" else getattr(self.world, "detector", None)
         return {
@@ -247,7 +330,8 @@ class Session:
             "config": asdict(cfg),
             "world": {"name": self.world.name, "injection": self.world_situations(),
                       "detector": detector.describe() if detector is not None else None},
-            "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts)},
+            "goal_parsing": self._goal_parsing_report(),
+            "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts), **self._requests()},
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
                            "surveys": [s.to_json() for s in out.surveys],
                            "verifications": {"n": len(self._verified), "correct": sum(self._verified),
@@ -270,6 +354,31 @@ class Session:
             "wall_s": round(wall, 4),
             "versions": versions(),
         }
+
+    @property
+    def goal_parse(self) -> GoalParse | None:
+        """What goal parsing did in the last episode (None: the task's PDDL goal ran)."""
+        return self._goal_parser.record if self._goal_parser is not None else None
+
+    def _goal_parsing_report(self) -> dict | None:
+        """The report's ``goal_parsing``: prompts, raw replies, re-ask, errors and the goal; beside
+        them the task file's own goal atoms (if any) and whether the world satisfies those."""
+        parse = self.goal_parse
+        if parse is None:
+            return None
+        file_goal = self.task.planning.goal
+        return {**parse.to_json(), "file_goal": [str(l) for l in file_goal] if file_goal else None,
+                "file_goal_satisfied": self._holds(file_goal) if file_goal else None}
+
+    def _requests(self) -> dict:
+        """A real backend's record of every request this episode made (the sim VLM keeps none)."""
+        if self._world_side_vlm:
+            return {}
+        return {"requests": [r.to_json() for r in self.vlm.requests[self._first_request:]]}
+
+    def _holds(self, goal) -> bool:
+        """The oracle's word on a goal, now."""
+        return all(self.world.oracle.holds(l.atom) == l.positive for l in goal)
 
     def world_situations(self) -> list[dict]:
         model = getattr(self.world, "situations", None)

@@ -13,6 +13,10 @@ the task file. Every mistake is reported once, with the file and the field or li
     belief: ["inside(cup, cabinet)"]
     options: {verify: both, budget: 3, max_replans: 10}
 
+A task with an ``instruction:`` and no ``goal:`` has its goal parsed from the words by a real VLM
+after the robot's survey (:mod:`vap_bt.perception.goal_parsing`; see :func:`vap_bt.runner.goal_words`
+for when words are parsed); offline, with the simulated VLM, such a task cannot run.
+
 Two parts say different things to different readers. ``scene:`` is the world a simulator builds:
 the executive never reads it. ``belief:`` is what the user tells the robot about things it may
 not be able to see (the cup is in the closed cabinet); it may be wrong, perception overrides it
@@ -63,8 +67,8 @@ class TaskFile(BaseModel):
     def _scene_or_problem(self) -> "TaskFile":
         if (self.scene is None) == (self.problem is None):
             raise ValueError("give exactly one of scene: (a household layout) or problem: (a PDDL file)")
-        if self.scene is not None and not self.goal:
-            raise ValueError("a task with a scene needs goal: [atoms]")
+        if self.scene is not None and not self.goal and not self.instruction.strip():
+            raise ValueError("a task with a scene needs goal: [atoms], or an instruction: for a VLM to parse")
         return self
 
 
@@ -120,7 +124,7 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
         return Task(spec, planning, Path(where))
     objects = spec.scene.objects()
     facts = layout_facts(spec.scene)
-    goal_atoms = [_parse(g, where) for g in spec.goal]
+    goal_atoms = [_parse(g, where) for g in spec.goal or ()]  # none: the instruction is parsed
     for lit in goal_atoms:  # unknown names are the goal's fault, said before PDDL ever sees them
         unknown = [a for a in lit.atom.args if a not in objects]
         if unknown:

@@ -20,6 +20,9 @@ context; the executive handles it and swaps in a new tree:
 5. the planner replans from the corrected graph — reusing the old plan's tail when it still
    works — within the replanning budget.
 
+A goal given in words is read between the survey and the first plan (paper Alg. 1 line 2): the
+``goal_parser`` (:mod:`vap_bt.perception.goal_parsing`) is handed the scene graph's objects.
+
 The executive talks only to protocols — skills (:class:`~vap_bt.skill.SkillClient`), the camera
 service and the body (:mod:`vap_bt.robot.camera`), a VLM — and to the task file's words; it never
 sees a world or its truth. Every way an episode ends halts the tree (``root.stop``), so no goal
@@ -38,7 +41,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
 from vap_bt.bt.inflight import make_executor
-from vap_bt.domain.atoms import Atom
+from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import UnsolvableError
@@ -117,7 +120,8 @@ class Executive:
                  prior: frozenset[Atom] = frozenset(),
                  geometry: Callable[..., Geometry] | None = None,
                  on_survey: Callable[[Survey, SceneGraph], None] | None = None,
-                 on_verification: Callable[[Verification], None] | None = None) -> None:
+                 on_verification: Callable[[Verification], None] | None = None,
+                 goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None) -> None:
         self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
             task, planner, skills, camera, body, vlm
         self.s = settings or ExecutiveSettings()
@@ -127,6 +131,8 @@ class Executive:
         self.on_verification = on_verification or (lambda v: None)
         self.prior = frozenset(prior)
         self.geometry = geometry
+        #: ParseGoal (vap_bt.perception.goal_parsing): the goal from words, over the graph's objects
+        self.goal_parser = goal_parser
         #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
         self.outcome: EpisodeOutcome | None = None
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
@@ -136,6 +142,9 @@ class Executive:
 
     def run(self) -> EpisodeOutcome:
         graph, survey = self.perceive()
+        if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
+            self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
+            self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
         executor = make_executor(self.s.threads)
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,

@@ -7,18 +7,24 @@ vote treats as uncertainty. A timeout is the same: uncertainty, never a crash.
 
 ``Query.about`` names the atoms the question concerns. Real models ignore it (they have the
 prompt and the image); the simulated model judges from what the world shows of those atoms' objects.
+
+One request has no image: goal parsing (paper Alg. 1 line 2) asks a :class:`TextModel` to
+``complete`` a text prompt and reads the free text it returns (a :class:`Completion`). Only the
+real backends answer text prompts; the simulated VLM does not parse goals.
 """
 
 from __future__ import annotations
 
 import re
+import time
 from dataclasses import dataclass
-from typing import Literal, Protocol
+from typing import Callable, Literal, Protocol, TypeVar
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Frame
 
-Purpose = Literal["predicate", "sufficiency", "viewpoint", "action"]
+T = TypeVar("T")
+Purpose = Literal["predicate", "sufficiency", "viewpoint", "action", "goal"]
 
 
 @dataclass(frozen=True)
@@ -67,6 +73,40 @@ class VLM(Protocol):
         """Backend name and every parameter that shapes its answers (for the report)."""
 
 
+@dataclass(frozen=True)
+class Completion:
+    """A model's free-text reply to a text-only prompt.
+
+    ``text`` is the reply when the model gave one to read, else ``None``; ``outcome`` says what
+    became of the request in the words of :mod:`vap_bt.perception.backends.record` ("answer",
+    "refusal", "empty", "unparsed" for a reply cut off at the token budget, "timeout",
+    "unreachable", ...) and ``error`` why there is no text.
+    """
+
+    text: str | None
+    outcome: str = "answer"
+    error: str | None = None
+    latency_s: float | None = None
+
+    @property
+    def replied(self) -> bool:
+        """Whether the model wrote a reply at all (even a useless one); asking again can help only then."""
+        return self.outcome not in NO_REPLY
+
+
+#: outcomes without a reply from the model: the backend already retried what a retry can cure
+#: (timeouts, 429, 5xx) within its deadline, and the rest (401, 404, a bug) a retry cannot
+NO_REPLY = frozenset({"timeout", "unreachable", "rate_limited", "server_error", "http_error", "error"})
+
+
+class TextModel(Protocol):
+    """A model that answers a text prompt without an image (the real backends)."""
+
+    name: str
+
+    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion: ...
+
+
 _YES = re.compile(r"^\W*(yes|y|true)\b", re.I)
 _NO = re.compile(r"^\W*(no|n|false)\b", re.I)
 
@@ -97,14 +137,22 @@ class MeteredVLM:
         self.seconds = 0.0
 
     def ask(self, query: Query, frame: Frame) -> Answer:
-        import time
+        return self._metered(query.purpose, lambda: self.inner.ask(query, frame))
 
+    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
+        """The inner model's :meth:`TextModel.complete`, counted like a query."""
+        complete = getattr(self.inner, "complete", None)
+        if complete is None:
+            raise TypeError(f"the {self.name} VLM answers questions about frames, not text prompts")
+        return self._metered(purpose, lambda: complete(prompt, purpose))
+
+    def _metered(self, purpose: str, call: Callable[[], T]) -> T:
         t0 = time.perf_counter()
         try:
-            return self.inner.ask(query, frame)
+            return call()
         finally:
             self.seconds += time.perf_counter() - t0
-            self.counts[query.purpose] = self.counts.get(query.purpose, 0) + 1
+            self.counts[purpose] = self.counts.get(purpose, 0) + 1
 
     @property
     def total(self) -> int:

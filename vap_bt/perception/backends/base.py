@@ -16,6 +16,9 @@ reply, and which headers carry the key. Everything else is done once, here:
 ``ask`` never raises: whatever goes wrong — the network, the server, the reply, a bug here — is
 an :class:`~vap_bt.perception.vlm.Answer` with ``value=None`` and a record saying why. It is
 safe to call from many threads at once.
+
+:meth:`HttpVLM.complete` is the one text-only request (goal parsing): the same template without
+the frame, returning the reply's free text as a :class:`~vap_bt.perception.vlm.Completion`.
 """
 
 from __future__ import annotations
@@ -34,7 +37,7 @@ from vap_bt.perception.backends.image import EncodedImage, ImageCache
 from vap_bt.perception.backends.record import RequestLog, RequestRecord
 from vap_bt.perception.backends.reply import (
     YES_NO, TokenChoice, is_refusal, option_confidence, option_name, read_answer)
-from vap_bt.perception.vlm import Answer, Query
+from vap_bt.perception.vlm import Answer, Completion, Purpose, Query
 from vap_bt.robot.frame import Frame
 
 log = logging.getLogger("vap_bt.vlm")
@@ -81,15 +84,18 @@ class HttpVLM:
 
     name = "http"
     features: tuple[Feature, ...] = ()
+    #: finish reasons meaning the reply was cut off at the token budget
+    truncated: frozenset[str] = frozenset()
 
     def __init__(self, url: str, model: str, api_key: str = "", policy: RetryPolicy = RetryPolicy(),
                  max_tokens: int = 8, top_logprobs: int = 5,
-                 on_request: Callable[[RequestRecord], None] | None = None) -> None:
+                 on_request: Callable[[RequestRecord], None] | None = None, text_max_tokens: int = 256) -> None:
         self.url = url.rstrip("/")
         self.model = model
         self.policy = policy
         self.max_tokens = max_tokens
         self.top_logprobs = top_logprobs  # 0: logprobs not asked for
+        self.text_max_tokens = text_max_tokens  # of a text-only reply: a goal of a dozen atoms fits
         self._has_key = bool(api_key)
         self._log = RequestLog(on_request)
         self._images = ImageCache()
@@ -104,9 +110,11 @@ class HttpVLM:
     def auth_headers(self, api_key: str) -> dict[str, str]:
         raise NotImplementedError
 
-    def request(self, prompt: str, image: EncodedImage, options: tuple[str, ...],
+    def request(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...],
                 features: frozenset[str]) -> dict:
-        """The request body; ``features`` names the optional features to include."""
+        """The request body; ``features`` names the optional features to include. Without an
+        image (and then without options) it is a text-only request: no image part, no answer
+        constraint, no logprobs, ``text_max_tokens``."""
         raise NotImplementedError
 
     def read(self, data: Any) -> Reply:
@@ -117,20 +125,38 @@ class HttpVLM:
 
     # --- the template ---------------------------------------------------------------------------
     def ask(self, query: Query, frame: Frame) -> Answer:
-        t0 = time.perf_counter()
         rgb, frame_id = frame.rgb, frame.frame_id
         rec = RequestRecord(backend=self.name, model=self.model, purpose=query.purpose, kind=query.kind,
                             prompt=query.prompt, options=options_of(query), frame_id=frame_id)
+        self._recorded(rec, lambda deadline: self._ask(query, rgb, rec, deadline))
+        raw = rec.reply if rec.status == 200 else ""  # an error body is for the record, not an answer's text
+        return Answer(raw=raw, value=rec.value, confidence=rec.confidence, latency_s=rec.latency_s)
+
+    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
+        """Ask ``prompt`` with no image and return the model's free text (goal parsing).
+
+        The same transport, timeouts, retries, feature dropping and records as :meth:`ask`; the
+        request carries no image, no answer constraint and no logprobs, and has the larger
+        ``text_max_tokens`` budget. A reply cut off at that budget is not an answer (outcome
+        ``unparsed``): a goal missing its tail would otherwise pass for a whole one. Never raises.
+        """
+        rec = RequestRecord(backend=self.name, model=self.model, purpose=purpose, kind="text",
+                            prompt=prompt, options=(), frame_id="")
+        self._recorded(rec, lambda deadline: self._complete(prompt, rec, deadline))
+        text = rec.reply if rec.outcome == "answer" else None
+        return Completion(text=text, outcome=rec.outcome, error=rec.error, latency_s=rec.latency_s)
+
+    def _recorded(self, rec: RequestRecord, work: Callable[[float], None]) -> None:
+        """Run ``work(deadline)`` to fill ``rec``, time it and log it; nothing escapes."""
+        t0 = time.perf_counter()
         try:
-            self._ask(query, rgb, rec, time.monotonic() + self.policy.deadline_s)
+            work(time.monotonic() + self.policy.deadline_s)
         except Exception as e:  # the contract: an abstention, never an exception out of ask
             log.exception("VLM %s: query failed", self.name)
             rec.outcome, rec.value, rec.confidence, rec.error = "error", None, None, f"{type(e).__name__}: {e}"
         rec.latency_s = time.perf_counter() - t0
         rec.dropped = self.dropped
         self._log.add(rec)
-        raw = rec.reply if rec.status == 200 else ""  # an error body is for the record, not an answer's text
-        return Answer(raw=raw, value=rec.value, confidence=rec.confidence, latency_s=rec.latency_s)
 
     def _ask(self, query: Query, rgb: np.ndarray | None, rec: RequestRecord, deadline: float) -> None:
         if rgb is None:
@@ -145,21 +171,42 @@ class HttpVLM:
             rec.outcome, rec.error = "no_image", str(e)
             return
         rec.frame_sha1, rec.image_size = image.sha1, (image.width, image.height)
-        ex = self._post(query.prompt, image, rec.options, deadline, rec)
+        reply = self._exchange(query.prompt, image, rec.options, deadline, rec)
+        if reply is not None:
+            self._interpret(query, reply, rec)
+
+    def _complete(self, prompt: str, rec: RequestRecord, deadline: float) -> None:
+        reply = self._exchange(prompt, None, (), deadline, rec)
+        if reply is None:
+            return
+        rec.reply, rec.finish_reason = reply.text or "", reply.finish_reason
+        if reply.refused:
+            rec.outcome, rec.error = "refusal", reply.refused
+        elif not rec.reply.strip():
+            rec.outcome, rec.error = "empty", "the reply has no text"
+        elif reply.finish_reason in self.truncated:
+            rec.outcome, rec.error = "unparsed", f"the reply was cut off at the token budget ({self.text_max_tokens})"
+        else:
+            rec.outcome, rec.value = "answer", rec.reply.strip()
+
+    def _exchange(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...], deadline: float,
+                  rec: RequestRecord) -> Reply | None:
+        """POST and read the protocol's reply; None (with ``rec`` saying why) when there is none."""
+        ex = self._post(prompt, image, options, deadline, rec)
         rec.status = ex.status
         if ex.failure:
             rec.outcome, rec.error, rec.reply = ex.failure, ex.detail, ex.text[:ERROR_BODY_CHARS]
-            return
+            return None
         if ex.status != 200:
             rec.outcome, rec.error, rec.reply = "http_error", f"HTTP {ex.status}", ex.text[:ERROR_BODY_CHARS]
-            return
+            return None
         data = ex.json()
         if not isinstance(data, dict):
             rec.outcome, rec.error, rec.reply = "malformed", "the body is not a JSON object", ex.text[:ERROR_BODY_CHARS]
-            return
-        self._interpret(query, self.read(data), rec)
+            return None
+        return self.read(data)
 
-    def _post(self, prompt: str, image: EncodedImage, options: tuple[str, ...], deadline: float,
+    def _post(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...], deadline: float,
               rec: RequestRecord) -> Exchange:
         """POST, and once more without each optional feature the server rejects (bounded by their number)."""
         while True:
@@ -211,7 +258,8 @@ class HttpVLM:
         """Backend, endpoint, model and every parameter that shapes the answers; never the key."""
         p = self.policy
         return {"backend": self.name, "url": self.url, "model": self.model, "api_key": "set" if self._has_key else "unset",
-                "temperature": 0, "max_tokens": self.max_tokens, "top_logprobs": self.top_logprobs,
+                "temperature": 0, "max_tokens": self.max_tokens, "text_max_tokens": self.text_max_tokens,
+                "top_logprobs": self.top_logprobs,
                 "timeout_s": p.timeout_s, "deadline_s": p.deadline_s, "attempts": p.attempts,
                 "backoff_s": p.backoff_s, "backoff_max_s": p.backoff_max_s,
                 "features": sorted(self._enabled()), "dropped": list(self.dropped)}

@@ -27,6 +27,10 @@ without it (see :mod:`.base`). A rate limit is a 429 whose ``error.details`` hol
 ``type.googleapis.com/google.rpc.RetryInfo`` with ``retryDelay`` (a duration such as
 ``"37s"``): that delay is waited when it fits the query's deadline, else the query abstains.
 
+A text-only request (:meth:`~.base.HttpVLM.complete`, goal parsing) has only the text part, no
+enum and no logprobs, thinking still off, ``maxOutputTokens`` = ``text_max_tokens``;
+``finishReason`` MAX_TOKENS means it was cut off.
+
 The reply is ``candidates[0].content.parts[*].text`` (thought parts skipped); a prompt blocked
 (``promptFeedback.blockReason``) or an answer stopped for safety (``finishReason`` SAFETY,
 PROHIBITED_CONTENT, ...) is a refusal; ``candidates[0].logprobsResult`` gives
@@ -70,6 +74,7 @@ class GeminiVLM(HttpVLM):
     """Asks a Gemini model (or a local server speaking its REST API) about a frame."""
 
     name = "gemini"
+    truncated = frozenset({"MAX_TOKENS"})
     features = (
         Feature("enum", ("responsemimetype", "response_mime_type", "responseschema", "response_schema", "x.enum")),
         Feature("thinking", ("thinking",)),
@@ -85,18 +90,20 @@ class GeminiVLM(HttpVLM):
     def retry_hint(self, response: httpx.Response) -> float | None:
         return retry_delay(response)
 
-    def request(self, prompt: str, image: EncodedImage, options: tuple[str, ...],
+    def request(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...],
                 features: frozenset[str]) -> dict:
-        config: dict[str, Any] = {"temperature": 0, "maxOutputTokens": self.max_tokens, "candidateCount": 1}
-        if "enum" in features:
+        text_only = image is None  # goal parsing: no inline data, no enum, no logprobs
+        config: dict[str, Any] = {"temperature": 0, "candidateCount": 1,
+                                  "maxOutputTokens": self.text_max_tokens if text_only else self.max_tokens}
+        if "enum" in features and not text_only:
             config["responseMimeType"] = "text/x.enum"
             config["responseSchema"] = {"type": "STRING", "enum": list(options)}
         if "thinking" in features:
             config["thinkingConfig"] = {"thinkingBudget": 0}
-        if "logprobs" in features and self.top_logprobs > 0:
+        if "logprobs" in features and self.top_logprobs > 0 and not text_only:
             config["responseLogprobs"], config["logprobs"] = True, self.top_logprobs
-        parts = [{"inline_data": {"mime_type": image.mime, "data": image.png_b64}}, {"text": prompt}]
-        return {"contents": [{"role": "user", "parts": parts}], "generationConfig": config}
+        parts = [] if text_only else [{"inline_data": {"mime_type": image.mime, "data": image.png_b64}}]
+        return {"contents": [{"role": "user", "parts": [*parts, {"text": prompt}]}], "generationConfig": config}
 
     def read(self, data: Any) -> Reply:
         candidate = dig(data, "candidates", 0)

@@ -17,6 +17,10 @@ llama.cpp pass over them); Ollama has no constrained choice here, so its answers
 strictly like anyone's. A server that rejects an unknown field (OpenAI's own API answers 400
 "Unrecognized request argument") gets the request again without it (see :mod:`.base`).
 
+A text-only request (:meth:`~.base.HttpVLM.complete`, goal parsing) is the same POST with the
+prompt as the message's plain string content, no image part, no constraint and no logprobs,
+``max_tokens`` = ``text_max_tokens``; ``finish_reason == "length"`` means it was cut off.
+
 The reply is ``choices[0].message.content``; ``message.refusal`` (OpenAI) or
 ``finish_reason == "content_filter"`` is a refusal; ``choices[0].logprobs.content[i]`` gives each
 token's ``logprob`` and ``top_logprobs``, from which the answer's confidence is read. The key,
@@ -44,6 +48,7 @@ class OpenAICompatVLM(HttpVLM):
     """Asks an OpenAI-compatible chat-completions server about a frame."""
 
     name = "openai"
+    truncated = frozenset({"length"})
     features = (
         Feature("structured_outputs", ("structured_outputs",)),
         Feature("guided_choice", ("guided_choice",)),
@@ -57,8 +62,11 @@ class OpenAICompatVLM(HttpVLM):
     def auth_headers(self, api_key: str) -> dict[str, str]:
         return {"Authorization": f"Bearer {api_key}"} if api_key else {}
 
-    def request(self, prompt: str, image: EncodedImage, options: tuple[str, ...],
+    def request(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...],
                 features: frozenset[str]) -> dict:
+        if image is None:  # text only (goal parsing): the prompt as the message, nothing constrained
+            return {"model": self.model, "messages": [{"role": "user", "content": prompt}],
+                    "temperature": 0, "max_tokens": self.text_max_tokens, "n": 1, "stream": False}
         content = [{"type": "image_url", "image_url": {"url": image.data_url()}}, {"type": "text", "text": prompt}]
         body: dict[str, Any] = {"model": self.model, "messages": [{"role": "user", "content": content}],
                                 "temperature": 0, "max_tokens": self.max_tokens, "n": 1, "stream": False}

@@ -3,13 +3,14 @@
 One :class:`RequestRecord` per :meth:`ask`: what was asked (purpose, prompt, options), about
 which frame (its id, and the SHA-1 of its rgb bytes, see :mod:`.image`), what came back (HTTP
 status, the model's raw text, or the error body), how it was read (``outcome``, value,
-confidence) and what it cost (attempts, latency). The API key is never part of a record.
+confidence) and what it cost (attempts, latency). The API key is never part of a record. A
+text-only ``complete`` (goal parsing) is recorded the same way, with kind ``text`` and no frame.
 
 ``outcome`` is one of:
 
 =============  ==============================================================
-answer         the reply was read as a value
-unparsed       a reply, but not yes/no or exactly one option
+answer         the reply was read as a value (text: the reply's stripped text)
+unparsed       a reply, but not yes/no or exactly one option (text: cut off at the budget)
 refusal        the model or the server declined (a refusal, a safety block)
 empty          a well-formed reply without text (no choices, no candidates)
 malformed      the body was not the protocol's JSON
