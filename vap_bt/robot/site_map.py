@@ -8,6 +8,12 @@ not hold is anything that changes: where the items are, whether a door or a cabi
 is in the hand. Those are perceived.
 
 A symbolic world's map has names and no geometry (``bounds``, ``pose`` and ``footprint`` are None).
+
+For manipulation the map also carries what a furniture model annotates once per piece, as a
+semantic map of a home does: its height, its cavity (where things go in, and from which side),
+how its door or drawer moves (:class:`Articulation`: hinge or slide, where the handle is), and
+where its switch or tap is. Where a door stands *now* — open, half open, shut — is not in the
+map: it is perceived, or felt through the handle while the hand pulls it.
 """
 
 from __future__ import annotations
@@ -41,6 +47,44 @@ class DoorInfo:
     rooms: tuple[str, str]
     pose: tuple[float, float, float] | None = None
     width: float | None = None
+    articulation: Articulation | None = None
+
+
+Vec3 = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Articulation:
+    """How a door leaf or a drawer moves, in the map frame, at its closed position (q = 0).
+
+    A revolute leaf turns about ``axis`` through ``origin``; a prismatic drawer slides along
+    ``axis``. ``handle`` is the middle of the handle bar, ``normal`` the outward normal of the face
+    holding it, ``bar`` the bar's direction (fingers close across it); ``opened`` is the joint value
+    when fully open (sign included), ``lower``/``upper`` the joint's range. ``other_side``: room
+    doors have a second handle on the other face, this far behind the first. ``leaf_center`` and
+    ``leaf_half``: the moving part's box at q = 0 (what sweeps through the room)."""
+
+    prismatic: bool
+    origin: Vec3
+    axis: Vec3
+    handle: Vec3
+    normal: Vec3
+    bar: Vec3
+    opened: float
+    lower: float
+    upper: float
+    leaf_center: Vec3
+    leaf_half: Vec3
+    other_side: float | None = None
+
+
+@dataclass(frozen=True)
+class Cavity:
+    """A container's hollow: its height range, wall thickness, and the side it opens on."""
+
+    z: tuple[float, float]
+    wall: float
+    open: str  # "front" (through a door) or "top"
 
 
 @dataclass(frozen=True)
@@ -53,6 +97,11 @@ class FurnitureInfo:
     room: str
     pose: tuple[float, float, float] | None = None  # x, y, yaw of the front's outward normal
     footprint: tuple[float, float] | None = None  # width along the front, depth (m)
+    height: float | None = None  # of the outer box (a surface's top)
+    cavity: Cavity | None = None
+    articulation: Articulation | None = None
+    switch: Vec3 | None = None  # where an appliance is switched on (pressed from the front)
+    tap: Vec3 | None = None  # where a sink's water runs
 
     @property
     def front(self) -> tuple[float, float] | None:
