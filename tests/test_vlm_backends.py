@@ -32,9 +32,11 @@ from vap_bt.perception.vlm import Query
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 
+from conftest import household_profile
+
 HANG = "hang"  # a scripted "reply": keep the connection open and never answer
 CUP = Atom("on", ("cup", "table"))
-QUESTION = prompts.questions(CUP)[0]
+QUESTION = household_profile().questions(CUP)[0]
 YESNO = Query(prompts.predicate_query(QUESTION), about=(CUP,), objects=CUP.args)
 VIEWPOINT = Query(prompts.viewpoint_selection(QUESTION, "cup"), kind="choice", purpose="viewpoint",
                   about=(CUP,), objects=CUP.args, options=VIEW_DIRECTIONS)
@@ -333,7 +335,7 @@ def test_concurrent_questions_of_a_round_are_each_answered_and_recorded(serve):
 
     server = serve(script=script)
     atoms = [Atom("on", ("cup", "table")), Atom("on", ("plate", "table"))] * 4
-    queries = [Query(prompts.predicate_query(prompts.questions(a)[0]), about=(a,)) for a in atoms]
+    queries = [Query(prompts.predicate_query(household_profile().questions(a)[0]), about=(a,)) for a in atoms]
     with openai(server) as vlm, ThreadPoolExecutor(max_workers=8) as pool:
         answers = list(pool.map(lambda q: vlm.ask(q, FRAME), queries))
     assert [a.value for a in answers] == [a.args[0] == "cup" for a in atoms]

@@ -110,7 +110,7 @@ def cmd_export(args) -> int:
     plan = Planner(planning).plan()
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
-                           budget=task.options.budget)
+                           budget=task.options.budget, profile=task.profile)
     xml = to_btcpp_xml(compile_plan(ctx, plan.actions, planning.goal, planning.knowledge))
     if args.output:
         Path(args.output).write_text(xml)

@@ -21,8 +21,9 @@ from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.domain.planner import Planner
+from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
-from vap_bt.perception.vlm import MeteredVLM
+from vap_bt.perception.vlm import MeteredVLM, Paraphraser
 from vap_bt.report import versions
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.detector import DetectorModel
@@ -112,6 +113,13 @@ def make_vlm(task: Task, world: World, cfg: RunConfig):
     raise ValueError(f"unknown VLM backend {cfg.vlm!r} (sim)")
 
 
+def make_profile(task: Task, vlm) -> PerceptionProfile:
+    """The task's perception profile; a VLM that writes paraphrases writes the missing ones."""
+    if isinstance(vlm, Paraphraser):
+        return resolve(task.planning.knowledge, task.perception_file, paraphraser=vlm)
+    return task.profile
+
+
 def make_geometry(cfg: RunConfig):
     """The executive's point-cloud fusion (a factory the builder calls), for worlds whose frames
     carry depth; the symbolic world's frames have none."""
@@ -140,6 +148,7 @@ class Session:
         self.world = make_world(self.task, self.cfg)
         self.skills = make_skills(self.task, self.world)
         self.vlm = make_vlm(self.task, self.world, self.cfg)
+        self.profile = make_profile(self.task, self.vlm)
         self._embedded = None
         if self.cfg.transport == "zenoh":
             from vap_bt.transport.embedded import EmbeddedTransport
@@ -162,7 +171,8 @@ class Session:
         executive = Executive(self.task.planning, self.planner, skills, robot, robot, metered, settings, progress,
                               on_tree=self.recorder.on_tree if self.recorder is not None else None,
                               prior=self.task.prior, geometry=make_geometry(cfg),
-                              on_survey=lambda survey, graph: scores.append(self._score(survey, graph)))
+                              on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
+                              profile=self.profile)
         return executive, metered
 
     def build_graph(self, seed: int | None = None) -> dict:
@@ -232,7 +242,7 @@ class Session:
                       "detector": detector.describe() if detector is not None else None},
             "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts)},
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
-                           "surveys": [s.to_json() for s in out.surveys]},
+                           "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json()},
             "plans": [p.to_json() for p in out.plans],
             "actions_executed": ctx.actions,
             "situations": [s.to_json() for s in out.situations],

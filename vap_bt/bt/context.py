@@ -14,6 +14,7 @@ from typing import Callable, Literal
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
+from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.verification import Round, VoteSettings
 from vap_bt.perception.vlm import VLM
 from vap_bt.scene.graph import SceneGraph
@@ -119,6 +120,9 @@ class ExecutionContext:
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
     #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
     unchecked: dict[tuple, Unchecked] = field(default_factory=dict)
+    #: which predicates are asked of the VLM, and with which questions (None: the compiler reads
+    #: the domain's own, :func:`vap_bt.perception.profile.resolve`)
+    profile: PerceptionProfile | None = None
     t0: float = field(default_factory=time.perf_counter)
 
     def now(self) -> float:

@@ -41,7 +41,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import UnsolvableError
-from vap_bt.perception.prompts import verifiable
+from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.state_survey import StateAnswer, survey_states
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import VLM
@@ -107,7 +107,8 @@ class Executive:
                  on_tree: Callable[[py_trees.trees.BehaviourTree, int], None] | None = None,
                  prior: frozenset[Atom] = frozenset(),
                  geometry: Callable[..., Geometry] | None = None,
-                 on_survey: Callable[[Survey, SceneGraph], None] | None = None) -> None:
+                 on_survey: Callable[[Survey, SceneGraph], None] | None = None,
+                 profile: PerceptionProfile | None = None) -> None:
         self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
             task, planner, skills, camera, body, vlm
         self.s = settings or ExecutiveSettings()
@@ -116,6 +117,8 @@ class Executive:
         self.on_survey = on_survey or (lambda survey, graph: None)
         self.prior = frozenset(prior)
         self.geometry = geometry
+        #: which predicates are asked of the VLM and how (default: the domain's own profile)
+        self.profile = profile if profile is not None else resolve(task.knowledge)
         #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
         self.outcome: EpisodeOutcome | None = None
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
@@ -127,7 +130,7 @@ class Executive:
         graph, survey = self.perceive()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, unseen=self.s.unseen, felt=self._felt)
+                               aim=self.builder.aim, unseen=self.s.unseen, felt=self._felt, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
             plan = self.planner.plan(graph.state(), self.task.goal)
@@ -245,7 +248,7 @@ class Executive:
 
     def _ask_states(self, graph: SceneGraph) -> list[StateAnswer]:
         """Ask the VLM whether each container and door seen is open; believe what settles."""
-        if self.vlm is None or not verifiable("open") or "open" not in self.task.knowledge.predicates:
+        if self.vlm is None or not self.profile.asks("open", 1):
             return []
         k = self.task.knowledge
         sig = k.predicates["open"][0]
@@ -254,7 +257,7 @@ class Executive:
                       and k.is_subtype(f.type, "container")}
         candidates = [n for n in sorted(self.builder.evidence) if n in openable | containers
                       and k.is_subtype(self.task.objects[n], sig)]
-        answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote)
+        answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile)
         complement = k.complements.get("open")
         for a in answers:
             if a.value is not None:

@@ -30,7 +30,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
 
     def update(self) -> Status:
         obs = self.observation = self.ctx.camera.capture(self.ctx.aim(self.ctx.graph, self.atom.args))
-        r = vote_round(self.ctx.vlm, obs, self.atom, self.ctx.vote)
+        r = vote_round(self.ctx.vlm, obs, self.atom, self.ctx.vote, self.ctx.profile)
         if r.consistent and r.vote is not None:
             r.sufficient = check_sufficiency(self.ctx.vlm, obs, self.atom, r.questions[0])
         self.round = r

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
+from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.vlm import VLM, Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 from vap_bt.robot.frame import Frame
@@ -53,9 +54,10 @@ def objects_of(atom: Atom) -> tuple[str, ...]:
     return atom.args
 
 
-def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings) -> Round:
-    """Ask the paraphrases of ``atom`` about ``obs`` and vote (paper Alg. 2, lines 2–4)."""
-    qs = prompts.questions(atom, s.paraphrases)
+def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings, profile: PerceptionProfile) -> Round:
+    """Ask the paraphrases of ``atom`` (its domain's ``profile`` has them) about ``obs`` and vote
+    (paper Alg. 2, lines 2–4)."""
+    qs = profile.questions(atom, s.paraphrases)
     r = Round(view=obs.frame_id)
     need = s.agreement * len(qs)
     for q in qs:
