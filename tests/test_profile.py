@@ -248,3 +248,16 @@ def test_the_survey_asks_open_only_where_the_profile_sources_it_from_the_vlm(tmp
     assert rep["perception"]["surveys"][0]["states"] == []
     assert not any(v["predicate"].startswith("open(") for v in rep["verifications"])
     assert any(u["name"] == "open" and "source none" in u["reason"] for u in rep["unchecked"])
+
+
+def test_the_runner_lets_a_writing_vlm_write_and_keeps_the_task_profile_otherwise():
+    from vap_bt.runner import make_profile
+    from vap_bt.sim.sim_vlm import SimVLM
+
+    task = taskfile.from_spec(taskfile.TaskFile(name="ferry", domain=str(FERRY[0]), problem=str(FERRY[1])),
+                              base=DOMAINS, where=FERRY[1])
+    assert make_profile(task, SimVLM(lambda frame_id: None)) is task.profile  # the sim VLM writes nothing
+    writer = WritingVLM(lambda p, types: [f"W{i} {p} " + " ".join(f"{{{c}}}" for c in "XY"[:len(types)]) + "?"
+                                          for i in range(5)])
+    written = make_profile(task, writer)
+    assert written.get("at", 2).origin == "writer (m-1)" and written.get("on", 1).origin == "vap_bt"

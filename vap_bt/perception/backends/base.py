@@ -13,6 +13,10 @@ reply, and which headers carry the key. Everything else is done once, here:
   unknown fields (vLLM, Ollama, llama.cpp) simply answer;
 * the reply is read strictly (:mod:`.reply`) and every query is recorded (:mod:`.record`).
 
+:meth:`HttpVLM.paraphrase` is the protocol's optional part: one text-only request (the
+protocol's :meth:`~HttpVLM.text_request`) asking the model to write question templates for a
+predicate nobody wrote paraphrases for; its reply is checked line by line and recorded too.
+
 ``ask`` never raises: whatever goes wrong — the network, the server, the reply, a bug here — is
 an :class:`~vap_bt.perception.vlm.Answer` with ``value=None`` and a record saying why. It is
 safe to call from many threads at once.
@@ -34,12 +38,14 @@ from vap_bt.perception.backends.image import EncodedImage, ImageCache
 from vap_bt.perception.backends.record import RequestLog, RequestRecord
 from vap_bt.perception.backends.reply import (
     YES_NO, TokenChoice, is_refusal, option_confidence, option_name, read_answer)
+from vap_bt.perception.paraphrase import read_generated, request_prompt
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.frame import Frame
 
 log = logging.getLogger("vap_bt.vlm")
 
 ERROR_BODY_CHARS = 2000  # of an error body kept in a record: enough for any server's message
+PARAPHRASE_TOKENS = 400  # the answer budget of a paraphrase request: five short questions, with room
 
 
 @dataclass(frozen=True)
@@ -109,6 +115,10 @@ class HttpVLM:
         """The request body; ``features`` names the optional features to include."""
         raise NotImplementedError
 
+    def text_request(self, prompt: str, max_tokens: int) -> dict:
+        """A text-only request body, no image and no answer constraint (to write paraphrases)."""
+        raise NotImplementedError
+
     def read(self, data: Any) -> Reply:
         raise NotImplementedError
 
@@ -145,19 +155,25 @@ class HttpVLM:
             rec.outcome, rec.error = "no_image", str(e)
             return
         rec.frame_sha1, rec.image_size = image.sha1, (image.width, image.height)
-        ex = self._post(query.prompt, image, rec.options, deadline, rec)
+        data = self._body(self._post(query.prompt, image, rec.options, deadline, rec), rec)
+        if data is not None:
+            self._interpret(query, self.read(data), rec)
+
+    @staticmethod
+    def _body(ex: Exchange, rec: RequestRecord) -> dict | None:
+        """The reply's JSON object; None (and the record says why) for anything else."""
         rec.status = ex.status
         if ex.failure:
             rec.outcome, rec.error, rec.reply = ex.failure, ex.detail, ex.text[:ERROR_BODY_CHARS]
-            return
+            return None
         if ex.status != 200:
             rec.outcome, rec.error, rec.reply = "http_error", f"HTTP {ex.status}", ex.text[:ERROR_BODY_CHARS]
-            return
+            return None
         data = ex.json()
         if not isinstance(data, dict):
             rec.outcome, rec.error, rec.reply = "malformed", "the body is not a JSON object", ex.text[:ERROR_BODY_CHARS]
-            return
-        self._interpret(query, self.read(data), rec)
+            return None
+        return data
 
     def _post(self, prompt: str, image: EncodedImage, options: tuple[str, ...], deadline: float,
               rec: RequestRecord) -> Exchange:
@@ -195,6 +211,35 @@ class HttpVLM:
         """The features of this request that a 400's body names."""
         text = error_body.lower()
         return {f.name for f in self.features if f.name in sent and any(m in text for m in f.markers)}
+
+    # --- paraphrases (the optional part of the VLM protocol) ------------------------------------
+    def paraphrase(self, predicate: str, arg_types: tuple[str, ...], n: int) -> list[str] | None:
+        """``n`` question templates for ``predicate`` written by the model in one text-only
+        request (:func:`~vap_bt.perception.paraphrase.request_prompt`), checked line by line;
+        None when the reply does not hold ``n`` usable ones. Recorded like every query; never raises."""
+        t0 = time.perf_counter()
+        prompt = request_prompt(predicate, tuple(arg_types), n)
+        rec = RequestRecord(backend=self.name, model=self.model, purpose="paraphrase", kind="text",
+                            prompt=prompt, options=(), frame_id="")
+        texts = None
+        try:
+            ex = self._transport.post(self.endpoint(), self.text_request(prompt, PARAPHRASE_TOKENS),
+                                      time.monotonic() + self.policy.deadline_s)
+            rec.attempts += ex.attempts
+            data = self._body(ex, rec)
+            if data is not None:
+                reply = self.read(data)
+                rec.reply, rec.finish_reason = reply.text or "", reply.finish_reason
+                texts = None if reply.refused else read_generated(reply.text, len(arg_types), n)
+                rec.outcome = "refusal" if reply.refused else "answer" if texts else "unparsed"
+                rec.error = reply.refused or (None if texts else f"no {n} usable question templates in the reply")
+                rec.value = "\n".join(texts) if texts else None
+        except Exception as e:  # the contract: no paraphrases, never an exception
+            log.exception("VLM %s: paraphrase request failed", self.name)
+            rec.outcome, rec.error, texts = "error", f"{type(e).__name__}: {e}", None
+        rec.latency_s = time.perf_counter() - t0
+        self._log.add(rec)
+        return texts
 
     # --- for the report -------------------------------------------------------------------------
     @property

@@ -27,6 +27,10 @@ without it (see :mod:`.base`). A rate limit is a 429 whose ``error.details`` hol
 ``type.googleapis.com/google.rpc.RetryInfo`` with ``retryDelay`` (a duration such as
 ``"37s"``): that delay is waited when it fits the query's deadline, else the query abstains.
 
+Paraphrases for a predicate without any (:meth:`~.base.HttpVLM.paraphrase`) are asked with the
+same endpoint and a text-only body: one text part, ``temperature`` 0, a larger
+``maxOutputTokens``, thinking off where the model allows it, no enum and no logprobs.
+
 The reply is ``candidates[0].content.parts[*].text`` (thought parts skipped); a prompt blocked
 (``promptFeedback.blockReason``) or an answer stopped for safety (``finishReason`` SAFETY,
 PROHIBITED_CONTENT, ...) is a refusal; ``candidates[0].logprobsResult`` gives
@@ -97,6 +101,12 @@ class GeminiVLM(HttpVLM):
             config["responseLogprobs"], config["logprobs"] = True, self.top_logprobs
         parts = [{"inline_data": {"mime_type": image.mime, "data": image.png_b64}}, {"text": prompt}]
         return {"contents": [{"role": "user", "parts": parts}], "generationConfig": config}
+
+    def text_request(self, prompt: str, max_tokens: int) -> dict:
+        config: dict[str, Any] = {"temperature": 0, "maxOutputTokens": max_tokens, "candidateCount": 1}
+        if "thinking" in self._enabled():
+            config["thinkingConfig"] = {"thinkingBudget": 0}
+        return {"contents": [{"role": "user", "parts": [{"text": prompt}]}], "generationConfig": config}
 
     def read(self, data: Any) -> Reply:
         candidate = dig(data, "candidates", 0)

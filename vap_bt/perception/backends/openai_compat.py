@@ -17,6 +17,10 @@ llama.cpp pass over them); Ollama has no constrained choice here, so its answers
 strictly like anyone's. A server that rejects an unknown field (OpenAI's own API answers 400
 "Unrecognized request argument") gets the request again without it (see :mod:`.base`).
 
+Paraphrases for a predicate without any (:meth:`~.base.HttpVLM.paraphrase`) are asked in a
+text-only request to the same endpoint: one user message with the text as its content,
+``temperature`` 0, a larger ``max_tokens``, no constraint and no logprobs.
+
 The reply is ``choices[0].message.content``; ``message.refusal`` (OpenAI) or
 ``finish_reason == "content_filter"`` is a refusal; ``choices[0].logprobs.content[i]`` gives each
 token's ``logprob`` and ``top_logprobs``, from which the answer's confidence is read. The key,
@@ -71,6 +75,10 @@ class OpenAICompatVLM(HttpVLM):
         if "logprobs" in features and self.top_logprobs > 0:
             body["logprobs"], body["top_logprobs"] = True, self.top_logprobs
         return body
+
+    def text_request(self, prompt: str, max_tokens: int) -> dict:
+        return {"model": self.model, "messages": [{"role": "user", "content": prompt}],
+                "temperature": 0, "max_tokens": max_tokens, "n": 1, "stream": False}
 
     def read(self, data: Any) -> Reply:
         choice = dig(data, "choices", 0)
