@@ -198,6 +198,12 @@ def test_a_backend_writes_the_missing_paraphrases_and_bad_writing_falls_back_to_
     assert sorted(a[0] for a in good.asked) == ["at", "empty-ferry"]  # on/1, at-ferry/1 are the file's
     at = p.get("at", 2)
     assert at.generated and at.origin == "writer (m-1)" and at.paraphrases[0] == "Q0 at: {X} {Y}?"
+    # another predicate's question is no paraphrase of this one: a backend that writes the same
+    # five texts for every predicate of one argument gets them used once (at-ferry/1, first)
+    echo = WritingVLM(["Is the {X} here?", "Is the {X} there?", "Is it the {X}?", "Is the {X} it?", "The {X}?"])
+    bare = profiles.resolve(_without_file(k), paraphraser=echo)
+    assert bare.get("at-ferry", 1).origin == "writer (m-1)" and bare.get("on", 1).origin == "templates"
+    assert "writer (m-1) wrote no 5 usable paraphrases" in bare.get("on", 1).fallback
     junk = WritingVLM(["Is it?", "Is the {X} there?", "{Q}?", "", "Is the {X} there?"])
     p = profiles.resolve(k, paraphraser=junk)
     at = p.get("at", 2)

@@ -222,19 +222,23 @@ def resolve(knowledge: DomainKnowledge, path: str | Path | None = None,
     where = str(path) if path is not None else "perception profile"
     _check_domain(spec, knowledge, where)
     out: dict[tuple[str, int], PredicatePerception] = {}
+    # what a backend writes must not repeat another predicate's question (the answer could not be
+    # told apart): the file's texts are taken first, then each written one in turn
+    taken = {t for e in spec.predicates.values() for t in e.paraphrases}
     for name, types in knowledge.predicates.items():
         entry = spec.predicates.get(f"{name}/{len(types)}")
         if entry is None:
             rigid = knowledge.is_rigid(name)
             entry = PredicateSpec(source="map" if rigid else "vlm", origin="",
                                   note="default for a predicate no action changes" if rigid else "")
-        out[(name, len(types))] = _perception(name, tuple(types), entry, paraphraser)
+        out[(name, len(types))] = p = _perception(name, tuple(types), entry, paraphraser, taken)
+        taken |= set(p.paraphrases)
     _check_distinct(out.values(), where)
     return PerceptionProfile(out, Path(path) if path is not None else None)
 
 
 def _perception(name: str, types: tuple[str, ...], entry: PredicateSpec,
-                paraphraser: Paraphraser | None) -> PredicatePerception:
+                paraphraser: Paraphraser | None, taken: set[str]) -> PredicatePerception:
     base = PredicatePerception(name, types, entry.source, tuple(entry.paraphrases), entry.origin, False, entry.note)
     if entry.source != "vlm" or entry.paraphrases:
         return base
@@ -245,7 +249,8 @@ def _perception(name: str, types: tuple[str, ...], entry: PredicateSpec,
             texts = paraphraser.paraphrase(name, types, TEMPLATE_COUNT)
         except Exception as exc:  # a backend's failure costs it the chance, never the run
             texts, fallback = None, f"{by} failed: {type(exc).__name__}: {exc}"
-        texts = usable(texts, len(types), TEMPLATE_COUNT) if isinstance(texts, (list, tuple)) else None
+        texts = usable([t for t in texts if t not in taken], len(types), TEMPLATE_COUNT) \
+            if isinstance(texts, (list, tuple)) else None
         if texts:
             return PredicatePerception(name, types, "vlm", tuple(texts), by, True, entry.note)
         fallback = fallback or f"{by} wrote no {TEMPLATE_COUNT} usable paraphrases"
