@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from functools import lru_cache
 from pathlib import Path
 
 import pytest
@@ -11,7 +12,10 @@ ROOT = Path(__file__).resolve().parents[1]
 TREES = ROOT / "trees"
 DOMAINS = Path(__file__).resolve().parent / "domains"
 HOUSEHOLD = ROOT / "domains" / "household.pddl"
-PAPER = ROOT.parent / "shared" / "paper" / "vap-tamp.tex"
+#: the paper beside the checkout (/work/main -> /work/shared), or beside a worktree's parent
+PAPER = next((p for p in (ROOT.parent / "shared" / "paper" / "vap-tamp.tex",
+                          ROOT.parent.parent / "shared" / "paper" / "vap-tamp.tex") if p.exists()),
+             ROOT.parent / "shared" / "paper" / "vap-tamp.tex")
 
 LITERATURE = [
     ("blocksworld-domain.pddl", "blocksworld-p6.pddl"),
@@ -19,6 +23,14 @@ LITERATURE = [
     ("logistics-domain.pddl", "logistics-p1.pddl"),
 ]
 HOUSEHOLD_TASKS = sorted(p.name for p in TREES.glob("*.yaml"))
+
+
+@lru_cache(maxsize=1)
+def household_profile():
+    """The household domain's perception profile (domains/household.perception.yaml, resolved)."""
+    from vap_bt.taskfile import load
+
+    return load(TREES / "collect_cup.yaml").profile
 
 
 @pytest.fixture(scope="module")

@@ -7,12 +7,11 @@ import pytest
 
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
-from vap_bt.bt.compiler import unchecked_reason
 from vap_bt.bt.execute_skill import ExecuteSkill
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
 
-from conftest import tree_for
+from conftest import household_profile, tree_for
 
 
 def checks(seq: py_trees.composites.Sequence) -> list[str]:
@@ -34,7 +33,7 @@ def test_tree_shape_for_both(cup):
         assert step.memory
         kinds = [type(c) for c in step.children]
         # a phase with nothing to check is left out (find: no precondition the camera judges)
-        has_pre = any(unchecked_reason(l.atom.predicate, task.knowledge) is None for l in action.preconditions)
+        has_pre = any(household_profile().unchecked_reason(l.atom) is None for l in action.preconditions)
         assert kinds == [py_trees.composites.Sequence] * has_pre + [
             ExecuteSkill, ApplyEffects, py_trees.composites.Sequence]
         assert [c.name for c in step.children if isinstance(c, py_trees.composites.Sequence)] == (

@@ -40,7 +40,7 @@ import numpy as np
 import pytest
 from py_trees.common import Status
 
-from conftest import ROOT, TREES
+from conftest import ROOT, TREES, household_profile
 
 pytest.importorskip("rerun")
 
@@ -86,7 +86,6 @@ def boil(tmp_path_factory) -> Recorded:
 @pytest.mark.slow
 def test_the_recording_holds_the_final_tree_a_frame_and_a_verifications_questions(boil):
     from vap_bt.domain.atoms import Atom
-    from vap_bt.perception import prompts
 
     rep = boil.report
     assert rep["success"] and rep["goal_satisfied"]
@@ -112,7 +111,7 @@ def test_the_recording_holds_the_final_tree_a_frame_and_a_verifications_question
     # for the atom, each with the answer the report recorded, then the vote and view sufficiency
     v = rep["verifications"][0]
     page = boil.rows["/verification/round"][0]["TextDocument:text"][0]
-    questions = prompts.questions(Atom.parse(v["predicate"]), 5)
+    questions = household_profile().questions(Atom.parse(v["predicate"]), 5)
     answers = v["rounds"][0]["answers"]
     assert page.startswith(f"# {v['predicate']}") and f"check of **{v['action']}**" in page
     for i, (q, a) in enumerate(zip(questions, answers), start=1):

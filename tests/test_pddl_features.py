@@ -259,7 +259,9 @@ def test_grounding_prunes_with_rigid_facts_only():
 
 
 @pytest.mark.parametrize("feature", ["equality", "forall/when (briefcase-like)"])
-def test_unparaphrased_predicates_are_reported_unchecked(cli, feature, tmp_path):
+def test_a_domain_without_a_profile_verifies_what_actions_change(cli, feature, tmp_path):
+    """No profile beside the domain: every predicate some action changes is asked of the VLM with
+    generated paraphrases; the rigid ones are map knowledge, reported unchecked with the reason."""
     domain, problem = FEATURES[feature]
     code, out, err = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
                          "--no-injection", "--vlm-error", "0", "--transport", "inproc", "--report", tmp_path / "r.json",
@@ -267,12 +269,17 @@ def test_unparaphrased_predicates_are_reported_unchecked(cli, feature, tmp_path)
     summary = load_json(out)
     assert code == 0 and summary["goal_satisfied"] and err == ""
     full = load_json((tmp_path / "r.json").read_text())
-    assert full["verifications"] == [], "no predicate of this domain has paraphrases: nothing can be asked"
+    task = task_of(feature)
+    k = task.knowledge
     reasons = {u["name"]: u["reason"] for u in full["unchecked"]}
     assert reasons == summary["unchecked"]
-    assert any("no paraphrases" in r for r in reasons.values())
-    goal_atoms = {str(l.atom) for l in task_of(feature).goal}
-    assert goal_atoms <= {u["predicate"] for u in full["unchecked"] if u["phase"] == "goal"}
+    assert set(reasons) <= set(k.predicates) - k.fluent_predicates
+    assert all("source map" in r for r in reasons.values())
+    verified = {v["predicate"].split("(")[0] for v in full["verifications"]}
+    assert verified and verified <= k.fluent_predicates
+    assert {str(l.atom) for l in task.goal} <= {v["predicate"] for v in full["verifications"] if v["phase"] == "goal"}
+    generated = {g["predicate"].split("/")[0] for g in full["perception"]["profile"]["generated"]}
+    assert generated == k.fluent_predicates and full["perception"]["profile"]["file"] is None
 
 
 def test_either_in_a_predicate_declaration_is_widened_to_the_common_ancestor():

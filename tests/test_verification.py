@@ -15,7 +15,7 @@ from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.sim_vlm import SimVLM
 from vap_bt.robot.frame import Frame
 
-from conftest import PAPER
+from conftest import PAPER, household_profile
 
 
 def _paper_texttt() -> str:
@@ -24,19 +24,26 @@ def _paper_texttt() -> str:
     return re.sub(r"\s+", " ", appendix)
 
 
-def _tex(s: str) -> str:
-    return s.replace("_", "\\_").replace("{", "\\{").replace("}", "\\}")
+def _appendix_paraphrases() -> dict[str, list[str]]:
+    """The appendix's "Predicate Paraphrase Templates", section by section: predicate -> texts."""
+    text = PAPER.read_text()
+    text = text[text.index("\\label{appendix:paraphrases}"):text.index("\\end{appendices}")]
+    out = {}
+    for chunk in text.split("\\subsubsection{")[1:]:
+        title = chunk[:chunk.index("}")]
+        name = re.split(r"\(| --", title)[0].replace("\\_", "_").strip()
+        items = re.findall(r"\\item \\texttt\{((?:[^{}\\]|\\.)*)\}", chunk)
+        out[name] = [re.sub(r"\\([{}_])", r"\1", i) for i in items]
+    return out
 
 
 @pytest.mark.skipif(not PAPER.exists(), reason=f"the paper is not beside the checkout ({PAPER})")
 def test_paper_paraphrases_are_verbatim():
-    appendix = _paper_texttt()
-    book = prompts.book()
-    paper_preds = [p for p, src in book.sources.items() if src == "paper"]
-    assert len(paper_preds) == 9
-    for pred in paper_preds:
-        for q in book.paraphrases[pred]:
-            assert f"\\texttt{{{_tex(q)}}}" in appendix, (pred, q)
+    """The household profile's paper paraphrases are the appendix's, section by section, in order."""
+    appendix = _appendix_paraphrases()
+    assert len(appendix) == 9 and all(len(v) == 5 for v in appendix.values())
+    paper = {p.name: list(p.paraphrases) for p in household_profile().predicates.values() if p.origin == "paper"}
+    assert paper == appendix
 
 
 @pytest.mark.skipif(not PAPER.exists(), reason=f"the paper is not beside the checkout ({PAPER})")
@@ -87,14 +94,14 @@ CUP = Atom("on", ("cup", "table"))
     ([None] * 5, None, False),
 ])
 def test_majority_vote_and_consistency(answers, vote, consistent):
-    r = vote_round(Scripted(answers), OBS, CUP, VoteSettings())
+    r = vote_round(Scripted(answers), OBS, CUP, VoteSettings(), household_profile())
     assert (r.vote, r.consistent) == (vote, consistent)
     assert len(r.questions) == 5 and r.questions[0] == "Is the cup on the table?"
 
 
 def test_early_stop_asks_fewer_questions_with_the_same_outcome():
-    full = vote_round(Scripted([True] * 5), OBS, CUP, VoteSettings())
-    early = vote_round(Scripted([True] * 5), OBS, CUP, VoteSettings(early_stop=True))
+    full = vote_round(Scripted([True] * 5), OBS, CUP, VoteSettings(), household_profile())
+    early = vote_round(Scripted([True] * 5), OBS, CUP, VoteSettings(early_stop=True), household_profile())
     assert (early.vote, early.consistent) == (full.vote, full.consistent)
     assert len(early.answers) == 4  # after four agreeing answers nothing can change
 
@@ -142,7 +149,7 @@ def test_sim_vlm_guesses_about_what_it_cannot_see_and_knows_it():
 def rnd(answers: str, sufficient: bool | None) -> Round:
     """A round from answers like "yyyyn" (y/n/? for yes/no/abstained), voted as the paper votes."""
     vals = [{"y": True, "n": False, "?": None}[c] for c in answers]
-    r = vote_round(Scripted(vals), OBS, CUP, VoteSettings())
+    r = vote_round(Scripted(vals), OBS, CUP, VoteSettings(), household_profile())
     r.sufficient = sufficient if r.consistent else None
     return r
 

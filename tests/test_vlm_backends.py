@@ -32,9 +32,11 @@ from vap_bt.perception.vlm import Query
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 
+from conftest import household_profile
+
 HANG = "hang"  # a scripted "reply": keep the connection open and never answer
 CUP = Atom("on", ("cup", "table"))
-QUESTION = prompts.questions(CUP)[0]
+QUESTION = household_profile().questions(CUP)[0]
 YESNO = Query(prompts.predicate_query(QUESTION), about=(CUP,), objects=CUP.args)
 VIEWPOINT = Query(prompts.viewpoint_selection(QUESTION, "cup"), kind="choice", purpose="viewpoint",
                   about=(CUP,), objects=CUP.args, options=VIEW_DIRECTIONS)
@@ -333,7 +335,7 @@ def test_concurrent_questions_of_a_round_are_each_answered_and_recorded(serve):
 
     server = serve(script=script)
     atoms = [Atom("on", ("cup", "table")), Atom("on", ("plate", "table"))] * 4
-    queries = [Query(prompts.predicate_query(prompts.questions(a)[0]), about=(a,)) for a in atoms]
+    queries = [Query(prompts.predicate_query(household_profile().questions(a)[0]), about=(a,)) for a in atoms]
     with openai(server) as vlm, ThreadPoolExecutor(max_workers=8) as pool:
         answers = list(pool.map(lambda q: vlm.ask(q, FRAME), queries))
     assert [a.value for a in answers] == [a.args[0] == "cup" for a in atoms]
@@ -458,6 +460,92 @@ def test_gemini_server_that_never_answers_is_an_abstention(serve):
     with gemini_at(server, policy=policy) as vlm:
         answer = vlm.ask(YESNO, FRAME)
     assert answer.value is None and vlm.requests[0].outcome == "timeout" and len(server.seen) == 2
+
+
+# --- paraphrases written by the backend (the protocol's optional part) ---------------------------
+
+WRITTEN = ["Is the truck {X} parked at the {Y}?", "Is the truck {X} standing at the {Y}?",
+           "Can you see the truck {X} at the {Y}?", "Is the truck {X} located at the {Y}?",
+           "Has the truck {X} arrived at the {Y}?"]
+
+
+def test_openai_writes_paraphrases_in_a_text_only_request(serve):
+    server = serve(chat("Here you are:\n" + "\n".join(f"{i}. {q}" for i, q in enumerate(WRITTEN, 1))))
+    with openai(server) as vlm:
+        texts = vlm.paraphrase("at", ("truck", "location"), 5)
+        rec = vlm.requests[0]
+    assert texts == WRITTEN
+    (req,) = server.seen
+    body = req.body
+    assert req.path == "/v1/chat/completions" and body["model"] == "qwen2.5-vl" and body["temperature"] == 0
+    (message,) = body["messages"]
+    assert isinstance(message["content"], str), "text only: no image"
+    assert "at(X - truck, Y - location)" in message["content"] and "{X}, {Y}" in message["content"]
+    assert not {"structured_outputs", "guided_choice", "grammar", "logprobs"} & set(body)
+    assert rec.purpose == "paraphrase" and rec.outcome == "answer" and rec.frame_id == ""
+
+
+def test_gemini_writes_paraphrases_in_a_text_only_request(serve):
+    server = serve(generate("\n".join(WRITTEN)))
+    with gemini_at(server) as vlm:
+        texts = vlm.paraphrase("at", ("truck", "location"), 5)
+    assert texts == WRITTEN
+    body = server.seen[0].body
+    (part,) = body["contents"][0]["parts"]
+    assert set(part) == {"text"} and "at(X - truck, Y - location)" in part["text"]
+    config = body["generationConfig"]
+    assert config["temperature"] == 0 and config["thinkingConfig"] == {"thinkingBudget": 0}
+    assert "responseSchema" not in config and "responseLogprobs" not in config
+
+
+@pytest.mark.parametrize("reply,outcome", [
+    (chat("Is the truck at the depot?\nIs it there?"), "unparsed"),  # no placeholders: unusable
+    (chat("\n".join(WRITTEN[:3])), "unparsed"),  # too few
+    (chat("", refusal="I cannot help with that."), "refusal"),
+    ((500, {}, "internal error"), "server_error"),
+    (HANG, "timeout"),
+])
+def test_unusable_paraphrase_replies_give_none_and_the_profile_uses_templates(serve, reply, outcome):
+    from vap_bt.domain.pddl import load_task
+    from vap_bt.perception.paraphrase import template_paraphrases
+    from vap_bt.perception.profile import resolve
+
+    from conftest import DOMAINS
+
+    server = serve(reply)
+    policy = RetryPolicy(timeout_s=0.2, deadline_s=0.5, attempts=2, backoff_s=0.05)
+    with openai(server, policy=policy) as vlm:
+        assert vlm.paraphrase("at", ("truck", "location"), 5) is None
+        assert vlm.requests[0].outcome == outcome
+        task = load_task(DOMAINS / "logistics-domain.pddl", DOMAINS / "logistics-p1.pddl")
+        at = resolve(task.knowledge, paraphraser=vlm).get("at", 2)
+    assert at.origin == "templates" and at.paraphrases == tuple(template_paraphrases("at", ("physobj", "place")))
+    assert at.fallback == "openai (qwen2.5-vl) wrote no 5 usable paraphrases"
+
+
+def test_a_profile_resolved_with_a_writing_backend_uses_and_reports_its_paraphrases(serve):
+    from vap_bt.domain.pddl import load_task
+    from vap_bt.perception.profile import resolve
+
+    from conftest import DOMAINS
+
+    def script(i, seen):
+        text = seen.body["messages"][0]["content"]
+        name = text.split("Predicate: ", 1)[1].split("(", 1)[0]
+        holes = " ".join(f"{{{c}}}" for c in "XY"[:text.count(" - ")])
+        return chat("\n".join(f"Does {name} hold ({k}) for {holes}?" for k in range(5)))
+
+    server = serve(script=script)
+    with openai(server) as vlm:
+        task = load_task(DOMAINS / "logistics-domain.pddl", DOMAINS / "logistics-p1.pddl")
+        profile = resolve(task.knowledge, paraphraser=vlm)
+        asked = [r.prompt for r in vlm.requests]
+    assert len(asked) == 2  # at/2 and in/2: in-city/2 is rigid (the map's), not asked
+    generated = {g["predicate"]: g for g in profile.to_json()["generated"]}
+    assert set(generated) == {"at/2", "in/2"}
+    assert generated["in/2"] == {"predicate": "in/2", "by": "openai (qwen2.5-vl)",
+                                 "texts": [f"Does in hold ({k}) for {{X}} {{Y}}?" for k in range(5)]}
+    assert profile.questions(Atom("in", ("pkg1", "truck1")))[0] == "Does in hold (0) for pkg1 truck1?"
 
 
 # --- reading replies, and the factory ------------------------------------------------------------

@@ -123,7 +123,7 @@ def _compiled_tree(args):
     plan = Planner(planning).plan()
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
-                           budget=task.options.budget)
+                           budget=task.options.budget, profile=task.profile)
     return compile_plan(ctx, plan.actions, planning.goal, planning.knowledge)
 
 

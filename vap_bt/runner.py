@@ -25,8 +25,9 @@ from vap_bt.errors import InputError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
 from vap_bt.perception.goal_parsing import GoalParse, GoalParser
 from vap_bt.perception.protocol import Protocol
+from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
-from vap_bt.perception.vlm import MeteredVLM
+from vap_bt.perception.vlm import MeteredVLM, Paraphraser
 from vap_bt.report import versions
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.detector import DetectorModel
@@ -185,6 +186,13 @@ def goal_words(task: Task, cfg: RunConfig) -> GoalWords | None:
     return words
 
 
+def make_profile(task: Task, vlm) -> PerceptionProfile:
+    """The task's perception profile; a VLM that writes paraphrases writes the missing ones."""
+    if isinstance(vlm, Paraphraser):
+        return resolve(task.planning.knowledge, task.perception_file, paraphraser=vlm)
+    return task.profile
+
+
 def make_geometry(cfg: RunConfig):
     """The executive's point-cloud fusion (a factory the builder calls), for worlds whose frames
     carry depth; the symbolic world's frames have none."""
@@ -217,6 +225,7 @@ class Session:
         self._world_side_vlm = self.cfg.vlm == "sim"  # a real backend is the executive's own client
         self._goal_parser: GoalParser | None = None
         self._first_request = 0
+        self.profile = make_profile(self.task, self.vlm)
         self._embedded = None
         if self.cfg.transport == "zenoh":
             from vap_bt.transport.embedded import EmbeddedTransport
@@ -251,7 +260,7 @@ class Session:
                               prior=self.task.prior, geometry=make_geometry(cfg),
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
                               on_verification=self._score_verification,
-                              goal_parser=self._goal_parser)
+                              goal_parser=self._goal_parser, profile=self.profile)
         self._verified: list[bool] = []
         return executive, metered
 
@@ -333,7 +342,7 @@ class Session:
             "goal_parsing": self._goal_parsing_report(),
             "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts), **self._requests()},
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
-                           "surveys": [s.to_json() for s in out.surveys],
+                           "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
                            "verifications": {"n": len(self._verified), "correct": sum(self._verified),
                                              "unsettled": sum(v.outcome == "unsettled" for v in ctx.verifications),
                                              "reused": sum(v.outcome == "reused" for v in ctx.verifications)}},

@@ -12,6 +12,7 @@ the task file. Every mistake is reported once, with the file and the field or li
     scene: {rooms: [...], doors: {...}, robot: {...}, furniture: {...}, items: {...}}
     belief: ["inside(cup, cabinet)"]
     options: {verify: both, budget: 3, max_replans: 10}
+    perception: my_household.perception.yaml   # optional; default: the one beside the domain
 
 A task with an ``instruction:`` and no ``goal:`` has its goal parsed from the words by a real VLM
 after the robot's survey (:mod:`vap_bt.perception.goal_parsing`; see :func:`vap_bt.runner.goal_words`
@@ -22,6 +23,10 @@ the executive never reads it. ``belief:`` is what the user tells the robot about
 not be able to see (the cup is in the closed cabinet); it may be wrong, perception overrides it
 and verification catches what neither saw. A ``problem:`` file's initial state is, likewise, the
 user's account of the situation: the executive takes it as its prior belief.
+
+``perception:`` names the domain's perception profile (which predicates the camera is asked,
+with which questions; :mod:`vap_bt.perception.profile`) when it is not the one beside the domain
+file. It is read and checked against the domain when the task is loaded.
 """
 
 from __future__ import annotations
@@ -29,13 +34,14 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Literal
 
-import yaml
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal as Lit
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import InputError
+from vap_bt.perception.profile import locate as locate_profile, resolve as resolve_profile
 from vap_bt.scene.layout import Layout, layout_facts
+from vap_bt.yaml_file import read_model
 
 Verify = Literal["both", "pre", "eff", "none"]
 
@@ -62,6 +68,7 @@ class TaskFile(BaseModel):
     belief: list[str] = Field(default_factory=list, description="what the user tells the robot (a prior)")
     world: Literal["symbolic", "pybullet"] = "symbolic"
     options: Options = Field(default_factory=Options)
+    perception: str | None = Field(None, description="the domain's perception profile (default: beside the domain)")
 
     @model_validator(mode="after")
     def _scene_or_problem(self) -> "TaskFile":
@@ -76,12 +83,16 @@ class Task:
     """A loaded task: the file's contents plus the planning task they define.
 
     ``planning.init`` is the scenario's true initial state (for worlds to build, never for the
-    executive); ``prior`` is what the executive is told."""
+    executive); ``prior`` is what the executive is told. ``profile`` is the domain's perception
+    profile as read from ``perception_file`` (None: no file, defaults throughout), with template
+    paraphrases where it has none; a runner whose VLM writes paraphrases resolves it again."""
 
     def __init__(self, spec: TaskFile, planning: PlanningTask, path: Path | None,
-                 prior: frozenset | None = None) -> None:
+                 prior: frozenset | None = None, perception_file: Path | None = None) -> None:
         self.spec, self.planning, self.path = spec, planning, path
         self.prior = planning.init if prior is None else prior
+        self.perception_file = perception_file
+        self.profile = resolve_profile(planning.knowledge, perception_file)
 
     @property
     def name(self) -> str:
@@ -94,22 +105,7 @@ class Task:
 
 def load(path: str | Path) -> Task:
     path = Path(path)
-    if not path.is_file():
-        raise InputError(str(path), "no such task file")
-    try:
-        raw = yaml.safe_load(path.read_text())
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f"{path}:{mark.line + 1}" if mark else str(path)
-        raise InputError(where, f"not valid YAML: {getattr(exc, 'problem', exc)}") from None
-    if not isinstance(raw, dict):
-        raise InputError(str(path), "a task file is a mapping (name:, domain:, goal:, ...)")
-    try:
-        spec = TaskFile.model_validate(raw)
-    except ValidationError as exc:
-        err = exc.errors()[0]
-        field = ".".join(str(x) for x in err["loc"]) or "(top level)"
-        raise InputError(f"{path}: field {field}", err["msg"]) from None
+    spec = read_model(path, TaskFile, "task file", "name:, domain:, goal:, ...")
     return from_spec(spec, base=path.parent, where=path)
 
 
@@ -117,11 +113,12 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
     from vap_bt.domain.pddl import load_task, parse_strings
 
     domain_path = (base / spec.domain).resolve()
+    perception = _perception_file(spec, base, domain_path, where)
     if spec.problem is not None:
         planning = load_task(domain_path, (base / spec.problem).resolve())
         if spec.goal:
             planning = planning.with_state(planning.init, _goal(spec.goal, planning, where))
-        return Task(spec, planning, Path(where))
+        return Task(spec, planning, Path(where), perception_file=perception)
     objects = spec.scene.objects()
     facts = layout_facts(spec.scene)
     goal_atoms = [_parse(g, where) for g in spec.goal or ()]  # none: the instruction is parsed
@@ -143,7 +140,18 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
         if why or not lit.positive:
             raise InputError(f"{where}: field belief", why or f"state what holds, not what does not: {text_atom!r}")
         prior.append(lit.atom)
-    return Task(spec, planning, Path(where), frozenset(prior))
+    return Task(spec, planning, Path(where), frozenset(prior), perception_file=perception)
+
+
+def _perception_file(spec: TaskFile, base: Path, domain_path: Path, where) -> Path | None:
+    """The task's ``perception:`` file, else the profile beside the domain, else None (defaults)."""
+    if spec.perception is not None:
+        path = (base / spec.perception).resolve()
+        if not path.is_file():
+            raise InputError(f"{where}: field perception", f"no such perception profile: {path}")
+        return path
+    beside = locate_profile(domain_path)
+    return beside if beside.is_file() else None
 
 
 def _parse(text: str, where, field: str = "goal") -> Lit:

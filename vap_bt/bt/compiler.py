@@ -19,9 +19,10 @@ in turn): before an action, the precondition literals that hold it in the expect
 a conjunction; of a disjunction, the disjunct believed true); after it, the state difference it
 makes there — every atom it adds (the paper's Eff+, conditional effects included where their
 conditions are expected to hold) and the deleted atoms the rest of the plan needs false. Of
-those, the camera is asked about atoms whose predicate it can judge (there are paraphrases for
-it) and that some action can change (rigid facts are map knowledge); every other atom is recorded
-on the context as unchecked, with the reason, for the report. Before claiming success, the goal's
+those, the camera is asked about the atoms whose predicate the domain's perception profile
+(:mod:`vap_bt.perception.profile`) sources from the VLM; every other atom — proprioception's,
+the map's (rigid facts, by default), or never checked — is recorded on the context as unchecked,
+with the profile's reason, for the report. Before claiming success, the goal's
 atoms are looked at once more (``goal``, with the effect checks): an effect confirmed minutes ago
 may have been undone since (a bottle rolled off the counter). The verification mode removes whole
 phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase with nothing to
@@ -43,24 +44,23 @@ from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.domain.atoms import Literal
 from vap_bt.domain.expectation import StepExpectation, expect
 from vap_bt.domain.knowledge import DomainKnowledge, GroundAction
-from vap_bt.perception.prompts import verifiable
+from vap_bt.perception.profile import PerceptionProfile, resolve
 
 
-def unchecked_reason(predicate: str, knowledge: DomainKnowledge) -> str | None:
-    """Why atoms of ``predicate`` are not asked of the camera (None: they are)."""
-    if knowledge.is_rigid(predicate):
-        return f"{predicate!r} is rigid: no action changes it (map knowledge, not looked at)"
-    if not verifiable(predicate):
-        return f"no paraphrases for {predicate!r}: the camera cannot be asked yet (no perception profile)"
-    return None
+def profile_of(ctx: ExecutionContext, knowledge: DomainKnowledge) -> PerceptionProfile:
+    """The context's perception profile; the domain's own (read once) when it has none."""
+    if ctx.profile is None:
+        ctx.profile = resolve(knowledge)
+    return ctx.profile
 
 
 def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None, step: int,
             knowledge: DomainKnowledge) -> list[py_trees.composites.Sequence]:
     """The phase's check sequence, as a list of one — or none when there is nothing to check."""
+    profile = profile_of(ctx, knowledge)
     asked = []
     for l in literals:
-        reason = unchecked_reason(l.atom.predicate, knowledge)
+        reason = profile.unchecked_reason(l.atom)
         if reason is None:
             asked.append(l)
         else:

@@ -17,6 +17,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.bt.inflight import InlineExecutor
 from vap_bt.perception.protocol import Protocol
+from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.verification import Round, VoteSettings
 from vap_bt.perception.viewpoints import ViewpointStrategy
 from vap_bt.perception.vlm import VLM
@@ -159,6 +160,9 @@ class ExecutionContext:
     record: Callable[["Verification"], None] = lambda v: None
     #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
     unchecked: dict[tuple, Unchecked] = field(default_factory=dict)
+    #: which predicates are asked of the VLM, and with which questions (None: the compiler reads
+    #: the domain's own, :func:`vap_bt.perception.profile.resolve`)
+    profile: PerceptionProfile | None = None
     t0: float = field(default_factory=time.perf_counter)
 
     def submit(self, fn, *args) -> Future:

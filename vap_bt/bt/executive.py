@@ -45,7 +45,7 @@ from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import UnsolvableError
-from vap_bt.perception.prompts import verifiable
+from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.viewpoints import ViewpointStrategy
 from vap_bt.perception.state_survey import StateAnswer, survey_states
@@ -121,7 +121,8 @@ class Executive:
                  geometry: Callable[..., Geometry] | None = None,
                  on_survey: Callable[[Survey, SceneGraph], None] | None = None,
                  on_verification: Callable[[Verification], None] | None = None,
-                 goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None) -> None:
+                 goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None,
+                 profile: PerceptionProfile | None = None) -> None:
         self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
             task, planner, skills, camera, body, vlm
         self.s = settings or ExecutiveSettings()
@@ -133,6 +134,8 @@ class Executive:
         self.geometry = geometry
         #: ParseGoal (vap_bt.perception.goal_parsing): the goal from words, over the graph's objects
         self.goal_parser = goal_parser
+        #: which predicates are asked of the VLM and how (default: the domain's own profile)
+        self.profile = profile if profile is not None else resolve(task.knowledge)
         #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
         self.outcome: EpisodeOutcome | None = None
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
@@ -151,7 +154,7 @@ class Executive:
                                aim=self.builder.aim, unseen=self.s.unseen, felt=self._felt,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                verified=Verified(self.s.protocol.reuse), executor=executor,
-                               record=self.on_verification)
+                               record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
             try:
@@ -273,7 +276,7 @@ class Executive:
 
     def _ask_states(self, graph: SceneGraph) -> list[StateAnswer]:
         """Ask the VLM whether each container and door seen is open; believe what settles."""
-        if self.vlm is None or not verifiable("open") or "open" not in self.task.knowledge.predicates:
+        if self.vlm is None or not self.profile.asks("open", 1):
             return []
         k = self.task.knowledge
         sig = k.predicates["open"][0]
@@ -282,7 +285,7 @@ class Executive:
                       and k.is_subtype(f.type, "container")}
         candidates = [n for n in sorted(self.builder.evidence) if n in openable | containers
                       and k.is_subtype(self.task.objects[n], sig)]
-        answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote)
+        answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile)
         complement = k.complements.get("open")
         for a in answers:
             if a.value is not None:

@@ -50,7 +50,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
             if not self._frame.done():
                 return Status.RUNNING
             self.observation, self._frame = self._frame.result(), None
-            self._asker = RoundAsker(self.atom, self.observation, self.ctx.vote, self.ctx.protocol)
+            self._asker = RoundAsker(self.atom, self.observation, self.ctx.vote, self.ctx.profile, self.ctx.protocol)
         if self._asker is not None:
             return self._ask()
         if self._sufficiency is not None:

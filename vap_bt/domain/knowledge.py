@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
+from pathlib import Path
 from typing import Protocol
 
 from vap_bt.domain.atoms import Atom, Literal
@@ -162,6 +163,8 @@ class DomainKnowledge:
     instances: Instantiator | None = field(default=None, repr=False)
     #: the task has an action-cost metric (PDDL :action-costs); otherwise every action costs 1
     has_costs: bool = False
+    #: the PDDL file the domain was read from (its perception profile lies beside it), if any
+    domain_file: Path | None = None
     _ground: dict[tuple[str, tuple[str, ...]], GroundAction] = field(default_factory=dict, repr=False)
 
     def is_subtype(self, t: str, ancestor: str) -> bool:

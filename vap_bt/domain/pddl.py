@@ -59,7 +59,7 @@ def load_task(domain_file: str | Path, problem_file: str | Path) -> PlanningTask
     except Exception as exc:
         raise explain_unreadable([problem]) or _parse_error(problem_path, exc) from None
     return from_up(up_problem, source=f"{domain_path} + {problem_path}", where=problem_path,
-                   sources=[domain, problem])
+                   sources=[domain, problem], domain_file=domain_path)
 
 
 def parse_strings(domain_file: str | Path, problem_text: str, where: str) -> PlanningTask:
@@ -74,10 +74,11 @@ def parse_strings(domain_file: str | Path, problem_text: str, where: str) -> Pla
     except Exception as exc:
         raise explain_unreadable([domain]) or _parse_error(where, exc) from None
     return from_up(up_problem, source=f"{domain_path} + {where}", where=where,
-                   sources=[domain, Source(where, problem_text)])
+                   sources=[domain, Source(where, problem_text)], domain_file=domain_path)
 
 
-def from_up(problem, source: str, where: Path | str, sources: list[Source] | None = None) -> PlanningTask:
+def from_up(problem, source: str, where: Path | str, sources: list[Source] | None = None,
+            domain_file: Path | None = None) -> PlanningTask:
     """Translate a unified-planning problem into a :class:`PlanningTask` (refusing what vap_bt
     does not run)."""
     sources = sources or [Source(str(where), "")]
@@ -93,7 +94,7 @@ def from_up(problem, source: str, where: Path | str, sources: list[Source] | Non
     schemas = {a.name: _schema(a) for a in compiled.actions}
     objects = {o.name: o.type.name for o in problem.all_objects}
     knowledge = DomainKnowledge(name=problem.name, parents=parents, predicates=predicates, schemas=schemas,
-                                instances=instances, has_costs=instances.has_costs)
+                                instances=instances, has_costs=instances.has_costs, domain_file=domain_file)
     init = frozenset(_atom(k) for k, v in problem.initial_values.items() if k.type.is_bool_type() and v.is_true())
     goal = _goal(instances, where)
     return PlanningTask(knowledge=knowledge, objects=objects, init=init, goal=goal,

@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.verification import Round, VoteSettings, check_sufficiency, vote_round
 from vap_bt.perception.vlm import VLM
 from vap_bt.robot.frame import Frame
@@ -43,15 +44,17 @@ class StateAnswer:
 
 
 def survey_states(vlm: VLM, frames: dict[str, list[Frame]], candidates: list[str], vote: VoteSettings,
-                  predicates: tuple[str, ...] = SURVEYED) -> list[StateAnswer]:
-    """Ask each of ``predicates`` about each candidate, of the frames that showed it, until settled."""
+                  profile: PerceptionProfile, predicates: tuple[str, ...] = SURVEYED) -> list[StateAnswer]:
+    """Ask each of ``predicates`` the profile asks of the VLM about each candidate, of the frames
+    that showed it, until settled."""
     out = []
+    predicates = tuple(p for p in predicates if profile.asks(p, 1))
     for name in candidates:
         shown = frames.get(name, [])
         for p in predicates:
             atom, rounds = Atom(p, (name,)), []
             for frame in shown:
-                r = vote_round(vlm, frame, atom, vote)
+                r = vote_round(vlm, frame, atom, vote, profile)
                 if r.consistent and r.vote is not None:
                     r.sufficient = check_sufficiency(vlm, frame, atom, r.questions[0])
                 rounds.append(r)

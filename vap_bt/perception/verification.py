@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
+from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.vlm import VLM, Answer, Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
@@ -72,10 +73,11 @@ class RoundAsker:
       stands for the whole vote, otherwise the others are asked as above.
     """
 
-    def __init__(self, atom: Atom, frame: Frame, s: VoteSettings, protocol: Protocol | None = None) -> None:
+    def __init__(self, atom: Atom, frame: Frame, s: VoteSettings, profile: PerceptionProfile,
+                 protocol: Protocol | None = None) -> None:
         self.atom, self.frame, self.s = atom, frame, s
         self.protocol = protocol or Protocol("paper", early_stop=s.early_stop)
-        self.questions = prompts.questions(atom, s.paraphrases)
+        self.questions = profile.questions(atom, s.paraphrases)
         self.queries = [Query(prompts.predicate_query(q), about=(atom,), objects=objects_of(atom)) for q in self.questions]
         self.need = s.agreement * len(self.questions)
         self.answers: dict[int, bool | None] = {}
@@ -142,10 +144,11 @@ class RoundAsker:
         return r
 
 
-def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings, protocol: Protocol | None = None) -> Round:
-    """Ask the paraphrases of ``atom`` about ``obs`` and vote (paper Alg. 2, lines 2–4), waiting
+def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings, profile: PerceptionProfile,
+               protocol: Protocol | None = None) -> Round:
+    """Ask the paraphrases of ``atom`` (its domain's ``profile`` has them) about ``obs`` and vote (paper Alg. 2, lines 2–4), waiting
     for each answer (the survey, and tests; behaviours use :class:`RoundAsker` without waiting)."""
-    asker = RoundAsker(atom, obs, s, protocol)
+    asker = RoundAsker(atom, obs, s, profile, protocol)
     while not asker.done:
         for i in asker.to_ask():
             asker.give(i, vlm.ask(asker.queries[i], obs))

@@ -18,7 +18,7 @@ from __future__ import annotations
 import re
 import time
 from dataclasses import dataclass
-from typing import Callable, Literal, Protocol, TypeVar
+from typing import Callable, Literal, Protocol, TypeVar, runtime_checkable
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Frame
@@ -65,6 +65,9 @@ class Answer:
 
 
 class VLM(Protocol):
+    """A model that answers queries about frames. A backend that can also write paraphrases for
+    predicates nobody wrote any for implements :class:`Paraphraser` as well (optional)."""
+
     name: str
 
     def ask(self, query: Query, frame: Frame) -> Answer: ...
@@ -105,6 +108,19 @@ class TextModel(Protocol):
     name: str
 
     def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion: ...
+
+
+@runtime_checkable
+class Paraphraser(Protocol):
+    """The optional part of the VLM protocol: write ``n`` yes/no question templates for a
+    predicate (``{X}`` its first argument, ``{Y}`` its second, ...), or None when it cannot.
+    What comes back is checked before use (:mod:`vap_bt.perception.paraphrase`)."""
+
+    name: str
+
+    def paraphrase(self, predicate: str, arg_types: tuple[str, ...], n: int) -> list[str] | None: ...
+
+    def describe(self) -> dict: ...
 
 
 _YES = re.compile(r"^\W*(yes|y|true)\b", re.I)

@@ -285,7 +285,7 @@ class SceneGraphBuilder:
             if door is not None:
                 rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"} & set(door.rooms)
                 return self._door_view(door, sorted(rooms)[0] if rooms else door.rooms[0])
-            support = [a.args[1] for a in sorted(graph.location(name)) if a.predicate in SUPPORT_PREDICATES]
+            support = [a.args[1] for a in sorted(graph.location(name)) if _supports(a)]
             if not support:
                 break
             name = support[0]
@@ -313,7 +313,7 @@ class SceneGraphBuilder:
         if obj is not None and obj.centroid is not None and obj.located == frozenset(graph.location(name)):
             return obj.centroid
         for a in sorted(graph.location(name)):
-            if a.predicate in SUPPORT_PREDICATES:
+            if _supports(a):
                 return self.point_of(graph, a.args[1], depth + 1)
         return self._map_point(name)
 
@@ -330,3 +330,9 @@ class SceneGraphBuilder:
             x0, y0, x1, y1 = room.bounds
             return ((x0 + x1) / 2, (y0 + y1) / 2, 0.0)
         return None
+
+
+def _supports(atom: Atom) -> bool:
+    """``atom`` puts its first argument on or in its second (another domain's ``on ?c`` of one
+    argument — a car on the ferry — names no support to look at)."""
+    return atom.predicate in SUPPORT_PREDICATES and len(atom.args) == 2

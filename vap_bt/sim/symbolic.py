@@ -168,7 +168,7 @@ class SymbolicWorld:
         for a in sorted(self.atoms):
             if a.predicate not in REPORTED or obj not in a.args or not self._holds(a):
                 continue
-            if a.predicate in ("on", "inside") and a.args[0] == obj \
+            if a.predicate in ("on", "inside") and len(a.args) == 2 and a.args[0] == obj \
                     and self._detect_rng.random() < self.detector.relation_error:
                 a = Atom(a.predicate, (obj, self._wrong_support(a)))
             out.append(a)

@@ -13,6 +13,10 @@ reply, and which headers carry the key. Everything else is done once, here:
   unknown fields (vLLM, Ollama, llama.cpp) simply answer;
 * the reply is read strictly (:mod:`.reply`) and every query is recorded (:mod:`.record`).
 
+:meth:`HttpVLM.paraphrase` is the protocol's optional part: one text-only request (as
+:meth:`HttpVLM.complete` sends) asking the model to write question templates for a
+predicate nobody wrote paraphrases for; its reply is checked line by line and recorded too.
+
 ``ask`` never raises: whatever goes wrong — the network, the server, the reply, a bug here — is
 an :class:`~vap_bt.perception.vlm.Answer` with ``value=None`` and a record saying why. It is
 safe to call from many threads at once.
@@ -37,6 +41,7 @@ from vap_bt.perception.backends.image import EncodedImage, ImageCache
 from vap_bt.perception.backends.record import RequestLog, RequestRecord
 from vap_bt.perception.backends.reply import (
     YES_NO, TokenChoice, is_refusal, option_confidence, option_name, read_answer)
+from vap_bt.perception.paraphrase import read_generated, request_prompt
 from vap_bt.perception.vlm import Answer, Completion, Purpose, Query
 from vap_bt.robot.frame import Frame
 
@@ -89,13 +94,13 @@ class HttpVLM:
 
     def __init__(self, url: str, model: str, api_key: str = "", policy: RetryPolicy = RetryPolicy(),
                  max_tokens: int = 8, top_logprobs: int = 5,
-                 on_request: Callable[[RequestRecord], None] | None = None, text_max_tokens: int = 256) -> None:
+                 on_request: Callable[[RequestRecord], None] | None = None, text_max_tokens: int = 400) -> None:
         self.url = url.rstrip("/")
         self.model = model
         self.policy = policy
         self.max_tokens = max_tokens
         self.top_logprobs = top_logprobs  # 0: logprobs not asked for
-        self.text_max_tokens = text_max_tokens  # of a text-only reply: a goal of a dozen atoms fits
+        self.text_max_tokens = text_max_tokens  # of a text-only reply: a goal of a dozen atoms, or five paraphrases, fits
         self._has_key = bool(api_key)
         self._log = RequestLog(on_request)
         self._images = ImageCache()
@@ -242,6 +247,30 @@ class HttpVLM:
         """The features of this request that a 400's body names."""
         text = error_body.lower()
         return {f.name for f in self.features if f.name in sent and any(m in text for m in f.markers)}
+
+    # --- paraphrases (the optional part of the VLM protocol) ------------------------------------
+    def paraphrase(self, predicate: str, arg_types: tuple[str, ...], n: int) -> list[str] | None:
+        """``n`` question templates for ``predicate`` written by the model in one text-only
+        request (:func:`~vap_bt.perception.paraphrase.request_prompt`), checked line by line;
+        None when the reply does not hold ``n`` usable ones. Recorded like every query; never raises."""
+        prompt = request_prompt(predicate, tuple(arg_types), n)
+        rec = RequestRecord(backend=self.name, model=self.model, purpose="paraphrase", kind="text",
+                            prompt=prompt, options=(), frame_id="")
+        texts: list[str] | None = None
+
+        def work(deadline: float) -> None:
+            nonlocal texts
+            reply = self._exchange(prompt, None, (), deadline, rec)
+            if reply is None:
+                return
+            rec.reply, rec.finish_reason = reply.text or "", reply.finish_reason
+            texts = None if reply.refused else read_generated(reply.text, len(arg_types), n)
+            rec.outcome = "refusal" if reply.refused else "answer" if texts else "unparsed"
+            rec.error = reply.refused or (None if texts else f"no {n} usable question templates in the reply")
+            rec.value = "\n".join(texts) if texts else None
+
+        self._recorded(rec, work)
+        return texts
 
     # --- for the report -------------------------------------------------------------------------
     @property

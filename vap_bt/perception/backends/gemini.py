@@ -31,6 +31,10 @@ A text-only request (:meth:`~.base.HttpVLM.complete`, goal parsing) has only the
 enum and no logprobs, thinking still off, ``maxOutputTokens`` = ``text_max_tokens``;
 ``finishReason`` MAX_TOKENS means it was cut off.
 
+Paraphrases for a predicate without any (:meth:`~.base.HttpVLM.paraphrase`) are asked with the
+same endpoint and a text-only body: one text part, ``temperature`` 0, a larger
+``maxOutputTokens``, thinking off where the model allows it, no enum and no logprobs.
+
 The reply is ``candidates[0].content.parts[*].text`` (thought parts skipped); a prompt blocked
 (``promptFeedback.blockReason``) or an answer stopped for safety (``finishReason`` SAFETY,
 PROHIBITED_CONTENT, ...) is a refusal; ``candidates[0].logprobsResult`` gives

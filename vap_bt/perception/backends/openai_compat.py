@@ -21,6 +21,10 @@ A text-only request (:meth:`~.base.HttpVLM.complete`, goal parsing) is the same 
 prompt as the message's plain string content, no image part, no constraint and no logprobs,
 ``max_tokens`` = ``text_max_tokens``; ``finish_reason == "length"`` means it was cut off.
 
+Paraphrases for a predicate without any (:meth:`~.base.HttpVLM.paraphrase`) are asked in a
+text-only request to the same endpoint: one user message with the text as its content,
+``temperature`` 0, a larger ``max_tokens``, no constraint and no logprobs.
+
 The reply is ``choices[0].message.content``; ``message.refusal`` (OpenAI) or
 ``finish_reason == "content_filter"`` is a refusal; ``choices[0].logprobs.content[i]`` gives each
 token's ``logprob`` and ``top_logprobs``, from which the answer's confidence is read. The key,

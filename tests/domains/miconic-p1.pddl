@@ -1,0 +1,5 @@
+(define (problem miconic-p1) (:domain miconic)
+  (:objects p0 p1 - passenger f0 f1 f2 - floor)
+  (:init (origin p0 f1) (destin p0 f2) (origin p1 f2) (destin p1 f0)
+         (above f0 f1) (above f0 f2) (above f1 f2) (lift-at f0))
+  (:goal (and (served p0) (served p1))))
