@@ -1,26 +1,51 @@
-"""A skill that performs its action by asking the world to do it.
+"""A skill that moves the robot itself: through its kit (:mod:`skills.kit`) and the robot's drivers.
 
-Worlds already know how to carry out every domain action (motion in pybullet, fact updates in the
-symbolic world), so the built-in skills are thin: they report that they started, hand the action
-to :meth:`World.perform`, and turn the world's :class:`~vap_bt.world.ActionOutcome` into a
-:class:`~vap_bt.skill.SkillResult`. A subclass only names its action, robot and resource.
+:class:`MotionSkill` is what every built-in skill is: it binds to a robot that offers the driver
+interfaces (:mod:`vap_bt.robot.drivers`), runs one goal inside the robot's kit (cancellation
+reaching every driver call, progress reaching the goal's feedback) and turns how the motion
+ended into a :class:`~vap_bt.skill.SkillResult`: a motion that was stopped — cancelled, or a
+driver refused it — fails with the reason; a trip stopped at a shut door fails naming the door;
+everything else is the motion's own view (a grasp that closed on nothing still *completed*: that
+it failed is for perception to find out). A subclass sets ``action`` and implements :meth:`run`.
+
+On a world without drivers (the symbolic one) these skills do not bind, and the world performs
+their actions instead (:func:`vap_bt.plugins.instantiate`).
 """
 
 from __future__ import annotations
 
-from vap_bt.skill import Skill, SkillResult
+from typing import Any
+
+from skills.body import Stopped
+from skills.hands import Outcome
+from skills.kit import Kit, has_drivers, kit_for
+from skills.navigator import Blocked
+from vap_bt.skill import Hint, Skill, SkillResult
 from vap_bt.world import GoalContext
 
 
-class WorldActionSkill(Skill):
-    """Perform ``self.action`` on ``self.world``; a subclass sets ``action`` (and robot/resource)."""
+class MotionSkill(Skill):
+    """Perform ``self.action`` by moving the robot (a subclass implements :meth:`run`)."""
+
+    @classmethod
+    def binds(cls, world: Any) -> bool:
+        return has_drivers(world)
 
     def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult:
         call = f"{self.action}({', '.join(args)})"
         if ctx.cancelled():  # cancelled while queued: do not start moving
             return SkillResult(False, f"{call} cancelled before it started")
         ctx.feedback(0.0, f"{call} started")
-        outcome = self.world.perform(self.action, tuple(args), ctx)
-        ctx.feedback(1.0, f"{call} {'completed' if outcome.completed else 'failed'}")
-        return SkillResult(outcome.completed, outcome.message or call)
+        kit = kit_for(self.world)
+        try:
+            with kit.goal(ctx):
+                out = self.run(kit, tuple(args), dict(getattr(ctx, "hints", {}) or {}))
+        except Stopped as e:
+            return SkillResult(False, f"{call} stopped: {e}")
+        except Blocked as e:
+            return SkillResult(False, str(e))
+        ctx.feedback(1.0, f"{call} {'completed' if out.completed else 'failed'}")
+        return SkillResult(out.completed, out.message or call)
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        raise NotImplementedError

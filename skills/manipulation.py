@@ -1,74 +1,123 @@
-"""Skills of the UR5e arm and its gripper: everything the hand does to objects.
+"""Skills of the UR5e arm and its gripper: everything the hand does to things.
 
-Each class only binds a PDDL action of the household domain to the arm; what the action means is
-the domain's business (``domains/household.pddl``) and how it moves is the world's.
+Each class binds a PDDL action of the household domain to the arm and says which of the goal's
+arguments it works on; how the hand moves is :mod:`skills.hands` (and :mod:`skills.handles` for
+doors and drawers), from what the camera measures where the goal's hints say to look.
 """
 
 from __future__ import annotations
 
-from skills.base import WorldActionSkill
+from skills.base import MotionSkill
+from skills.hands import Outcome, Where
+from skills.kit import Kit
+from vap_bt.skill import Hint
 
 
-class ArmSkill(WorldActionSkill):
+class ArmSkill(MotionSkill):
     robot = "ur5e"
     resource = "arm"
 
 
 class Grasp(ArmSkill):
-    """grasp: pick an object up from a surface."""
+    """grasp(o, s, r): pick ``o`` up from surface ``s``."""
 
     action = "grasp"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        o, s = args[:2]
+        return kit.hands.grasp(o, kit.point(hints, o), Where(on=s))
+
 
 class TakeOut(ArmSkill):
-    """takeout: grasp an object from inside an open container."""
+    """takeout(o, c, r): grasp ``o`` from inside the open container ``c``."""
 
     action = "takeout"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        o, c = args[:2]
+        return kit.hands.grasp(o, kit.point(hints, o), Where(inside=c))
+
 
 class PlaceIn(ArmSkill):
-    """placein: put the held object inside an open container."""
+    """placein(o, c, r): put the held ``o`` inside the open container ``c``."""
 
     action = "placein"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        o, c = args[:2]
+        if not kit.holding(o):
+            return Outcome(False, f"not holding {o}")
+        return kit.hands.place(o, c, inside=True)
+
 
 class PlaceOn(ArmSkill):
-    """placeon: put the held object on a surface."""
+    """placeon(o, s, r): put the held ``o`` on surface ``s``."""
 
     action = "placeon"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        o, s = args[:2]
+        if not kit.holding(o):
+            return Outcome(False, f"not holding {o}")
+        return kit.hands.place(o, s, inside=False)
+
 
 class Open(ArmSkill):
-    """open: open a door or lid."""
+    """open(x): open a door, a cabinet's door or a drawer by its handle."""
 
     action = "open"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        return kit.handles.open_close(args[0], opening=True)
+
 
 class Close(ArmSkill):
-    """close: close a door or lid."""
+    """close(x): close a door, a cabinet's door or a drawer by its handle."""
 
     action = "close"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        return kit.handles.open_close(args[0], opening=False)
+
 
 class TurnOn(ArmSkill):
-    """turnon: switch an appliance on."""
+    """turnon(a, o): press appliance ``a``'s switch."""
 
     action = "turnon"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        return kit.hands.press(args[0])
+
 
 class Cut(ArmSkill):
-    """cut: cut an object with a held tool."""
+    """cut(o, k): cut ``o`` with the held knife ``k``."""
 
     action = "cut"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        o, k = args[:2]
+        if not kit.holding(k):
+            return Outcome(False, f"not holding {k}")
+        return kit.hands.cut(o, k, kit.point(hints, o), kit.where(hints, o))
+
 
 class Fill(ArmSkill):
-    """fill: fill a vessel, e.g. at the sink."""
+    """fill(o, s): fill the held vessel ``o`` at sink ``s``."""
 
     action = "fill"
 
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        o, s = args[:2]
+        if not kit.holding(o):
+            return Outcome(False, f"not holding {o}")
+        return kit.hands.fill(o, s)
+
 
 class Push(ArmSkill):
-    """push: push a blocking object aside so that another becomes reachable."""
+    """push(b, o): push ``b`` aside so that ``o`` becomes reachable."""
 
     action = "push"
+
+    def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        b, o = args[:2]
+        return kit.hands.push(b, o, {n: kit.point(hints, n) for n in (b, o)}, kit.where(hints, b))

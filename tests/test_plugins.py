@@ -14,10 +14,10 @@ import textwrap
 import pytest
 
 from plugin_fixtures.fact_world import FactWorld
-from skills.base import WorldActionSkill
+from skills.base import MotionSkill
 from vap_bt import plugins
 from vap_bt.domain.atoms import Atom
-from vap_bt.skill import GoalState, Skill, SkillResult
+from vap_bt.skill import GoalState, Skill, SkillResult, WorldActionSkill
 from vap_bt.robot.camera import Aim
 from vap_bt.transport.inprocess import InProcessRobot, InProcessSkillClient
 
@@ -42,7 +42,7 @@ def test_builtin_skills_are_found_through_the_entry_point_group():
     assert {e.action: e.robot for e in entries if e.distribution == "vap-bt"} == BUILTIN
     grasp = next(e for e in entries if e.action == "grasp")
     assert (grasp.name, grasp.resource, grasp.module) == ("grasp", "arm", "skills.manipulation:Grasp")
-    assert issubclass(grasp.cls, WorldActionSkill) and grasp.version == "0.1.0"
+    assert issubclass(grasp.cls, MotionSkill) and grasp.version == "0.1.0"
     assert plugins.routes(entries) == BUILTIN
 
 
@@ -51,6 +51,11 @@ def test_instantiate_binds_skills_to_the_world_per_robot():
     base = plugins.instantiate(world, robot="base")
     assert set(base) == {"navigate", "find"} and base["find"].world is world
     assert set(plugins.instantiate(world)) == set(BUILTIN)
+    # a world without drivers cannot be moved by motion skills: it performs their actions itself,
+    # under the plugins' robots and resources
+    assert not MotionSkill.binds(world)
+    find = base["find"]
+    assert isinstance(find, WorldActionSkill) and (find.robot, find.resource) == ("base", "base")
 
 
 def test_broken_plugins_are_one_warning_each_and_skipped(tmp_path, monkeypatch, caplog):
@@ -85,7 +90,7 @@ def test_broken_plugins_are_one_warning_each_and_skipped(tmp_path, monkeypatch, 
 def test_two_plugins_for_one_action_is_an_error_naming_both(tmp_path, monkeypatch, cli):
     fake_distribution(tmp_path, "better-grasp", {"grasp2": "vapbt_grasp2:Grasp2"}, {
         "vapbt_grasp2": """
-            from skills.base import WorldActionSkill
+            from vap_bt.skill import WorldActionSkill
             class Grasp2(WorldActionSkill):
                 action = "grasp"
         """,

@@ -15,13 +15,12 @@ import zenoh
 
 from plugin_fixtures.fact_world import FactWorld
 from plugin_fixtures.zenoh_net import endpoint, free_port, session, wait_until
-from skills.manipulation import Grasp, Open, PlaceOn
 from vap_bt.domain.atoms import Atom
-from vap_bt.skill import GoalState, Skill, SkillResult
+from vap_bt.skill import GoalState, Skill, SkillResult, performed_by_world
 from vap_bt.transport import keys
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.transport.client import ZenohRobot, ZenohSkillClient
-from vap_bt.transport.messages import GoalRequest, encode
+from vap_bt.transport.messages import SCHEMA, GoalRequest, encode
 from vap_bt.transport.server import SkillServer
 
 pytestmark = pytest.mark.timeout(30)
@@ -35,7 +34,9 @@ class Explodes(Skill):
 
 
 def arm_skills(world) -> dict[str, Skill]:
-    return {cls.action: cls(world) for cls in (Grasp, PlaceOn, Open, Explodes)}
+    """The arm's actions performed by the fact world (it has no drivers to move), and one that raises."""
+    skills = {a: performed_by_world(a, world, "ur5e", "arm") for a in ("grasp", "placeon", "open")}
+    return {**skills, "explode": Explodes(world)}
 
 
 @pytest.fixture
@@ -131,7 +132,7 @@ def test_garbage_and_foreign_schema_requests_get_an_error_reply(net):
     frame = encode(GoalRequest("x-1", "grasp", ("cup", "table")))
     foreign = frame[:4] + struct.pack("<I", 9) + frame[8:]  # the schema field
     replies = list(s_cli.get(key, payload=foreign, timeout=2))
-    assert "peer speaks message schema 9, this side speaks 4" in replies[0].err.payload.to_string()
+    assert f"peer speaks message schema 9, this side speaks {SCHEMA}" in replies[0].err.payload.to_string()
 
 
 def test_robot_interfaces_over_zenoh(net):

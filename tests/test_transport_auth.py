@@ -15,8 +15,8 @@ import pytest
 import zenoh
 
 from plugin_fixtures.fact_world import FactWorld
+from vap_bt.skill import performed_by_world
 from plugin_fixtures.zenoh_net import endpoint, free_port, wait_until
-from skills.manipulation import Grasp
 from vap_bt.errors import TransportError
 from vap_bt.skill import GoalState
 from vap_bt.transport.client import ZenohSkillClient
@@ -49,7 +49,7 @@ def test_session_without_credentials_cannot_start_a_goal(tmp_path):
     router = open_session(TransportSettings(config_file=router_conf))
     server_s = open_session(TransportSettings(config_file=_config(
         tmp_path / "srv.json5", "client", router_ep, {"user": "skills", "password": "t0ken"})))
-    server = SkillServer(server_s, "ur5e", {"grasp": Grasp(FactWorld())}, name="arm").start()
+    server = SkillServer(server_s, "ur5e", {"grasp": performed_by_world("grasp", FactWorld(), "ur5e", "arm")}, name="arm").start()
     try:
         # the authorised executive gets its goal done through the router
         good_s = open_session(TransportSettings(config_file=_config(

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.skill import Feedback, GoalState, SkillResult
+from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
 from vap_bt.transport.messages import (CancelRequest, GoalReply, GoalRequest, GoalStatus, MessageError,
                                        SchemaMismatch, decode, encode)
@@ -28,6 +28,10 @@ def test_messages_round_trip():
     assert back.result.data == {"n": 3, "v": [0.0, 1.0]} and back.state is GoalState.SUCCEEDED
     req = GoalRequest("g-2", "grasp", ("cup", "table"), "c")
     assert decode(encode(req), GoalRequest) == req
+    # the executive's hints ride with the goal: where belief puts each object, on or in what
+    hinted = GoalRequest("g-2", "grasp", ("cup", "table"), "c",
+                         (Hint("cup", (1.0, 2.5, 0.78), on="table"), Hint("table")))
+    assert decode(encode(hinted), GoalRequest) == hinted
     # goal traffic has a binary header: non-ASCII text, empty strings and feedback-only status
     for msg in (GoalReply("g-3", False, "busy: tête à tête ✓", "arm"), GoalRequest("g-4", "say", ("", "ü"), ""),
                 CancelRequest("g-5"), GoalStatus("g-6", GoalState.ACTIVE, Feedback(0.25, "¼ done"), None, "arm")):
@@ -72,11 +76,11 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
         decode(obs[:-1], Frame)
     frame = encode(GoalReply("g", True))
     foreign = frame[:4] + struct.pack("<I", 2) + frame[8:]  # the schema field
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 4"):
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 5"):
         decode(foreign, GoalReply)
     # a schema-1 peer (JSON header for every kind) is recognised as such
     head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 4"):
+    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 5"):
         decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
 
 

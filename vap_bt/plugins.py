@@ -27,7 +27,7 @@ from importlib import metadata
 from typing import Iterable
 
 from vap_bt.errors import EXIT_BAD_INPUT, VapBtError
-from vap_bt.skill import ENTRY_POINT_GROUP, Skill
+from vap_bt.skill import ENTRY_POINT_GROUP, Skill, performed_by_world
 from vap_bt.world import World
 
 log = logging.getLogger(__name__)
@@ -150,14 +150,25 @@ def instantiate(
 ) -> dict[str, Skill]:
     """One skill object per action, bound to ``world``; only ``robot``'s when given.
 
-    Conflicts are checked over all entries, not just ``robot``'s, because routing is global.
+    A plugin that cannot act on ``world`` (:meth:`~vap_bt.skill.Skill.binds`: a motion skill and a
+    world without drivers, such as the symbolic one) is stood in for by the world performing the
+    action itself, when the world can (:class:`~vap_bt.skill.WorldActionSkill`); otherwise it is
+    left out with a warning. Conflicts are checked over all entries, not just ``robot``'s,
+    because routing is global.
     """
     table = skill_table(discover_skills() if entries is None else entries)
-    return {
-        action: entry.cls(world)
-        for action, entry in table.items()
-        if robot is None or entry.robot == robot
-    }
+    out: dict[str, Skill] = {}
+    for action, entry in table.items():
+        if robot is not None and entry.robot != robot:
+            continue
+        if entry.cls.binds(world):
+            out[action] = entry.cls(world)
+        elif callable(getattr(world, "perform", None)):
+            out[action] = performed_by_world(action, world, entry.robot, entry.resource)
+        else:
+            log.warning("skill plugin %s cannot act on this world and the world cannot perform %r: left out",
+                        entry.origin, action)
+    return out
 
 
 def _provenance(ep: metadata.EntryPoint) -> tuple[str, str]:

@@ -33,7 +33,7 @@ from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.graph_score import score_graph
 from vap_bt.sim.situations import SituationModel
-from vap_bt.skill import Skill
+from vap_bt.skill import Skill, performed_by_world
 from vap_bt.taskfile import Task
 from vap_bt.world import World
 
@@ -105,12 +105,9 @@ def make_skills(task: Task, world: World) -> dict[str, Skill]:
     for each domain action no plugin implements (the symbolic world knows every action)."""
     skills = plugins.instantiate(world)
     if world.name == "symbolic":
-        from skills.base import WorldActionSkill
-
         for name in task.planning.knowledge.schemas:
             if name not in skills:
-                cls = type(f"Symbolic_{name}", (WorldActionSkill,), {"action": name, "robot": "sim"})
-                skills[name] = cls(world)
+                skills[name] = performed_by_world(name, world)
     return skills
 
 

@@ -42,6 +42,26 @@ class SkillResult:
     data: dict[str, Any] = field(default_factory=dict)
 
 
+@dataclass(frozen=True)
+class Hint:
+    """What the executive believes about one object of a goal, sent with the goal: where its
+    scene graph places it (``position``, map frame) and what it rests on or in. A skill looks
+    there and measures for itself; a hint is never a measurement the skill may skip."""
+
+    name: str
+    position: tuple[float, float, float] | None = None
+    on: str | None = None
+    inside: str | None = None
+
+    def to_json(self) -> dict:
+        return {"name": self.name, "position": self.position, "on": self.on, "inside": self.inside}
+
+    @classmethod
+    def from_json(cls, d: dict) -> "Hint":
+        p = d.get("position")
+        return cls(d["name"], None if p is None else tuple(map(float, p)), d.get("on"), d.get("inside"))
+
+
 @dataclass
 class Feedback:
     progress: float  # 0..1
@@ -64,8 +84,39 @@ class Skill(ABC):
     def __init__(self, world: World) -> None:
         self.world = world
 
+    @classmethod
+    def binds(cls, world: Any) -> bool:
+        """Whether this skill can act on ``world`` (a motion skill needs the robot's drivers)."""
+        return True
+
     @abstractmethod
     def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult: ...
+
+
+class WorldActionSkill(Skill):
+    """Perform ``self.action`` by asking the world (:meth:`~vap_bt.world.World.perform`).
+
+    A world that knows every action — the symbolic one, over ground facts — needs no motion: this
+    skill reports that it started, hands the action over and turns the world's
+    :class:`~vap_bt.world.ActionOutcome` into a :class:`SkillResult`. It stands in for a plugin
+    whose world lacks what the plugin needs (:meth:`Skill.binds`), under the plugin's own action,
+    robot and resource (:func:`vap_bt.plugins.instantiate`).
+    """
+
+    def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult:
+        call = f"{self.action}({', '.join(args)})"
+        if ctx.cancelled():  # cancelled while queued: do not start moving
+            return SkillResult(False, f"{call} cancelled before it started")
+        ctx.feedback(0.0, f"{call} started")
+        outcome = self.world.perform(self.action, tuple(args), ctx)
+        ctx.feedback(1.0, f"{call} {'completed' if outcome.completed else 'failed'}")
+        return SkillResult(outcome.completed, outcome.message or call)
+
+
+def performed_by_world(action: str, world: Any, robot: str = "sim", resource: str = "arm") -> Skill:
+    """A :class:`WorldActionSkill` for ``action`` on ``world``."""
+    cls = type(f"Performed_{action}", (WorldActionSkill,), {"action": action, "robot": robot, "resource": resource})
+    return cls(world)
 
 
 class GoalHandle(Protocol):
@@ -85,6 +136,6 @@ class GoalHandle(Protocol):
 class SkillClient(Protocol):
     """Starts goals on whatever hosts the skills (in-process or over Zenoh)."""
 
-    def send_goal(self, action: str, args: tuple[str, ...]) -> GoalHandle: ...
+    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> GoalHandle: ...
 
     def close(self) -> None: ...

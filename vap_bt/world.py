@@ -42,7 +42,10 @@ class ActionOutcome:
 
 
 class GoalContext(Protocol):
-    """Handed to a running skill: report progress, notice cancellation."""
+    """Handed to a running skill: report progress, notice cancellation, read the goal's hints
+    (:class:`vap_bt.skill.Hint` by object name: where the executive believes things are)."""
+
+    hints: dict
 
     def feedback(self, progress: float, text: str = "") -> None: ...
 

@@ -151,6 +151,8 @@ class ExecutionContext:
     felt: Callable[[SceneGraph, Atom], bool | None] = lambda graph, atom: None
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
+    #: what belief says about a goal's objects, sent with it (the scene-graph builder's ``hints``)
+    hints: Callable[[SceneGraph, tuple[str, ...]], tuple] = lambda graph, names: ()
     protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
     viewpoints: ViewpointStrategy = field(default_factory=ViewpointStrategy)
     verified: Verified = field(default_factory=Verified)

@@ -1,6 +1,7 @@
 """ExecuteSkill: a plan action sent as a goal to whatever hosts the skill (ROS-action style).
 
-``initialise`` sends the goal; the behaviour is RUNNING while the goal is in flight and reports
+``initialise`` sends the goal, with what belief says about its objects (where the scene graph
+places them: a skill looks there and measures for itself); the behaviour is RUNNING while the goal is in flight and reports
 progress from the skill's feedback; it succeeds or fails with the goal's result. If the tree
 interrupts it (a higher-priority branch, a halted tree), ``terminate`` cancels the goal so the
 robot does not keep moving for a plan that no longer exists. A failed goal is a situation of
@@ -27,7 +28,8 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
     def initialise(self) -> None:
         self._sent_at = self.ctx.now()
         self.ctx.progress(f"  a{self.step}: {self.action}")
-        self.handle = self.ctx.skills.send_goal(self.action.name, self.action.args)
+        hints = self.ctx.hints(self.ctx.graph, tuple(self.action.args))
+        self.handle = self.ctx.skills.send_goal(self.action.name, self.action.args, hints)
 
     def update(self) -> Status:
         state = self.handle.state()

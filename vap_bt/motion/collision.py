@@ -104,6 +104,14 @@ class CollisionChecker:
                 if objs[i].parentJoint != 0:
                     self.geometry.addCollisionPair(pin.CollisionPair(i, b))
 
+    def place_boxes(self, poses: np.ndarray) -> None:
+        """Move the scene's boxes (same boxes, new poses in the chain's world frame): cheaper than a
+        new checker when only the chain's root moved (a base that drove somewhere else)."""
+        objs, first = self.geometry.geometryObjects, self.geometry.ngeoms - len(self.boxes)
+        for i, T in enumerate(np.asarray(poses)):
+            objs[first + i].placement = pin.SE3(T)
+        self.boxes = SceneBoxes(np.asarray(poses), self.boxes.sizes, self.boxes.names)
+
     def with_boxes(self, boxes: SceneBoxes, margin: float = 0.0) -> CollisionChecker:
         """A checker for the same chain in another scene."""
         return CollisionChecker(self.kin, boxes, margin)

@@ -62,3 +62,46 @@ def pose_error(a: np.ndarray, b: np.ndarray) -> tuple[float, float]:
 def wrap_angle(a):
     """Angle(s) mapped to [-pi, pi)."""
     return (np.asarray(a) + np.pi) % (2.0 * np.pi) - np.pi
+
+
+def interpolate(a: np.ndarray, b: np.ndarray, s: float) -> np.ndarray:
+    """The pose a share ``s`` of the way from ``a`` to ``b``: position linear, rotation slerped."""
+    from scipy.spatial.transform import Rotation, Slerp
+
+    T = np.eye(4)
+    T[:3, 3] = (1 - s) * a[:3, 3] + s * b[:3, 3]
+    rots = Rotation.from_matrix(np.stack([a[:3, :3], b[:3, :3]]))
+    T[:3, :3] = Slerp([0, 1], rots)(s).as_matrix()
+    return T
+
+
+def frame_zx(z, x, p) -> np.ndarray:
+    """The pose at ``p`` whose z axis is ``z`` and whose x axis is ``x`` made orthogonal to it (a
+    hand approaching along z with its fingers closing across y)."""
+    z = np.asarray(z, float) / np.linalg.norm(z)
+    x = np.asarray(x, float) - np.dot(x, z) * z
+    x /= np.linalg.norm(x)
+    T = np.eye(4)
+    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, p
+    return T
+
+
+def axis_angle(axis, angle: float) -> np.ndarray:
+    """Rotation matrix about a unit axis (Rodrigues)."""
+    axis = np.asarray(axis, float)
+    k = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
+    return np.eye(3) + math.sin(angle) * k + (1.0 - math.cos(angle)) * (k @ k)
+
+
+def look_pose(eye, target) -> np.ndarray:
+    """Camera optical-frame pose at ``eye`` looking at ``target`` (z forward, x right, y down),
+    the image upright."""
+    z = np.asarray(target, float) - np.asarray(eye, float)
+    z /= np.linalg.norm(z)
+    x = np.cross(z, (0.0, 0.0, 1.0))
+    if np.linalg.norm(x) < 1e-6:  # looking straight down: any right vector
+        x = np.array([1.0, 0.0, 0.0])
+    x /= np.linalg.norm(x)
+    T = np.eye(4)
+    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, eye
+    return T

@@ -32,6 +32,7 @@ from vap_bt.robot.camera import Aim, Camera, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph, SceneObject
+from vap_bt.skill import Hint
 
 #: frames kept per object (the best views of it), for questions asked after the sweep
 KEEP_FRAMES = 3
@@ -303,6 +304,16 @@ class SceneGraphBuilder:
             if p is not None:
                 return Aim(tuple(names), p)
         return Aim(tuple(names), None)
+
+    def hints(self, graph: SceneGraph, names: tuple[str, ...]) -> tuple[Hint, ...]:
+        """What belief says about each of ``names``, for a goal: where it is and on or in what."""
+        out = []
+        for n in names:
+            loc = sorted(a for a in graph.location(n) if _supports(a))
+            on = next((a.args[1] for a in loc if a.predicate != "inside"), None)
+            inside = next((a.args[1] for a in loc if a.predicate == "inside"), None)
+            out.append(Hint(n, self.point_of(graph, n), on, inside))
+        return tuple(out)
 
     def point_of(self, graph: SceneGraph, name: str, depth: int = 0) -> tuple[float, float, float] | None:
         """Where belief puts ``name``, in the map frame: its measured centroid while belief still

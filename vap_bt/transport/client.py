@@ -35,7 +35,7 @@ import zenoh
 
 from vap_bt import plugins
 from vap_bt.errors import TransportError
-from vap_bt.skill import Feedback, GoalState, SkillResult
+from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport import keys
 from vap_bt.transport.messages import (
     CancelRequest,
@@ -160,7 +160,7 @@ class ZenohSkillClient:
 
     # -- SkillClient -----------------------------------------------------------------------------
 
-    def send_goal(self, action: str, args: tuple[str, ...]) -> ZenohGoalHandle:
+    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> ZenohGoalHandle:
         robot = self.routes.get(action)
         handle = ZenohGoalHandle(self, f"{self._prefix}-{next(self._ids)}", robot or "", action)
         if robot is None:
@@ -169,7 +169,7 @@ class ZenohSkillClient:
                 handle._finish(GoalState.REJECTED, SkillResult(
                     False, f"no skill plugin binds action {action!r} (known: {known})"))
             return handle
-        payload = encode(GoalRequest(handle.goal_id, action, tuple(args), self._prefix))
+        payload = encode(GoalRequest(handle.goal_id, action, tuple(args), self._prefix, tuple(hints)))
         querier = self._querier(robot, action)
         with self._lock:
             self._inflight[handle.goal_id] = handle

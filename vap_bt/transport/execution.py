@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from vap_bt.skill import Feedback, GoalState, Skill, SkillResult
+from vap_bt.skill import Feedback, GoalState, Hint, Skill, SkillResult
 
 
 class GoalRun:
@@ -23,8 +23,9 @@ class GoalRun:
     flag that any thread may set. A plain attribute suffices: it only ever goes False -> True.
     """
 
-    def __init__(self, on_feedback: Callable[[Feedback], None] | None = None) -> None:
+    def __init__(self, on_feedback: Callable[[Feedback], None] | None = None, hints: tuple[Hint, ...] = ()) -> None:
         self._on_feedback = on_feedback
+        self.hints = {h.name: h for h in hints}
         self._cancelled = False
         self.last_feedback: Feedback | None = None
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import itertools
 from dataclasses import dataclass
 
-from vap_bt.skill import Feedback, GoalState, Skill, SkillResult
+from vap_bt.skill import Feedback, GoalState, Hint, Skill, SkillResult
 from vap_bt.transport.execution import GoalRun, run_goal, unknown_action
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Frame
@@ -50,12 +50,12 @@ class InProcessSkillClient:
         self.skills = dict(skills)
         self._ids = itertools.count(1)
 
-    def send_goal(self, action: str, args: tuple[str, ...]) -> FinishedGoal:
+    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> FinishedGoal:
         goal_id = f"local-{next(self._ids)}"
         skill = self.skills.get(action)
         if skill is None:
             return FinishedGoal(goal_id, GoalState.REJECTED, unknown_action(action, self.skills))
-        ctx = GoalRun()
+        ctx = GoalRun(hints=tuple(hints))
         state, result = run_goal(skill, tuple(args), ctx)
         return FinishedGoal(goal_id, state, result, ctx.last_feedback)
 

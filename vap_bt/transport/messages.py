@@ -13,7 +13,7 @@ the kind:
   latency-critical path of every goal, so its header is a fixed binary layout that costs a few
   microseconds to pack and unpack (JSON cost ten times that)::
 
-      goal_request     strings[goal_id, action, client, *args]
+      goal_request     strings[goal_id, action, client, hints, *args]
       goal_reply       u8 accepted | strings[goal_id, reason, server]
       cancel           strings[goal_id]
       goal_status      u8 flags | f64 progress | strings[goal_id, state, server,
@@ -22,7 +22,8 @@ the kind:
   where ``strings[...]`` is ``u32 count | u32 length of each, in characters | the strings'
   UTF-8 bytes, concatenated`` (one decode for all of them); the status
   ``flags`` are bit 0 "has feedback", bit 1 "has result", bit 2 "result succeeded"; ``state`` is
-  the :class:`~vap_bt.skill.GoalState` value; ``result data`` is JSON (empty for ``{}``).
+  the :class:`~vap_bt.skill.GoalState` value; ``result data`` is JSON (empty for ``{}``); a
+  request's ``hints`` is a JSON list of :class:`~vap_bt.skill.Hint` objects (empty for none).
 * **Everything else** (robot-interface requests and replies: frames, robot state, the site map,
   viewpoints; VLM queries and answers; errors) has
   ``u32 length | UTF-8 JSON object`` with the message's own fields. Numeric arrays never go
@@ -35,7 +36,7 @@ the kind:
 Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
 for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above; 4 — the
 robot interfaces (frames with detections, state, map, viewpoints) and the VLM service replace
-schema 3's observations and scene snapshots. A schema-1 frame is still recognised (its byte 8, the
+schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints. A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -57,14 +58,14 @@ from typing import Any, Callable, TypeVar
 import numpy as np
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.skill import Feedback, GoalState, SkillResult
+from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 
-SCHEMA = 4
+SCHEMA = 5
 MAGIC = b"VAPB"
 _PREFIX = struct.Struct("<4sIB")  # magic, schema, kind
 _U32 = struct.Struct("<I")
@@ -92,6 +93,7 @@ class GoalRequest:
     action: str
     args: tuple[str, ...]
     client: str = ""
+    hints: tuple[Hint, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -314,12 +316,20 @@ def _unpack_strings(data: bytes, offset: int) -> list[str]:
 
 
 def _enc_request(m: GoalRequest) -> bytes:
-    return _pack_strings(m.goal_id, m.action, m.client, *m.args)
+    hints = json.dumps([h.to_json() for h in m.hints], separators=(",", ":")) if m.hints else ""
+    return _pack_strings(m.goal_id, m.action, m.client, hints, *m.args)
 
 
 def _dec_request(data: bytes, offset: int) -> GoalRequest:
-    goal_id, action, client, *args = _unpack_strings(data, offset)
-    return GoalRequest(goal_id, action, tuple(args), client)
+    fields_ = _unpack_strings(data, offset)
+    if len(fields_) < 4:
+        raise MessageError("unreadable message header: a goal request needs id, action, client and hints")
+    goal_id, action, client, hints, *args = fields_
+    try:
+        parsed = tuple(Hint.from_json(h) for h in json.loads(hints)) if hints else ()
+    except (ValueError, KeyError, TypeError) as exc:
+        raise MessageError(f"unreadable goal hints: {exc}") from exc
+    return GoalRequest(goal_id, action, tuple(args), client, parsed)
 
 
 def _enc_reply(m: GoalReply) -> bytes:

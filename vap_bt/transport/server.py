@@ -182,7 +182,7 @@ class SkillServer:
                     f"resource {skill.resource!r} of robot {self.robot} is busy with goal "
                     f"{holder}; send {action} again when it has ended"
                 )
-            run = GoalRun(on_feedback=self._feedback_publisher(req.goal_id))
+            run = GoalRun(on_feedback=self._feedback_publisher(req.goal_id), hints=req.hints)
             goal = self._goals[req.goal_id] = _Goal(req.goal_id, skill, tuple(req.args), run)
             self._busy[skill.resource] = req.goal_id
         return goal

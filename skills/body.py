@@ -1,0 +1,201 @@
+"""The robot's body as skills move it: drivers, kinematics, and motions planned then executed.
+
+Skills never command motors. They plan with :mod:`vap_bt.motion` — inverse kinematics (pinocchio,
+collision-checked against the scene's furniture and walls), time-optimal timing of a joint path
+(toppra), point-to-point base moves (ruckig) — and hand the result to the drivers of
+:mod:`vap_bt.robot.drivers`, which block until the motion ends or ``cancelled()`` turns true.
+Everything starts from the *measured* state (joint encoders, localization), so a skill that
+starts where another one left the arm plans from where the arm really is.
+
+A motion of base and arm together (following a door's handle) is one whole-body trajectory over
+the base's and the arm's joints; the arm's driver takes it whenever the base's joints are named.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable
+
+import numpy as np
+
+import robots
+from vap_bt.motion import se3
+from vap_bt.motion.collision import CollisionChecker, SceneBoxes
+from vap_bt.motion.ik import IKOptions, solve_ik
+from vap_bt.motion.kinematics import Kinematics, world_to_base
+from vap_bt.motion.limits import Limits, arm_limits, base_limits
+from vap_bt.motion.timing import TimingError, time_path
+from vap_bt.robot.drivers import Arm, Base, Gripper, JointTrajectory
+
+#: joint samples per second of planned motions (the drivers interpolate between them)
+RATE_HZ = 60.0
+#: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
+IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
+IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
+
+
+class Stopped(Exception):
+    """A motion did not complete (cancelled, or the driver refused it); the skill ends."""
+
+
+def _concat(a: Limits, b: Limits) -> Limits:
+    return Limits(a.names + b.names, *(np.concatenate((getattr(a, f), getattr(b, f)))
+                                       for f in ("lower", "upper", "velocity", "acceleration", "jerk")))
+
+
+class Body:
+    """Drivers plus the kinematic model: where the robot is, and how to move it there."""
+
+    def __init__(self, arm: Arm, gripper: Gripper, base: Base, name: str = robots.DEFAULT_ROBOT) -> None:
+        self.arm, self.gripper, self.base = arm, gripper, base
+        self.cfg = robots.load_config(name)
+        self.kin_arm = Kinematics.arm()
+        self.kin_mobile = Kinematics.mobile_arm()
+        self.limits = _concat(base_limits(), arm_limits())
+        self.base_limits = base_limits()
+        self.cancelled: Callable[[], bool] = lambda: False  # the running goal's
+        self._checker: CollisionChecker | None = None
+        self._scene: SceneBoxes = SceneBoxes.empty()
+
+    # -- the measured state ------------------------------------------------------------------
+
+    def q(self) -> np.ndarray:
+        """Base (x, y, yaw) and the six arm joints, as measured."""
+        return np.array([*self.base.pose(), *self.arm.joint_state().positions])
+
+    def base_pose(self) -> tuple[float, float, float]:
+        return tuple(map(float, self.base.pose()))
+
+    def base_T(self, q=None) -> np.ndarray:
+        x, y, yaw = (self.q() if q is None else q)[:3]
+        return se3.planar_pose(x, y, yaw)
+
+    def in_base(self, p) -> np.ndarray:
+        return (self.base_T() @ np.array([*p, 1.0]))[:3]
+
+    def pose(self, frame: str = "tcp", q=None) -> np.ndarray:
+        """Pose of a robot frame in the map frame, from measured (or given) joints."""
+        return self.kin_mobile.fk(self.q() if q is None else q, frame)
+
+    def holding(self) -> bool:
+        return self.gripper.state().holding
+
+    # -- the scene IK keeps off --------------------------------------------------------------
+
+    def set_scene(self, boxes: SceneBoxes) -> None:
+        """The furniture and walls (map frame) that IK solutions must keep clear of."""
+        self._scene, self._checker = boxes, None
+
+    def _collision(self, base_pose) -> CollisionChecker | None:
+        if not len(self._scene):
+            return None
+        local = self._scene.transformed(np.linalg.inv(self.base_T(np.array([*base_pose, *np.zeros(6)]))))
+        if self._checker is None:
+            self._checker = CollisionChecker(self.kin_arm, local)
+        else:
+            self._checker.place_boxes(local.poses)
+        return self._checker
+
+    # -- planning ----------------------------------------------------------------------------
+
+    def solve(self, target: np.ndarray, frame: str = "tcp", seed: np.ndarray | None = None,
+              allow_base: bool = False, collide: bool = True) -> np.ndarray | None:
+        """Body joints putting ``frame`` at ``target`` (map 4x4): the arm alone from where the base
+        is (clear of the scene's furniture and walls), else — when allowed — arm and base."""
+        seed = self.q() if seed is None else np.asarray(seed, float)
+        local = world_to_base(target, tuple(seed[:3]))
+        r = solve_ik(self.kin_arm, local, frame=frame, q_init=seed[3:], options=IK,
+                     collision=self._collision(seed[:3]) if collide else None)
+        if r.success:
+            q = seed.copy()
+            q[3:] = _nearest_turn(r.q, seed[3:], self.kin_arm.lower, self.kin_arm.upper)
+            return q
+        if not allow_base:
+            return None
+        r = solve_ik(self.kin_mobile, target, frame=frame, q_init=seed, options=IK_MOBILE)
+        if not r.success:
+            return None
+        q = r.q.copy()
+        q[2:] = _nearest_turn(q[2:], seed[2:], self.kin_mobile.lower[2:], self.kin_mobile.upper[2:])
+        return q
+
+    # -- executing -----------------------------------------------------------------------------
+
+    def through(self, qs: list[np.ndarray], speed: float = 1.0) -> bool:
+        """Move through body-joint waypoints from the measured state (toppra-timed); False when
+        the path cannot be timed. The base's joints are driven along only when they change."""
+        start = self.q()
+        pts = np.array([start, *qs])
+        if len(pts) == 2 and np.max(np.abs(pts[-1] - pts[0])) < 1e-4:
+            return True
+        whole = np.max(np.abs(pts[:, :3] - start[:3])) > 1e-4
+        names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
+        limits = self.limits if whole else arm_limits()
+        path = pts if whole else pts[:, 3:]
+        try:
+            traj = time_path(path, limits.scaled(speed), dt=1.0 / RATE_HZ)
+        except TimingError:
+            return False
+        self._follow(JointTrajectory(tuple(names), traj.t, traj.q, traj.qd))
+        return True
+
+    def _follow(self, traj: JointTrajectory) -> None:
+        res = self.arm.follow(traj, self.cancelled)
+        if not res.completed:
+            raise Stopped(res.reason or "the arm stopped")
+
+    def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False) -> bool:
+        q = self.solve(T, allow_base=allow_base)
+        return q is not None and self.through([q], speed)
+
+    def line(self, target: np.ndarray, frame: str = "tcp", steps: int = 5, speed: float = 0.4,
+             collide: bool = False) -> bool:
+        """Move ``frame`` along a straight line to ``target`` (orientation interpolated). A line is
+        the last stretch to a contact (into a grasp, onto a support), where the hand must come near
+        the furniture: by default it is not kept off the scene's boxes."""
+        start, qs, seed = self.pose(frame), [], self.q()
+        for k in range(1, steps + 1):
+            q = self.solve(se3.interpolate(start, target, k / steps), frame, seed, collide=collide)
+            if q is None:
+                break
+            qs.append(q)
+            seed = q
+        if not qs:
+            return False
+        self.through(qs, speed)
+        return len(qs) == steps
+
+    def drive(self, poses: list[tuple[float, float, float]], speed: float = 1.0) -> None:
+        """Drive the base through ``poses`` (x, y, yaw), the arm held as it is."""
+        if not poses:
+            return
+        res = self.base.follow([tuple(map(float, p)) for p in poses], speed, self.cancelled)
+        if not res.completed:
+            raise Stopped(res.reason or "the base stopped")
+
+    def fingers(self, width: float, force: float = 40.0) -> bool:
+        """Open or close the fingers to ``width`` (m between them); True when they hold something."""
+        return self.gripper.move(width, force, self.cancelled).holding
+
+    def hold_still(self, seconds: float) -> None:
+        """Keep every joint where it is for ``seconds`` (a trajectory that stands still)."""
+        q = self.q()[3:]
+        self._follow(JointTrajectory(tuple(self.cfg.arm.joints), np.array([0.0, seconds]), np.array([q, q]),
+                                     np.zeros((2, len(q)))))
+
+    def home(self) -> None:
+        q = self.q()
+        q[3:] = self.cfg.arm.home
+        self.through([q], 0.8)
+
+
+def _nearest_turn(q: np.ndarray, ref: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """Shift revolute values by whole turns towards ``ref`` (within limits): the short way round."""
+    shifted = q - 2 * np.pi * np.round((q - ref) / (2 * np.pi))
+    ok = (shifted >= lower) & (shifted <= upper)
+    return np.where(ok, shifted, q)
+
+
+def angle_to(a: float, b: float) -> float:
+    """``b`` unwrapped to within half a turn of ``a``."""
+    return a + math.remainder(b - a, 2 * math.pi)

@@ -1,0 +1,150 @@
+"""The wrist camera as skills use it: aim it at a point, take a frame, measure an item in it.
+
+The camera rides on the wrist and looks along the hand's approach axis, so aiming it is an arm
+motion: a camera pose looking at the point from above the base (``CAMERA_EYE``, in the base
+frame), solved by IK for the ``camera_optical`` frame and moved to like any other pose.
+
+A held item is rigid in the camera's view — wherever the camera is aimed, the item shows in the
+same part of the image. Looking at something past it therefore means turning the aim just
+enough that the point shows beside the item (:meth:`Eyes.aim_past_held`); the item's box comes
+from what the camera measured when the hand took it (:class:`Held`), never from the simulator.
+
+What skills learn from a frame is a :class:`~skills.scene_model.Seen`: where the item is, how
+big, which way it lies — its masked depth fused into a point cloud.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import cv2
+import numpy as np
+
+from skills.body import Body
+from skills.scene_model import Seen, seen_from
+from vap_bt.motion import se3
+from vap_bt.robot.drivers import WristCamera
+from vap_bt.robot.frame import Frame
+
+#: where the camera looks from, in the base frame (above the base's front, the arm raised)
+CAMERA_EYE = (0.50, 0.0, 1.20)
+#: a camera aim turns off its point by one of these angles (rad) when the held item covers it; the
+#: point then shows this far (normalised image units, ~4 degrees) outside the item and the frame edge
+AIM_TURNS = (0.06, 0.1, 0.14, 0.18, 0.22, 0.26, 0.3)
+AIM_MARGIN = 0.07
+#: an aim still counts as the last one when the camera moved less than this (m, rad)
+STILL = (0.03, 0.05)
+#: extra eye heights tried when a look at an item does not show it (over something in front)
+LOOK_LIFTS = (0.0, 0.2)
+
+
+@dataclass(frozen=True)
+class Held:
+    """What the hand holds, as the camera measured it when the hand took it: the item's box
+    corners and its bottom, both in the tcp frame (they ride with the hand)."""
+
+    name: str
+    corners: np.ndarray  # (8, 3) in the tcp frame
+    extent: np.ndarray  # box size (m)
+
+    @classmethod
+    def taken(cls, seen: Seen, tcp: np.ndarray) -> "Held":
+        inv = np.linalg.inv(tcp)
+        pts = seen.corners() @ inv[:3, :3].T + inv[:3, 3]
+        return cls(seen.name, pts, seen.extent)
+
+    def corners_at(self, tcp: np.ndarray) -> np.ndarray:
+        """The box's corners in the map frame for the hand at ``tcp``."""
+        return self.corners @ tcp[:3, :3].T + tcp[:3, 3]
+
+    def below_tcp(self, tcp: np.ndarray) -> float:
+        """How far the item's lowest corner hangs below the tcp (m), for the hand at ``tcp``."""
+        return float(tcp[2, 3] - self.corners_at(tcp)[:, 2].min())
+
+
+class Eyes:
+    """Aim the wrist camera, take frames, and measure items in them."""
+
+    def __init__(self, body: Body, camera: WristCamera) -> None:
+        self.body, self.camera = body, camera
+        self.held: Held | None = None
+        self.cam = body.cfg.camera
+        self._aim: tuple[np.ndarray, np.ndarray] | None = None  # point, camera pose of the last aim
+
+    # -- aiming --------------------------------------------------------------------------------
+
+    def look_at(self, point, lift: float = 0.0, allow_base: bool = False) -> bool:
+        """Aim the camera at ``point`` from above the base (``lift`` higher); with something in
+        the hand the aim turns off the point just enough that the item does not cover it."""
+        eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], CAMERA_EYE[2] + lift))
+        T = se3.look_pose(eye, point)
+        # clear of the furniture if it can be; an aim over a shelf's edge may have to graze it
+        for pose, collide in ((self.aim_past_held(T), True), (T, True), (T, False)):
+            q = self.body.solve(pose, "camera_optical", allow_base=allow_base, collide=collide)
+            if q is not None and self.body.through([q], 0.8):
+                self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
+                return True
+        return False
+
+    def aimed_at(self, point, tolerance: float = 0.15) -> bool:
+        """Whether the camera still looks as the last aim left it, at a point within ``tolerance``
+        of ``point`` (an action since may have moved the arm)."""
+        if self._aim is None:
+            return False
+        target, pose = self._aim
+        T = self.body.pose("camera_optical")
+        still = (np.linalg.norm(T[:3, 3] - pose[:3, 3]) < STILL[0]
+                 and float(T[:3, 2] @ pose[:3, 2]) > math.cos(STILL[1]))
+        return bool(still and np.linalg.norm(np.asarray(point, float) - target) <= tolerance)
+
+    def aim_past_held(self, T: np.ndarray) -> np.ndarray:
+        """``T`` (a camera pose looking along its z at a point) turned the least so that the point
+        shows clear of the held item, which is rigid with the camera: its box is projected once
+        (normalised image coordinates, from the camera pose now) and aims whose point falls outside
+        that outline by AIM_MARGIN, and inside the frame, are tried from small turns to large ones.
+        Returns ``T`` when the point is not covered or no turn clears it."""
+        if self.held is None:
+            return T
+        corners = self.held.corners_at(self.body.pose("tcp"))
+        C = np.linalg.inv(self.body.pose("camera_optical"))
+        pc = corners @ C[:3, :3].T + C[:3, 3]
+        z = np.maximum(pc[:, 2], self.cam.near)
+        hull = cv2.convexHull((pc[:, :2] / z[:, None]).astype(np.float32))
+        half = np.array([self.cam.width / 2 / self.cam.fx, self.cam.height / 2 / self.cam.fy]) - AIM_MARGIN
+
+        def clear(uv) -> bool:
+            if np.any(np.abs(uv) > half):
+                return False
+            return cv2.pointPolygonTest(hull, (float(uv[0]), float(uv[1])), True) < -AIM_MARGIN
+
+        if clear(np.zeros(2)):
+            return T
+        for r in AIM_TURNS:
+            for ang in np.linspace(0.0, 2 * math.pi, 16, endpoint=False):
+                uv = np.array([math.cos(ang), math.sin(ang)]) * math.tan(r)
+                if clear(uv):
+                    d = np.array([uv[0], uv[1], 1.0])
+                    d /= np.linalg.norm(d)
+                    # the turn taking the optical axis to d, undone: the point then shows at uv
+                    axis = np.cross((0.0, 0.0, 1.0), d)
+                    out = T.copy()
+                    out[:3, :3] = T[:3, :3] @ se3.axis_angle(axis / np.linalg.norm(axis), math.acos(float(d[2]))).T
+                    return out
+        return T
+
+    # -- seeing --------------------------------------------------------------------------------
+
+    def frame(self) -> Frame:
+        return self.camera.capture()
+
+    def measure(self, name: str, point, allow_base: bool = False) -> Seen | None:
+        """Look at ``point`` (where ``name`` is believed to be) and measure ``name`` in the frame;
+        None when no look shows it."""
+        for lift in LOOK_LIFTS:
+            if not self.look_at(point, lift=lift, allow_base=allow_base):
+                continue
+            seen = seen_from(self.frame(), name)
+            if seen is not None:
+                return seen
+        return None

@@ -1,0 +1,389 @@
+"""Opening and closing: following a handle with the whole robot while a door or drawer moves.
+
+A door leaf or drawer moves only because the hand holding its handle moves. How the handle can
+move is the map's (:class:`~vap_bt.robot.site_map.Articulation`: hinge or slide, where the
+handle is at the closed position); where the leaf stands *now* is looked at (the frame's points
+of the piece fitted to the leaf's motion, :meth:`~skills.scene_model.SceneModel.fit_leaf`).
+What is not known is where the base must be at each point of the handle's path: a side-hinged
+leaf swings through the space in front of its cabinet and turns its handle by up to 100 degrees,
+a room door carries its handle into the next room, and no single base pose reaches the whole arc.
+
+:class:`HandleFollower` therefore plans base and arm together, one waypoint of the handle's path
+at a time (every few degrees or centimetres), and checks every candidate before any joint moves:
+
+* the base's footprint keeps a margin from walls, furniture and the leaf in its pose at that
+  waypoint (convex outlines, :mod:`vap_bt.motion.footprint`);
+* the arm reaches the handle from that base (IK, arm alone), near the previous joint values, and
+  no collision shape of the robot (fingers at the grip's opening) comes near the leaf's panel (the
+  leaf without its handle) or itself (:class:`~vap_bt.motion.collision.CollisionChecker`);
+* the hand may lag the leaf's rotation by up to ``MAX_LAG`` about the bar (a loosely closed hand
+  lets the bar turn in it), which keeps the wrist comfortable.
+
+The grasp is searched globally on a ring of base poses around the handle; for each of the best
+few the whole path is planned and the first that gets through wins (else the one that gets
+furthest). Later waypoints search locally around the previous base pose and lag, preferring the
+pose in which the handle sits comfortably in front of the robot — so the base walks along with
+the door. The result is one whole-body joint path, timed and followed like any other motion.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pinocchio as pin
+
+from skills.body import Body, angle_to
+from skills.eyes import Eyes
+from skills.hands import APPROACH, Hands, Outcome, Where
+from skills.navigator import Navigator
+from skills.scene_model import Leaf, SceneModel
+from vap_bt.motion import se3
+from vap_bt.motion.collision import CollisionChecker, SceneBoxes
+from vap_bt.motion.footprint import Obb, base_free
+from vap_bt.motion.kinematics import Kinematics
+
+BASE_MARGIN = 0.04  # footprint to obstacles while the leaf moves with the hand (the grip is springy)
+PARKED_MARGIN = 0.015  # footprint to obstacles when the leaf stands still
+ARM_MARGIN = 0.04  # arm and base shapes to the leaf's panel
+HAND_MARGIN = 0.006  # gripper and finger shapes to the panel (they hold a bar in front of it)
+HAND_LINKS = ("gripper_base_link", "left_finger_link", "right_finger_link")
+#: the handle bar's centre stands this far in front of its leaf's face (the furniture models')
+HANDLE_STANDOUT = 0.045
+COMFORT = 0.66  # handle distance in front of the base centre that the arm reaches best
+ANGLE_STEP = 0.07  # rad between revolute waypoints
+SLIDE_STEP = 0.025  # m between prismatic waypoints
+MAX_LAG = 1.4  # rad the hand may trail (or lead) the leaf's rotation about the bar
+MAX_JOINT_JUMP = 0.45  # rad of any arm joint between consecutive waypoints
+GRASP_LAGS = (0.0, 0.4, -0.4, 0.8, -0.8, 1.2, -1.2)
+LOCAL_STEPS = ((-0.08, 0.0, 0.08), (-0.08, 0.0, 0.08), (-0.12, 0.0, 0.12))  # base forward, left, yaw
+LAG_STEPS = (-0.15, 0.0, 0.15)
+RING = dict(distance=(0.58, 0.66, 0.74, 0.84), bearing=(0.0, -0.35, 0.35, -0.7, 0.7, -1.0, 1.0), yaw=(0.0, -0.3, 0.3))
+GLOBAL_TRIES = 6  # initial poses whose whole path is planned before settling for the furthest
+OPEN_TO = 0.92  # share of its travel an opened door or drawer is pulled to
+#: a closing hand presses a furniture door a little past closed, against its stop: the grip is
+#: springy and the joint's friction would otherwise leave the leaf a few per cent open (room doors
+#: swing both ways and have no stop there)
+CLOSE_TO = -0.03
+LOOSE_GRIP = 0.05  # finger opening round a held handle bar: it may turn in the hand, not slip out
+RELEASE_GRIP = 0.075  # finger opening that lets the bar go (the fingers part along the leaf's face)
+GRIP_FORCE = 80.0
+FOLLOW_SPEED = 0.3  # share of the joint limits while the hand carries a handle
+
+
+@dataclass
+class Waypoint:
+    """Body joints (base x, y, yaw, arm), the tcp pose there, and how far the hand trails the leaf."""
+
+    q: np.ndarray
+    T: np.ndarray
+    lag: float
+
+
+@dataclass
+class HandlePath:
+    """Waypoints carrying the handle (the first is the grasp), the leaf's joint value at each, and
+    the pre-grasp the hand comes from."""
+
+    waypoints: list[Waypoint]
+    joint_values: list[float]
+    complete: bool
+    pre: Waypoint | None = None
+
+
+def plate(leaf: Leaf, q: float) -> Obb:
+    """The leaf (or drawer front) without its handles at joint value ``q``: what a hand near the
+    bar must not touch."""
+    art = leaf.art
+    normal, n = np.array(art.normal), np.abs(art.normal)
+    centre, half = np.array(art.leaf_center), np.array(art.leaf_half)
+    front = float(np.array(art.handle) @ normal) - HANDLE_STANDOUT
+    back = float(centre @ normal - half @ n)
+    if art.other_side is not None:
+        back = max(back, front - art.other_side + 2 * HANDLE_STANDOUT)
+    c = centre + normal * ((front + back) / 2 - float(centre @ normal))
+    h = half * (1 - n) + n * (front - back) / 2
+    R, move = leaf.transform(q)
+    return Obb(move(c), R, h)
+
+
+class HandleFollower:
+    """Plans whole-body paths that carry a handle along its leaf's motion."""
+
+    def __init__(self, body: Body, scene: SceneModel) -> None:
+        self.body, self.scene = body, scene
+        self.opening = -1.0
+        self._kin: Kinematics | None = None
+        self._checker: CollisionChecker | None = None
+
+    def use_panel(self, leaf: Leaf, opening: float) -> None:
+        """Set up the robot's collision check against ``leaf``'s panel, fingers ``opening`` apart."""
+        if self._kin is None or self.opening != opening:
+            cfg = self.body.cfg
+            fingers = dict(zip(cfg.gripper.joints, cfg.gripper.finger_positions(opening)))
+            self._kin = Kinematics(joints=cfg.base.joints + cfg.arm.joints, locked=fingers)
+            self.opening = opening
+        size = 2 * plate(leaf, 0.0).half
+        checker = CollisionChecker(self._kin, SceneBoxes(np.eye(4)[None], size[None]), margin=HAND_MARGIN)
+        objs = checker.geometry.geometryObjects
+        panel = checker.geometry.ngeoms - 1
+        for pair, request in zip(checker.geometry.collisionPairs, checker.data.collisionRequests):
+            if pair.second == panel and objs[pair.first].name.rsplit("_", 1)[0] not in HAND_LINKS:
+                request.security_margin = ARM_MARGIN
+        self._checker = checker
+
+    def arm_clear(self, q: np.ndarray, panel: Obb) -> bool:
+        """The robot (base, arm, gripper, fingers round the bar) keeps off the panel and itself."""
+        geom = self._checker.geometry
+        geom.geometryObjects[geom.ngeoms - 1].placement = pin.SE3(panel.pose())
+        return not self._checker.in_collision(q)
+
+    @staticmethod
+    def hand_pose(leaf: Leaf, side: float, q: float, q0: float, G0: np.ndarray, lag: float) -> np.ndarray:
+        """tcp pose holding the handle at joint value ``q``, the hand turned ``lag`` back from the
+        leaf's rotation about the hinge axis (signed like the joint)."""
+        p, _, _ = leaf.handle_at(q, side)
+        T = np.eye(4)
+        T[:3, 3] = p
+        T[:3, :3] = G0[:3, :3] if leaf.art.prismatic else se3.axis_angle(leaf.axis, (q - q0) - lag) @ G0[:3, :3]
+        return T
+
+    def _solve(self, T, base, seed, panel: Obb, prev) -> np.ndarray | None:
+        s = np.array(seed, float)
+        s[:3] = base
+        q = self.body.solve(T, seed=s, collide=False)
+        if q is None or (prev is not None and np.max(np.abs(q[3:] - prev[3:])) > MAX_JOINT_JUMP):
+            return None
+        return q if self.arm_clear(q, panel) else None
+
+    @staticmethod
+    def comfort(base, T: np.ndarray) -> float:
+        """How awkward it is to hold ``T`` from ``base``: handle off the comfortable spot in front,
+        hand turned away from the base's forward direction."""
+        x, y, yaw = base
+        c, s = math.cos(yaw), math.sin(yaw)
+        d = T[:2, 3] - (x, y)
+        fwd, left = c * d[0] + s * d[1], -s * d[0] + c * d[1]
+        a = T[:2, 2]
+        a_fwd = (c * a[0] + s * a[1]) / max(np.linalg.norm(a), 1e-6)
+        return (fwd - COMFORT) ** 2 + left ** 2 + 0.03 * (1.0 - a_fwd)
+
+    def _free(self, pose, static, leaf_box: Obb, margin: float = BASE_MARGIN) -> bool:
+        return base_free(pose, static + [leaf_box.polygon()], margin)
+
+    def plan(self, leaf: Leaf, side: float, q0: float, goal: float, G0: np.ndarray, here,
+             opening: float) -> HandlePath:
+        """Whole-body waypoints that carry the handle from ``q0`` to ``goal`` with the fingers
+        ``opening`` apart round it, preceded by a pre-grasp ``APPROACH`` back along the hand's
+        axis. ``G0``: the hand square to the leaf's face at ``q0``; ``here``: the base pose now."""
+        self.use_panel(leaf, opening)
+        step = SLIDE_STEP if leaf.art.prismatic else ANGLE_STEP
+        n = max(1, int(math.ceil(abs(goal - q0) / step)))
+        values = [q0 + (goal - q0) * k / n for k in range(n + 1)]
+        static = self.scene.obstacles(moving=leaf.name)
+        best: HandlePath | None = None
+        for pre, wp in self._grasp_poses(leaf, side, q0, G0, static, here):
+            path = self._follow(leaf, side, values, G0, wp, static)
+            path.pre = pre
+            if best is None or len(path.waypoints) > len(best.waypoints):
+                best = path
+            if path.complete:
+                break
+        return best or HandlePath([], [], False)
+
+    def _grasp_poses(self, leaf: Leaf, side: float, q0: float, G0: np.ndarray, static, here):
+        """Feasible (pre-grasp, grasp) pairs, best first: base poses on a ring around the handle,
+        the hand square to the leaf or turned about the bar."""
+        p = G0[:3, 3]
+        box, panel = leaf.box(q0), plate(leaf, q0)
+        cands = []
+        for lag in ((0.0,) if leaf.art.prismatic else GRASP_LAGS):
+            T = self.hand_pose(leaf, side, q0, q0, G0, lag)
+            out = -T[:3, 2]
+            if np.hypot(out[0], out[1]) < 0.3:  # a hand from below or above: no base pose faces it
+                continue
+            bearing0 = math.atan2(out[1], out[0])
+            for d, b, dyaw in itertools.product(RING["distance"], RING["bearing"], RING["yaw"]):
+                x, y = p[0] + d * math.cos(bearing0 + b), p[1] + d * math.sin(bearing0 + b)
+                pose = (x, y, math.atan2(p[1] - y, p[0] - x) + dyaw)
+                cost = self.comfort(pose, T) + 0.05 * math.hypot(x - here[0], y - here[1]) + 0.02 * lag * lag
+                cands.append((cost, pose, T, lag))
+        tries = 0
+        seed = self.body.q()
+        for _, pose, T, lag in sorted(cands, key=lambda c: c[0]):
+            if not self._free(pose, static, box):
+                continue
+            pose = np.array(pose)
+            pose[2] = angle_to(here[2], pose[2])
+            q = self._solve(T, pose, seed, panel, None)
+            if q is None:
+                continue
+            P = T.copy()
+            P[:3, 3] -= T[:3, 2] * APPROACH
+            q_pre = self._solve(P, pose, q, panel, q)
+            if q_pre is not None:
+                yield Waypoint(q_pre, P, lag), Waypoint(q, T, lag)
+                tries += 1
+                if tries >= GLOBAL_TRIES:
+                    return
+
+    def _follow(self, leaf: Leaf, side: float, values: list[float], G0: np.ndarray, first: Waypoint, static) -> HandlePath:
+        wps = [first]
+        for q in values[1:]:
+            prev = wps[-1]
+            box, panel = leaf.box(q), plate(leaf, q)
+            x, y, yaw = prev.q[:3]
+            c, s = math.cos(yaw), math.sin(yaw)
+            lags = (0.0,) if leaf.art.prismatic else tuple({min(MAX_LAG, max(-MAX_LAG, prev.lag + d)) for d in LAG_STEPS})
+            cands = []
+            for (df, dl, dyaw), lag in itertools.product(itertools.product(*LOCAL_STEPS), lags):
+                base = (x + c * df - s * dl, y + s * df + c * dl, yaw + dyaw)
+                T = self.hand_pose(leaf, side, q, values[0], G0, lag)
+                moved = df * df + dl * dl + 0.1 * dyaw * dyaw
+                cands.append((self.comfort(base, T) + 0.3 * moved + 0.01 * lag * lag, base, T, lag))
+            found = None
+            for _, base, T, lag in sorted(cands, key=lambda c: c[0]):
+                if not self._free(base, static, box):
+                    continue
+                sol = self._solve(T, base, prev.q, panel, prev.q)
+                if sol is not None:
+                    found = Waypoint(sol, T, lag)
+                    break
+            if found is None:
+                return HandlePath(wps, values[:len(wps)], False)
+            wps.append(found)
+        return HandlePath(wps, values, True)
+
+
+class Handles:
+    """Open and close doors and drawers: look where the leaf stands, plan, grip, follow, let go."""
+
+    def __init__(self, body: Body, eyes: Eyes, nav: Navigator, scene: SceneModel, hands: Hands) -> None:
+        self.body, self.eyes, self.nav, self.scene, self.hands = body, eyes, nav, scene, hands
+        self.follower = HandleFollower(body, scene)
+
+    def leaf_point(self, name: str) -> np.ndarray:
+        """Where to look to see ``name``'s leaf: the door's middle, a cabinet's front."""
+        if self.scene.site.door(name) is not None:
+            return self.nav.door_point(name)
+        f = self.scene.furniture[name]
+        cav = f.info.cavity
+        z = sum(cav.z) / 2 if cav is not None else f.height / 2
+        return f.to_world((0.0, f.depth / 2, z))
+
+    def joint_now(self, name: str, opening: bool) -> float:
+        """The leaf's joint value as a look shows it; else what the action presumes (closed before
+        an open, open before a close)."""
+        leaf = self.scene.leaves[name]
+        default = 0.0 if opening else leaf.art.opened * OPEN_TO
+        if self.eyes.look_at(self.leaf_point(name)):
+            q = self.scene.fit_leaf(name, self.eyes.frame())
+            if q is not None:
+                return q
+        return self.scene.joint.get(name, default)
+
+    def open_close(self, name: str, opening: bool) -> Outcome:
+        """Open or close ``name`` with a free hand: something held is set down on the nearest
+        surface of the room first and taken again afterwards, the way it was held."""
+        if name not in self.scene.leaves:
+            return Outcome(False, f"{name} has nothing to open")
+        held = self.eyes.held
+        if held is None or not self.body.holding():
+            return self._open_close(name, opening)
+        sideways = abs(self.body.pose("tcp")[2, 2]) < 0.8  # level or pitched, not from above
+        x, y, _ = self.body.base_pose()
+        room = self.scene.room_at(x, y)
+        shelves = sorted((f for f in self.scene.furniture.values() if f.info.type == "surface" and f.info.room == room),
+                         key=lambda f: math.hypot(f.origin[0] - x, f.origin[1] - y))
+        if not shelves or not self.hands.place(held.name, shelves[0].name, False, edge=sideways).completed:
+            return Outcome(False, f"{name}: the hand is full")
+        out = self._open_close(name, opening)
+        seen = self.hands.locate(held.name, shelves[0].top_point(), Where(on=shelves[0].name))
+        if seen is not None:
+            self.hands.grasp(held.name, seen.centroid, Where(on=shelves[0].name))
+        return out
+
+    def _open_close(self, name: str, opening: bool) -> Outcome:
+        leaf = self.scene.leaves[name]
+        art = leaf.art
+        start = self.body.base_pose()
+        q0 = self.joint_now(name, opening)
+        side, goal_open = 1.0, art.opened
+        if art.other_side is not None:  # a room door: the face towards the robot, pushed away from it
+            p, n, _ = leaf.handle_at(q0)
+            side = 1.0 if (np.array([*start[:2], p[2]]) - p) @ n > 0 else -1.0
+            goal_open = abs(art.opened) * side
+        goal = goal_open * OPEN_TO if opening else (0.0 if art.other_side is not None else art.opened * CLOSE_TO)
+        p, n, bar = leaf.handle_at(q0, side)
+        G = se3.frame_zx(-n, -bar if abs(bar[2]) > 0.5 else bar, p)
+        path = self.follower.plan(leaf, side, q0, goal, G, start, LOOSE_GRIP)
+        if not path.waypoints:
+            return Outcome(False, f"{name}: handle out of reach")
+        grasp = path.waypoints[0]
+        self.hands.progress(0.05, "approaching the handle")
+        self.nav.approach(tuple(grasp.q[:3]))
+        self.hands.progress(0.1, "reaching for the handle")
+        self.body.fingers(LOOSE_GRIP)  # wide enough round the bar, narrow enough beside the leaf
+        if not self.body.through([path.pre.q], 0.8):
+            self.body.home()
+            return Outcome(False, f"{name}: handle out of reach")
+        self.body.line(grasp.T, steps=4, speed=0.3)
+        self.body.through([grasp.q], 0.3)
+        if not self.body.fingers(0.0, GRIP_FORCE):
+            self._retreat(name, q0, start)  # the hand slipped off the handle: the leaf stays
+            return Outcome(True, f"{name}: the handle slipped")
+        self.body.fingers(LOOSE_GRIP)  # the bar may now turn in the hand
+        self.hands.progress(0.3, "moving the handle")
+        self.body.through([w.q for w in path.waypoints[1:]], FOLLOW_SPEED)
+        reached = path.joint_values[-1]
+        self.scene.joint[name] = reached
+        self.hands.progress(0.85, "letting go")
+        self._retreat(name, reached, start)
+        if not path.complete:
+            return Outcome(True, f"{name}: the arm could not follow the handle all the way")
+        return Outcome(True)
+
+    def _retreat(self, name: str, q: float, start) -> None:
+        """Let go of a leaf without dragging it: the fingers open and back off the bar along the
+        hand's axis and away from the leaf's face, the base steps back, the arm folds (through a
+        point above the base if folding straight would sweep through the leaf), and the base
+        returns to where the action began if that way is clear of the leaf for the folded arm."""
+        leaf = self.scene.leaves[name]
+        box, panel = leaf.box(q), plate(leaf, q)
+        self.body.fingers(RELEASE_GRIP)
+        off = self.body.pose("tcp")
+        off[:3, 3] -= off[:3, 2] * 0.12
+        self.body.line(off, steps=3, speed=0.3)
+        n = leaf.handle_at(q, 1.0)[1]
+        n = n if (self.body.pose("tcp")[:3, 3] - panel.center) @ n > 0 else -n
+        away = self.body.pose("tcp")
+        away[:3, 3] += n * 0.1
+        self.body.line(away, steps=2, speed=0.3)
+        static = self.scene.obstacles(moving=name) + [box.polygon()]
+        here = np.array(self.body.base_pose())
+        back = here - 0.25 * np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
+        if base_free(back, static, PARKED_MARGIN):
+            self.body.drive([tuple(back)], 0.5)
+        home = self.body.q()
+        home[3:] = self.body.cfg.arm.home
+        now = self.body.q()
+        self.follower.use_panel(leaf, RELEASE_GRIP)
+        if not all(self.follower.arm_clear(now + (home - now) * s, panel) for s in np.linspace(0, 1, 12)):
+            inner = self.body.pose("tcp")
+            inner[:3, 3] = self.body.in_base((0.45, 0.0, 1.1))
+            self.body.line(inner, steps=4, speed=0.4)
+        self.body.home()
+        self.body.fingers(self.body.cfg.gripper.stroke)
+        here = np.array(self.body.base_pose())
+        goal = np.array(start)
+        goal[2] = angle_to(here[2], goal[2])
+        backward = -np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
+        for via in ([], [here + backward * 0.3], [here + backward * 0.6]):
+            legs = [here, *via, goal]
+            if all(base_free(a + (b - a) * s, static, PARKED_MARGIN, folded=True)
+                   for a, b in zip(legs, legs[1:]) for s in np.linspace(0.05, 1, 12)):
+                self.body.drive([tuple(p) for p in legs[1:]], 0.5)
+                break
+        self.eyes.look_at(self.leaf_point(name))

@@ -1,0 +1,487 @@
+"""What the hand does to items: grasp, place, press, fill, cut, push — planned from what it sees.
+
+Every motion starts from a measurement. To grasp, the skill looks where the executive believes
+the item is (the goal's hint), measures it in the frame (:class:`~skills.scene_model.Seen`:
+centroid, box, the yaw of its longer side), stands at a work pose for it, looks again from
+there, and takes it from above across its narrow side — or level from the front out of a
+front-open cavity, pitched down when the item is too low for a level hand. The grasp pose is
+reached through a pre-pose ``APPROACH`` back along the approach axis, the last stretch a straight
+line; the fingers close with a force limit and the gripper says whether they stopped on
+something. What the hand then holds is remembered as the camera measured it (:class:`Held`),
+which is how a place knows where the item's bottom is.
+
+IK solutions for pre-poses are kept clear of the furniture and walls of the map (cavities carved
+out, :class:`~skills.scene_model.SceneModel`); the straight last stretch into a grasp or onto a
+support may come near them by design. A hand coming out of a cavity leaves the way it went in —
+up out of a top-open one, straight out of the front of a front-open one (the base stepping back
+when there is room) — so the next joint-space move cannot sweep the item through a wall.
+
+A skill never reads the simulator: a press, a fill, a cut happen because the hand did what makes
+them happen (the fingertips on the switch, the vessel under the tap, the blade through the item),
+and the executive finds out by looking whether they did.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from skills.body import Body, Stopped
+from skills.eyes import Eyes, Held
+from skills.navigator import Navigator
+from skills.scene_model import Furniture, SceneModel, Seen, seen_from
+from vap_bt.motion import se3
+from vap_bt.scene.pointcloud import instance_cloud
+
+APPROACH = 0.14  # pre-grasp distance along the approach axis
+#: a side grasp keeps the hand level when the tcp can be this high above the item's bottom (the
+#: gripper housing reaches 0.03 m and the wrist 0.045 m below the hand's axis); lower items are
+#: taken with the hand pitched down by SIDE_PITCH, the tcp SIDE_PITCHED_HEIGHT above the bottom
+SIDE_LEVEL_HEIGHT = 0.042
+SIDE_PITCH = 0.6
+SIDE_PITCHED_HEIGHT = 0.025
+FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
+WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
+EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
+PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
+GRASP_FORCE = 60.0
+SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
+LIFT = {"top": 0.12, "front": 0.02}
+DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
+CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
+TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
+FILL_WAIT = 1.5  # s held still under the running tap (a cup fills in about one)
+
+
+def how(a) -> str:
+    """A hand approaching along ``a`` works from above ("top") or from the side ("front")."""
+    return "top" if a[2] < -0.9 else "front"
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """A skill's motion ended: ``completed`` (its own view), and what happened in words."""
+
+    completed: bool
+    message: str = ""
+
+
+@dataclass(frozen=True)
+class Where:
+    """What the executive believes about an item's place: its support or container and its room."""
+
+    on: str | None = None
+    inside: str | None = None
+
+    @property
+    def place(self) -> str | None:
+        return self.inside or self.on
+
+
+class Hands:
+    """Grasp, place and the other hand actions, over a body, its eyes and its base paths."""
+
+    def __init__(self, body: Body, eyes: Eyes, nav: Navigator, scene: SceneModel) -> None:
+        self.body, self.eyes, self.nav, self.scene = body, eyes, nav, scene
+        self.progress = lambda p, text: None
+
+    # -- measuring ---------------------------------------------------------------------------
+
+    def locate(self, name: str, point, where: Where) -> Seen | None:
+        """Measure ``name`` where it is believed to be: from here if the camera can see it, else
+        from its standoff."""
+        seen = self.eyes.measure(name, point)
+        if seen is None:
+            self.nav.approach(self.nav.standoff(name, point, where.place))
+            seen = self.eyes.measure(name, point)
+        return seen
+
+    def bottom(self, seen: Seen, where: Where) -> float:
+        """The item's bottom: what the camera saw, or the top of what it stands on when the seen
+        bottom is close to it (the lowest part of an item is the part a camera above sees least)."""
+        z = self.support_height(where, seen.centroid)
+        lo = seen.bottom
+        return z if z is not None and SUPPORT_SNAP[0] <= lo - z <= SUPPORT_SNAP[1] else lo
+
+    def support_height(self, where: Where, point) -> float | None:
+        if where.inside and where.inside in self.scene.furniture:
+            cav = self.scene.furniture[where.inside].info.cavity
+            return cav.z[0] if cav else None
+        if where.on and where.on in self.scene.furniture:
+            return self.scene.furniture[where.on].height
+        if where.on and where.on in self.scene.site.floors():
+            return 0.0
+        return None
+
+    # -- grasping ----------------------------------------------------------------------------
+
+    def grasp_frame(self, seen: Seen, where: Where) -> tuple[np.ndarray, np.ndarray]:
+        """Grasp pose of the tcp and the approach direction for an item as seen: level from the
+        front out of a front-open container, else from above across its narrow side."""
+        c, bottom = seen.centroid.copy(), self.bottom(seen, where)
+        box = self.scene.furniture.get(where.inside or "")
+        if box is not None and box.info.cavity is not None and box.info.cavity.open == "front":
+            a = -box.front
+            p = c.copy()
+            if c[2] - bottom < SIDE_LEVEL_HEIGHT:
+                # a level hand this low would put the gripper housing and the wrist into the
+                # support: the hand comes in pitched down instead, its tcp a little higher
+                a = math.cos(SIDE_PITCH) * a + np.array([0.0, 0.0, -math.sin(SIDE_PITCH)])
+                p[2] = max(c[2], bottom + SIDE_PITCHED_HEIGHT)
+            return se3.frame_zx(a, (0, 0, -1), p), a
+        left = self.body.base_T()[:3, 1]
+        across = left if seen.round else np.array([-math.sin(seen.yaw), math.cos(seen.yaw), 0.0])
+        across = np.array([across[0], across[1], 0.0]) / np.linalg.norm(across[:2])
+        if across @ left < 0:
+            across = -across
+        z = np.array([0.0, 0.0, -1.0])
+        p = c.copy()
+        # fingertips (0.02 m beyond the tcp) reach below the top, but stay off the support
+        p[2] = max(seen.top - 0.03, c[2], bottom + 0.022)
+        return se3.frame_zx(z, np.cross(across, z), p), z
+
+    def grasp(self, name: str, point, where: Where) -> Outcome:
+        """Take ``name`` (believed at ``point``, on or in ``where``) into the hand."""
+        seen = self.locate(name, point, where)
+        if seen is None:
+            return Outcome(False, f"{name} is not where it was believed to be: not seen")
+        G, a = self.grasp_frame(seen, where)
+        self.nav.approach(self.nav.work_pose(G[:3, 3], self.nav.toward_robot(G[:3, 3], where.place), how(a), where.place))
+        closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
+        seen = closer or seen
+        G, a = self.grasp_frame(seen, where)
+        self.progress(0.1, "pre-grasp")
+        self.body.fingers(self.body.cfg.gripper.stroke)
+        if self.reach_pre(G, a, where.inside, APPROACH) is None:
+            self.body.home()
+            return Outcome(False, f"{name}: no arm pose reaches it")
+        self.progress(0.35, "approach")
+        self.body.line(G, steps=4, speed=0.3)
+        self.progress(0.55, "closing")
+        holding = self.body.fingers(0.0, GRASP_FORCE)
+        if holding:
+            self.eyes.held = Held.taken(seen, self.body.pose("tcp"))
+        self.progress(0.75, "lifting")
+        back = self.body.pose("tcp")
+        back[2, 3] += LIFT[how(a)]
+        self.body.line(back, steps=3, speed=0.3)
+        box = self.scene.furniture.get(where.place or "")
+        if box is not None and box.info.cavity is not None:
+            self.withdraw(where.place)
+        elif how(a) == "front":
+            back[:3, 3] -= np.array([a[0], a[1], 0.0]) * 0.12
+            self.body.line(back, steps=3, speed=0.3)
+        if not self.body.holding():
+            self.eyes.held = None
+            self.body.fingers(self.body.cfg.gripper.stroke)
+            self.body.home()
+            return Outcome(True, f"grasp of {name} closed on nothing")
+        self.carry()
+        return Outcome(True)
+
+    def way_out(self, container: str, pts) -> tuple[np.ndarray, float]:
+        """The way out of a container's cavity (up for a top-open one, straight out of the front
+        face for a front-open one) and how far the deepest of ``pts`` must still go that way to
+        be WITHDRAW_MARGIN clear of the rim or the face."""
+        f = self.scene.furniture[container]
+        cav = f.info.cavity
+        if cav.open == "top":
+            d = np.array([0.0, 0.0, 1.0])
+            depth = max(cav.z[1] - p[2] for p in pts)
+        else:
+            d = np.array([f.front[0], f.front[1], 0.0])
+            face = f.to_world((0.0, f.depth / 2, 0.0))
+            depth = max(float((face - p)[:2] @ d[:2]) for p in pts)
+        return d, max(0.0, depth + WITHDRAW_MARGIN)
+
+    def _base_step_free(self, d: np.ndarray, out: float) -> bool:
+        x, y, yaw = self.body.base_pose()
+        obstacles = self.scene.obstacles()
+        from vap_bt.motion.footprint import base_free
+
+        return all(base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, 0.015)
+                   for s in np.linspace(0.25, 1.0, 4))
+
+    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
+        """Bring the hand to its pre-pose for going along ``a`` to ``G``: ``least`` back from
+        ``G``, with the fingertips and ``pts`` (a held item's corners when the hand is at ``G``)
+        out of the container's cavity, so that the arm's joint-space move there cannot sweep
+        through a wall. Out of a deep front-open cavity that is further than the arm reaches
+        comfortably: the base steps back first, the arm goes to the pre-pose, and the base steps
+        in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`. Returns the
+        pre-pose (the hand is there), or None when the arm cannot get there."""
+        pre = G.copy()
+        pre[:3, 3] -= a * least
+        step = np.zeros(3)
+        box = self.scene.furniture.get(container or "")
+        if box is not None and box.info.cavity is not None:
+            d, out = self.way_out(container, [p - a * least for p in (G[:3, 3] + a * FINGERTIP, *pts)])
+            if d[2] > 0.5:  # a top-open cavity: the arm lifts the pre-pose
+                pre[:3, 3] += d * out
+            elif out > 0:
+                if self._base_step_free(d, out):
+                    step = d * out
+                    x, y, yaw = self.body.base_pose()
+                    self.body.drive([(x + step[0], y + step[1], yaw)], 0.5)
+                else:  # no room behind: the arm backs off further instead
+                    pre[:3, 3] += d * out
+        far = pre.copy()
+        far[:3, 3] += step
+        if not self.body.goto_pose(far):
+            return None
+        if step.any():
+            x, y, yaw = self.body.base_pose()
+            self.body.drive([(x - step[0], y - step[1], yaw)], 0.4)
+        return pre
+
+    def withdraw(self, container: str) -> None:
+        """Bring the hand (and what it holds) out of a container's cavity the way it went in
+        (:meth:`way_out`): up a top-open one by the arm, out of a front-open one by the base
+        stepping back, which carries the arm along unchanged (else by the arm)."""
+        T = self.body.pose("tcp")
+        if self.eyes.held is not None:
+            corners = self.eyes.held.corners_at(T)
+            pts = corners[corners[:, 2] <= corners[:, 2].min() + 1e-6 + 0.5 * self.eyes.held.extent[2]]
+        else:  # the open fingers: their tips and sides
+            pts = [T[:3, 3] + T[:3, 2] * FINGERTIP + T[:3, 1] * s * 0.06 - np.array([0.0, 0.0, 0.02]) for s in (-1, 1)]
+        d, out = self.way_out(container, pts)
+        if out <= 0:
+            return
+        if d[2] < 0.5 and self._base_step_free(d, out):
+            x, y, yaw = self.body.base_pose()
+            self.body.drive([(x + d[0] * out, y + d[1] * out, yaw)], 0.4)
+            return
+        T[:3, 3] += d * out
+        self.body.line(T, steps=max(2, int(out / 0.04)), speed=0.3)
+
+    def carry(self) -> None:
+        """Arm to the carry pose: the held item beside the base, level (empty hand: home)."""
+        if not self.body.holding():
+            self.body.home()
+            return
+        rel = np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
+        rel[:3, 3] = CARRY
+        q = self.body.solve(self.body.base_T() @ rel)
+        if q is not None:
+            self.body.through([q], 0.8)
+
+    def let_go(self) -> None:
+        self.eyes.held = None
+        self.body.fingers(self.body.cfg.gripper.stroke)
+
+    # -- placing -----------------------------------------------------------------------------
+
+    def free_spot(self, surface: str, item: str, edge: bool = False) -> np.ndarray:
+        """Centre of a free spot on a surface's top: far from the other items the camera shows on
+        it, near the robot; with ``edge``, close to the front edge (where a hand can take it from
+        the side again)."""
+        f = self.scene.furniture.get(surface)
+        x, y, yaw = self.body.base_pose()
+        if f is None:  # a floor: in front of the robot
+            cands = [np.array([x + 0.75 * math.cos(yaw) - dx * math.sin(yaw), y + 0.75 * math.sin(yaw) + dx * math.cos(yaw), 0.0])
+                     for dx in np.linspace(-0.3, 0.3, 7)]
+            look = np.array([x + 0.75 * math.cos(yaw), y + 0.75 * math.sin(yaw), 0.0])
+        else:
+            w = f.width / 2 - 0.08
+            ly = f.depth / 2 - EDGE_SPOT if edge else 0.0
+            cands = [f.to_world((lx, ly, f.height)) for lx in np.linspace(-w, w, 9)]
+            look = f.top_point()
+        others = self.items_near(look, exclude={item, surface})
+        base = np.array([x, y])
+
+        def score(p):
+            clear = min([np.linalg.norm(p[:2] - o[:2]) for o in others] + [1.0])
+            return min(clear, 0.2) - 0.05 * np.linalg.norm(p[:2] - base)
+
+        return max(cands, key=score)
+
+    def items_near(self, point, exclude: set[str]) -> list[np.ndarray]:
+        """Centroids of the items a look at ``point`` shows (furniture and doors are the map's)."""
+        if not self.eyes.look_at(point):
+            return []
+        frame = self.eyes.frame()
+        mapped = self.scene.site.static_names()
+        out = []
+        for d in frame.detections:
+            if d.name in exclude or d.name in mapped:
+                continue
+            cloud = instance_cloud(frame, d)
+            if cloud is not None:
+                out.append(np.asarray(cloud.points).mean(axis=0))
+        return out
+
+    def cavity_spot(self, container: str) -> tuple[np.ndarray, np.ndarray]:
+        """Centre of a container's cavity floor, and the direction to put things in from (a drawer:
+        the middle of the part of its tray that is out, as last seen)."""
+        f = self.scene.furniture[container]
+        cav = f.info.cavity
+        depth = 0.03
+        art = f.info.articulation
+        if art is not None and art.prismatic:
+            depth = f.depth / 2 - abs(art.opened) / 2 + abs(self.scene.joint.get(container, art.opened))
+        p = f.to_world((0.0, depth, cav.z[0]))
+        a = -f.front if cav.open == "front" else np.array([0.0, 0.0, -1.0])
+        return p, a
+
+    def place(self, name: str, where: str, inside: bool, edge: bool = False) -> Outcome:
+        """Put the held ``name`` on or into ``where``."""
+        held = self.eyes.held
+        if held is None or not self.body.holding():
+            return Outcome(False, f"not holding {name}")
+        if inside:
+            spot, a = self.cavity_spot(where)
+        else:
+            spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
+        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where))
+        T = self.body.pose("tcp")
+        corners = held.corners_at(T)
+        c = corners.mean(axis=0)
+        target = spot.copy()
+        target[2] += (c[2] - corners[:, 2].min()) + PLACE_CLEARANCE  # its bottom just above the support
+        G = T.copy()
+        G[:3, 3] += target - c
+        self.progress(0.2, "pre-place")
+        pre = self.reach_pre(G, a, where if inside else None, 0.16, list(corners + (target - c)))
+        if pre is None:
+            self.carry()
+            return Outcome(False, f"{where}: no arm pose reaches it")
+        self.progress(0.5, "placing")
+        self.body.line(G, steps=4, speed=0.3)
+        self.let_go()
+        self.progress(0.8, "retreat")
+        # out of the grasp along the hand's axis first (a hand holding from the side would lift
+        # the item on its fingers going straight up), then back along the way in
+        out = self.body.pose("tcp")
+        out[:3, 3] -= out[:3, 2] * 0.1
+        self.body.line(out, steps=2, speed=0.4)
+        if inside:
+            self.withdraw(where)
+        else:
+            out[:3, 3] -= a * 0.1
+            self.body.line(out, steps=2, speed=0.4)
+        self.body.home()
+        if self.body.holding():  # the fingers opened on nothing they could let go of
+            return Outcome(True, f"{name} still in the gripper")
+        return Outcome(True)
+
+    def drop_nearby(self) -> None:
+        """Let the held item fall to the floor beside the robot."""
+        T = self.body.pose("tcp")
+        T[:3, 3] = self.body.in_base(DROP)
+        self.body.goto_pose(T)
+        self.let_go()
+
+    # -- the rest ----------------------------------------------------------------------------
+
+    def press(self, appliance: str) -> Outcome:
+        """Press an appliance's switch (where the map says it is) with the closed fingertips."""
+        f = self.scene.furniture.get(appliance)
+        if f is None or f.info.switch is None:
+            return Outcome(False, f"{appliance} has no switch")
+        lp, n = np.array(f.info.switch), f.front
+        self.nav.approach(self.nav.work_pose(lp, n, "front", appliance))
+        G = se3.frame_zx(-n, (0, 0, -1), lp + n * 0.012)
+        pre = G.copy()
+        pre[:3, 3] += n * 0.12
+        self.body.fingers(0.0)
+        if not self.body.goto_pose(pre):
+            self.body.home()
+            return Outcome(False, f"{appliance}: switch out of reach")
+        self.body.line(G, steps=3, speed=0.3)
+        self.body.line(pre, steps=2, speed=0.4)
+        self.body.fingers(self.body.cfg.gripper.stroke)
+        self.body.home()
+        return Outcome(True)
+
+    def fill(self, name: str, sink: str) -> Outcome:
+        """Hold the vessel's opening under the sink's tap while the water runs."""
+        held = self.eyes.held
+        if held is None or not self.body.holding():
+            return Outcome(False, f"not holding {name}")
+        f = self.scene.furniture.get(sink)
+        if f is None or f.info.tap is None:
+            return Outcome(False, f"{sink} has no tap")
+        tap = np.array(f.info.tap)
+        self.nav.approach(self.nav.work_pose(tap, f.front, "top", sink))
+        T = self.body.pose("tcp")
+        corners = held.corners_at(T)
+        top = corners.mean(axis=0)
+        top[2] = corners[:, 2].max()
+        T[:3, 3] += tap - np.array([0.0, 0.0, TAP_BELOW]) - top
+        self.progress(0.3, "under the tap")
+        if not self.body.goto_pose(T):
+            self.carry()
+            return Outcome(False, f"{sink}: tap out of reach")
+        self.body.hold_still(FILL_WAIT)
+        self.carry()
+        return Outcome(True)
+
+    def cut(self, name: str, knife: str, point, where: Where) -> Outcome:
+        """Stroke the held knife's lowest edge down through ``name`` (measured where believed)."""
+        held = self.eyes.held
+        if held is None or not self.body.holding():
+            return Outcome(False, f"not holding {knife}")
+        seen = self.locate(name, point, where)
+        if seen is None:
+            return Outcome(False, f"{name} is not where it was believed to be: not seen")
+        c = seen.centroid
+        self.nav.approach(self.nav.work_pose(c, self.nav.toward_robot(c, where.place), "top", where.place))
+        seen = self.eyes.measure(name, c) or seen
+        c, top = seen.centroid, seen.top
+        tcp = self.body.pose("tcp")
+        corners = held.corners_at(tcp)
+        edge = corners[np.argmin(corners[:, 2])] - tcp[:3, 3]  # the blade's lowest point, from the tcp
+        below = -edge[2]
+        T = tcp.copy()
+        T[:3, 3] = (c[0] - edge[0], c[1] - edge[1], top + below + 0.06)
+        if not self.body.goto_pose(T):
+            self.carry()
+            return Outcome(False, f"{name}: out of reach")
+        stroke = T.copy()
+        stroke[2, 3] = c[2] + below
+        self.body.line(stroke, steps=6, speed=0.2)
+        self.body.line(T, steps=2, speed=0.4)
+        self.carry()
+        return Outcome(True)
+
+    def push(self, blocker: str, target: str, points: dict, where: Where) -> Outcome:
+        """Slide ``blocker`` sideways along its support, away from ``target``, with the closed
+        fingers."""
+        support = self.scene.furniture.get(where.on or "")
+        if support is None:
+            return Outcome(False, f"{blocker} is not on a piece of furniture")
+        b = self.locate(blocker, points[blocker], where)
+        if b is None:
+            return Outcome(False, f"{blocker} is not where it was believed to be: not seen")
+        o = self.eyes.measure(target, points[target])
+        o_c = o.centroid if o is not None else np.asarray(points[target], float)
+        self.nav.approach(self.nav.work_pose(b.centroid, support.front, "top", support.name))
+        b = self.eyes.measure(blocker, b.centroid) or b
+        side = support.along
+        direction = side if (b.centroid - o_c)[:2] @ side[:2] >= 0 else -side  # away from what it blocks
+        r = max(b.extent[:2]) / 2
+        z = b.bottom + 0.6 * (b.top - b.bottom)
+        start = b.centroid - direction * (r + 0.05)
+        start[2] = z + 0.1
+        G = se3.frame_zx((0, 0, -1), direction, start)
+        self.body.fingers(0.0)
+        if not self.body.goto_pose(G):
+            self.body.home()
+            return Outcome(False, f"{blocker}: out of reach")
+        down = G.copy()
+        down[2, 3] = z
+        self.body.line(down, steps=3, speed=0.3)
+        along = down.copy()
+        along[:3, 3] += direction * 0.22
+        self.body.line(along, steps=5, speed=0.2)
+        up = along.copy()
+        up[2, 3] += 0.12
+        self.body.line(up, steps=2, speed=0.4)
+        self.body.fingers(self.body.cfg.gripper.stroke)
+        self.body.home()
+        return Outcome(True)
+
+
+__all__ = ["Hands", "Outcome", "Where", "Stopped", "Furniture", "seen_from"]

@@ -1,0 +1,132 @@
+"""One robot's skill kit: its body, eyes, base paths, hands and handle follower, shared by its skills.
+
+Every motion skill of a robot works through the same :class:`Kit`, built once from the robot's
+interfaces (:mod:`vap_bt.robot.drivers` — arm, gripper, base, wrist camera — and the site map),
+because what one skill learns another needs: the grasp measured the item the place will set
+down, an open saw where the door stands. A kit notices when the robot it serves starts over (a
+new episode: the site map changed, or the robot's clock went back) and forgets what it knew.
+
+:meth:`Kit.goal` wraps one goal: the goal's cancellation reaches every driver call (a cancelled
+goal stops the arm or base within one control cycle and raises :class:`~skills.body.Stopped`),
+progress goes to the goal's feedback, and the IK's scene is the map's.
+"""
+
+from __future__ import annotations
+
+import threading
+from contextlib import contextmanager
+from typing import Iterator
+
+from skills.body import Body
+from skills.eyes import Eyes, Held
+from skills.handles import Handles
+from skills.hands import Hands, Where
+from skills.navigator import Navigator
+from skills.scene_model import SceneModel, seen_from
+from vap_bt.skill import Hint
+from vap_bt.world import GoalContext
+
+#: the robot interfaces a kit needs (attributes of what skills are bound to)
+REQUIRED = ("arm", "gripper", "base", "wrist_camera")
+
+_kits: dict[int, "Kit"] = {}
+_lock = threading.Lock()
+
+
+def has_drivers(robot: object) -> bool:
+    """Whether ``robot`` offers the driver interfaces motion skills move it through."""
+    return all(getattr(robot, name, None) is not None for name in REQUIRED)
+
+
+def kit_for(robot) -> "Kit":
+    """The one kit of ``robot`` (built on first use)."""
+    with _lock:
+        kit = _kits.get(id(robot))
+        if kit is None or kit.robot is not robot:
+            kit = _kits[id(robot)] = Kit(robot)
+        return kit
+
+
+class Kit:
+    """Body, eyes, navigator, hands and handles over one robot's drivers and site map."""
+
+    def __init__(self, robot) -> None:
+        self.robot = robot
+        self.body = Body(robot.arm, robot.gripper, robot.base)
+        self.eyes = Eyes(self.body, robot.wrist_camera)
+        self._map = None
+        self._stamp = -1.0
+        self.busy = threading.Lock()  # one goal moves the robot at a time
+        self._start()
+
+    def _start(self) -> None:
+        site = self.robot.site_map()
+        self._map = site
+        self.scene = SceneModel(site)
+        self.nav = Navigator(self.body, self.scene, self.eyes)
+        self.hands = Hands(self.body, self.eyes, self.nav, self.scene)
+        self.handles = Handles(self.body, self.eyes, self.nav, self.scene, self.hands)
+        self.eyes.held = None
+
+    def _refresh(self) -> None:
+        """Start over when the robot did (another episode), and forget a held item the gripper
+        no longer holds."""
+        stamp = float(self.robot.state().stamp)
+        site = self.robot.site_map()
+        if stamp < self._stamp or site != self._map:
+            self._start()
+        self._stamp = stamp
+        if not self.body.holding():
+            self.eyes.held = None
+
+    @contextmanager
+    def goal(self, ctx: GoalContext) -> Iterator["Kit"]:
+        with self.busy:
+            self._refresh()
+            self.body.set_scene(self.scene.solid_boxes())  # leaves where they were last seen
+            self.body.cancelled = ctx.cancelled
+            self.hands.progress = ctx.feedback
+            try:
+                yield self
+            finally:
+                self.body.cancelled = lambda: False
+                self.hands.progress = lambda p, text: None
+
+    @contextmanager
+    def looking(self, cancelled) -> Iterator["Kit"]:
+        """One camera-service call (:mod:`skills.views`): like a goal, without feedback."""
+        with self.busy:
+            self._refresh()
+            self.body.set_scene(self.scene.solid_boxes())
+            self.body.cancelled = cancelled
+            try:
+                yield self
+            finally:
+                self.body.cancelled = lambda: False
+
+    # -- what the goal says the executive believes ---------------------------------------------
+
+    @staticmethod
+    def point(hints: dict[str, Hint], name: str):
+        h = hints.get(name)
+        return None if h is None or h.position is None else h.position
+
+    @staticmethod
+    def where(hints: dict[str, Hint], name: str) -> Where:
+        h = hints.get(name)
+        return Where() if h is None else Where(on=h.on, inside=h.inside)
+
+    def holding(self, name: str) -> bool:
+        """Whether the hand holds ``name``, with its geometry known: a held item the kit did not
+        take itself (it was in the hand when the episode began) is measured in a frame first —
+        it rides in the wrist camera's view."""
+        if not self.body.holding():
+            return False
+        held = self.eyes.held
+        if held is not None and held.name == name:
+            return True
+        seen = seen_from(self.eyes.frame(), name)
+        if seen is None:
+            return False
+        self.eyes.held = Held.taken(seen, self.body.pose("tcp"))
+        return True

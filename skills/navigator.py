@@ -1,0 +1,227 @@
+"""Where the base stands and how it gets there: standoff and work poses, paths round obstacles.
+
+Two rules say where the robot stands. To look at a piece of furniture it stands squarely in
+front of it at a *standoff*; to look at an item, at its support's standoff shifted sideways to
+face the item (floor items from the corridor side). To work with the hand it stands at a *work
+pose*: a reach away from the worked point (``WORK_DISTANCE``, less for a top-down approach than
+for a horizontal one), stepped sideways or back until the base keeps clear of everything the map
+and the last looks place there (walls, furniture, door leaves as last seen).
+
+A base path is straight when that is clear of those obstacles — for the base's footprint and,
+except on the last stretch where the arm reaches over what it works, for the folded arm too —
+else it goes through one via pose backed off from the goal or round a corner. A trip to another
+room follows the house's corridor through the doorways; before each it looks at the door, and a
+door it does not see open (:meth:`~skills.scene_model.SceneModel.fit_leaf`) stops the trip.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from skills.body import Body, angle_to
+from skills.eyes import Eyes
+from skills.scene_model import SceneModel
+from vap_bt.motion.footprint import base_free
+
+#: base centre to the worked point, horizontally, for a top-down and a horizontal approach
+WORK_DISTANCE = {"top": 0.62, "front": 0.74}
+BASE_CLEARANCE = 0.40  # base centre to the front face of the furniture at least
+WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep a work pose clear
+WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15)  # further from the point, when no sideways shift is clear
+WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
+PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
+DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked
+LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
+ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furniture to be worked
+#: base centre to a piece of furniture's front when looking at it; a surface higher than the
+#: camera's eye line is looked at from further back, to see its top
+STANDOFF, TALL_STANDOFF, TALL = 1.05, 1.8, 1.0
+FLOOR_STANDOFF = 0.72  # base centre to a floor item, from the corridor side
+DOOR_VIEW = 1.8  # base centre to a doorway when looking at its door: the whole leaf in the frame
+DOOR_STOP = 0.95  # base centre to a doorway when it stops in front of it on a trip
+#: a door counts as open for the base to pass once it has swung this share of its travel
+DOOR_PASSABLE = 0.55
+DOOR_LOOK_HEIGHT = 0.8
+CORRIDOR_SPEED = 1.0
+APPROACH_SPEED = 0.6
+
+Pose = tuple[float, float, float]
+
+
+class Blocked(Exception):
+    """A trip stopped short: a door on the way is not open (the message names it)."""
+
+
+class Navigator:
+    """Base poses and paths, from the map and what the camera shows."""
+
+    def __init__(self, body: Body, scene: SceneModel, eyes: Eyes) -> None:
+        self.body, self.scene, self.eyes = body, scene, eyes
+
+    # -- where to stand ----------------------------------------------------------------------
+
+    def standoff(self, name: str, point=None, support: str | None = None) -> Pose:
+        """Where to stand to look at ``name``: furniture from its front, a door from the robot's
+        side of it, a room from its middle, an item (believed at ``point`` on ``support``) from
+        its support's front, facing it, or from the corridor side when it is on the floor."""
+        f = self.scene.furniture.get(name)
+        if f is not None:
+            return self._front_of(name)
+        door = self.scene.site.door(name)
+        if door is not None:
+            here = self.scene.room_at(*self.body.base_pose()[:2]) or door.rooms[0]
+            return self.door_pose(name, here, DOOR_VIEW)
+        room = self.scene.site.room(name) or self.scene.site.room(self.scene.site.floors().get(name, ""))
+        if room is not None:
+            c = self.scene.room_center(room.name)
+            return (float(c[0]), self.scene.corridor_y(), math.pi / 2)
+        if point is None:
+            raise ValueError(f"no belief of where {name} is")
+        sup = self.scene.furniture.get(support or "")
+        if sup is not None:
+            lateral = float(np.clip(sup.local(point)[0], -sup.width / 2, sup.width / 2))
+            return self._front_of(sup.name, lateral)
+        return (float(point[0]), float(min(point[1] + FLOOR_STANDOFF, self.scene.corridor_y() + 0.3)), -math.pi / 2)
+
+    def _front_of(self, name: str, lateral: float = 0.0) -> Pose:
+        f = self.scene.furniture[name]
+        tall = f.info.type == "surface" and f.height > TALL
+        p = f.to_world((lateral, f.depth / 2 + (TALL_STANDOFF if tall else STANDOFF), 0.0))
+        return (float(p[0]), float(p[1]), math.atan2(-f.front[1], -f.front[0]))
+
+    def door_pose(self, door: str, room: str, dist: float) -> Pose:
+        """Facing ``door`` from ``room``, ``dist`` from the doorway."""
+        d = self.scene.site.door(door)
+        x, y, _ = d.pose
+        low = self.scene.room_center(d.rooms[0])[0] < x  # rooms[0] lies on the low-x side
+        side = -1.0 if (room == d.rooms[0]) == low else 1.0
+        return (x + side * dist, y, math.pi if side > 0 else 0.0)
+
+    def door_point(self, door: str) -> np.ndarray:
+        x, y, _ = self.scene.site.door(door).pose
+        return np.array([x, y, DOOR_LOOK_HEIGHT])
+
+    def work_pose(self, point, toward, how: str, clear_of: str | None = None) -> Pose:
+        """Base pose for working at ``point``: ``toward`` is the horizontal direction from the
+        point to where the robot stands; keep clear of the front of ``clear_of``, and step
+        sideways (facing the point) or back when a leaf or other furniture is in the way."""
+        f = np.array([toward[0], toward[1], 0.0])
+        f /= np.linalg.norm(f)
+        r = WORK_DISTANCE[how]
+        piece = self.scene.furniture.get(clear_of or "")
+        if piece is not None:
+            front = piece.to_world((0.0, piece.depth / 2, 0.0))
+            r = max(r, float((front - np.asarray(point))[:2] @ piece.front[:2]) + BASE_CLEARANCE)
+        side = np.array([-f[1], f[0], 0.0])
+        obstacles = self.scene.obstacles()
+        for back in WORK_BACKOFFS:
+            p = np.asarray(point) + f * (r + back)
+            for shift in WORK_SHIFTS:
+                q = p + side * shift
+                pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
+                if base_free(pose, obstacles, WORK_MARGIN):
+                    return pose
+        p = np.asarray(point) + f * r
+        return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+
+    def toward_robot(self, point, support: str | None) -> np.ndarray:
+        """Horizontal direction from a point to the side the robot works it from."""
+        piece = self.scene.furniture.get(support or "")
+        if piece is not None:
+            return piece.front
+        d = np.array([*self.body.base_pose()[:2], 0.0]) - np.asarray(point, float)
+        d[2] = 0.0
+        return d / max(np.linalg.norm(d), 1e-6)
+
+    def base_fits(self, x: float, y: float, room: str | None = None) -> bool:
+        """The base could stand at (x, y), any heading: inside a room (``room`` if given), clear
+        of walls and furniture."""
+        here = self.scene.room_at(x, y)
+        if here is None or (room is not None and here != room):
+            return False
+        obstacles = self.scene.obstacles()
+        return any(base_free((x, y, yaw), obstacles, PARKED_MARGIN) for yaw in (0.0, math.pi / 2))
+
+    # -- getting there -----------------------------------------------------------------------
+
+    def approach(self, pose: Pose, speed: float = APPROACH_SPEED) -> None:
+        """Drive to a pose (arm folded or carrying): within a room round the obstacles, to
+        another room along the corridor and through the doorways (:meth:`drive_to`)."""
+        x, y, _ = self.body.base_pose()
+        here, there = self.scene.room_at(x, y), self.scene.room_at(*pose[:2])
+        if here is not None and there is not None and here != there:
+            self.drive_to(pose)
+            return
+        self.body.drive(self.base_path(pose), speed)
+
+    def drive_to(self, pose: Pose) -> None:
+        """Along the corridor to ``pose``, through the doorways on the way; raises
+        :class:`Blocked` in front of a door that is not open."""
+        x, y, yaw = self.body.base_pose()
+        cy = self.scene.corridor_y()
+        legs: list = [(x, cy, yaw)]
+        crossing = [d for d in self.scene.site.doors if d.pose is not None
+                    and min(x, pose[0]) < d.pose[0] < max(x, pose[0])]
+        if self.scene.room_at(x, y) is not None:
+            for d in sorted(crossing, key=lambda d: abs(d.pose[0] - x)):
+                side = -1.0 if x < d.pose[0] else 1.0
+                legs += [(d.pose[0] + side * DOOR_STOP, d.pose[1], 0.0 if side < 0 else math.pi), d.name,
+                         (d.pose[0] - side * DOOR_STOP, d.pose[1], pose[2])]
+        legs += [(pose[0], cy, pose[2]), tuple(pose)]
+        for leg in legs:
+            if isinstance(leg, str):
+                if not self.door_open(leg):
+                    raise Blocked(f"door {leg} is not open: stopped in front of it")
+                continue
+            self.body.drive(self.base_path(leg), CORRIDOR_SPEED)
+
+    def door_open(self, door: str) -> bool:
+        """Look at ``door`` and judge from the frame whether its leaf stands open enough to pass."""
+        leaf = self.scene.leaves.get(door)
+        if leaf is None:
+            return True
+        if not self.eyes.look_at(self.door_point(door)):
+            return False
+        q = self.scene.fit_leaf(door, self.eyes.frame())
+        if q is None:
+            return False
+        travel = max(abs(leaf.art.lower), abs(leaf.art.upper), abs(leaf.art.opened))
+        return abs(q) >= DOOR_PASSABLE * travel
+
+    def base_path(self, pose: Pose) -> list[Pose]:
+        """Poses to drive through to ``pose`` without the base or the arm above it running into a
+        wall, furniture or an open leaf: straight if that is clear, else through a via pose
+        (backed off from the goal along its heading, or round a corner); straight if none is."""
+        here = np.array(self.body.base_pose(), float)
+        goal = np.array(pose, float)
+        goal[2] = angle_to(here[2], goal[2])
+        obstacles = self.scene.obstacles()
+        heading = np.array([math.cos(goal[2]), math.sin(goal[2]), 0.0])
+        vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
+                                                               np.array([here[0], goal[1], here[2]])]
+        turned = np.array([here[0], here[1], goal[2]])  # turning on the spot first swings the arm away
+        paths = [[goal], *([v, goal] for v in vias), [turned, goal], *([turned, v, goal] for v in vias),
+                 *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)])]
+        for path in paths:
+            legs = [here, *path]
+            if all(self._leg_clear(a, b, obstacles) for a, b in zip(legs, legs[1:])):
+                return [tuple(map(float, p)) for p in path]
+        return [tuple(map(float, goal))]
+
+    @staticmethod
+    def _leg_clear(a: np.ndarray, b: np.ndarray, obstacles) -> bool:
+        """A straight base move keeps the footprint off every obstacle once it has left ``a``, and
+        the folded arm too except near ``b``, where it works over the furniture."""
+        def way(u, v) -> float:  # a turn on the spot counts as a way too (the arm sweeps)
+            return float(np.linalg.norm((v - u)[:2]) + 0.4 * abs(v[2] - u[2]))
+
+        n = max(2, int(way(a, b) / 0.08) + 1)
+        for s in np.linspace(0.0, 1.0, n):
+            q = a + (b - a) * s
+            if way(a, q) < LEAVE_SLACK:
+                continue
+            if not base_free(q, obstacles, PARKED_MARGIN, folded=np.linalg.norm((b - q)[:2]) > ARM_SLACK):
+                return False
+        return True

@@ -1,0 +1,250 @@
+"""What skills know of the scene: the map's furniture and walls, and what the camera shows now.
+
+Skills plan motions against two kinds of knowledge, neither of which is the simulator's state:
+
+* **the site map** (:mod:`vap_bt.robot.site_map`) — room outlines (their walls, with gaps where
+  the doorways are), each piece of furniture's footprint, height, cavity and articulation (how
+  its door or drawer moves, where its handle, switch or tap is). From it come the furniture's
+  frame (x along its front, y out of it, z up), the obstacles a base must keep off (as polygons
+  seen from above) and the solid boxes IK must keep the arm clear of — a container's box has its
+  cavity carved out, so a hand can reach in;
+* **what the camera shows** — where an item is, how big, which way it lies: the skill looks where
+  the executive believes the item is (the goal's hint), takes a frame, and fuses the item's
+  masked depth into a point cloud (:mod:`vap_bt.scene.pointcloud`); where a door or drawer stands
+  now, fitted to the points of its piece of furniture (the map says how it moves; the frame says
+  how far it has).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from vap_bt.motion import se3
+from vap_bt.motion.collision import SceneBoxes
+from vap_bt.motion.footprint import Obb
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.site_map import Articulation, FurnitureInfo, SiteMap
+from vap_bt.scene.pointcloud import instance_cloud
+
+#: walls are where the map's room outlines are, this thick and high (a SLAM map's walls)
+WALL_THICKNESS = 0.08
+WALL_HEIGHT = 2.0
+#: a door's fitted opening is searched over this many joint values between closed and open
+DOOR_FIT_STEPS = 40
+#: points within this of a leaf's box count as the leaf's
+LEAF_MARGIN = 0.03
+
+
+@dataclass(frozen=True)
+class Seen:
+    """An item as one look shows it: centroid, box, the yaw of its longer side, and whether it is
+    round seen from above (then any grasp direction across it will do)."""
+
+    name: str
+    centroid: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+    yaw: float
+    round: bool
+    frame: Frame
+
+    @property
+    def top(self) -> float:
+        return float(self.hi[2])
+
+    @property
+    def bottom(self) -> float:
+        return float(self.lo[2])
+
+    @property
+    def extent(self) -> np.ndarray:
+        return self.hi - self.lo
+
+    def corners(self) -> np.ndarray:
+        return np.array([[x, y, z] for x in (self.lo[0], self.hi[0]) for y in (self.lo[1], self.hi[1])
+                         for z in (self.lo[2], self.hi[2])])
+
+
+def seen_from(frame: Frame, name: str) -> Seen | None:
+    """An item's geometry from one frame, or None when the frame does not show it (enough)."""
+    d = frame.detection(name)
+    cloud = instance_cloud(frame, d) if d is not None else None
+    if cloud is None:
+        return None
+    pts = np.asarray(cloud.points)
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    xy = pts[:, :2] - pts[:, :2].mean(axis=0)
+    evals, evecs = np.linalg.eigh(np.cov(xy.T) if len(xy) > 2 else np.eye(2))
+    major = evecs[:, 1]
+    return Seen(name, pts.mean(axis=0), lo, hi, math.atan2(major[1], major[0]),
+                bool(evals[1] < 1.6 * max(evals[0], 1e-9)), frame)
+
+
+class Furniture:
+    """One mapped piece of furniture in its own frame (x along its front, y out of it, z up)."""
+
+    def __init__(self, info: FurnitureInfo) -> None:
+        self.info = info
+        x, y, yaw = info.pose
+        self.origin = np.array([x, y, 0.0])
+        self.front = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+        self.along = np.array([self.front[1], -self.front[0], 0.0])
+        self.width, self.depth = info.footprint
+        self.height = info.height or 0.0
+
+    @property
+    def name(self) -> str:
+        return self.info.name
+
+    def to_world(self, local) -> np.ndarray:
+        lx, ly, lz = local
+        return self.origin + self.along * lx + self.front * ly + np.array([0.0, 0.0, lz])
+
+    def local(self, p) -> np.ndarray:
+        d = np.asarray(p, float) - self.origin
+        return np.array([d @ self.along, d @ self.front, p[2]])
+
+    def yaw(self) -> float:
+        return math.atan2(self.front[1], self.front[0])
+
+    def outer(self) -> Obb:
+        R = np.column_stack([self.along, self.front, (0.0, 0.0, 1.0)])
+        return Obb(self.to_world((0.0, 0.0, self.height / 2)), R, np.array([self.width, self.depth, self.height]) / 2)
+
+    def solids(self) -> list[Obb]:
+        """The piece as solid boxes, its cavity carved out (the walls and floor round it remain)."""
+        cav = self.info.cavity
+        if cav is None:
+            return [self.outer()]
+        R = np.column_stack([self.along, self.front, (0.0, 0.0, 1.0)])
+        w, d, h, t = self.width, self.depth, self.height, cav.wall
+        z0, z1 = cav.z
+
+        def box(x0, x1, y0, y1, zlo, zhi) -> Obb:
+            c = self.to_world(((x0 + x1) / 2, (y0 + y1) / 2, (zlo + zhi) / 2))
+            return Obb(c, R, np.array([x1 - x0, y1 - y0, zhi - zlo]) / 2)
+
+        parts = [box(-w / 2, w / 2, -d / 2, d / 2, 0.0, z0)]  # below the cavity
+        if z1 < h - 1e-3:
+            parts.append(box(-w / 2, w / 2, -d / 2, d / 2, z1, h))  # above it
+        parts += [box(-w / 2, -w / 2 + t, -d / 2, d / 2, z0, z1), box(w / 2 - t, w / 2, -d / 2, d / 2, z0, z1)]
+        if cav.open == "front":
+            parts.append(box(-w / 2, w / 2, -d / 2, -d / 2 + t, z0, z1))  # the back wall
+        else:
+            parts += [box(-w / 2, w / 2, -d / 2, -d / 2 + t, z0, z1), box(-w / 2, w / 2, d / 2 - t, d / 2, z0, z1)]
+        return parts
+
+    def top_point(self) -> np.ndarray:
+        return self.to_world((0.0, 0.0, self.height))
+
+
+class Leaf:
+    """A door leaf or drawer as the map describes its motion; ``q`` is its joint value."""
+
+    def __init__(self, name: str, art: Articulation) -> None:
+        self.name, self.art = name, art
+        self.origin, self.axis = np.array(art.origin), np.array(art.axis)
+
+    def transform(self, q: float, q_from: float = 0.0):
+        if self.art.prismatic:
+            shift = self.axis * (q - q_from)
+            return np.eye(3), (lambda p: np.asarray(p) + shift)
+        R = se3.axis_angle(self.axis, q - q_from)
+        return R, (lambda p: self.origin + R @ (np.asarray(p) - self.origin))
+
+    def box(self, q: float) -> Obb:
+        R, move = self.transform(q)
+        return Obb(move(np.array(self.art.leaf_center)), R, np.array(self.art.leaf_half))
+
+    def handle_at(self, q: float, side: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Handle grasp point, outward face normal and bar direction at joint value ``q`` (``side``
+        -1: the handle on the other face of a room door)."""
+        R, move = self.transform(q)
+        normal = np.array(self.art.normal)
+        centre = np.array(self.art.handle) if side > 0 else np.array(self.art.handle) - normal * self.art.other_side
+        return move(centre), R @ (normal * side), R @ np.array(self.art.bar)
+
+
+class SceneModel:
+    """The map's geometry for planning, and perception's answers about where things are now."""
+
+    def __init__(self, site: SiteMap) -> None:
+        self.site = site
+        self.furniture = {f.name: Furniture(f) for f in site.furniture if f.pose is not None and f.footprint}
+        self.leaves = {f.name: Leaf(f.name, f.articulation) for f in site.furniture if f.articulation}
+        self.leaves.update({d.name: Leaf(d.name, d.articulation) for d in site.doors if d.articulation})
+        self.joint: dict[str, float] = {}  # where each leaf was last seen or left
+
+    # -- where things are, by the map --------------------------------------------------------
+
+    def room_at(self, x: float, y: float) -> str | None:
+        return self.site.room_at(x, y)
+
+    def room_center(self, room: str) -> np.ndarray:
+        x0, y0, x1, y1 = self.site.room(room).bounds
+        return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+
+    def corridor_y(self) -> float:
+        """The free middle line of the house (the rooms stand in a row along x)."""
+        ys = [(r.bounds[1] + r.bounds[3]) / 2 for r in self.site.rooms if r.bounds]
+        return float(np.mean(ys))
+
+    def walls(self) -> list[Obb]:
+        """The rooms' outlines as wall boxes, with the doorways left open."""
+        out, t = [], WALL_THICKNESS
+        gaps = [(d.pose[0], d.pose[1] - d.width / 2, d.pose[1] + d.width / 2) for d in self.site.doors if d.pose]
+        for r in self.site.rooms:
+            if r.bounds is None:
+                continue
+            x0, y0, x1, y1 = r.bounds
+            out += [Obb.aabb((x0, y0 - t / 2, 0), (x1, y0 + t / 2, WALL_HEIGHT)),
+                    Obb.aabb((x0, y1 - t / 2, 0), (x1, y1 + t / 2, WALL_HEIGHT))]
+            for x in (x0, x1):
+                y = y0
+                for g0, g1 in sorted((a, b) for gx, a, b in gaps if abs(gx - x) < 1e-6):
+                    if g0 > y:
+                        out.append(Obb.aabb((x - t / 2, y, 0), (x + t / 2, g0, WALL_HEIGHT)))
+                    y = max(y, g1)
+                if y < y1:
+                    out.append(Obb.aabb((x - t / 2, y, 0), (x + t / 2, y1, WALL_HEIGHT)))
+        return out
+
+    def leaf_boxes(self, skip: str | None = None) -> list[Obb]:
+        """Every door leaf and drawer where it was last seen (closed when never seen otherwise)."""
+        return [leaf.box(self.joint.get(name, 0.0)) for name, leaf in self.leaves.items() if name != skip]
+
+    def obstacles(self, moving: str | None = None) -> list[np.ndarray]:
+        """What the base must keep off, seen from above: walls, furniture, door leaves as they
+        stand (except ``moving``'s, which the planner places itself)."""
+        boxes = self.walls() + [f.outer() for f in self.furniture.values()] + self.leaf_boxes(moving)
+        return [b.polygon() for b in boxes]
+
+    def solid_boxes(self, moving: str | None = None) -> SceneBoxes:
+        """What the arm must keep clear of: walls, furniture with its cavities carved out, leaves."""
+        boxes = self.walls() + [s for f in self.furniture.values() for s in f.solids()] + self.leaf_boxes(moving)
+        return SceneBoxes(np.array([b.pose() for b in boxes]).reshape(-1, 4, 4),
+                          np.array([2 * b.half for b in boxes]).reshape(-1, 3))
+
+    # -- where things are, by looking ----------------------------------------------------------
+
+    def fit_leaf(self, name: str, frame: Frame, hint: float | None = None) -> float | None:
+        """The joint value of ``name``'s leaf that best explains the frame's points of its piece
+        of furniture (or door), or None when the frame does not show it."""
+        leaf = self.leaves.get(name)
+        d = frame.detection(name)
+        cloud = instance_cloud(frame, d) if (leaf is not None and d is not None) else None
+        if cloud is None:
+            return hint
+        pts = np.asarray(cloud.points)
+        lo, hi = sorted((0.0, leaf.art.opened))
+        values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
+        scores = [int(leaf.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values]
+        best = int(np.argmax(scores))
+        if scores[best] == 0:
+            return hint
+        q = float(values[best])
+        self.joint[name] = q
+        return q

@@ -1,0 +1,135 @@
+"""The camera service skills offer the executive: aim, go to a viewpoint, move the view, capture.
+
+The executive perceives through :class:`~vap_bt.robot.camera.Camera` — capture a frame aimed at
+a point where belief puts something, go to a viewpoint of a sweep, move the view left, closer,
+above — and never says how. :class:`ViewService` is that interface on the robot's side, built on
+the same kit as the motion skills (so an aim moves the arm exactly as a skill's look does, and
+one goal or one look moves the robot at a time): viewpoints are reached along the navigator's
+base paths, a shut door on the way makes a viewpoint unreachable, and a viewpoint off the floor
+of the robot's room, or on furniture, is refused before anything moves. The simulator only
+renders what the camera, wherever the arm and base have put it, shows.
+
+:meth:`ViewService.stop` cancels a view motion in flight (a check the executive stopped caring
+about): the drivers stop within a control cycle and the call returns False.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+
+import numpy as np
+
+from skills.body import Stopped
+from skills.kit import Kit
+from skills.navigator import Blocked
+from vap_bt.robot.camera import VIEW_DIRECTIONS, Aim, Viewpoint
+from vap_bt.robot.frame import Frame
+
+#: a viewpoint counts as reached when the base stops this close to it (m)
+VIEW_REACHED = 0.25
+#: a "front" view steps back to this distance from the point, squarely facing it: far enough to
+#: see all of a tall piece of furniture (a 1.05 m shelf needs about 1.8 m)
+FRONT_VIEW = 1.8
+SIDE_TURN = 0.5  # rad round the point for a view from the left or the right
+CLOSER_STEP, CLOSEST = 0.25, 0.75  # a step closer, but no nearer to the point than this
+ABOVE = 0.3  # m higher eye for a view from above
+
+
+class ViewService:
+    """The :class:`~vap_bt.robot.camera.Camera` interface over one robot's kit."""
+
+    def __init__(self, kit: Kit) -> None:
+        self.kit = kit
+        self._stop = threading.Event()
+
+    def stop(self) -> None:
+        """Cancel the view motion in flight, if any."""
+        self._stop.set()
+
+    def _looking(self):
+        self._stop.clear()
+        return self.kit.looking(self._stop.is_set)
+
+    def capture(self, aim: Aim | None = None) -> Frame:
+        """Aim at ``aim.point`` (if given and not already aimed there) and take a frame."""
+        with self._looking() as kit:
+            if aim is not None and aim.point is not None and not kit.eyes.aimed_at(aim.point):
+                try:
+                    kit.eyes.look_at(np.asarray(aim.point, float))
+                except Stopped:
+                    pass  # the frame shows wherever the camera stopped
+            return kit.eyes.frame()
+
+    def goto_view(self, view: Viewpoint) -> bool:
+        """Drive to the viewpoint's base pose (through doors, stopping at a shut one) and aim."""
+        with self._looking() as kit:
+            try:
+                if view.base_pose is not None:
+                    x, y = view.base_pose[:2]
+                    if not kit.nav.base_fits(x, y):
+                        return False
+                    kit.nav.approach(tuple(view.base_pose))
+                    bx, by, _ = kit.body.base_pose()
+                    if math.hypot(bx - x, by - y) > VIEW_REACHED:
+                        return False
+                if view.aim.point is None:
+                    return True
+                return kit.eyes.look_at(np.asarray(view.aim.point, float))
+            except (Stopped, Blocked):
+                return False
+
+    def move_view(self, aim: Aim, direction: str) -> bool:
+        """Move the viewpoint ``direction`` relative to the point belief puts the target at: a
+        base move within the robot's room, then an aim at the point."""
+        if direction not in VIEW_DIRECTIONS or aim.point is None:
+            return False
+        with self._looking() as kit:
+            p = np.asarray(aim.point, float)
+            x, y, yaw = kit.body.base_pose()
+            target = _moved_to(direction, (x, y, yaw), p)
+            if target is None:
+                return False
+            nx, ny, nyaw, lift = target
+            moves = (nx, ny) != (x, y)
+            # a view from elsewhere must be in this room: a base move for a view never goes
+            # through a wall or a doorway
+            if moves and not kit.nav.base_fits(nx, ny, kit.scene.room_at(x, y)):
+                return False
+            try:
+                if moves:
+                    kit.nav.approach((nx, ny, nyaw))
+                # from above: as high over the base as the arm reaches (close in, the highest eye
+                # may need the wrist bent further than it goes)
+                lifts = (lift, 2 * lift / 3, lift / 3) if lift > 0 else (0.0,)
+                return any(kit.eyes.look_at(p, lift=h) for h in lifts)
+            except (Stopped, Blocked):
+                return False
+
+
+def _moved_to(direction: str, here, p: np.ndarray):
+    """Base pose (x, y, yaw) and eye lift for a view ``direction`` of point ``p`` from ``here``;
+    None when there is no such move (already as close as a view gets)."""
+    x, y, yaw = here
+    lift = 0.0
+    if direction in ("left", "right"):
+        ang = SIDE_TURN if direction == "left" else -SIDE_TURN
+        dx, dy = x - p[0], y - p[1]
+        c, s = math.cos(ang), math.sin(ang)
+        nx, ny = p[0] + c * dx - s * dy, p[1] + s * dx + c * dy
+    elif direction == "closer":
+        v = np.array([p[0] - x, p[1] - y])
+        step = min(CLOSER_STEP, max(0.0, np.linalg.norm(v) - CLOSEST))
+        if step <= 0.02:
+            return None
+        nx, ny = np.array([x, y]) + v / np.linalg.norm(v) * step
+    elif direction == "front":  # square on to the point, from a good viewing distance
+        v = np.array([x - p[0], y - p[1]])
+        v = v / (np.linalg.norm(v) or 1.0)
+        nx, ny = p[0] + v[0] * FRONT_VIEW, p[1] + v[1] * FRONT_VIEW
+    elif direction == "behind":
+        nx, ny = 2 * p[0] - x, 2 * p[1] - y
+    else:  # above
+        nx, ny, lift = x, y, ABOVE
+    nyaw = math.atan2(p[1] - ny, p[0] - nx) if direction != "above" else yaw
+    return float(nx), float(ny), float(nyaw), lift
