@@ -1,0 +1,103 @@
+"""Every way an episode ends halts the tree, and halting cancels the goal in flight.
+
+The world's actions here never finish on their own: an action runs until its goal is cancelled
+(and records that it was), the way a skill moving a robot runs until the motion ends. The goals
+go over real Zenoh sessions on loopback (the embedded transport), so the cancel travels as it
+would to a skill server in another process.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+
+import pytest
+
+from conftest import TREES
+from vap_bt.runner import EpisodeInterrupted, RunConfig, Session
+from vap_bt.sim.symbolic import SymbolicWorld
+from vap_bt.taskfile import load
+
+pytestmark = pytest.mark.timeout(120)
+
+
+@pytest.fixture
+def endless(monkeypatch):
+    """Make the symbolic world's actions run until cancelled; returns what each saw."""
+    seen: list[dict] = []
+    started = threading.Event()
+
+    def perform(self, action, args, ctx):
+        rec = {"action": action, "cancelled": False, "t0": time.monotonic()}
+        seen.append(rec)
+        started.set()
+        while not ctx.cancelled():
+            if time.monotonic() - rec["t0"] > 30:
+                raise AssertionError("the goal was never cancelled")
+            time.sleep(0.005)
+        rec["cancelled"], rec["t1"] = True, time.monotonic()
+        from vap_bt.world import ActionOutcome
+
+        return ActionOutcome(False, "cancelled")
+
+    monkeypatch.setattr(SymbolicWorld, "perform", perform)
+    return seen, started
+
+
+def _cancelled_before_close(seen: list[dict], within: float = 2.0) -> bool:
+    """Whether the last action saw its cancel while the session is still open (the skill
+    server's own close cancels its goals too: that must not be what stopped it)."""
+    deadline = time.monotonic() + within
+    while time.monotonic() < deadline:
+        if seen and seen[-1]["cancelled"]:
+            return True
+        time.sleep(0.01)
+    return False
+
+
+def _session(**cfg) -> Session:
+    task = load(TREES / "collect_cup.yaml")
+    return Session(task, RunConfig.from_task(task, world="symbolic", transport="zenoh", injection=False,
+                                             vlm_error=0.0, **cfg))
+
+
+def test_the_time_budget_halts_the_tree_and_cancels_the_goal_in_flight(endless):
+    seen, _ = endless
+    session = _session(max_seconds=3.0)
+    try:
+        t0 = time.monotonic()
+        report = session.episode()
+        halted = _cancelled_before_close(seen)
+    finally:
+        session.close()
+    assert "time budget (3 s) exhausted" in report["reason"] and not report["success"]
+    assert seen, "an action should have been started"
+    assert halted, "the goal in flight at the budget must be cancelled by the halt"
+    assert seen[-1]["t1"] - t0 >= 3.0  # not before the budget ran out
+
+
+def test_ctrl_c_halts_the_tree_and_cancels_the_goal_in_flight(endless, monkeypatch):
+    from vap_bt.bt.executive import Executive
+
+    seen, started = endless
+    real = Executive._tick_until_done
+
+    def ticking(self, tree, ctx, plan, out):
+        def press_ctrl_c(tree, ticks):  # the user presses Ctrl-C while the first action runs
+            if started.is_set() and ticks > 5:
+                raise KeyboardInterrupt
+
+        self.on_tree = press_ctrl_c
+        return real(self, tree, ctx, plan, out)
+
+    monkeypatch.setattr(Executive, "_tick_until_done", ticking)
+    session = _session()
+    try:
+        with pytest.raises(EpisodeInterrupted) as stop:
+            session.episode()
+        halted = _cancelled_before_close(seen)
+    finally:
+        session.close()
+    assert stop.value.report["reason"] == "interrupted"
+    assert halted, "Ctrl-C must cancel the goal in flight (the halt, before anything is closed)"
+    assert len(seen) == 1, "no further action may start after the interruption"
