@@ -36,7 +36,8 @@ the kind:
 Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
 for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above; 4 — the
 robot interfaces (frames with detections, state, map, viewpoints) and the VLM service replace
-schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints. A schema-1 frame is still recognised (its byte 8, the
+schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints, and
+the robot's drivers travel (driver calls and replies). A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -52,7 +53,7 @@ from __future__ import annotations
 
 import json
 import struct
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
 from typing import Any, Callable, TypeVar
 
 import numpy as np
@@ -160,6 +161,25 @@ class VlmRequest:
 
     query: Query
     frame_id: str
+
+
+@dataclass(frozen=True)
+class DriverCall:
+    """A call on a robot's drivers (:mod:`vap_bt.transport.drivers`): ``call`` names it
+    (``arm.follow``, ``base.pose``, ...), ``client`` the caller; plain values and numeric arrays."""
+
+    call: str
+    client: str = ""
+    values: dict = field(default_factory=dict)
+    arrays: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class DriverReply:
+    """A driver's answer: plain values and numeric arrays."""
+
+    values: dict = field(default_factory=dict)
+    arrays: dict = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -277,6 +297,18 @@ def _unpack_map(d: dict[str, Any], _: Arrays) -> SiteMap:
         furniture=tuple(FurnitureInfo(n, lb, t, r, _tuple_or_none(p), _tuple_or_none(fp))
                         for n, lb, t, r, p, fp in d["furniture"]),
         facts=frozenset(_atoms_in(d["facts"])))
+
+
+def _pack_driver(m) -> tuple[dict[str, Any], Arrays]:
+    body = {f.name: getattr(m, f.name) for f in fields(m) if f.name != "arrays"}
+    return body, {k: np.ascontiguousarray(v) for k, v in m.arrays.items()}
+
+
+def _driver_unpacker(cls: type) -> Unpacker:
+    def unpack(d: dict[str, Any], arrays: Arrays) -> Any:
+        return cls(**d, arrays=dict(arrays))
+
+    return unpack
 
 
 def _pack_vlm(m: VlmRequest) -> tuple[dict[str, Any], Arrays]:
@@ -398,6 +430,8 @@ KIND_CODES = {
     # observe/survey/observation/scene_snapshot: retired, never reused)
     "capture": 12, "frame": 13, "view": 14, "state_request": 15, "robot_state": 16, "map_request": 17,
     "site_map": 18, "vlm_request": 19, "answer": 20,
+    # schema 5: the robot's drivers (vap_bt.transport.drivers)
+    "driver_call": 21, "driver_reply": 22,
 }
 
 Encoder = Callable[[Any], bytes]
@@ -424,6 +458,8 @@ _JSON: dict[str, tuple[type, Packer, Unpacker]] = {
     "site_map": (SiteMap, _pack_map, _unpack_map),
     "vlm_request": (VlmRequest, _pack_vlm, _unpack_vlm),
     "answer": (Answer, _pack_flat, _flat_unpacker(Answer)),
+    "driver_call": (DriverCall, _pack_driver, _driver_unpacker(DriverCall)),
+    "driver_reply": (DriverReply, _pack_driver, _driver_unpacker(DriverReply)),
 }
 _KIND_OF = {cls: kind for kind, (cls, _, _) in [*_BINARY.items(), *_JSON.items()]}
 # class -> its frame prefix and encoder (binary kinds) or packer (JSON kinds)
