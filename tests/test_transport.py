@@ -21,7 +21,7 @@ from vap_bt.skill import GoalState, Skill, SkillResult
 from vap_bt.transport import keys
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.transport.client import ZenohRobot, ZenohSkillClient
-from vap_bt.transport.messages import GoalRequest, encode
+from vap_bt.transport.messages import SCHEMA, GoalRequest, encode
 from vap_bt.transport.server import SkillServer
 
 pytestmark = pytest.mark.timeout(30)
@@ -131,7 +131,7 @@ def test_garbage_and_foreign_schema_requests_get_an_error_reply(net):
     frame = encode(GoalRequest("x-1", "grasp", ("cup", "table")))
     foreign = frame[:4] + struct.pack("<I", 9) + frame[8:]  # the schema field
     replies = list(s_cli.get(key, payload=foreign, timeout=2))
-    assert "peer speaks message schema 9, this side speaks 4" in replies[0].err.payload.to_string()
+    assert f"peer speaks message schema 9, this side speaks {SCHEMA}" in replies[0].err.payload.to_string()
 
 
 def test_robot_interfaces_over_zenoh(net):
