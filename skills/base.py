@@ -9,7 +9,10 @@ everything else is the motion's own view (a grasp that closed on nothing still *
 it failed is for perception to find out). A subclass sets ``action`` and implements :meth:`run`.
 
 On a world without drivers (the symbolic one) these skills do not bind, and the world performs
-their actions instead (:func:`vap_bt.plugins.instantiate`).
+their actions instead (:func:`vap_bt.plugins.instantiate`). A simulated world also hears when an
+action's goal begins and ends (``begin_action``/``end_action``, :mod:`vap_bt.transport.world_hooks`):
+the one thing a simulator is told, so that Table II injection draws once per action; a real robot
+has no such hook.
 """
 
 from __future__ import annotations
@@ -37,9 +40,16 @@ class MotionSkill(Skill):
             return SkillResult(False, f"{call} cancelled before it started")
         ctx.feedback(0.0, f"{call} started")
         kit = kit_for(self.world)
+        hooks = self.world if callable(getattr(self.world, "begin_action", None)) else None
         try:
             with kit.goal(ctx):
-                out = self.run(kit, tuple(args), dict(getattr(ctx, "hints", {}) or {}))
+                if hooks is not None:  # a simulated world: Table II draws for this action now
+                    hooks.begin_action(self.action, tuple(args))
+                try:
+                    out = self.run(kit, tuple(args), dict(getattr(ctx, "hints", {}) or {}))
+                finally:
+                    if hooks is not None:
+                        hooks.end_action(self.action, tuple(args))
         except Stopped as e:
             return SkillResult(False, f"{call} stopped: {e}")
         except Blocked as e:

@@ -1,7 +1,8 @@
 """One robot's skill kit: its body, eyes, base paths, hands and handle follower, shared by its skills.
 
 Every motion skill of a robot works through the same :class:`Kit`, built once from the robot's
-interfaces (:mod:`vap_bt.robot.drivers` — arm, gripper, base, wrist camera — and the site map),
+interfaces (its ``drivers`` — arm, gripper, base, wrist camera, :mod:`vap_bt.robot.drivers` —,
+its ``state()`` and its ``site_map()``),
 because what one skill learns another needs: the grasp measured the item the place will set
 down, an open saw where the door stands. A kit notices when the robot it serves starts over (a
 new episode: the site map changed, or the robot's clock went back) and forgets what it knew.
@@ -26,16 +27,18 @@ from skills.scene_model import SceneModel, seen_from
 from vap_bt.skill import Hint
 from vap_bt.world import GoalContext
 
-#: the robot interfaces a kit needs (attributes of what skills are bound to)
-REQUIRED = ("arm", "gripper", "base", "wrist_camera")
+#: the driver interfaces a kit needs (attributes of what skills are bound to's ``drivers``)
+REQUIRED = ("arm", "gripper", "base", "camera")
 
 _kits: dict[int, "Kit"] = {}
 _lock = threading.Lock()
 
 
 def has_drivers(robot: object) -> bool:
-    """Whether ``robot`` offers the driver interfaces motion skills move it through."""
-    return all(getattr(robot, name, None) is not None for name in REQUIRED)
+    """Whether ``robot`` offers the driver interfaces motion skills move it through (its
+    ``drivers``: arm, gripper, base and wrist camera)."""
+    drivers = getattr(robot, "drivers", None)
+    return drivers is not None and all(getattr(drivers, name, None) is not None for name in REQUIRED)
 
 
 def kit_for(robot) -> "Kit":
@@ -52,8 +55,9 @@ class Kit:
 
     def __init__(self, robot) -> None:
         self.robot = robot
-        self.body = Body(robot.arm, robot.gripper, robot.base)
-        self.eyes = Eyes(self.body, robot.wrist_camera)
+        d = robot.drivers
+        self.body = Body(d.arm, d.gripper, d.base)
+        self.eyes = Eyes(self.body, d.camera)
         self._map = None
         self._stamp = -1.0
         self.busy = threading.Lock()  # one goal moves the robot at a time

@@ -178,17 +178,21 @@ class Navigator:
             self.body.drive(self.base_path(leg), CORRIDOR_SPEED)
 
     def door_open(self, door: str) -> bool:
-        """Look at ``door`` and judge from the frame whether its leaf stands open enough to pass."""
+        """Look at ``door`` and judge from the frame whether the base can pass: the leaf's points
+        fitted to its hinge say how far it stands open; a doorway that shows no leaf at all must
+        show the room beyond (the depth through it goes on past the doorway)."""
         leaf = self.scene.leaves.get(door)
         if leaf is None:
             return True
-        if not self.eyes.look_at(self.door_point(door)):
+        point = self.door_point(door)
+        if not self.eyes.look_at(point):
             return False
-        q = self.scene.fit_leaf(door, self.eyes.frame())
-        if q is None:
-            return False
-        travel = max(abs(leaf.art.lower), abs(leaf.art.upper), abs(leaf.art.opened))
-        return abs(q) >= DOOR_PASSABLE * travel
+        frame = self.eyes.frame()
+        q = self.scene.fit_leaf(door, frame)
+        if q is not None:
+            travel = abs(leaf.art.opened)
+            return abs(q) >= DOOR_PASSABLE * travel
+        return bool(self.scene.sees_through(frame, point))
 
     def base_path(self, pose: Pose) -> list[Pose]:
         """Poses to drive through to ``pose`` without the base or the arm above it running into a

@@ -36,6 +36,8 @@ WALL_HEIGHT = 2.0
 DOOR_FIT_STEPS = 40
 #: points within this of a leaf's box count as the leaf's
 LEAF_MARGIN = 0.03
+#: depth this far past a doorway means the view goes through it
+SEE_THROUGH = 0.3
 
 
 @dataclass(frozen=True)
@@ -230,6 +232,28 @@ class SceneModel:
 
     # -- where things are, by looking ----------------------------------------------------------
 
+    @staticmethod
+    def sees_through(frame: Frame, point, beyond: float = SEE_THROUGH) -> bool | None:
+        """Whether the frame's depth at ``point``'s pixel reaches ``beyond`` past it (the view
+        goes through an open doorway into the next room); None when the point is not in the frame
+        or has no depth return."""
+        if frame.depth is None or frame.intrinsics is None or frame.camera_pose is None:
+            return None
+        fx, fy, cx, cy = frame.intrinsics
+        inv = np.linalg.inv(frame.camera_pose)
+        p = inv[:3, :3] @ np.asarray(point, float) + inv[:3, 3]
+        if p[2] <= 0.05:
+            return None
+        u, v = int(round(fx * p[0] / p[2] + cx)), int(round(fy * p[1] / p[2] + cy))
+        h, w = frame.depth.shape
+        if not (2 <= u < w - 2 and 2 <= v < h - 2):
+            return None
+        window = frame.depth[v - 2:v + 3, u - 2:u + 3]
+        returns = window[window > 0]
+        if returns.size == 0:
+            return None
+        return bool(np.median(returns) > p[2] + beyond)
+
     def fit_leaf(self, name: str, frame: Frame, hint: float | None = None) -> float | None:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece
         of furniture (or door), or None when the frame does not show it."""
@@ -239,7 +263,7 @@ class SceneModel:
         if cloud is None:
             return hint
         pts = np.asarray(cloud.points)
-        lo, hi = sorted((0.0, leaf.art.opened))
+        lo, hi = sorted((leaf.art.lower, leaf.art.upper))
         values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
         scores = [int(leaf.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values]
         best = int(np.argmax(scores))

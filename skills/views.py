@@ -47,6 +47,13 @@ class ViewService:
         """Cancel the view motion in flight, if any."""
         self._stop.set()
 
+    # the body: proprioception and the map, as the robot reports them
+    def state(self):
+        return self.kit.robot.state()
+
+    def site_map(self):
+        return self.kit.robot.site_map()
+
     def _looking(self):
         self._stop.clear()
         return self.kit.looking(self._stop.is_set)

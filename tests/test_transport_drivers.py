@@ -145,7 +145,7 @@ def test_calls_and_a_motion_round_trip(link):
     assert remote.arm.joint_state().joints == JOINTS
     assert np.allclose(remote.arm.tcp_pose()[:3, 3], (0.4, 0.1, 1.0))
     assert remote.base.pose() == (1.0, 2.0, 0.5)
-    assert remote.wrist_camera.capture().rgb.shape == (4, 6, 3)
+    assert remote.camera.capture().rgb.shape == (4, 6, 3)
     assert remote.state().room == "kitchen" and remote.site_map().room("kitchen") is not None
     t0 = time.monotonic()
     r = remote.arm.follow(_trajectory(0.3), lambda: False)

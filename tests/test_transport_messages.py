@@ -11,12 +11,12 @@ import pytest
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
-from vap_bt.transport.messages import (CancelRequest, GoalReply, GoalRequest, GoalStatus, MessageError,
-                                       SchemaMismatch, decode, encode)
+from vap_bt.transport.messages import (SCHEMA, ActionAck, ActionEvent, CancelRequest, GoalReply, GoalRequest,
+                                       GoalStatus, MessageError, SchemaMismatch, decode, encode)
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Detection, Frame
-from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.transport.messages import CaptureRequest, ViewRequest, VlmRequest
 
@@ -36,14 +36,25 @@ def test_messages_round_trip():
     for msg in (GoalReply("g-3", False, "busy: tête à tête ✓", "arm"), GoalRequest("g-4", "say", ("", "ü"), ""),
                 CancelRequest("g-5"), GoalStatus("g-6", GoalState.ACTIVE, Feedback(0.25, "¼ done"), None, "arm")):
         assert decode(encode(msg), type(msg)) == msg
+    leaf = Articulation(False, (4.0, 1.4, 0.0), (0.0, 0.0, 1.0), (4.06, 2.2, 0.95), (1.0, 0.0, 0.0), (0.0, 0.0, 1.0),
+                        -1.57, -1.62, 1.62, (4.0, 2.0, 0.53), (0.02, 0.6, 0.5), other_side=0.125)
+    drawer = Articulation(True, (1.0, 2.75, 0.68), (0.0, -1.0, 0.0), (1.0, 2.68, 0.76), (0.0, -1.0, 0.0),
+                          (-1.0, 0.0, 0.0), 0.34, -0.02, 0.36, (1.0, 3.0, 0.76), (0.3, 0.27, 0.09))
     site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 4.0)),),
-                   (DoorInfo("d", ("kitchen", "hall"), (4.0, 2.0, 0.0), 1.2),),
-                   (FurnitureInfo("t", "table", "surface", "kitchen", (1.0, 3.0, 3.14), (1.1, 0.7)),),
+                   (DoorInfo("d", ("kitchen", "hall"), (4.0, 2.0, 0.0), 1.2, leaf),),
+                   (FurnitureInfo("t", "table", "surface", "kitchen", (1.0, 3.0, 3.14), (1.1, 0.7)),
+                    FurnitureInfo("dr", "drawer", "container", "kitchen", (1.0, 3.0, -1.57), (0.6, 0.5), 0.9,
+                                  Cavity((0.7, 0.86), 0.02, "top"), drawer),
+                    FurnitureInfo("mw", "microwave", "appliance", "kitchen", (2.0, 3.0, -1.57), (0.55, 0.42), 1.12,
+                                  Cavity((0.85, 1.08), 0.03, "front"), switch=(2.2, 2.76, 0.89)),
+                    FurnitureInfo("s", "sink", "sink", "kitchen", (3.0, 3.0, -1.57), (0.8, 0.6), 0.9, tap=(3.0, 3.1, 1.12))),
                    frozenset({Atom("clear", ("t",))}))
     state = RobotState(1.5, "kitchen", (1.0, 2.0, 0.3), (0.1,) * 6, (1.0,) * 7, 0.08, False)
     view = ViewRequest(Viewpoint("kitchen", Aim(("t",), (1.0, 3.0, 0.7)), (1.0, 1.5, 1.57), "t from the front"))
     ask = VlmRequest(Query("Is the cup on the t?", about=(Atom("on", ("cup", "t")),), objects=("cup", "t")), "f-1")
-    for msg in (site, state, view, ask, CaptureRequest(None), CaptureRequest(Aim(("cup",))), Answer("yes", True)):
+    for msg in (site, state, view, ask, CaptureRequest(None), CaptureRequest(Aim(("cup",))), Answer("yes", True),
+                ActionEvent("begin", "grasp", ("cup", "table")), ActionEvent("end", "grasp"), ActionAck(True),
+                ActionAck(False, "no action open")):
         assert decode(encode(msg), type(msg)) == msg
 
 
@@ -76,11 +87,11 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
         decode(obs[:-1], Frame)
     frame = encode(GoalReply("g", True))
     foreign = frame[:4] + struct.pack("<I", 2) + frame[8:]  # the schema field
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 2, this side speaks 5"):
+    with pytest.raises(SchemaMismatch, match=f"peer speaks message schema 2, this side speaks {SCHEMA}"):
         decode(foreign, GoalReply)
     # a schema-1 peer (JSON header for every kind) is recognised as such
     head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
-    with pytest.raises(SchemaMismatch, match="peer speaks message schema 1, this side speaks 5"):
+    with pytest.raises(SchemaMismatch, match=f"peer speaks message schema 1, this side speaks {SCHEMA}"):
         decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
 
 

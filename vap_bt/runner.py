@@ -111,6 +111,16 @@ def make_skills(task: Task, world: World) -> dict[str, Skill]:
     return skills
 
 
+def make_camera(robot) -> Any:
+    """The camera service and body the executive perceives through: on a robot with drivers,
+    the skills' own (:class:`skills.views.ViewService`, sharing their kit, so that a look and a
+    skill never move the robot at once); a world without drivers (the symbolic one) is its own."""
+    from skills.kit import has_drivers, kit_for
+    from skills.views import ViewService
+
+    return ViewService(kit_for(robot)) if has_drivers(robot) else robot
+
+
 def make_vlm(task: Task, world: World, cfg: RunConfig):
     """The VLM the executive asks: ``sim``, the world-side simulated one reading the world's
     capture records (served beside the camera), or a real backend over HTTP — ``openai`` (any
@@ -228,7 +238,7 @@ class Session:
             from vap_bt.transport.embedded import EmbeddedTransport
 
             self._embedded = EmbeddedTransport(self.world, self.skills,
-                                               vlm=self.vlm if self._world_side_vlm else None)
+                                               vlm=self.vlm if self._world_side_vlm else None, camera_for=make_camera)
 
     def _executive(self, cfg: RunConfig, scores: list[dict]) -> tuple[Executive, MeteredVLM]:
         """A fresh world state for ``cfg.seed`` and an executive wired to it (see the module docstring)."""
@@ -300,7 +310,7 @@ class Session:
         if self.cfg.transport == "inproc":
             from vap_bt.transport.inprocess import InProcessRobot, InProcessSkillClient
 
-            return InProcessSkillClient(self.skills), InProcessRobot(self.world), self.vlm
+            return InProcessSkillClient(self.skills), InProcessRobot(make_camera(self.world)), self.vlm
         raise ValueError(f"unknown transport {self.cfg.transport!r}")
 
     def _score_verification(self, v) -> None:

@@ -34,6 +34,15 @@ def make_pose(position=(0.0, 0.0, 0.0), rotation: np.ndarray | None = None) -> n
     return T
 
 
+def approach_pose(z, x, position) -> np.ndarray:
+    """A tool pose approaching along ``z``, its x axis the part of ``x`` across ``z`` (for a
+    parallel gripper the fingers then close along the y axis, ``z`` x ``x``), at ``position``."""
+    z = np.asarray(z, float) / np.linalg.norm(z)
+    x = np.asarray(x, float) - np.dot(x, z) * z
+    x /= np.linalg.norm(x)
+    return make_pose(position, np.column_stack([x, np.cross(z, x), z]))
+
+
 def planar_pose(x: float, y: float, yaw: float) -> np.ndarray:
     """Pose of a mobile base on the floor: the frame of its virtual x, y, yaw joints."""
     return make_pose((x, y, 0.0), rpy_matrix(0.0, 0.0, yaw))

@@ -26,12 +26,14 @@ import cv2
 import numpy as np
 import pybullet as pb
 
+from vap_bt.motion.se3 import approach_pose as _frame
 from vap_bt.sim.pb_articulation import PARKED_MARGIN, HandleFollower, Obb
 from vap_bt.sim.pb_camera import look_pose
 from vap_bt.sim.pb_catalog import Catalog
 from vap_bt.sim.pb_motion import Motion
 from vap_bt.sim.pb_robot import Robot
-from vap_bt.sim.pb_scene import Scene, Thing, make_item_body
+from vap_bt.sim.pb_rules import show_state, split, turn_on
+from vap_bt.sim.pb_scene import Scene, Thing
 from vap_bt.sim.pb_truth import Truth
 from vap_bt.sim.situations import SituationSpec
 from vap_bt.world import ActionOutcome
@@ -74,15 +76,6 @@ OPEN_TO = 0.92  # fraction of its travel an opened door or drawer is pulled to (
 CLOSE_TO = -0.03
 LOOSE_GRIP = 0.05  # finger opening round a held handle bar (the bar's diagonal is 0.034 m)
 FOLLOW_SPEED = 0.3  # fraction of the joint limits while the hand carries a handle
-
-
-def _frame(z, x, p) -> np.ndarray:
-    z = np.asarray(z, float) / np.linalg.norm(z)
-    x = np.asarray(x, float) - np.dot(x, z) * z
-    x /= np.linalg.norm(x)
-    T = np.eye(4)
-    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, p
-    return T
 
 
 def _rotation(axis, angle: float) -> np.ndarray:
@@ -829,8 +822,7 @@ class Primitives:
         return ActionOutcome(True)
 
     def _turn_on(self, t: Thing) -> None:
-        t.states["turned_on"] = True
-        pb.changeVisualShape(t.body, t.light_link, rgbaColor=t.kind.light[1], physicsClientId=self.cid)
+        turn_on(self.cid, t)
         for it in self.scene.items():
             if self.truth._inside(it.name, t.name):
                 it.states["heated"] = True
@@ -838,17 +830,7 @@ class Primitives:
 
     def recolor(self, it: Thing) -> None:
         """Show an item's state: water colour when filled, a warm tint when heated."""
-        k = it.kind
-        color = np.array(k.color)
-        level = float(it.states.get("filled", 0.0))
-        if level >= 0.95 and k.filled_color:
-            color = np.array(k.filled_color)
-        elif level > 0:
-            color = np.array(self.catalog.half_filled_color)
-        if it.states.get("heated"):
-            color = 0.5 * color + 0.5 * np.array(self.catalog.heated_tint)
-        for b in it.bodies:
-            pb.changeVisualShape(b, -1, rgbaColor=tuple(color), physicsClientId=self.cid)
+        show_state(self.cid, self.catalog, it)
 
     def fill(self, name: str, sink: str, sit: SituationSpec | None) -> ActionOutcome:
         if self.truth.held() != name:
@@ -912,20 +894,7 @@ class Primitives:
 
     def split(self, t: Thing, normal: np.ndarray) -> None:
         """The object falls apart into two halves on either side of the blade."""
-        c = self.truth.center(t.name)
-        ex = t.kind.extent
-        pb.removeBody(t.body, physicsClientId=self.cid)
-        n = np.array([normal[0], normal[1], 0.0])
-        n /= np.linalg.norm(n)
-        yaw = math.atan2(n[1], n[0])
-        bodies = []
-        for s in (-1, 1):
-            p = c + n * s * (ex[0] / 4 + 0.012)
-            p[2] = c[2] - ex[2] / 2 + ex[2] / 2 + 0.002
-            bodies.append(make_item_body(self.cid, t.kind, tuple(p), yaw, half=True, mass=t.kind.mass / 2))
-        t.bodies = bodies
-        t.states["sliced"] = True
-        self.recolor(t)
+        split(self.cid, self.catalog, t, self.truth.center(t.name), normal)
 
     def push(self, blocker: str, target: str, sit: SituationSpec | None) -> ActionOutcome:
         support = self.truth.support_of(blocker)

@@ -47,6 +47,8 @@ class Robot:
         self.grip: Grip | None = None
         self.target = self.q()
         self.opening = self.cfg.gripper.stroke
+        #: the fingers' force set by the gripper driver (None: the motors' full effort)
+        self.grip_force: float | None = None
 
     # ------------------------------------------------------------ state
 
@@ -89,7 +91,7 @@ class Robot:
                                      targetVelocities=list(qd), forces=self.forces,
                                      positionGains=[0.6] * len(q), velocityGains=[1.0] * len(q),
                                      physicsClientId=self.cid)
-        self.command_fingers(self.opening)
+        self.command_fingers(self.opening, self.grip_force)
 
     def command_fingers(self, opening: float, force: float | None = None) -> None:
         self.opening = opening

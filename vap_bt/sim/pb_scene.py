@@ -7,7 +7,8 @@ Every named thing of the task becomes one or more bodies, registered in a :class
   handle bar on each face;
 * furniture: a static multibody built from boxes in its own frame (plinth, cavity walls, top,
   legs, basin, tap); an openable piece has a link for its door leaf (revolute: side or bottom
-  hinge) or drawer tray (prismatic), with a handle bar; an appliance has a lamp link;
+  hinge) or drawer tray (prismatic), with a handle bar; an appliance has a lamp link and a switch
+  link (a button on its front that a fingertip presses, :mod:`pb_rules`);
 * items: free rigid bodies (box, cylinder or sphere) resting where the plan put them.
 
 Joints of doors and drawers are not position-held: a velocity motor with target 0 and a small
@@ -32,6 +33,18 @@ HANDLE_STANDOUT = 0.045  # handle bar centre in front of the leaf surface
 ROOM_HANDLE_RADIUS = 0.8  # room-door handle distance from the hinge
 ROOM_DOOR_FRICTION = 15.0  # N m
 STOP_FORCE = 2000.0  # N m (or N) of a door stop
+#: a sink's tap, in the sink's frame: a post at the back edge, an arm reaching forward over the
+#: basin; the water leaves the arm's underside at its tip (:func:`tap_outlet`)
+TAP_POST = (0.02, 0.05)  # y range of the post, from the back edge
+TAP_REACH = 0.22  # y of the arm's tip, from the back edge
+TAP_HEIGHT = (0.22, 0.25)  # z range of the arm, above the sink's top
+#: an appliance's switch: a button standing this far out of its front face, with these half
+#: extents along the front and vertically; pressed from the front (:mod:`pb_rules`)
+SWITCH_STANDOUT = 0.03
+SWITCH_HALF = (0.025, 0.018)
+SWITCH_COLOR = (0.85, 0.85, 0.80, 1)
+#: m: the width of the control strip beside a side-hinged appliance door (lamp and switch)
+CONTROL_STRIP = 0.1
 
 
 @dataclass(frozen=True)
@@ -56,6 +69,7 @@ class Hinge:
     handle: np.ndarray  # centre of the handle bar at q = 0
     normal: np.ndarray  # outward normal of the leaf face holding the handle, at q = 0
     bar: np.ndarray  # direction of the handle bar at q = 0 (the fingers close across it)
+    bar_half: float = 0.09  # half the handle bar's length
     #: room doors have a second handle on the other face, this far behind the first one
     other_side: float | None = None
     #: the moving part's bounding box at q = 0 (world centre and half extents): what sweeps
@@ -129,6 +143,7 @@ class Thing:
     door: DoorPlan | None = None
     hinge: Hinge | None = None
     light_link: int | None = None
+    switch_link: int | None = None  # appliances: the button that switches them on
     room: str | None = None  # rooms and floors
     states: dict[str, float | bool] = field(default_factory=dict)
 
@@ -239,7 +254,7 @@ def _build_door(cid: int, d: DoorPlan, catalog: Catalog) -> Thing:
                       physicsClientId=cid)
     hinge = Hinge(body, 0, False, -style.door_open_angle, np.array([d.x, d.hinge_y, 0.0]), np.array([0.0, 0.0, 1.0]),
                   handle=np.array([d.x + th / 2 + HANDLE_STANDOUT, d.hinge_y + ROOM_HANDLE_RADIUS, HANDLE_HEIGHT]),
-                  normal=np.array([1.0, 0.0, 0.0]), bar=np.array([0.0, 0.0, 1.0]),
+                  normal=np.array([1.0, 0.0, 0.0]), bar=np.array([0.0, 0.0, 1.0]), bar_half=0.09,
                   other_side=th + 2 * HANDLE_STANDOUT, **_leaf_box(cid, body, 0), lower=-limit, upper=limit,
                   friction=ROOM_DOOR_FRICTION)
     pb.resetJointState(body, 0, d.angle, physicsClientId=cid)
@@ -291,10 +306,18 @@ def _furniture_parts(k: FurnitureKind) -> list[Box]:
         parts.append(_slab(-w / 2, w / 2, d / 2 - t, d / 2, floor_top, z1, c))  # a basin's or basket's front wall
     if z1 < h:
         parts.append(_slab(-w / 2, w / 2, -d / 2, d / 2, z1, h, c))
+    if _control_strip(k):  # the front beside the door, closing the cavity there
+        parts.append(_slab(w / 2 - CONTROL_STRIP, w / 2, d / 2 - 0.02, d / 2, floor_top, z1, c))
     if k.tap:
-        parts += [_slab(-0.015, 0.015, -d / 2 + 0.02, -d / 2 + 0.05, h, h + 0.25, k.tap),
-                  _slab(-0.015, 0.015, -d / 2 + 0.02, -d / 2 + 0.22, h + 0.22, h + 0.25, k.tap)]
+        back, (z0, z1) = -d / 2, TAP_HEIGHT
+        parts += [_slab(-0.015, 0.015, back + TAP_POST[0], back + TAP_POST[1], h, h + z1, k.tap),
+                  _slab(-0.015, 0.015, back + TAP_POST[0], back + TAP_REACH, h + z0, h + z1, k.tap)]
     return parts
+
+
+def _control_strip(k: FurnitureKind) -> bool:
+    """A side-hinged appliance door leaves a strip of the front for its lamp and switch."""
+    return bool(k.light and k.door and k.door.hinge != "bottom")
 
 
 def _door_link(k: FurnitureKind):
@@ -316,7 +339,7 @@ def _door_link(k: FurnitureKind):
         parts.append(_slab(-0.09, 0.09, handle[1] - 0.012, handle[1] + 0.012, handle[2] - 0.012, handle[2] + 0.012, hc))
         parts += [_slab(s * 0.07 - 0.006, s * 0.07 + 0.006, 0.02, handle[1], handle[2] - 0.006, handle[2] + 0.006, hc) for s in (-1, 1)]
         return parts, origin, (0.0, 1.0, 0.0), tuple(np.add(origin, handle)), (1.0, 0.0, 0.0)
-    panel = 0.1 if k.light and k.door.hinge != "bottom" else 0.0  # the control strip beside a side-hinged door
+    panel = CONTROL_STRIP if _control_strip(k) else 0.0
     lz0, lz1 = z0 - t, z1 + t
     if k.door.hinge == "bottom":
         origin = (0.0, d / 2 + 0.012, lz0)
@@ -334,6 +357,29 @@ def _door_link(k: FurnitureKind):
     parts += [_slab(handle[0] - 0.006, handle[0] + 0.006, 0.012, handle[1], handle[2] + s * 0.07 - 0.006, handle[2] + s * 0.07 + 0.006, hc) for s in (-1, 1)]
     axis = (0.0, 0.0, 1.0) if sign < 0 else (0.0, 0.0, -1.0)  # positive angles swing the leaf out
     return parts, origin, axis, tuple(np.add(origin, handle)), (0.0, 0.0, 1.0)
+
+
+def tap_outlet(k: FurnitureKind) -> np.ndarray:
+    """Where a sink's water leaves the tap (furniture frame): under the tip of its arm."""
+    _, d, h = k.size
+    return np.array([0.0, -d / 2 + TAP_REACH - 0.015, h + TAP_HEIGHT[0]])
+
+
+def switch_center(k: FurnitureKind) -> np.ndarray:
+    """Centre of an appliance's switch button (furniture frame): on the control strip below the
+    lamp beside a side-hinged door, or beside the lamp above a bottom-hinged one — away from the
+    handle, so that a hand opening the door does not press it."""
+    w, d, _ = k.size
+    if _control_strip(k):
+        x, z = w / 2 - CONTROL_STRIP / 2, (k.cavity.z[0] + k.cavity.z[1]) / 2 - 0.075
+    else:
+        x, z = 0.2, k.cavity.z[1] + 0.06
+    return np.array([x, d / 2 + SWITCH_STANDOUT / 2, z])
+
+
+def switch_face(k: FurnitureKind) -> np.ndarray:
+    """The middle of the switch button's front face (furniture frame): where a fingertip presses."""
+    return switch_center(k) + np.array([0.0, SWITCH_STANDOUT / 2, 0.0])
 
 
 def _build_furniture(cid: int, f: FurniturePlan, catalog: Catalog) -> Thing:
@@ -362,16 +408,22 @@ def _build_furniture(cid: int, f: FurniturePlan, catalog: Catalog) -> Thing:
         lcol = -1
         lvis = pb.createVisualShape(pb.GEOM_BOX, halfExtents=(0.03, 0.006, 0.03), rgbaColor=k.light[0], physicsClientId=cid)
         light = add_link(0.0, lcol, lvis, (x, d / 2 + 0.006, z), pb.JOINT_FIXED, (0, 0, 1))
+    switch = None
+    if k.light:  # every appliance with a lamp has a switch
+        half = (SWITCH_HALF[0], SWITCH_STANDOUT / 2, SWITCH_HALF[1])
+        scol = pb.createCollisionShape(pb.GEOM_BOX, halfExtents=half, physicsClientId=cid)
+        svis = pb.createVisualShape(pb.GEOM_BOX, halfExtents=half, rgbaColor=SWITCH_COLOR, physicsClientId=cid)
+        switch = add_link(0.0, scol, svis, tuple(switch_center(k)), pb.JOINT_FIXED, (0, 0, 1))
     body = pb.createMultiBody(0, col, vis, basePosition=(f.x, f.y, 0.0), baseOrientation=_yaw_quat(f.yaw),
                               physicsClientId=cid, **links)
-    thing = Thing(f.name, k.type, [body], kind=k, furniture=f, light_link=light)
+    thing = Thing(f.name, k.type, [body], kind=k, furniture=f, light_link=light, switch_link=switch)
     if door:
         j, origin, axis, handle, bar = door
         full = k.door.full
         pb.changeDynamics(body, j, jointLowerLimit=-0.02, jointUpperLimit=full + 0.02, physicsClientId=cid)
         thing.hinge = Hinge(body, j, k.door.prismatic, full, f.to_world(origin), f.direction(axis[:2]) + np.array([0, 0, axis[2]]),
                             f.to_world(handle), f.front, f.direction(bar[:2]) + np.array([0, 0, bar[2]]),
-                            **_leaf_box(cid, body, j), lower=-0.02, upper=full + 0.02, friction=k.door.friction)
+                            0.16 if k.door.hinge == "bottom" else 0.09, **_leaf_box(cid, body, j), lower=-0.02, upper=full + 0.02, friction=k.door.friction)
         state = f.state or "closed"
         pb.resetJointState(body, j, full if state == "open" else 0.0, physicsClientId=cid)
         _friction(cid, body, j, k.door.friction)

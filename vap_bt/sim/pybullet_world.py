@@ -2,12 +2,19 @@
 
 ``PybulletWorld(task)`` arranges the task's Layout (:mod:`pb_layout`), builds it from the
 catalogue (:mod:`pb_scene`), loads the robot (:mod:`pb_robot`) and then only ever changes the
-scene by running physics: primitives (:mod:`pb_primitives`) command joint trajectories, steps
-run, the truth (:mod:`pb_truth`) is read off the result — through :attr:`oracle`, for the report
-and the simulated VLM only. Situation injection draws once per action from
-:class:`SituationModel` (Table II) and changes the motion so that the situation physically
-happens; scripted disturbances (a person moves an object, a door left half open) apply before
-the action they name.
+scene by running physics: whoever moves the robot commands joint trajectories, steps run
+(:meth:`PybulletWorld.step`), the physics rules (:mod:`pb_rules`: filling, switching on, heating,
+cutting) turn contacts and poses into object states, and the truth (:mod:`pb_truth`) is read off
+the result — through :attr:`oracle`, for the report and the simulated VLM only.
+
+Two ways move the robot. Skills elsewhere (other processes even) move it through its drivers,
+:attr:`drivers` (:mod:`pb_drivers`: arm, gripper, base, wrist camera), and tell the world which
+action a goal is with the sim-only hooks :meth:`begin_action` / :meth:`end_action`; Table II
+injection then draws once per action and makes the situation physically so at the drivers
+(:mod:`pb_injection`). The older world-side primitives (:mod:`pb_primitives`) run behind
+:meth:`perform`, which draws the same way and lets the primitive change its motion. Scripted
+disturbances (a person moves an object, a door left half open) apply before the action they name,
+either way.
 
 Its robot interfaces are what a real robot's drivers would give: the wrist camera
 (:mod:`pb_camera`) renders RGB-D and the segmentation stands for an instance detector
@@ -36,7 +43,7 @@ import pybullet as pb
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.camera import VIEW_DIRECTIONS, Aim, Viewpoint
 from vap_bt.robot.frame import Detection, Frame
-from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState, quat_xyzw
 from vap_bt.scene.layout import floor_of, layout_facts
 from vap_bt.sim.captures import CaptureLog, CaptureRecord
@@ -44,11 +51,14 @@ from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.pb_camera import FILL, Render, look_pose, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
+from vap_bt.sim.pb_drivers import Drivers
+from vap_bt.sim.pb_injection import Injection
 from vap_bt.sim.pb_layout import plan_scene
 from vap_bt.sim.pb_motion import Cancelled, Motion
 from vap_bt.sim.pb_primitives import Primitives
 from vap_bt.sim.pb_robot import Robot
-from vap_bt.sim.pb_scene import build_scene
+from vap_bt.sim.pb_rules import Rules
+from vap_bt.sim.pb_scene import Hinge, build_scene, switch_face, tap_outlet
 from vap_bt.sim.pb_truth import Truth
 from vap_bt.sim.situations import SituationModel
 from vap_bt.world import ActionOutcome, GoalContext, InjectedSituation
@@ -74,6 +84,7 @@ class PybulletWorld:
     robot interfaces of a mobile UR5e with a wrist RGB-D camera."""
 
     name = "pybullet"
+    dt = DT
 
     def __init__(self, task, seed: int = 0, gui: bool = False, injection: bool = True,
                  situations: SituationModel | None = None, disturbances: list[dict] | None = None,
@@ -93,6 +104,13 @@ class PybulletWorld:
         self._lock = threading.RLock()
         self.cid = -1
         self.reset(seed)
+        #: the robot's drivers, for skills that move it themselves (valid across resets)
+        self.drivers = Drivers.of(self)
+
+    @property
+    def lock(self) -> threading.RLock:
+        """Held by every call that reads or steps the simulation."""
+        return self._lock
 
     # ------------------------------------------------------------ life cycle
 
@@ -114,13 +132,17 @@ class PybulletWorld:
             self.robot.reset(q0)
             rigid = {a for a in layout_facts(self.layout) if a.predicate in ("clear", "openable", "fillable", "connects")}
             self.truth = Truth(self.scene, self.robot, self.catalog, rigid, self._visible_names)
+            self._injected: list[InjectedSituation] = []
+            self.injection = Injection(self.situations, self.scene, self.robot, self._injected,
+                                       lost_grip=lambda: self.drivers.gripper.lost_grip())
+            self.rules = Rules(self.scene, self.robot, self.truth, self.catalog, self.injection, DT)
+            self._action: tuple[int, str, tuple[str, ...]] | None = None  # the action running now
             self.motion = Motion(self.robot, self._tick, DT)
             self.ctx: GoalContext = _NoContext()
             self._progress = (0.0, 1.0)
             self.prims = Primitives(self.scene, self.robot, self.motion, self.truth, self.catalog, self._phase)
             self.ticks = 0
             self.actions = 0
-            self._injected: list[InjectedSituation] = []
             self._view: Render | None = None
             self._view_tick = -1
             self.view_index = 0
@@ -152,9 +174,16 @@ class PybulletWorld:
     def _tick(self) -> None:
         if self.ctx.cancelled():
             raise Cancelled()
-        pb.stepSimulation(physicsClientId=self.cid)
-        self.scene.hold_limits()
-        self.ticks += 1
+        self.step()
+
+    def step(self) -> None:
+        """One physics step; then door stops, the physics rules and Table II's effects."""
+        with self._lock:
+            pb.stepSimulation(physicsClientId=self.cid)
+            self.scene.hold_limits()
+            self.ticks += 1
+            self.rules.step()
+            self.injection.step()
 
     def _phase(self, progress: float, text: str) -> None:
         lo, span = self._progress
@@ -164,13 +193,10 @@ class PybulletWorld:
 
     def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
         with self._lock:
+            if self._action is not None:  # an announced action left open
+                self._end()
             self.ctx = ctx
-            step = self.actions
-            self.actions += 1
-            self._disturb(step, action, args)
-            spec = self.situations.draw(action) if action in {s.action for s in self.situations.table} else None
-            if spec is not None:
-                self._injected.append(InjectedSituation(action, tuple(args), spec.kind, step))
+            spec = self._begin(action, tuple(args), physical=False)
             try:
                 return self._run(action, tuple(args), spec)
             except Cancelled:
@@ -178,7 +204,40 @@ class PybulletWorld:
             finally:
                 self.ctx = _NoContext()
                 self._view = None
-                self._disturb(step, action, args, when="after")
+                self._end()
+
+    def begin_action(self, action: str, args: tuple[str, ...]) -> None:
+        """Sim-only hook: a goal for ``action(args)`` starts, and skills will move the robot
+        through :attr:`drivers`. Scripted disturbances for this step apply, Table II draws once
+        and its situation is armed at the drivers (:mod:`pb_injection`). An action still open
+        ends first. Nothing drawn is returned: the skill must find out by perceiving."""
+        with self._lock:
+            if self._action is not None:
+                self._end()
+            self._begin(action, tuple(args), physical=True)
+
+    def end_action(self, action: str | None = None, args: tuple[str, ...] | None = None) -> None:
+        """Sim-only hook: the goal ended (however). A drop still pending happens now, then the
+        disturbances scripted for after this step. Naming another action than the open one (a
+        late message) does nothing."""
+        with self._lock:
+            a = self._action
+            if a is None or (action is not None and (action, tuple(args or ())) != (a[1], a[2])):
+                return
+            self._end()
+
+    def _begin(self, action: str, args: tuple[str, ...], physical: bool):
+        step = self.actions
+        self.actions += 1
+        self._disturb(step, action, args)
+        self._action = (step, action, args)
+        return self.injection.begin(action, args, step, physical)
+
+    def _end(self) -> None:
+        step, action, args = self._action
+        self.injection.end()
+        self._action = None
+        self._disturb(step, action, args, when="after")
 
     def _run(self, action: str, a: tuple[str, ...], spec) -> ActionOutcome:
         p = self.prims
@@ -393,13 +452,24 @@ class PybulletWorld:
         return self._map
 
     def _site_map(self) -> SiteMap:
+        """Rooms, doors and furniture as a semantic map has them: outlines, footprints, and what a
+        furniture model annotates (height, cavity, how its door moves, switch, tap), all in the
+        map frame, which is pybullet's world frame; doors and drawers at their closed position."""
         plan = self.plan
         rooms = tuple(RoomInfo(r.name, floor_of(r.name), (r.x0, r.y0, r.x1, r.y1)) for r in plan.rooms.values())
-        doors = tuple(DoorInfo(d.name, (d.low, d.high), (d.x, d.center_y, 0.0), d.width) for d in plan.doors.values())
-        furniture = tuple(FurnitureInfo(f.name, f.kind.name, self.types[f.name], f.room,
-                                        (f.x, f.y, math.atan2(f.front[1], f.front[0])),
-                                        (f.kind.size[0], f.kind.size[1])) for f in plan.furniture.values())
-        return SiteMap(rooms, doors, furniture, frozenset(self.truth.rigid))
+        doors = tuple(DoorInfo(d.name, (d.low, d.high), (d.x, d.center_y, 0.0), d.width,
+                               _articulation(self.scene.things[d.name].hinge)) for d in plan.doors.values())
+        furniture = []
+        for f in plan.furniture.values():
+            k, t = f.kind, self.scene.things[f.name]
+            furniture.append(FurnitureInfo(
+                f.name, k.name, self.types[f.name], f.room, (f.x, f.y, math.atan2(f.front[1], f.front[0])),
+                (k.size[0], k.size[1]), height=float(k.size[2]),
+                cavity=Cavity(tuple(map(float, k.cavity.z)), float(k.cavity.wall), k.cavity.open) if k.cavity else None,
+                articulation=_articulation(t.hinge) if t.hinge is not None else None,
+                switch=_point(f.to_world(switch_face(k))) if t.switch_link is not None else None,
+                tap=_point(f.to_world(tap_outlet(k))) if k.tap else None))
+        return SiteMap(rooms, doors, tuple(furniture), frozenset(self.truth.rigid))
 
     def _base_fits(self, x: float, y: float, room: str | None = None) -> bool:
         """The base footprint (as a circle) stays inside a room (``room`` if given) and off the
@@ -430,6 +500,17 @@ class PybulletWorld:
         eye = np.array([cx, cy - 0.75 * span, 0.95 * span])
         cam = dataclasses.replace(_camera((width, height)), far=4 * span)
         return render(self.cid, look_pose(eye, (cx, cy + 0.4, 0.0)), cam, shadows=False).rgb
+
+
+def _point(p) -> tuple[float, float, float]:
+    return (float(p[0]), float(p[1]), float(p[2]))
+
+
+def _articulation(h: Hinge) -> Articulation:
+    """The map's model of a door leaf or drawer, from the simulation's hinge (closed, q = 0)."""
+    return Articulation(h.prismatic, _point(h.origin), _point(h.axis), _point(h.handle), _point(h.normal),
+                        _point(h.bar), float(h.full), float(h.lower), float(h.upper), _point(h.leaf_center),
+                        _point(h.leaf_half), None if h.other_side is None else float(h.other_side))
 
 
 def _camera(size: tuple[int, int]):

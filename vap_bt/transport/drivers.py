@@ -359,8 +359,13 @@ class RemoteDrivers:
     def __post_init__(self) -> None:
         self.link = _Link(self.session, self.robot)
         self.arm, self.gripper = RemoteArm(self.link), RemoteGripper(self.link)
-        self.base, self.wrist_camera = RemoteBase(self.link), RemoteCamera(self.link)
+        self.base, self.camera = RemoteBase(self.link), RemoteCamera(self.link)
         self._map = None
+
+    @property
+    def drivers(self) -> "RemoteDrivers":
+        """Itself: it has the four drivers (what :func:`skills.kit.has_drivers` looks for)."""
+        return self
 
     def state(self):
         from vap_bt.robot.state import RobotState

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import socket
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Callable
 
 from vap_bt.skill import Skill
 from vap_bt.transport.client import ZenohRobot, ZenohSkillClient, ZenohVLM
@@ -37,6 +37,8 @@ class EmbeddedTransport:
     skills: dict[str, Skill]
     vlm: Any | None = None  # a world-side VLM to serve beside the camera
     camera_robot: str = "ur5e"
+    #: the camera service over the (locked) world the servers share (default: the world itself)
+    camera_for: Callable[[Any], Any] = lambda world: world
     server_settings: TransportSettings | None = None
     servers: list[SkillServer] = field(default_factory=list, init=False)
 
@@ -45,6 +47,7 @@ class EmbeddedTransport:
         server_conf = self.server_settings or TransportSettings(listen=(endpoint,))
         client_conf = TransportSettings(connect=server_conf.listen or (endpoint,))
         self.locked = LockedWorld(self.world)
+        camera = self.camera_for(self.locked)
         self._server_session = open_session(server_conf)
         routes = {action: skill.robot for action, skill in self.skills.items()}
         robots = sorted(set(routes.values()))
@@ -53,7 +56,7 @@ class EmbeddedTransport:
             mine = {a: type(s)(self.locked) for a, s in self.skills.items() if s.robot == robot}
             here = robot == camera_robot
             vlm = LockedWorld(self.vlm, self.locked.lock) if here and self.vlm is not None else None
-            self.servers.append(SkillServer(self._server_session, robot, mine, camera=self.locked if here else None,
+            self.servers.append(SkillServer(self._server_session, robot, mine, camera=camera if here else None,
                                             vlm=vlm).start())
         self._client_session = open_session(client_conf)
         self.client = ZenohSkillClient(self._client_session, routes)

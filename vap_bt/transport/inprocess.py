@@ -73,6 +73,7 @@ class InProcessRobot:
     __slots__ = ("_capture", "_goto_view", "_move_view", "_state", "_site_map")
 
     def __init__(self, world: World) -> None:
+        """``world``: anything with the camera and body interfaces (a world, a camera service)."""
         self._capture, self._goto_view, self._move_view = world.capture, world.goto_view, world.move_view
         self._state, self._site_map = world.state, world.site_map
 

@@ -12,6 +12,8 @@ other's goals (a client subscribes to its robots' namespaces only)::
     vap/<robot>/body/state            queryable: StateRequest -> RobotState
     vap/<robot>/body/map              queryable: MapRequest -> SiteMap
     vap/<robot>/vlm/ask               queryable: VlmRequest -> Answer (a world-side VLM)
+    vap/<robot>/world/action          queryable: ActionEvent -> ActionAck (sim only: which action
+                                      a goal is, for Table II injection; see world_hooks)
     vap/<robot>/alive/<server>        liveliness token of a running skill server
 
 Robot, action, server and goal names are single key chunks: no ``/`` and none of Zenoh's
@@ -65,6 +67,11 @@ def body(robot: str, verb: str) -> str:
 
 def vlm(robot: str) -> str:
     return f"{ROOT}/{chunk('robot', robot)}/vlm/ask"
+
+
+def world_action(robot: str) -> str:
+    """A simulated world's hook: the skill server says which action a goal is (sim only)."""
+    return f"{ROOT}/{chunk('robot', robot)}/world/action"
 
 
 def alive(robot: str, server: str) -> str:

@@ -36,8 +36,10 @@ the kind:
 Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
 for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above; 4 — the
 robot interfaces (frames with detections, state, map, viewpoints) and the VLM service replace
-schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints, and
-the robot's drivers travel (driver calls and replies). A schema-1 frame is still recognised (its byte 8, the
+schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints, the
+site map carries the furniture models (height, cavity, articulation, switch, tap; a door's
+articulation), the robot's drivers travel (driver calls and replies), and a simulated world has an
+action hook (``action_event``/``action_ack``). A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -63,7 +65,7 @@ from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Detection, Frame
-from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 
 SCHEMA = 5
@@ -183,6 +185,23 @@ class DriverReply:
 
 
 @dataclass(frozen=True)
+class ActionEvent:
+    """Sim only: a goal for ``action(args)`` begins or ends (``phase``), for Table II injection."""
+
+    phase: str  # "begin" | "end"
+    action: str
+    args: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class ActionAck:
+    """The simulated world took an ActionEvent (it says nothing of what it drew)."""
+
+    ok: bool
+    reason: str = ""
+
+
+@dataclass(frozen=True)
 class MoveViewReply:
     reachable: bool
 
@@ -283,19 +302,37 @@ def _unpack_state(d: dict[str, Any], _: Arrays) -> RobotState:
                       _tuple_or_none(d["tcp_pose"]), d["gripper_width"], d["gripper_holding"])
 
 
+def _articulation_out(a: Articulation | None) -> dict | None:
+    return None if a is None else {f.name: getattr(a, f.name) for f in fields(a)}
+
+
+def _articulation_in(d: dict | None) -> Articulation | None:
+    return None if d is None else Articulation(**{k: tuple(v) if isinstance(v, list) else v for k, v in d.items()})
+
+
+def _cavity_out(c: Cavity | None) -> list | None:
+    return None if c is None else [list(c.z), c.wall, c.open]
+
+
+def _cavity_in(v: list | None) -> Cavity | None:
+    return None if v is None else Cavity(tuple(v[0]), float(v[1]), v[2])
+
+
 def _pack_map(m: SiteMap) -> tuple[dict[str, Any], Arrays]:
     return {"rooms": [[r.name, r.floor, r.bounds] for r in m.rooms],
-            "doors": [[x.name, list(x.rooms), x.pose, x.width] for x in m.doors],
-            "furniture": [[f.name, f.label, f.type, f.room, f.pose, f.footprint] for f in m.furniture],
+            "doors": [[x.name, list(x.rooms), x.pose, x.width, _articulation_out(x.articulation)] for x in m.doors],
+            "furniture": [[f.name, f.label, f.type, f.room, f.pose, f.footprint, f.height, _cavity_out(f.cavity),
+                           _articulation_out(f.articulation), f.switch, f.tap] for f in m.furniture],
             "facts": _atoms_out(sorted(m.facts))}, {}
 
 
 def _unpack_map(d: dict[str, Any], _: Arrays) -> SiteMap:
     return SiteMap(
         rooms=tuple(RoomInfo(n, fl, _tuple_or_none(b)) for n, fl, b in d["rooms"]),
-        doors=tuple(DoorInfo(n, tuple(r), _tuple_or_none(p), w) for n, r, p, w in d["doors"]),
-        furniture=tuple(FurnitureInfo(n, lb, t, r, _tuple_or_none(p), _tuple_or_none(fp))
-                        for n, lb, t, r, p, fp in d["furniture"]),
+        doors=tuple(DoorInfo(n, tuple(r), _tuple_or_none(p), w, _articulation_in(a)) for n, r, p, w, a in d["doors"]),
+        furniture=tuple(FurnitureInfo(n, lb, t, r, _tuple_or_none(p), _tuple_or_none(fp), h, _cavity_in(c),
+                                      _articulation_in(a), _tuple_or_none(sw), _tuple_or_none(tap))
+                        for n, lb, t, r, p, fp, h, c, a, sw, tap in d["furniture"]),
         facts=frozenset(_atoms_in(d["facts"])))
 
 
@@ -430,8 +467,8 @@ KIND_CODES = {
     # observe/survey/observation/scene_snapshot: retired, never reused)
     "capture": 12, "frame": 13, "view": 14, "state_request": 15, "robot_state": 16, "map_request": 17,
     "site_map": 18, "vlm_request": 19, "answer": 20,
-    # schema 5: the robot's drivers (vap_bt.transport.drivers)
-    "driver_call": 21, "driver_reply": 22,
+    # schema 5: a simulated world's action hook, the robot's drivers (vap_bt.transport.drivers)
+    "action_event": 21, "action_ack": 22, "driver_call": 23, "driver_reply": 24,
 }
 
 Encoder = Callable[[Any], bytes]
@@ -458,6 +495,8 @@ _JSON: dict[str, tuple[type, Packer, Unpacker]] = {
     "site_map": (SiteMap, _pack_map, _unpack_map),
     "vlm_request": (VlmRequest, _pack_vlm, _unpack_vlm),
     "answer": (Answer, _pack_flat, _flat_unpacker(Answer)),
+    "action_event": (ActionEvent, _pack_flat, _flat_unpacker(ActionEvent)),
+    "action_ack": (ActionAck, _pack_flat, _flat_unpacker(ActionAck)),
     "driver_call": (DriverCall, _pack_driver, _driver_unpacker(DriverCall)),
     "driver_reply": (DriverReply, _pack_driver, _driver_unpacker(DriverReply)),
 }

@@ -1,0 +1,235 @@
+"""The pybullet drivers move the robot as commanded and stop when told: real physics, scripted
+motions through the drivers only (:mod:`driver_scripts`), no primitive involved."""
+
+from __future__ import annotations
+
+import math
+import threading
+
+import numpy as np
+import pytest
+from driver_scripts import (CLOSED, OPEN, arc_joints, drive, frame, hold, kitchen, line, moved, reach, stand_before,
+                            through, world_of)
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.motion.kinematics import Kinematics
+from vap_bt.robot.drivers import JointTrajectory
+
+pytestmark = pytest.mark.slow
+
+COUNTER = kitchen({"counter": "type: surface"}, {"cup": "place: on counter"})
+CABINET = kitchen({"cabinet": "type: container, state: closed", "drawer": "type: container, state: closed"})
+
+
+def A(text):
+    return Atom.parse(text)
+
+
+def never():
+    return False
+
+
+class After:
+    """A ``cancelled`` that turns true on its ``n``-th call, counting the physics steps before."""
+
+    def __init__(self, world, n):
+        self.world, self.n, self.calls, self.ticks = world, n, 0, None
+
+    def __call__(self):
+        self.calls += 1
+        if self.calls >= self.n and self.ticks is None:
+            self.ticks = self.world.ticks
+        return self.calls >= self.n
+
+
+@pytest.fixture(scope="module")
+def counter(tmp_path_factory):
+    w = world_of(tmp_path_factory.mktemp("counter"), "counter", COUNTER)
+    yield w
+    w.close()
+
+
+def wave(d, dq, seconds=1.5):
+    q0 = np.array(d.arm.joint_state().positions)
+    t = np.linspace(0.0, seconds, 151)
+    s = 0.5 - 0.5 * np.cos(np.pi * t / seconds)
+    return JointTrajectory(d.arm.joints, t, q0 + np.outer(s, dq))
+
+
+# ------------------------------------------------------------ arm and base
+
+
+def test_the_arm_follows_a_trajectory_and_reports_where_it_is(counter):
+    d = counter.drivers
+    tr = wave(d, np.array([0.3, 0.1, -0.2, 0.0, 0.2, 0.5]))
+    t0 = counter.ticks
+    assert d.arm.follow(tr, never).completed
+    assert counter.ticks - t0 >= math.ceil(tr.duration / counter.dt)  # it took the trajectory's time
+    q = np.array(d.arm.joint_state().positions)
+    assert np.max(np.abs(q - tr.positions[-1])) < 0.01
+    x, y, yaw = d.base.pose()
+    fk = Kinematics.mobile_arm().fk(np.array([x, y, yaw, *q]), "tcp")
+    assert np.linalg.norm(d.arm.tcp_pose()[:3, 3] - fk[:3, 3]) < 0.005
+    assert d.arm.follow(wave(d, -np.array([0.3, 0.1, -0.2, 0.0, 0.2, 0.5])), never).completed
+
+
+def test_the_arm_refuses_what_it_cannot_follow(counter):
+    d = counter.drivers
+    here = np.array(d.arm.joint_state().positions)
+    t = np.array([0.0, 1.0])
+    t0 = counter.ticks
+    wrong = JointTrajectory(("a", "b", "c", "d", "e", "f"), t, np.array([here, here]))
+    far = JointTrajectory(d.arm.joints, t, np.array([here + 0.3, here + 0.3]))
+    beyond = JointTrajectory(d.arm.joints, t, np.array([here, here + np.array([0, 0, 4.0, 0, 0, 0])]))
+    backwards = JointTrajectory(d.arm.joints, np.array([0.0, -1.0]), np.array([here, here]))
+    for tr, why in ((wrong, "joints"), (far, "starts"), (beyond, "limits"), (backwards, "grow")):
+        out = d.arm.follow(tr, never)
+        assert not out.completed and out.reason.startswith("refused") and why in out.reason
+    assert counter.ticks == t0  # nothing moved
+    # the joints may come in any order: they are matched by name
+    order = tuple(reversed(d.arm.joints))
+    assert d.arm.follow(JointTrajectory(order, t, np.array([here[::-1], here[::-1]])), never).completed
+
+
+def test_the_base_drives_through_its_path(counter):
+    d = counter.drivers
+    x, y, yaw = d.base.pose()
+    seen = []
+    path = [(x + 0.6, y, yaw), (x + 0.6, y - 0.5, yaw + 0.8)]
+
+    def watch():
+        seen.append(d.base.pose())
+        return False
+
+    out = d.base.follow(path, 0.8, watch)
+    assert out.completed
+    end = d.base.pose()
+    assert math.hypot(end[0] - path[-1][0], end[1] - path[-1][1]) < 0.01 and abs(end[2] - path[-1][2]) < 0.02
+    assert min(math.hypot(p[0] - path[0][0], p[1] - path[0][1]) for p in seen) < 0.02  # through the first pose
+    assert drive(d, (x, y, yaw)).completed
+    assert not d.base.follow(path, 0.0, never).completed  # a speed is a share of the limits
+
+
+@pytest.mark.parametrize("n", [1, 5])
+def test_cancel_stops_every_driver_within_one_step(counter, n):
+    d = counter.drivers
+    for move in (lambda c: d.arm.follow(wave(d, np.full(6, 0.4)), c),
+                 lambda c: d.base.follow([(d.base.pose()[0] + 1.0, *d.base.pose()[1:])], 1.0, c),
+                 lambda c: d.gripper.move(CLOSED if d.gripper.state().width > 0.04 else OPEN, 50, c)):
+        c = After(counter, n)
+        out = move(c)
+        assert counter.ticks - c.ticks <= 1  # at most the step in progress
+        if hasattr(out, "completed"):
+            assert not out.completed and out.reason == "cancelled"
+        q = counter.robot.q()
+        hold(d, 0.3)  # the stop holds where the joints were, it does not finish the motion
+        assert np.max(np.abs(counter.robot.q() - q)) < 0.02
+
+
+def test_stop_ends_a_motion_running_on_another_thread(counter):
+    d = counter.drivers
+    out = []
+    run = threading.Thread(target=lambda: out.append(d.arm.follow(wave(d, np.full(6, 0.5), 20.0), never)))
+    t0 = counter.ticks
+    run.start()
+    while counter.ticks < t0 + 30 and run.is_alive():  # it is moving
+        threading.Event().wait(0.01)
+    d.arm.stop()
+    run.join(timeout=10)
+    assert out and not out[0].completed and out[0].reason == "stopped"
+    assert through(d, [np.array(d.arm.joint_state().positions)], 0.5).completed  # and it moves again
+
+
+# ------------------------------------------------------------ gripper
+
+
+def test_a_gripper_closing_on_an_item_holds_it_and_on_nothing_holds_nothing(tmp_path):
+    w = world_of(tmp_path, "grip", COUNTER)
+    d = w.drivers
+    assert d.gripper.move(CLOSED, 40, never) == d.gripper.state() and not d.gripper.state().holding
+    assert d.gripper.state().width < 0.005  # closed on nothing
+    assert d.gripper.move(OPEN, 40, never).width > 0.08
+    c, box = w.truth.center("cup"), w.truth.aabb("cup")
+    assert stand_before(d, c, (0, -1, 0), 0.70).completed
+    G = frame((0, 0, -1), (0, 1, 0), (c[0], c[1], box[5] - 0.03))
+    assert reach(d, moved(G, (0, 0, 0.12))).completed and line(d, G, steps=4).completed
+    s = d.gripper.move(CLOSED, 40, never)
+    assert s.holding and 0.055 < s.width < 0.066  # stopped on the cup (0.066 m across)
+    assert w.oracle.holds(A("holding(cup)"))
+    assert line(d, moved(G, (0, 0, 0.15)), steps=3).completed
+    assert w.truth.center("cup")[2] > c[2] + 0.12  # it came along
+    # opening over the counter lets it go; it lands there
+    assert line(d, moved(G, (0, 0, 0.005)), steps=3).completed
+    s = d.gripper.move(OPEN, 40, never)
+    assert not s.holding and w.oracle.holds(A("hand_empty"))
+    assert line(d, moved(G, (0, 0, 0.15)), steps=3).completed and hold(d, 0.5).completed
+    assert w.oracle.holds(A("on(cup, counter)"))
+    w.close()
+
+
+# ------------------------------------------------------------ doors and drawers
+
+
+@pytest.fixture
+def cabinet(tmp_path):
+    w = world_of(tmp_path, "cabinet", CABINET)
+    yield w
+    w.close()
+
+
+def test_a_drawer_pulled_by_its_handle_opens_and_stays_open(cabinet):
+    w, d = cabinet, cabinet.drivers
+    art = w.site_map().piece("drawer").articulation
+    n = np.array(art.normal)
+    G = frame(-n, art.bar, art.handle)
+    assert stand_before(d, art.handle, n, 0.92).completed
+    assert reach(d, moved(G, n * 0.12)).completed and line(d, G, steps=4).completed
+    s = d.gripper.move(CLOSED, 80, never)
+    assert s.holding and w.truth.joint_value("drawer") == pytest.approx(0.0, abs=0.01)
+    assert line(d, moved(G, n * 0.30), steps=8, speed=0.2).completed
+    assert w.truth.joint_value("drawer") == pytest.approx(0.30, abs=0.02)
+    assert not d.gripper.move(OPEN, 60, never).holding
+    x, y, yaw = d.base.pose()
+    assert drive(d, (x + n[0] * 0.15, y + n[1] * 0.15, yaw)).completed and hold(d, 1.0).completed
+    assert w.truth.joint_value("drawer") == pytest.approx(0.30, abs=0.02)  # released, it stays
+    assert w.oracle.holds(A("open(drawer)"))
+
+
+def test_a_cabinet_door_dragged_along_its_arc_opens_and_stays(cabinet):
+    w, d = cabinet, cabinet.drivers
+    art = w.site_map().piece("cabinet").articulation
+    n, o, hp = np.array(art.normal), np.array(art.origin), np.array(art.handle)
+    away = (hp - o) * (1, 1, 0)
+    away /= np.linalg.norm(away)  # along the face, from the hinge towards the handle
+    G = frame(-n, -np.array(art.bar), hp)
+    goal = 0.75 * art.opened
+    assert stand_before(d, hp, n, 0.75, side=away * 0.1).completed
+    assert reach(d, moved(G, n * 0.12)).completed and line(d, G, steps=4).completed
+    assert d.gripper.move(CLOSED, 80, never).holding
+    arc = arc_joints(d, art, G, np.linspace(0.0, goal, 16))
+    assert arc is not None, "the arc leaves the arm's reach from this base pose"
+    assert through(d, arc[1:], speed=0.3).completed
+    assert w.truth.joint_value("cabinet") == pytest.approx(goal, abs=0.05)
+    assert not d.gripper.move(OPEN, 60, never).holding
+    x, y, yaw = d.base.pose()
+    assert drive(d, (x + n[0] * 0.2, y + n[1] * 0.2, yaw)).completed and hold(d, 1.0).completed
+    assert w.truth.joint_value("cabinet") == pytest.approx(goal, abs=0.05)  # released, it stays
+    assert w.oracle.holds(A("open(cabinet)")) and not w.oracle.holds(A("closed(cabinet)"))
+
+
+# ------------------------------------------------------------ camera
+
+
+def test_the_wrist_camera_frame_is_what_it_sees_now(counter):
+    d = counter.drivers
+    c = counter.truth.center("cup")
+    assert stand_before(d, c, (0, -1, 0), 0.85).completed
+    frame_ = d.camera.capture()
+    assert "cup" in frame_.detected() and "counter" in frame_.detected()
+    assert frame_.rgb.shape == (120, 160, 3) and frame_.depth.shape == (120, 160) and frame_.masks is not None
+    assert frame_.intrinsics is not None and np.allclose(frame_.camera_pose, counter.robot.link_pose("camera_optical"))
+    assert counter.captures.get(frame_.frame_id) is not None  # the simulated VLM answers about it
+    # the frame is the camera's view now: turn the camera away and the cup is gone
+    assert d.arm.follow(wave(d, np.array([1.5, 0, 0, 0, 0, 0])), never).completed
+    assert "cup" not in d.camera.capture().detected()
+    assert d.arm.follow(wave(d, np.array([-1.5, 0, 0, 0, 0, 0])), never).completed

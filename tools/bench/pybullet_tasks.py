@@ -1,0 +1,107 @@
+"""Every task in trees/ in the pybullet household, Table II injection off and on, as a table.
+
+Each episode is a full ``vap-bt run`` of the task (embedded default is Zenoh; here in-process
+transport, the same skills and executive) in its own worker process: the house built for the
+seed, the skills planning and moving the robot through the drivers, the executive perceiving
+and replanning. Success is what the world confirms (the oracle's ``goal_satisfied`` at the end),
+never the executive's claim; a *false success* is an episode the executive called successful
+that the world denies. Wall time is per episode, on this machine, with ``--jobs`` episodes at once.
+
+    python tools/bench/pybullet_tasks.py --seeds 20 --jobs 2 [--tasks boil_water,cut_lemon]
+                                          [--injection off|on|both] [--json docs/figures/pybullet_tasks.json]
+
+Targets (issue: skills that move the robot): over 20 seeds per task, without injection >= 95 %
+on every task; with injection >= 80 % on average; 0 false successes; median episode <= 30 s.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import multiprocessing as mp
+import statistics
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT))
+
+
+def episode(job: tuple[str, bool, int]) -> dict:
+    """One episode in this worker: (task file, injection, seed) -> the figures of its report."""
+    path, injection, seed = job
+    from vap_bt import taskfile
+    from vap_bt.runner import RunConfig, Session
+
+    task = taskfile.load(path)
+    t0 = time.perf_counter()
+    try:
+        session = Session(task, RunConfig.from_task(task, world="pybullet", seed=seed, injection=injection))
+        try:
+            rep = session.episode()
+        finally:
+            session.close()
+    except Exception as exc:  # noqa: BLE001 - a crash is a failed episode, reported as such
+        return {"task": task.name, "seed": seed, "injection": injection, "world_success": False, "claimed": False,
+                "wall_s": time.perf_counter() - t0, "reason": f"crashed: {type(exc).__name__}: {exc}",
+                "actions": 0, "replans": 0, "injected": 0}
+    return {"task": task.name, "seed": seed, "injection": injection, "world_success": bool(rep["goal_satisfied"]),
+            "claimed": bool(rep["success"]), "wall_s": rep["wall_s"], "reason": rep["reason"],
+            "actions": len(rep["actions_executed"]), "replans": rep["replans"], "injected": len(rep["injected"])}
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", type=int, default=3)
+    ap.add_argument("--first-seed", type=int, default=0)
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--tasks", help="comma-separated task names (default: every file in trees/)")
+    ap.add_argument("--injection", choices=("off", "on", "both"), default="both")
+    ap.add_argument("--json", help="write every episode's figures here")
+    args = ap.parse_args(argv)
+    paths = sorted((ROOT / "trees").glob("*.yaml"))
+    if args.tasks:
+        wanted = set(args.tasks.split(","))
+        paths = [p for p in paths if p.stem in wanted]
+    modes = {"off": (False,), "on": (True,), "both": (False, True)}[args.injection]
+    jobs = [(str(p), inj, s) for inj in modes for p in paths for s in range(args.first_seed, args.first_seed + args.seeds)]
+    rows: list[dict] = []
+    t0 = time.perf_counter()
+    with mp.get_context("spawn").Pool(args.jobs, maxtasksperchild=4) as pool:
+        for r in pool.imap_unordered(episode, jobs):
+            rows.append(r)
+            done, took = len(rows), time.perf_counter() - t0
+            mark = "ok" if r["world_success"] else ("FALSE SUCCESS" if r["claimed"] else "failed")
+            print(f"[{done}/{len(jobs)}] {r['task']} seed {r['seed']} injection {'on' if r['injection'] else 'off'}: "
+                  f"{mark} in {r['wall_s']:.1f} s ({r['reason']}); {done / took * 60:.1f} episodes/min, "
+                  f"about {(len(jobs) - done) * took / done:.0f} s left", file=sys.stderr, flush=True)
+    table(rows)
+    if args.json:
+        Path(args.json).write_text(json.dumps({"command": " ".join(sys.argv), "episodes": rows}, indent=1))
+    return 0
+
+
+def table(rows: list[dict]) -> None:
+    print(f"{'task':18s} {'injection':>9s} {'n':>4s} {'success':>8s} {'false':>6s} {'median s':>9s} {'max s':>7s}")
+    for inj in (False, True):
+        sub = [r for r in rows if r["injection"] == inj]
+        if not sub:
+            continue
+        rates = []
+        for task in sorted({r["task"] for r in sub}):
+            t = [r for r in sub if r["task"] == task]
+            ok = sum(r["world_success"] for r in t)
+            false = sum(r["claimed"] and not r["world_success"] for r in t)
+            walls = [r["wall_s"] for r in t]
+            rates.append(ok / len(t))
+            print(f"{task:18s} {'on' if inj else 'off':>9s} {len(t):4d} {ok / len(t):8.0%} {false:6d} "
+                  f"{statistics.median(walls):9.1f} {max(walls):7.1f}")
+        walls = [r["wall_s"] for r in sub]
+        false = sum(r["claimed"] and not r["world_success"] for r in sub)
+        print(f"{'all':18s} {'on' if inj else 'off':>9s} {len(sub):4d} {statistics.mean(rates):8.0%} {false:6d} "
+              f"{statistics.median(walls):9.1f} {max(walls):7.1f}")
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
