@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from driver_scripts import (CLOSED, OPEN, carry, drive, frame, hold, kitchen, line, moved, reach, stand_before,
-                            world_of)
+from driver_scripts import (CLOSED, OPEN, carry, drive, frame, hold, kitchen, line, moved, never, reach,
+                            stand_before, world_of)
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim.pb_rules import FILL_TIME
@@ -30,9 +30,6 @@ def scene(cup="on counter", drawer="closed", knife=False) -> str:
 def A(text):
     return Atom.parse(text)
 
-
-def never():
-    return False
 
 
 def forced(action, kind):
