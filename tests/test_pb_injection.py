@@ -12,7 +12,7 @@ from driver_scripts import (CLOSED, OPEN, carry, drive, frame, hold, kitchen, li
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim.pb_rules import FILL_TIME
-from vap_bt.sim.situations import TABLE_II, SituationModel, SituationSpec
+from vap_bt.sim.situations import SituationModel, SituationSpec
 
 pytestmark = pytest.mark.slow
 
@@ -32,9 +32,7 @@ def A(text):
 
 
 
-def forced(action, kind):
-    spec = next(s for s in TABLE_II if s.action == action and s.kind == kind)
-    return SituationModel(table=(SituationSpec(spec.action, spec.kind, 1.0, spec.effect, spec.drops),))
+forced = SituationModel.forced
 
 
 def house(tmp_path, situation=None, **kw):
