@@ -11,8 +11,8 @@ to put the hand, never to move anything.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 from scipy.spatial.transform import Rotation, Slerp

@@ -8,8 +8,8 @@ import threading
 
 import numpy as np
 import pytest
-from driver_scripts import (CLOSED, OPEN, arc_joints, drive, frame, hold, kitchen, line, moved, reach, stand_before,
-                            through, world_of)
+from driver_scripts import (CLOSED, OPEN, arc_joints, drive, frame, hold, kitchen, line, moved, never, reach,
+                            stand_before, through, world_of)
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.motion.kinematics import Kinematics
@@ -24,9 +24,6 @@ CABINET = kitchen({"cabinet": "type: container, state: closed", "drawer": "type:
 def A(text):
     return Atom.parse(text)
 
-
-def never():
-    return False
 
 
 class After:

@@ -7,12 +7,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from driver_scripts import (CLOSED, OPEN, carry, drive, frame, hold, kitchen, line, moved, reach, stand_before,
-                            world_of)
+from driver_scripts import (CLOSED, OPEN, carry, drive, frame, hold, kitchen, line, moved, never, reach,
+                            stand_before, world_of)
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim.pb_rules import FILL_TIME
-from vap_bt.sim.situations import TABLE_II, SituationModel, SituationSpec
+from vap_bt.sim.situations import SituationModel, SituationSpec
 
 pytestmark = pytest.mark.slow
 
@@ -31,13 +31,8 @@ def A(text):
     return Atom.parse(text)
 
 
-def never():
-    return False
 
-
-def forced(action, kind):
-    spec = next(s for s in TABLE_II if s.action == action and s.kind == kind)
-    return SituationModel(table=(SituationSpec(spec.action, spec.kind, 1.0, spec.effect, spec.drops),))
+forced = SituationModel.forced
 
 
 def house(tmp_path, situation=None, **kw):

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pybullet as pb
 import pytest
-from driver_scripts import CLOSED, frame, hold, kitchen, line, moved, reach, stand_before, world_of
+from driver_scripts import CLOSED, frame, hold, kitchen, line, moved, never, reach, stand_before, world_of
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim.pb_rules import FILL_TIME
@@ -25,9 +25,6 @@ BOARD = kitchen({"cutting_board": "type: surface"}, {"lemon": "place: on cutting
 def A(text):
     return Atom.parse(text)
 
-
-def never():
-    return False
 
 
 # ------------------------------------------------------------ fill

@@ -8,7 +8,7 @@ import pytest
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim.pybullet_world import PybulletWorld
-from vap_bt.sim.situations import SituationModel, SituationSpec
+from vap_bt.sim.situations import SituationModel
 from vap_bt.taskfile import load
 
 TREES = Path(__file__).resolve().parents[1] / "trees"
@@ -40,11 +40,7 @@ def A(text):
     return Atom.parse(text)
 
 
-def forced(action, kind):
-    from vap_bt.sim.situations import TABLE_II
-
-    spec = next(s for s in TABLE_II if s.action == action and s.kind == kind)
-    return SituationModel(table=(SituationSpec(spec.action, spec.kind, 1.0, spec.effect, spec.drops),))
+forced = SituationModel.forced
 
 
 def world(name, situations=None, **kw):

@@ -88,6 +88,8 @@ class _Drop:
 
 @dataclass
 class _Active:
+    """The announced action, its drawn row, and what of it is still to happen."""
+
     action: str
     args: tuple[str, ...]
     spec: SituationSpec | None

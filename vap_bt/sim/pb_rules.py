@@ -127,14 +127,18 @@ class Rules:
     # ------------------------------------------------------------ turnon and heat
 
     def _press(self) -> None:
-        for t in self.switches:
-            if t.states.get("turned_on"):
-                continue
-            force = sum(p[9] for finger in self.robot.finger_joints
-                        for p in pb.getContactPoints(self.robot.id, t.body, linkIndexA=finger,
-                                                     linkIndexB=t.switch_link, physicsClientId=self.cid))
-            if force >= PRESS_FORCE and self.gate.effect("turnon"):
-                turn_on(self.cid, t)
+        off = {(t.body, t.switch_link): t for t in self.switches if not t.states.get("turned_on")}
+        if not off:
+            return
+        fingers = set(self.robot.finger_joints)
+        force: dict[str, float] = {}
+        for p in pb.getContactPoints(self.robot.id, physicsClientId=self.cid):  # one query for all switches
+            t = off.get((p[2], p[4]))
+            if t is not None and p[3] in fingers:
+                force[t.name] = force.get(t.name, 0.0) + p[9]
+        for name, f in force.items():
+            if f >= PRESS_FORCE and self.gate.effect("turnon"):
+                turn_on(self.cid, self.scene.things[name])
 
     def _heat(self) -> None:
         on = [t for t in self.switches if t.states.get("turned_on")]

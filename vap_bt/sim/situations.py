@@ -58,6 +58,14 @@ class SituationModel:
         self.table, self.enabled = table, enabled
         self.rng = random.Random(seed)
 
+    @classmethod
+    def forced(cls, action: str, kind: str, seed: int = 0) -> SituationModel:
+        """A model that always draws Table II's row ``kind`` for ``action`` (tests, fault drills)."""
+        spec = next((s for s in TABLE_II if s.action == action and s.kind == kind), None)
+        if spec is None:
+            raise ValueError(f"Table II has no row {kind!r} for {action!r}")
+        return cls(table=(SituationSpec(spec.action, spec.kind, 1.0, spec.effect, spec.drops),), seed=seed)
+
     def reseed(self, seed: int) -> None:
         self.rng = random.Random(seed)
 
