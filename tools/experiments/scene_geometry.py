@@ -10,12 +10,15 @@ about the objects seen (and the map's floors and doors) with the oracle's.
 
     .venv/bin/python tools/experiments/scene_geometry.py            # 9 tasks x seeds 0 1 2
     .venv/bin/python tools/experiments/scene_geometry.py --seeds 0 trees/pick_plate.yaml
+
+Progress (scenes done, rate, time left) goes to stderr.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import sys
 import time
 from pathlib import Path
 
@@ -29,6 +32,9 @@ from vap_bt.scene.tracks import Tracks
 from vap_bt.sim.pb_camera import look_pose, render
 from vap_bt.sim.pybullet_world import PybulletWorld
 from vap_bt.taskfile import load
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from tools.progress import Progress  # noqa: E402
 
 PREDICATES = ("on", "inside", "in_room", "blocking")
 
@@ -109,7 +115,12 @@ def main() -> None:
     ap.add_argument("tasks", nargs="*", type=Path, default=sorted(Path("trees").glob("*.yaml")))
     ap.add_argument("--seeds", nargs="+", type=int, default=[0, 1, 2])
     args = ap.parse_args()
-    rows = [check(p, s) for p in args.tasks for s in args.seeds]
+    progress = Progress(len(args.tasks) * len(args.seeds), "scenes")
+    rows = []
+    for p in args.tasks:
+        for s in args.seeds:
+            rows.append(check(p, s))
+            progress.step()
     tp, fp, fn = (sum(r[i] for r in rows) for i in range(3))
     times = [r[3] for r in rows]
     print(f"precision {tp / max(1, tp + fp):.3f}  recall {tp / max(1, tp + fn):.3f}  ({tp} right, {fp} wrong, "
