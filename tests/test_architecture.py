@@ -131,7 +131,8 @@ def test_no_object_the_executive_holds_can_reach_the_oracle():
     from vap_bt.sim.symbolic import SymbolicWorld
 
     task = taskfile.load(ROOT / "trees" / "collect_cup.yaml")
-    session = Session(task, RunConfig.from_task(task, transport="zenoh", injection=False, vlm_error=0.0))
+    session = Session(task, RunConfig.from_task(task, world="symbolic", transport="zenoh", injection=False,
+                                                vlm_error=0.0))
     held: list[Executive] = []
     original = Executive.run
 

@@ -57,8 +57,8 @@ def test_interrupted_run_still_writes_what_it_knew(cli, tmp_path, monkeypatch):
         return real(self, action, args, ctx)
 
     monkeypatch.setattr(SymbolicWorld, "perform", perform)
-    code, _, err = cli("run", TREES / "collect_cup.yaml", "--transport", "inproc", "--report", tmp_path / "r.json",
-                       "-q")
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--transport", "inproc",
+                       "--report", tmp_path / "r.json", "-q")
     assert code == 130 and "interrupted" in err
     import json
 
@@ -70,7 +70,8 @@ def test_interrupted_run_still_writes_what_it_knew(cli, tmp_path, monkeypatch):
 def test_run_records_a_rerun_file_over_zenoh(cli, tmp_path):
     """The default run (skill servers over Zenoh) with --rerun save: the recording holds the tree."""
     rrd = tmp_path / "run.rrd"
-    code, _, err = cli("run", TREES / "collect_cup.yaml", "--seed", "8", "--no-injection", "--rerun", "save", rrd)
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "8", "--no-injection",
+                       "--rerun", "save", rrd)
     assert code == 0, err
     assert rrd.exists() and rrd.stat().st_size > 10_000
     exe = Path(sys.executable).with_name("rerun")  # the rerun CLI installed beside this interpreter

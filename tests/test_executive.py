@@ -13,7 +13,7 @@ from conftest import DOMAINS, HOUSEHOLD_TASKS, LITERATURE, TREES, load_json
 @pytest.mark.parametrize("domain,problem", LITERATURE)
 def test_literature_domains_run_end_to_end(cli, domain, problem, tmp_path):
     code, out, _ = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
-                       "--no-injection", "--vlm-error", "0", "--report", tmp_path / "r.json", "-q")
+                       "--no-injection", "--vlm-error", "0", "--report", tmp_path / "r.json", "-q", "--json")
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"]
     full = load_json((tmp_path / "r.json").read_text())
@@ -24,7 +24,7 @@ def test_literature_domains_run_end_to_end(cli, domain, problem, tmp_path):
 
 def session(name: str, **cfg) -> Session:
     task = load(TREES / name)
-    return Session(task, RunConfig.from_task(task, planner="search", **cfg))
+    return Session(task, RunConfig.from_task(task, world="symbolic", planner="search", **cfg))
 
 
 @pytest.mark.parametrize("name", HOUSEHOLD_TASKS)
@@ -105,7 +105,8 @@ def test_replanning_budget_bounds_the_episode():
 
 
 def test_report_has_everything_to_rerun(tmp_path, cli):
-    code, _, _ = cli("run", TREES / "collect_cup.yaml", "--seed", "3", "--report", tmp_path / "r.json", "-q")
+    code, _, _ = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "3", "--report",
+                     tmp_path / "r.json", "-q")
     r = load_json((tmp_path / "r.json").read_text())
     for key in ("success", "goal_satisfied", "seed", "plans", "actions_executed", "situations", "replans",
                 "vlm_queries", "wall_s", "versions", "config", "vlm", "world", "command", "injected"):
@@ -116,7 +117,8 @@ def test_report_has_everything_to_rerun(tmp_path, cli):
     assert r["world"]["detector"]["miss_rate"] == r["config"]["miss_rate"]
     assert code == (0 if r["success"] and r["goal_satisfied"] else 1)
     # the same seed gives the same episode
-    code2, _, _ = cli("run", TREES / "collect_cup.yaml", "--seed", "3", "--report", tmp_path / "r2.json", "-q")
+    code2, _, _ = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "3", "--report",
+                      tmp_path / "r2.json", "-q")
     r2 = load_json((tmp_path / "r2.json").read_text())
     assert [p["actions"] for p in r2["plans"]] == [p["actions"] for p in r["plans"]]
     assert r2["situations"] == r["situations"] and r2["vlm_queries"] == r["vlm_queries"]

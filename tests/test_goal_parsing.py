@@ -280,8 +280,9 @@ def run_report(cli, tmp_path, *argv):
 
 def test_a_run_with_a_goal_in_words_over_zenoh_pursues_the_parsed_goal(cli, serve, tmp_path):
     server = goal_server(serve, GOOD)
-    code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--vlm", "openai", "--vlm-url",
-                                f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS, "--seed", "3")
+    code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--world", "symbolic",
+                                "--vlm", "openai", "--vlm-url", f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS,
+                                "--seed", "3")
     assert code in (0, 1), err  # success is the world's to say; the run ends either way
     parsed = rep["goal_parsing"]
     assert parsed["goal"] == [GOOD] and parsed["source"] == "--goal" and parsed["instruction"] == WORDS
@@ -298,9 +299,9 @@ def test_a_run_with_a_goal_in_words_over_zenoh_pursues_the_parsed_goal(cli, serv
 
 def test_an_instruction_is_parsed_and_the_world_judges_the_parsed_goal(cli, serve, tmp_path):
     server = goal_server(serve, "holding(cup)")
-    code, rep, err = run_report(cli, tmp_path, instruction_only(tmp_path), "--vlm", "openai", "--vlm-url",
-                                f"{server.url}/v1", "--vlm-model", "m", "--verify", "none", "--no-injection",
-                                "--transport", "inproc")
+    code, rep, err = run_report(cli, tmp_path, instruction_only(tmp_path), "--world", "symbolic",
+                                "--vlm", "openai", "--vlm-url", f"{server.url}/v1", "--vlm-model", "m",
+                                "--verify", "none", "--no-injection", "--transport", "inproc")
     assert code == 0, err
     parsed = rep["goal_parsing"]
     assert parsed["source"] == "instruction" and parsed["instruction"].startswith("Take the cup")
@@ -311,9 +312,9 @@ def test_an_instruction_is_parsed_and_the_world_judges_the_parsed_goal(cli, serv
 
 def test_parse_instruction_keeps_the_file_goal_as_the_reference(cli, serve, tmp_path):
     server = goal_server(serve, "holding(cup)")
-    code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--parse-instruction", "--vlm", "openai",
-                                "--vlm-url", f"{server.url}/v1", "--vlm-model", "m", "--verify", "none",
-                                "--no-injection", "--transport", "inproc")
+    code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--world", "symbolic",
+                                "--parse-instruction", "--vlm", "openai", "--vlm-url", f"{server.url}/v1",
+                                "--vlm-model", "m", "--verify", "none", "--no-injection", "--transport", "inproc")
     assert code == 0, err
     parsed = rep["goal_parsing"]
     assert parsed["goal"] == ["holding(cup)"] and parsed["file_goal"] == [GOOD]
@@ -322,8 +323,9 @@ def test_parse_instruction_keeps_the_file_goal_as_the_reference(cli, serve, tmp_
 
 def test_a_goal_the_vlm_cannot_give_ends_the_run_with_exit_2_and_a_report(cli, serve, tmp_path):
     server = goal_server(serve, "I would put the cup on the counter.")
-    code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--vlm", "openai", "--vlm-url",
-                                f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS, "--transport", "inproc")
+    code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--world", "symbolic",
+                                "--vlm", "openai", "--vlm-url", f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS,
+                                "--transport", "inproc")
     assert code == EXIT_BAD_INPUT and err.startswith("vap-bt: --goal: the openai VLM gave no usable goal")
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     parsed = rep["goal_parsing"]

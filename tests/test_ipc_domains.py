@@ -25,7 +25,7 @@ def test_an_ipc_domain_runs_end_to_end_with_every_vlm_predicate_verified(cli, tm
     report = tmp_path / "report.json"
     code, out, err = cli("run", "--domain", DOMAINS / f"{domain}-domain.pddl", "--problem",
                          DOMAINS / f"{RUNS[domain]}.pddl", "--world", "symbolic", "--no-injection",
-                         "--vlm-error", "0", "--report", report, "-q")
+                         "--vlm-error", "0", "--report", report, "-q", "--json")
     assert "Traceback" not in err
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]

@@ -89,7 +89,7 @@ def step_named(root, action: str):
 def test_each_feature_runs_end_to_end_through_the_cli(cli, feature, tmp_path):
     domain, problem = FEATURES[feature]
     code, out, err = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
-                         "--no-injection", "--vlm-error", "0", "--report", tmp_path / "r.json")
+                         "--no-injection", "--vlm-error", "0", "--report", tmp_path / "r.json", "--json")
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
     assert "Traceback" not in err
@@ -265,7 +265,7 @@ def test_a_domain_without_a_profile_verifies_what_actions_change(cli, feature, t
     domain, problem = FEATURES[feature]
     code, out, err = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
                          "--no-injection", "--vlm-error", "0", "--transport", "inproc", "--report", tmp_path / "r.json",
-                         "-q")
+                         "-q", "--json")
     summary = load_json(out)
     assert code == 0 and summary["goal_satisfied"] and err == ""
     full = load_json((tmp_path / "r.json").read_text())

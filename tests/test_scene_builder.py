@@ -56,7 +56,8 @@ def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     """boil_water: the cup is in the closed cabinet, which no view shows into; the task file says
     so, and the belief says which source placed it."""
     task = load(TREES / "boil_water.yaml")
-    s = Session(task, RunConfig.from_task(task, injection=False, vlm_error=0.0, miss_rate=0.0, relation_error=0.0))
+    s = Session(task, RunConfig.from_task(task, world="symbolic", injection=False, vlm_error=0.0, miss_rate=0.0,
+                                              relation_error=0.0))
     r = s.episode(0)
     initial = r["perception"]["surveys"][0]
     assert initial["prior_only"] == ["cup"] and "cup" not in initial["detected"]
@@ -71,7 +72,8 @@ def test_a_lost_object_is_searched_for_room_by_room():
     feels it gone, the camera does not show it where it was carried to, and the re-survey finds
     it in the other room."""
     task = load(TREES / "collect_cup.yaml")
-    s = Session(task, RunConfig.from_task(task, vlm_error=0.0, miss_rate=0.0, relation_error=0.0, planner="search"))
+    s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_error=0.0, miss_rate=0.0, relation_error=0.0,
+                                              planner="search"))
     r = next(r for r in map(s.episode, range(60))
              if any(i["kind"] == "held_object_drops_during_navigation" and i["action"] == "navigate"
                     for i in r["injected"]))

@@ -9,7 +9,7 @@ import py_trees
 import pydot
 import pytest
 
-from conftest import TREES, tree_for
+from conftest import ROOT, TREES, tree_for
 
 TASK = TREES / "collect_cup.yaml"
 
@@ -81,6 +81,35 @@ def test_every_command_help_ends_with_examples(cli, command):
     assert code == 0
     examples = out.split("examples:\n", 1)[1].splitlines()
     assert examples and all(l.startswith(f"  vap-bt {command}") for l in examples), out
+
+
+def help_examples(argv: list[str]) -> list[str]:
+    """The example lines of ``vap-bt ARGV --help``."""
+    import contextlib
+    import io
+
+    from vap_bt.cli import main
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main([*argv, "--help"]) == 0
+    return [l.strip() for l in out.getvalue().split("examples:\n", 1)[1].splitlines() if l.strip()]
+
+
+@pytest.mark.parametrize("command", ["plan", "run", "export", "tree", "skills", "serve"])
+def test_every_help_example_is_a_real_command_line(command):
+    """Each example parses as written (comments and shell redirections aside), and the task files
+    and PDDL files it names are in the checkout, so it runs from a fresh clone."""
+    import shlex
+
+    from vap_bt.cli import build_parser
+
+    for line in help_examples([command]):
+        words = shlex.split(line.split("#")[0].split(">")[0].split("|")[0])
+        assert words[:2] == ["vap-bt", command], line
+        build_parser().parse_args(words[1:])  # argparse exits on a word it does not take
+        named = [w for w in words if w.endswith((".yaml", ".pddl"))]
+        assert all((ROOT / w).is_file() for w in named), line
 
 
 def test_top_level_help_shows_examples(cli):

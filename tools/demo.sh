@@ -6,14 +6,18 @@
 #  2. in the symbolic world with the paper's Table II situations injected, to show situations
 #     being detected, the scene graph corrected and the plan repaired.
 # Reports (everything needed to rerun) in out/. Extra arguments go to both `vap-bt run` calls.
+# Each run ends with its summary table; both runs always run, and the demo exits with the first
+# run's non-zero code (1: the goal was not reached, as the world says), else the second's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
 mkdir -p out
 seed="${SEED:-0}"
+status=0
 echo "== 1/2: pybullet household, no injected situations ==" >&2
 .venv/bin/vap-bt run trees/boil_water.yaml --world pybullet --no-injection --seed "$seed" \
-  --report out/boil_water_pybullet.json --rerun save out/boil_water.rrd "$@"
+  --report out/boil_water_pybullet.json --rerun save out/boil_water.rrd "$@" || status=$?
 echo "== 2/2: symbolic world, Table II situations injected ==" >&2
 .venv/bin/vap-bt run trees/boil_water.yaml --world symbolic --seed "$seed" \
-  --report out/boil_water_symbolic.json "$@"
+  --report out/boil_water_symbolic.json "$@" || { code=$?; [ "$status" -ne 0 ] || status=$code; }
+exit "$status"

@@ -1,7 +1,7 @@
 """The ``vap-bt`` command line.
 
 ``vap-bt plan DOMAIN PROBLEM``       print a plan (Fast Downward through unified-planning)
-``vap-bt run TASK.yaml``             run a task end to end and print a JSON report
+``vap-bt run TASK.yaml``             run a task end to end in its world; a summary table (``--json``: JSON)
 ``vap-bt run --domain D --problem P`` the same for any classical PDDL domain (what Fast Downward runs)
 ``vap-bt export TASK.yaml``          print the compiled tree as BehaviorTree.CPP XML
 ``vap-bt tree TASK.yaml``            print the compiled tree (ascii, dot or xml) without running it
@@ -9,12 +9,14 @@
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
 
 Exit codes are documented in :mod:`vap_bt.errors`: 0 success, 1 goal not reached, 2 bad input,
-3 no plan, 4 transport down. Errors print one line on stderr, never a traceback.
+3 no plan, 4 transport down. Errors print one line on stderr, never a traceback. Progress goes to
+stderr; stdout carries only a command's result (a run's summary table, or with ``--json`` its JSON).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import logging
 import sys
@@ -54,6 +56,54 @@ def _load_run_task(args):
 
 
 def cmd_run(args) -> int:
+    """Run a task; stdout carries the result only: the summary table, or the JSON with ``--json``."""
+    with _stdout_for_results(args) as stdout:
+        return _run(args, stdout)
+
+
+@contextlib.contextmanager
+def _stdout_for_results(args):
+    """With ``--json`` stdout carries the JSON and nothing else: while the run runs, anything printed
+    to stdout (a plugin, a library) goes to stderr. Yields the stream the result goes to."""
+    stdout = sys.stdout
+    if not _wants_json(args):
+        yield stdout
+        return
+    with contextlib.redirect_stdout(sys.stderr):
+        yield stdout
+
+
+def _wants_json(args) -> bool:
+    return args.json or args.full
+
+
+def _finish_run(args, rep: dict, stdout, recorder) -> None:
+    """A finished run's last words: the summary table (stdout; on stderr beside ``--json``) and,
+    with ``--json``, the JSON summary (``--full``: the whole report) alone on stdout."""
+    from vap_bt import run_summary
+
+    outputs = run_summary.Outputs(report=args.report, recording=_recording_text(recorder))
+    table = run_summary.table(rep, outputs)
+    if not _wants_json(args):
+        print(table, file=stdout, flush=True)
+        return
+    if not args.quiet:
+        print(table, file=sys.stderr, flush=True)
+    doc = rep if args.full else run_summary.summary(rep, outputs)
+    print(json.dumps(doc, indent=2, default=str), file=stdout, flush=True)
+
+
+def _recording_text(recorder) -> str | None:
+    """Where the live view went, for the summary (None: not recorded)."""
+    if recorder is None:
+        return None
+    spec = recorder.recording.spec
+    if spec.mode == "save":
+        return f"{spec.path} (open it with `rerun {spec.path}`)"
+    return recorder.hint.removeprefix("rerun: ")
+
+
+def _run(args, stdout) -> int:
     from vap_bt.perception.goal_parsing import GoalParseError
     from vap_bt.runner import EpisodeInterrupted, RunConfig, Session, check_config
 
@@ -77,8 +127,10 @@ def cmd_run(args) -> int:
     session = Session(task, cfg, progress, recorder=recorder)
     rep: dict = {"success": False, "goal_satisfied": None, "reason": "interrupted", "seed": cfg.seed,
                  "command": report_mod.command_line()}
+    finished = False
     try:
         rep = {**session.episode(), "command": report_mod.command_line()}
+        finished = True
     except EpisodeInterrupted as stop:
         rep = {**stop.report, "command": report_mod.command_line(), "interrupted": True}
         raise
@@ -89,18 +141,11 @@ def cmd_run(args) -> int:
         session.close()
         if args.report:  # written even when the run stops early, so nothing already known is lost
             report_mod.write(rep, args.report)
+        if finished:  # said before a served recording keeps the command waiting for Ctrl-C
+            _finish_run(args, rep, stdout, recorder)
         if recorder is not None:
-            recorder.serve_until_interrupted()
+            recorder.serve_until_interrupted(say=lambda m: print(m, file=sys.stderr, flush=True))
             recorder.close()
-    summary = {k: rep[k] for k in ("success", "goal_satisfied", "reason", "seed", "replans", "vlm_queries",
-                                   "wall_s")}
-    summary["situations"] = rep["situations"]
-    summary["injected"] = rep["injected"]
-    summary["plans"] = [p["actions"] for p in rep["plans"]]
-    summary["plan_costs"] = [p["cost"] for p in rep["plans"]]
-    # which predicates the trees did not look at, and why (the full report lists every atom)
-    summary["unchecked"] = {u["name"]: u["reason"] for u in rep.get("unchecked", [])}
-    print(json.dumps(rep if args.full else summary, indent=2, default=str))
     ok = rep["success"] and rep["goal_satisfied"]
     return EXIT_OK if ok else EXIT_GOAL_NOT_REACHED
 
@@ -181,9 +226,10 @@ def _examples(*lines: str) -> dict:
 
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans",
-                                **_examples("vap-bt run trees/collect_cup.yaml",
+                                **_examples("vap-bt run trees/collect_cup.yaml      # in the pybullet household",
+                                            "vap-bt run trees/collect_cup.yaml --world symbolic",
                                             "vap-bt tree trees/collect_cup.yaml",
-                                            "vap-bt run trees/boil_water.yaml --world pybullet --rerun save run.rrd",
+                                            "vap-bt run trees/boil_water.yaml --rerun save run.rrd",
                                             "vap-bt COMMAND --help   (examples for each command)"))
     p.add_argument("-v", "--verbose", action="store_true", help="debug logging")
     sub = p.add_subparsers(dest="command", required=True)
@@ -197,14 +243,23 @@ def build_parser() -> argparse.ArgumentParser:
     sp.set_defaults(func=cmd_plan)
 
     sr = sub.add_parser("run", help="run a task (or a PDDL problem) end to end", **_examples(
-        "vap-bt run trees/collect_cup.yaml --seed 3 --report out/r.json",
-        "vap-bt run trees/boil_water.yaml --world pybullet --no-injection --rerun save run.rrd",
-        "vap-bt run trees/boil_water.yaml --verify none          # the closed-world baseline",
-        "vap-bt run --domain D.pddl --problem P.pddl --world symbolic --no-injection"))
+        "vap-bt run trees/boil_water.yaml                      # in its world: the pybullet household",
+        "vap-bt run trees/collect_cup.yaml --world symbolic --seed 3 --report out/r.json",
+        "vap-bt run trees/boil_water.yaml --no-injection --rerun save run.rrd   # record the live view",
+        "vap-bt run trees/boil_water.yaml --world symbolic --verify none   # the closed-world baseline",
+        "vap-bt run trees/cut_lemon.yaml --world symbolic --json > summary.json   # for scripts",
+        "vap-bt run --domain tests/domains/gripper-domain.pddl --problem tests/domains/gripper-p4.pddl"),
+        description="Runs a task in its world: the task file's world: (the household's say pybullet), else\n"
+                    "symbolic; --world overrides; a PDDL domain and problem run symbolic. Progress goes to\n"
+                    "stderr; at the end stdout gets a summary table, or with --json only the JSON summary.\n"
+                    "Exit codes: 0 success (the world confirms it), 1 goal not reached, 2 bad input,\n"
+                    "3 no plan, 4 transport down.")
     sr.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
     sr.add_argument("--domain")
     sr.add_argument("--problem")
-    sr.add_argument("--world", choices=["symbolic", "pybullet"])
+    sr.add_argument("--world", choices=["symbolic", "pybullet"],
+                    help="the world to run in (default: the task file's world:; the household's task files "
+                         "say pybullet)")
     sr.add_argument("--seed", type=int, default=0)
     sr.add_argument("--verify", choices=["both", "pre", "eff", "none"])
     sr.add_argument("--budget", type=int, help="viewpoint budget K")
@@ -236,8 +291,12 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--rerun", nargs="+", metavar="MODE",
                     help="live view in rerun: 'spawn' (a local viewer), 'serve [PORT]' (gRPC on 127.0.0.1, "
                          "default 9876), or 'save FILE.rrd'")
-    sr.add_argument("--full", action="store_true", help="print the full report, not the summary")
-    sr.add_argument("-q", "--quiet", action="store_true", help="no progress lines on stderr")
+    sr.add_argument("--json", action="store_true",
+                    help="print only the JSON summary on stdout, for scripts (the table goes to stderr)")
+    sr.add_argument("--full", action="store_true", help="with --json: the full report, not the summary "
+                                                        "(implies --json)")
+    sr.add_argument("-q", "--quiet", action="store_true",
+                    help="no progress lines on stderr (nor the table, with --json)")
     sr.set_defaults(func=cmd_run)
 
     se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML", **_examples(

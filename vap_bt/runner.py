@@ -148,7 +148,10 @@ class GoalWords:
 
 
 def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
-    """Say bad VLM and goal options in one line before anything starts; returns the goal words."""
+    """Say bad world, VLM and goal options in one line before anything starts; returns the goal words."""
+    if cfg.world == "pybullet" and task.spec.scene is None:  # a PDDL problem has no geometry to build
+        raise InputError("--world", "the pybullet world builds a household from a task file's scene:; "
+                                    "this task has a PDDL problem instead: run it --world symbolic")
     if cfg.vlm not in ("sim", *HTTP_BACKENDS):
         raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} (sim, {', '.join(HTTP_BACKENDS)})")
     if cfg.vlm == "sim" and (cfg.vlm_url or cfg.vlm_model):

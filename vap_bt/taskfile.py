@@ -11,6 +11,7 @@ the task file. Every mistake is reported once, with the file and the field or li
     goal: ["filled(cup)", "heated(cup)"]
     scene: {rooms: [...], doors: {...}, robot: {...}, furniture: {...}, items: {...}}
     belief: ["inside(cup, cabinet)"]
+    world: pybullet        # the world a run uses (symbolic, the default, or pybullet); --world overrides
     options: {verify: both, budget: 3, max_replans: 10}
     perception: my_household.perception.yaml   # optional; default: the one beside the domain
 
@@ -24,6 +25,11 @@ not be able to see (the cup is in the closed cabinet); it may be wrong, percepti
 and verification catches what neither saw. A ``problem:`` file's initial state is, likewise, the
 user's account of the situation: the executive takes it as its prior belief.
 
+``world:`` is the world ``vap-bt run`` uses unless ``--world`` says otherwise: ``symbolic`` (the
+default) or ``pybullet``, the headless household built from ``scene:`` (so a ``problem:`` file
+cannot name it). The household's task files in ``trees/`` name pybullet; campaigns, benchmarks
+and most tests ask for the symbolic world explicitly, since they run episodes by the thousand.
+
 ``perception:`` names the domain's perception profile (which predicates the camera is asked,
 with which questions; :mod:`vap_bt.perception.profile`) when it is not the one beside the domain
 file. It is read and checked against the domain when the task is loaded.
@@ -34,7 +40,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal as Lit
 from vap_bt.domain.task import PlanningTask
@@ -66,9 +72,18 @@ class TaskFile(BaseModel):
     scene: Layout | None = None
     goal: list[str] | None = None
     belief: list[str] = Field(default_factory=list, description="what the user tells the robot (a prior)")
-    world: Literal["symbolic", "pybullet"] = "symbolic"
+    world: Literal["symbolic", "pybullet"] = Field(
+        "symbolic", description="the world `vap-bt run` uses unless --world says otherwise")
     options: Options = Field(default_factory=Options)
     perception: str | None = Field(None, description="the domain's perception profile (default: beside the domain)")
+
+    @field_validator("world")
+    @classmethod
+    def _pybullet_needs_a_scene(cls, world: str, info: ValidationInfo) -> str:
+        if world == "pybullet" and info.data.get("scene") is None:  # scene: comes first, so it is read
+            raise ValueError("the pybullet world builds the household from scene:; a problem: file runs "
+                             "in world: symbolic")
+        return world
 
     @model_validator(mode="after")
     def _scene_or_problem(self) -> "TaskFile":

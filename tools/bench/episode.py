@@ -16,10 +16,14 @@ import argparse
 import platform
 import sys
 import time
+from pathlib import Path
 
 from vap_bt.domain.planner import Planner
 from vap_bt.sim.pybullet_world import DT, PybulletWorld
 from vap_bt.taskfile import load
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from tools.progress import Progress  # noqa: E402
 
 
 class Ctx:
@@ -66,9 +70,11 @@ def main(argv: list[str] | None = None) -> int:
     print("$ python " + " ".join(sys.argv))
     print(f"python {platform.python_version()}, {platform.machine()}")
     modes = {"off": [False], "on": [True], "both": [False, True]}[args.injection]
+    progress = Progress(len(modes), "episodes", every_s=0.0)
     for inj in modes:
         r = episode(args.task, args.seed, inj, size, args.verbose)
-        print(r)
+        print(r, flush=True)
+        progress.step()
     return 0
 
 

@@ -179,8 +179,13 @@ def bench_episode(args: argparse.Namespace) -> list[Row]:
     from vap_bt import taskfile
     from vap_bt.runner import RunConfig, Session
 
-    task = taskfile.load(Path(__file__).resolve().parents[2] / args.episode_task)
+    root = Path(__file__).resolve().parents[2]
+    sys.path.insert(0, str(root))
+    from tools.progress import Progress
+
+    task = taskfile.load(root / args.episode_task)
     rows = []
+    progress = Progress(2, "episodes", label="pybullet", every_s=0.0)
     for injection in (False, True):
         session = Session(task, RunConfig.from_task(task, world="pybullet", transport="zenoh", seed=args.seed,
                                                     injection=injection))
@@ -190,6 +195,7 @@ def bench_episode(args: argparse.Namespace) -> list[Row]:
             wall = time.perf_counter() - t0
         finally:
             session.close()
+        progress.step()
         ok = r["success"] and r["goal_satisfied"]
         rows.append(Row(f"pybullet episode, {task.name}, injection {'on' if injection else 'off'}", 1, wall,
                         float(ok), "", f"{len(r['actions_executed'])} actions, {r['replans']} replans, "

@@ -11,6 +11,8 @@ PlanValidator costs on the replanned plans — every plan a planner produced goe
 reused or cached plan does not, and this line is why.
 
     python tools/bench/replan.py [--seeds 20] [--baseline-samples 40]
+
+Symbolic world (the task files name pybullet, for ``vap-bt run``); progress goes to stderr.
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from vap_bt.domain import validation  # noqa: E402
 from vap_bt.domain.grounding import ground  # noqa: E402
 from vap_bt.domain.planner import Planner  # noqa: E402
 from vap_bt.runner import RunConfig, Session  # noqa: E402
+from tools.progress import Progress  # noqa: E402
 
 
 class RecordingPlanner(Planner):
@@ -58,9 +61,11 @@ def main() -> int:
     ap.add_argument("--baseline-samples", type=int, default=40)
     args = ap.parse_args()
     ours, samples, engines, by_engine = [], [], {}, {}
-    for f in sorted((ROOT / "trees").glob("*.yaml")):
+    paths = sorted((ROOT / "trees").glob("*.yaml"))
+    progress = Progress(len(paths) * args.seeds, "episodes")
+    for f in paths:
         task = taskfile.load(f)
-        s = Session(task, RunConfig.from_task(task, vlm_error=0.05))
+        s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_error=0.05))
         s.planner = RecordingPlanner(task.planning)
         for seed in range(args.seeds):
             r = s.episode(seed)
@@ -68,15 +73,18 @@ def main() -> int:
             for p, ms in zip(r["plans"][1:], r["replan_ms"]):
                 engines[p["engine"]] = engines.get(p["engine"], 0) + 1
                 by_engine.setdefault(p["engine"], []).append(ms / 1000)
+            progress.step()
         samples += [(task.planning, st) for st in s.planner.states]
     random.Random(0).shuffle(samples)
     base, up_check, our_check = [], [], []
+    calls = Progress(len(samples[: args.baseline_samples]), "calls", label="baseline")
     for planning, (state, _) in samples[: args.baseline_samples]:
         problem = planning.with_state(state).to_up()
         with OneshotPlanner(name="fast-downward") as fd:
             t0 = time.perf_counter()
             fd.solve(problem)
             base.append(time.perf_counter() - t0)
+        calls.step()
     for planning, (state, actions) in samples[: args.baseline_samples]:
         task = planning.with_state(state)
         t0 = time.perf_counter()

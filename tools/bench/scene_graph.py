@@ -9,6 +9,8 @@ that moment: precision and recall of the ``on``/``inside``/``in_room`` relations
 
     python tools/bench/scene_graph.py [--seeds 3] [--json out.json]
 
+Progress (scenes done, rate, time left) goes to stderr.
+
 Targets (issue: the robot perceives): relation precision >= 0.95 and recall >= 0.90 per scene.
 """
 
@@ -18,7 +20,6 @@ import argparse
 import json
 import statistics
 import sys
-import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -27,6 +28,7 @@ sys.path.insert(0, str(ROOT))
 from vap_bt import taskfile  # noqa: E402
 from vap_bt.report import versions  # noqa: E402
 from vap_bt.runner import RunConfig, Session  # noqa: E402
+from tools.progress import Progress  # noqa: E402
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -35,11 +37,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--json", help="write every scene's figures here")
     args = ap.parse_args(argv)
     rows = []
-    t_all = time.perf_counter()
     paths = sorted((ROOT / "trees").glob("*.yaml"))
+    progress = Progress(len(paths) * args.seeds, "scenes")
     print(f"{'task':18s} {'seed':>4s} {'P':>6s} {'R':>6s} {'P seen':>7s} {'R seen':>7s} {'det R':>6s} "
           f"{'views':>5s} {'build s':>8s}  wrong / missing")
-    for i, path in enumerate(paths):
+    for path in paths:
         task = taskfile.load(path)
         session = Session(task, RunConfig.from_task(task, world="pybullet", injection=False))
         try:
@@ -51,11 +53,9 @@ def main(argv: list[str] | None = None) -> int:
                       f"{seen['precision']:7.3f} {seen['recall']:7.3f} {det['recall']:6.3f} {s['views']:5d} "
                       f"{s['build_s']:8.2f}  {', '.join(s.get('wrong', []))} / {', '.join(s.get('missing', []))}",
                       flush=True)
+                progress.step()
         finally:
             session.close()
-        done = (i + 1) * args.seeds
-        left = (time.perf_counter() - t_all) / done * (len(paths) * args.seeds - done)
-        print(f"  [{done}/{len(paths) * args.seeds} scenes, about {left:.0f} s left]", file=sys.stderr, flush=True)
 
     def pooled(key: str) -> tuple[float, float]:
         tp = sum(r[key]["tp"] for r in rows)

@@ -9,6 +9,8 @@ tick on a compiled 20-action tree (the signature pass alone), the case a long sk
 produces tick after tick.
 
     python tools/bench/viz.py [--episodes 200]
+
+Progress goes to stderr.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 from vap_bt import taskfile  # noqa: E402
 from vap_bt.runner import RunConfig, Session  # noqa: E402
 from vap_bt.viz import TreeRecorder  # noqa: E402
+from tools.progress import Progress  # noqa: E402
 
 
 class TimedRecorder:
@@ -46,13 +49,15 @@ class TimedRecorder:
 
 
 def episodes(tasks, n: int, recorder=None) -> float:
-    sessions = [Session(t, RunConfig.from_task(t, vlm_error=0.05, transport="inproc"), recorder=recorder)
-                for t in tasks]
+    sessions = [Session(t, RunConfig.from_task(t, world="symbolic", vlm_error=0.05, transport="inproc"),
+                        recorder=recorder) for t in tasks]
     for s in sessions:  # warm the planner caches outside the timing, both ways alike
         s.episode(10_000)
+    progress = Progress(n, "episodes", label="recorded" if recorder is not None else "unrecorded")
     t0 = time.perf_counter()
     for i in range(n):
         sessions[i % len(sessions)].episode(i)
+        progress.step()  # a clock read per episode, both ways alike; a line on stderr every few seconds
     elapsed = time.perf_counter() - t0
     for s in sessions:
         s.close()

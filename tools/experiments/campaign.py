@@ -1,5 +1,8 @@
 """The symbolic campaign: every task in trees/ over many seeds, Table II injection on.
 
+Runs the symbolic world whatever world the task files name (theirs is pybullet, for ``vap-bt run``):
+a campaign is thousands of episodes. Progress (episodes done, rate, time left) goes to stderr.
+
 Per task: success (the executive claims it and the world agrees), false successes (claimed, the
 world denies), situations detected, replans, re-surveys, VLM queries per executed action, and the
 episode rate. Only the runner's report reads the world's truth; the executive perceives.
@@ -22,6 +25,9 @@ import sys
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # this checkout's tools/, whatever --code says
+from tools.progress import Progress  # noqa: E402
+
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -39,10 +45,12 @@ def main(argv: list[str] | None = None) -> int:
     paths = sorted((root / "trees").glob("*.yaml"))
     total = len(paths) * args.seeds
     rows, t0 = [], time.perf_counter()
+    progress = Progress(total, "episodes")
     print(f"{'task':18s} {'success':>8s} {'false':>5s} {'situations':>10s} {'replans':>7s} {'q/action':>8s}")
     for path in paths:
         task = taskfile.load(path)
-        session = Session(task, RunConfig.from_task(task, vlm_error=args.vlm_error, verify=args.verify))
+        session = Session(task, RunConfig.from_task(task, world="symbolic", vlm_error=args.vlm_error,
+                                                    verify=args.verify))
         mine = []
         for seed in range(args.seeds):
             r = session.episode(seed)
@@ -52,11 +60,7 @@ def main(argv: list[str] | None = None) -> int:
                          "situations": len(r["situations"]), "injected": len(r["injected"]),
                          "replans": r["replans"], "vlm_per_action": r["vlm_queries"] / actions,
                          "surveys": r["surveys"] if isinstance(r["surveys"], int) else len(r["surveys"])})
-            done = len(rows) + len(mine)
-            if done % 50 == 0 or done == total:
-                rate = done / (time.perf_counter() - t0) * 60
-                print(f"  [{done}/{total} episodes, {rate:.0f}/min, about {(total - done) / rate * 60:.0f} s left]",
-                      file=sys.stderr, flush=True)
+            progress.step()
         rows += mine
         print(f"{task.name:18s} {sum(m['success'] for m in mine) / len(mine):8.1%} "
               f"{sum(m['false_success'] for m in mine):5d} {statistics.mean(m['situations'] for m in mine):10.2f} "

@@ -2,7 +2,8 @@
 verification mode — both, effects only, preconditions only, none — with Table II injection.
 
 Writes a CSV with every episode, a JSON with the parameters needed to rerun, and a bar chart.
-Success counts only when the world agrees (``success and goal_satisfied``).
+Success counts only when the world agrees (``success and goal_satisfied``). Progress (episodes
+done, rate, time left) goes to stderr.
 
     python tools/experiments/verification_ablation.py --seeds 50 --vlm-error 0.05 --out docs/figures
 """
@@ -27,6 +28,7 @@ import numpy as np  # noqa: E402
 from vap_bt import taskfile  # noqa: E402
 from vap_bt.report import versions  # noqa: E402
 from vap_bt.runner import RunConfig, Session  # noqa: E402
+from tools.progress import Progress  # noqa: E402
 
 MODES = ("both", "eff", "pre", "none")
 LABELS = {"both": "both (full)", "eff": "effects only", "pre": "preconditions only", "none": "none (closed world)"}
@@ -42,15 +44,18 @@ def main() -> int:
     out.mkdir(parents=True, exist_ok=True)
     tasks = [taskfile.load(f) for f in sorted((ROOT / "trees").glob("*.yaml"))]
     rows = []
+    progress = Progress(len(tasks) * len(MODES) * args.seeds, "episodes")
     for task in tasks:
         for mode in MODES:
-            s = Session(task, RunConfig.from_task(task, verify=mode, vlm_error=args.vlm_error, planner="search"))
+            s = Session(task, RunConfig.from_task(task, world="symbolic", verify=mode, vlm_error=args.vlm_error,
+                                                  planner="search"))
             for seed in range(args.seeds):
                 r = s.episode(seed)
                 rows.append({"task": task.name, "paper": task.spec.paper_task, "mode": mode, "seed": seed,
                              "success": int(r["success"] and r["goal_satisfied"]), "claimed": int(r["success"]),
                              "situations": len(r["situations"]), "injected": len(r["injected"]),
                              "replans": r["replans"], "vlm_queries": r["vlm_queries"]})
+                progress.step()
     with open(out / "verification_ablation.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()

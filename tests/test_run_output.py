@@ -1,0 +1,124 @@
+"""What ``vap-bt run`` says: the world it runs in, the summary table at the end, ``--json`` alone.
+
+The household's task files name the pybullet world, a PDDL domain and problem run symbolic, and
+``--world`` overrides both. Stdout carries a run's result and nothing else: the summary table (read
+off the report, so it agrees with the report file), or with ``--json`` the JSON summary.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED
+
+from conftest import DOMAINS, HOUSEHOLD_TASKS, ROOT, TREES
+
+LABELS = ["task", "world", "success", "actions", "situations", "replans", "VLM queries", "wall time", "report",
+          "recording"]
+
+
+def table(out: str) -> dict[str, str]:
+    """The summary table printed on stdout, as label -> text (labels are separated by 2+ spaces)."""
+    rows = {}
+    for line in out.strip().splitlines():
+        label = next(l for l in LABELS if line.startswith(l + "  "))
+        rows[label] = line[len(label):].strip()
+    return rows
+
+
+def test_the_household_task_files_run_in_pybullet_and_a_pddl_problem_runs_symbolic():
+    from vap_bt import taskfile
+    from vap_bt.runner import RunConfig
+
+    from vap_bt.yaml_file import read_model
+
+    for name in HOUSEHOLD_TASKS:
+        spec = read_model(TREES / name, taskfile.TaskFile, "task file", "")
+        assert spec.scene is not None and spec.world == "pybullet", name
+    task = taskfile.load(TREES / "collect_cup.yaml")
+    assert RunConfig.from_task(task).world == "pybullet"
+    assert RunConfig.from_task(task, world="symbolic").world == "symbolic"  # what --world does
+    spec = taskfile.TaskFile(name="p", domain=str(DOMAINS / "gripper-domain.pddl"),
+                             problem=str(DOMAINS / "gripper-p4.pddl"))
+    assert RunConfig.from_task(taskfile.from_spec(spec, base=ROOT, where="p")).world == "symbolic"
+
+
+def test_a_run_ends_with_a_table_that_agrees_with_the_report(cli, tmp_path):
+    """collect_cup, seed 8: an injected failure is detected and repaired (one replan)."""
+    report = tmp_path / "r.json"
+    code, out, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "8",
+                         "--transport", "inproc", "--report", report, "-q")
+    assert code == 0 and err == ""
+    rows, rep = table(out), json.loads(report.read_text())
+    assert list(rows) == LABELS
+    assert rows["task"] == f"collect_cup ({TREES / 'collect_cup.yaml'})"
+    assert rows["world"] == "symbolic, seed 8, verify both, injection on"
+    assert rep["success"] and rep["goal_satisfied"] and rows["success"] == "yes (the world confirms the goal)"
+    assert rows["actions"].startswith(f"{len(rep['actions_executed'])} executed; {len(rep['plans'])} plans")
+    assert rep["situations"] and rows["situations"].startswith(f"{len(rep['situations'])} detected (")
+    assert rows["situations"].endswith(f"{len(rep['injected'])} injected by the world "
+                                       f"({rep['injected'][0]['kind']})")
+    assert rows["replans"].startswith(f"{rep['replans']} (slowest ")
+    assert rows["VLM queries"] == f"{rep['vlm_queries']} (sim)"
+    assert rows["wall time"] == f"{rep['wall_s']:.1f} s"
+    assert rows["report"] == str(report) and rows["recording"].startswith("none")
+
+
+def test_a_success_the_world_denies_is_printed_as_a_failure(cli):
+    """cut_lemon, seed 0, no verification (the closed-world baseline): the executive believes the
+    lemon cut and claims success; the world says it is not, and so do the table and the exit code."""
+    code, out, _ = cli("run", TREES / "cut_lemon.yaml", "--world", "symbolic", "--verify", "none", "--seed", "0",
+                       "--transport", "inproc", "-q")
+    assert code == EXIT_GOAL_NOT_REACHED
+    assert table(out)["success"] == "NO: the executive claimed success but the world denies the goal"
+
+
+def test_json_prints_only_the_summary_on_stdout_and_the_table_on_stderr(cli, tmp_path):
+    report = tmp_path / "r.json"
+    code, out, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "8",
+                         "--transport", "inproc", "--report", report, "--json")
+    summary, rep = json.loads(out), json.loads(report.read_text())  # all of stdout is one JSON document
+    assert code == 0 and summary["success"] and summary["goal_satisfied"]
+    assert summary["task"] == "collect_cup" and summary["world"] == "symbolic" and summary["seed"] == 8
+    assert summary["actions_executed"] == len(rep["actions_executed"]) and summary["replans"] == rep["replans"]
+    assert summary["situations"] == rep["situations"] and summary["report"] == str(report)
+    assert summary["recording"] is None
+    beside = table("\n".join(err.strip().splitlines()[-len(LABELS):]))  # after the progress lines
+    assert "plan (" in err and list(beside) == LABELS and beside["report"] == str(report)
+    code, out, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "8",
+                         "--transport", "inproc", "--json", "--full", "-q")
+    assert code == 0 and err == "" and json.loads(out)["versions"] == rep["versions"]
+
+
+def test_pybullet_for_a_pddl_problem_is_one_line_and_exit_2(cli):
+    code, out, err = cli("run", "--domain", DOMAINS / "gripper-domain.pddl", "--problem", DOMAINS / "gripper-p4.pddl",
+                         "--world", "pybullet")
+    assert code == EXIT_BAD_INPUT and out == "" and "Traceback" not in err and len(err.strip().splitlines()) == 1
+    assert err.startswith("vap-bt: --world: the pybullet world builds a household from a task file's scene:")
+
+
+def test_a_task_file_naming_pybullet_for_a_pddl_problem_is_one_line_and_exit_2(cli, tmp_path):
+    task = tmp_path / "gripper.yaml"
+    task.write_text(f"name: g\ndomain: {DOMAINS / 'gripper-domain.pddl'}\nproblem: {DOMAINS / 'gripper-p4.pddl'}\n"
+                    "world: pybullet\n")
+    code, out, err = cli("run", task)
+    assert code == EXIT_BAD_INPUT and out == "" and len(err.strip().splitlines()) == 1
+    assert err.startswith(f"vap-bt: {task}: field world: ") and "builds the household from scene:" in err
+
+
+@pytest.mark.slow
+def test_without_world_a_household_task_runs_in_pybullet_and_json_stays_clean():
+    """The installed command, as a script calls it: no --world, so the task file's pybullet; stdout
+    is exactly the JSON (pybullet's own start-up line goes to stderr)."""
+    exe = ROOT / ".venv" / "bin" / "vap-bt"
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt.cli"]
+    p = subprocess.run([*cmd, "run", str(TREES / "collect_cup.yaml"), "--no-injection", "--transport", "inproc",
+                        "--json", "-q"], capture_output=True, text=True, timeout=600, cwd=ROOT)
+    summary = json.loads(p.stdout)
+    assert summary["world"] == "pybullet" and p.returncode == (0 if summary["success"] and summary["goal_satisfied"]
+                                                               else EXIT_GOAL_NOT_REACHED), p.stderr[-2000:]
+    assert summary["actions_executed"] > 0
