@@ -301,8 +301,8 @@ class Handles:
             return Outcome(False, f"{name}: the hand is full")
         out = self._open_close(name, opening)
         seen = self.hands.locate(held.name, shelves[0].top_point(), Where(on=shelves[0].name))
-        if seen is not None:
-            self.hands.grasp(held.name, seen.centroid, Where(on=shelves[0].name))
+        if seen is not None:  # taken again the way it was held: it may have to go into a low cavity next
+            self.hands.grasp(held.name, seen.centroid, Where(on=shelves[0].name), sideways=sideways)
         return out
 
     def _open_close(self, name: str, opening: bool) -> Outcome:
@@ -386,4 +386,5 @@ class Handles:
                    for a, b in zip(legs, legs[1:]) for s in np.linspace(0.05, 1, 12)):
                 self.body.drive([tuple(p) for p in legs[1:]], 0.5)
                 break
-        self.eyes.look_at(self.leaf_point(name))
+        if self.eyes.look_at(self.leaf_point(name)):  # where the leaf stands now, as the camera sees it
+            self.scene.fit_leaf(name, self.eyes.frame(), hint=q)

@@ -46,6 +46,7 @@ FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
 WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
 EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
 PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
+PRE_PLACE = 0.16  # pre-place distance along the approach axis
 GRASP_FORCE = 60.0
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
@@ -117,13 +118,15 @@ class Hands:
 
     # -- grasping ----------------------------------------------------------------------------
 
-    def grasp_frame(self, seen: Seen, where: Where) -> tuple[np.ndarray, np.ndarray]:
+    def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False) -> tuple[np.ndarray, np.ndarray]:
         """Grasp pose of the tcp and the approach direction for an item as seen: level from the
-        front out of a front-open container, else from above across its narrow side."""
+        front out of a front-open container (or when asked: to put it into one next), else from
+        above across its narrow side."""
         c, bottom = seen.centroid.copy(), self.bottom(seen, where)
         box = self.scene.furniture.get(where.inside or "")
-        if box is not None and box.info.cavity is not None and box.info.cavity.open == "front":
-            a = -box.front
+        front_open = box is not None and box.info.cavity is not None and box.info.cavity.open == "front"
+        if front_open or sideways:
+            a = -box.front if front_open else -self.nav.toward_robot(c, where.place)
             p = c.copy()
             if c[2] - bottom < SIDE_LEVEL_HEIGHT:
                 # a level hand this low would put the gripper housing and the wrist into the
@@ -142,16 +145,20 @@ class Hands:
         p[2] = max(seen.top - 0.03, c[2], bottom + 0.022)
         return se3.frame_zx(z, np.cross(across, z), p), z
 
-    def grasp(self, name: str, point, where: Where) -> Outcome:
-        """Take ``name`` (believed at ``point``, on or in ``where``) into the hand."""
+    def grasp(self, name: str, point, where: Where, sideways: bool = False) -> Outcome:
+        """Take ``name`` (believed at ``point``, on or in ``where``) into the hand; ``sideways``:
+        level from the side even off a surface."""
         seen = self.locate(name, point, where)
         if seen is None:
             return Outcome(False, f"{name} is not where it was believed to be: not seen")
-        G, a = self.grasp_frame(seen, where)
-        self.nav.approach(self.nav.work_pose(G[:3, 3], self.nav.toward_robot(G[:3, 3], where.place), how(a), where.place))
+        G, a = self.grasp_frame(seen, where, sideways)
+        pre = G.copy()
+        pre[:3, 3] -= a * APPROACH
+        self.nav.approach(self.nav.work_pose(G[:3, 3], self.nav.toward_robot(G[:3, 3], where.place), how(a), where.place,
+                                             reach=lambda base: (pre, G)))
         closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
         seen = closer or seen
-        G, a = self.grasp_frame(seen, where)
+        G, a = self.grasp_frame(seen, where, sideways)
         self.progress(0.1, "pre-grasp")
         self.body.fingers(self.body.cfg.gripper.stroke)
         if self.reach_pre(G, a, where.inside, APPROACH) is None:
@@ -334,16 +341,26 @@ class Hands:
             spot, a = self.cavity_spot(where)
         else:
             spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
-        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where))
-        T = self.body.pose("tcp")
-        corners = held.corners_at(T)
-        c = corners.mean(axis=0)
-        target = spot.copy()
-        target[2] += (c[2] - corners[:, 2].min()) + PLACE_CLEARANCE  # its bottom just above the support
-        G = T.copy()
-        G[:3, 3] += target - c
+
+        def targets(base) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            """The hand's place pose, its pre-pose and the item's corners there, for the hand
+            carried as it is now to the base pose ``base``."""
+            T = self.body.base_T(base) @ np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
+            corners = held.corners_at(T)
+            c = corners.mean(axis=0)
+            target = spot.copy()
+            target[2] += (c[2] - corners[:, 2].min()) + PLACE_CLEARANCE  # its bottom just above the support
+            G = T.copy()
+            G[:3, 3] += target - c
+            pre = G.copy()
+            pre[:3, 3] -= a * PRE_PLACE
+            return G, pre, corners + (target - c)
+
+        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where,
+                                             reach=lambda base: targets(base)[:2]))
+        G, _, corners = targets(self.body.base_pose())
         self.progress(0.2, "pre-place")
-        pre = self.reach_pre(G, a, where if inside else None, 0.16, list(corners + (target - c)))
+        pre = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))
         if pre is None:
             self.carry()
             return Outcome(False, f"{where}: no arm pose reaches it")
@@ -430,17 +447,21 @@ class Hands:
         self.nav.approach(self.nav.work_pose(c, self.nav.toward_robot(c, where.place), "top", where.place))
         seen = self.eyes.measure(name, c) or seen
         c, top = seen.centroid, seen.top
-        tcp = self.body.pose("tcp")
-        corners = held.corners_at(tcp)
-        edge = corners[np.argmin(corners[:, 2])] - tcp[:3, 3]  # the blade's lowest point, from the tcp
+        # the hand straight down, the blade level under it: the blade's lowest edge (from the knife
+        # as the camera measured it when the hand took it) goes over the item's centre, then down
+        x = self.body.pose("tcp")[:3, 0]
+        x = np.array([x[0], x[1], 0.0]) if np.hypot(x[0], x[1]) > 0.1 else self.body.base_T()[:3, 0]
+        R = se3.frame_zx((0.0, 0.0, -1.0), x, (0.0, 0.0, 0.0))[:3, :3]
+        pts = held.corners @ R.T  # the knife's box corners from the tcp, the hand down
+        edge = pts[pts[:, 2] <= pts[:, 2].min() + 0.005].mean(axis=0)
         below = -edge[2]
-        T = tcp.copy()
-        T[:3, 3] = (c[0] - edge[0], c[1] - edge[1], top + below + 0.06)
+        T = np.eye(4)
+        T[:3, :3], T[:3, 3] = R, (c[0] - edge[0], c[1] - edge[1], top + below + 0.06)
         if not self.body.goto_pose(T):
             self.carry()
             return Outcome(False, f"{name}: out of reach")
         stroke = T.copy()
-        stroke[2, 3] = c[2] + below
+        stroke[2, 3] = c[2] + below  # the edge down to the item's middle: through it
         self.body.line(stroke, steps=6, speed=0.2)
         self.body.line(T, steps=2, speed=0.4)
         self.carry()

@@ -5,7 +5,8 @@ front of it at a *standoff*; to look at an item, at its support's standoff shift
 face the item (floor items from the corridor side). To work with the hand it stands at a *work
 pose*: a reach away from the worked point (``WORK_DISTANCE``, less for a top-down approach than
 for a horizontal one), stepped sideways or back until the base keeps clear of everything the map
-and the last looks place there (walls, furniture, door leaves as last seen).
+and the last looks place there (walls, furniture, door leaves as last seen) and the arm reaches
+the poses the skill will need from there (IK clear of the scene, checked before the base moves).
 
 A base path is straight when that is clear of those obstacles — for the base's footprint and,
 except on the last stretch where the arm reaches over what it works, for the folded arm too —
@@ -17,6 +18,7 @@ door it does not see open (:meth:`~skills.scene_model.SceneModel.fit_leaf`) stop
 from __future__ import annotations
 
 import math
+from typing import Iterator
 
 import numpy as np
 
@@ -29,7 +31,7 @@ from vap_bt.motion.footprint import base_free
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
 BASE_CLEARANCE = 0.40  # base centre to the front face of the furniture at least
 WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep a work pose clear
-WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15)  # further from the point, when no sideways shift is clear
+WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15, 0.25, 0.35)  # further back, when no sideways step is clear or reaches
 WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
 PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked
@@ -103,10 +105,11 @@ class Navigator:
         x, y, _ = self.scene.site.door(door).pose
         return np.array([x, y, DOOR_LOOK_HEIGHT])
 
-    def work_pose(self, point, toward, how: str, clear_of: str | None = None) -> Pose:
-        """Base pose for working at ``point``: ``toward`` is the horizontal direction from the
-        point to where the robot stands; keep clear of the front of ``clear_of``, and step
-        sideways (facing the point) or back when a leaf or other furniture is in the way."""
+    def work_poses(self, point, toward, how: str, clear_of: str | None = None) -> Iterator[Pose]:
+        """Base poses for working at ``point``, best first: ``toward`` is the horizontal direction
+        from the point to where the robot stands; a reach away from it (and clear of the front of
+        ``clear_of``), stepped sideways (facing the point) and then back, keeping the base clear of
+        walls, furniture and leaves as last seen. The plain pose comes last if none is clear."""
         f = np.array([toward[0], toward[1], 0.0])
         f /= np.linalg.norm(f)
         r = WORK_DISTANCE[how]
@@ -122,9 +125,24 @@ class Navigator:
                 q = p + side * shift
                 pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
                 if base_free(pose, obstacles, WORK_MARGIN):
-                    return pose
+                    yield pose
         p = np.asarray(point) + f * r
-        return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+        yield (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+
+    def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
+        """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
+        ``reach(base_pose)`` lists — IK clear of the scene, checked from that base before it
+        moves; the first clear one when none does (the motion then finds out)."""
+        first = None
+        for pose in self.work_poses(point, toward, how, clear_of):
+            first = first or pose
+            if reach is None:
+                return pose
+            seed = self.body.q()
+            seed[:3] = pose
+            if all(self.body.solve(T, seed=seed) is not None for T in reach(pose)):
+                return pose
+        return first
 
     def toward_robot(self, point, support: str | None) -> np.ndarray:
         """Horizontal direction from a point to the side the robot works it from."""

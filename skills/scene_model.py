@@ -226,9 +226,11 @@ class SceneModel:
 
     def solid_boxes(self, moving: str | None = None) -> SceneBoxes:
         """What the arm must keep clear of: walls, furniture with its cavities carved out, leaves."""
-        boxes = self.walls() + [s for f in self.furniture.values() for s in f.solids()] + self.leaf_boxes(moving)
-        return SceneBoxes(np.array([b.pose() for b in boxes]).reshape(-1, 4, 4),
-                          np.array([2 * b.half for b in boxes]).reshape(-1, 3))
+        named = [(f"wall{i}", b) for i, b in enumerate(self.walls())]
+        named += [(f"{f.name}:{k}", b) for f in self.furniture.values() for k, b in enumerate(f.solids())]
+        named += [(f"leaf:{n}", leaf.box(self.joint.get(n, 0.0))) for n, leaf in self.leaves.items() if n != moving]
+        return SceneBoxes(np.array([b.pose() for _, b in named]).reshape(-1, 4, 4),
+                          np.array([2 * b.half for _, b in named]).reshape(-1, 3), tuple(n for n, _ in named))
 
     # -- where things are, by looking ----------------------------------------------------------
 
