@@ -29,6 +29,8 @@ from vap_bt.robot.drivers import Arm, Base, Gripper, JointTrajectory
 
 #: joint samples per second of planned motions (the drivers interpolate between them)
 RATE_HZ = 60.0
+#: rad between the samples of a joint-space way checked for collisions
+PATH_STEP = 0.05
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
 IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
@@ -121,14 +123,48 @@ class Body:
 
     # -- executing -----------------------------------------------------------------------------
 
-    def through(self, qs: list[np.ndarray], speed: float = 1.0) -> bool:
-        """Move through body-joint waypoints from the measured state (toppra-timed); False when
-        the path cannot be timed. The base's joints are driven along only when they change."""
-        start = self.q()
-        pts = np.array([start, *qs])
-        if len(pts) == 2 and np.max(np.abs(pts[-1] - pts[0])) < 1e-4:
+    def path_clear(self, qa: np.ndarray, qb: np.ndarray) -> bool:
+        """Whether the arm's straight joint-space way from ``qa`` to ``qb`` (body joints, the base
+        where it is) keeps clear of the scene. An arm that starts touching something may leave
+        it: only the way after its first free sample counts."""
+        checker = self._collision(qa[:3])
+        if checker is None:
             return True
-        whole = np.max(np.abs(pts[:, :3] - start[:3])) > 1e-4
+        n = max(2, int(np.max(np.abs(qb[3:] - qa[3:])) / PATH_STEP) + 1)
+        leaving = True
+        for s in np.linspace(0.0, 1.0, n + 1)[1:]:
+            hit = checker.in_collision(qa[3:] + (qb[3:] - qa[3:]) * s)
+            if hit and not leaving:
+                return False
+            leaving = leaving and hit
+        return True
+
+    def routed(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray]:
+        """``qs`` with the arm's home pose (folded over the base) put in before a waypoint whose
+        straight way there would sweep the arm through the scene, when that detour is clear."""
+        out, here = [], start
+        for q in qs:
+            if not self.path_clear(here, q):
+                tucked = here.copy()
+                tucked[3:] = self.cfg.arm.home
+                if self.path_clear(here, tucked) and self.path_clear(tucked, q):
+                    out.append(tucked)
+            out.append(q)
+            here = q
+        return out
+
+    def through(self, qs: list[np.ndarray], speed: float = 1.0, check: bool = True) -> bool:
+        """Move through body-joint waypoints from the measured state (toppra-timed); False when
+        the path cannot be timed. The base's joints are driven along only when they change; an
+        arm-only path goes round by the home pose where its straight way would hit the scene
+        (``check``; a straight line into a contact is not checked)."""
+        start = self.q()
+        if len(qs) == 1 and np.max(np.abs(np.asarray(qs[0]) - start)) < 1e-4:
+            return True
+        whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > 1e-4
+        if check and not whole:
+            qs = self.routed(start, [np.asarray(q, float) for q in qs])
+        pts = np.array([start, *qs])
         names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
         limits = self.limits if whole else arm_limits()
         path = pts if whole else pts[:, 3:]
@@ -162,7 +198,7 @@ class Body:
             seed = q
         if not qs:
             return False
-        self.through(qs, speed)
+        self.through(qs, speed, check=False)
         return len(qs) == steps
 
     def drive(self, poses: list[tuple[float, float, float]], speed: float = 1.0) -> None:

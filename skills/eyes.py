@@ -37,6 +37,11 @@ AIM_MARGIN = 0.07
 STILL = (0.03, 0.05)
 #: extra eye heights tried when a look at an item does not show it (over something in front)
 LOOK_LIFTS = (0.0, 0.2)
+#: an aim whose arm pose would hit the furniture is tried this much higher
+RAISE = 0.15
+#: the eye is at least this far above the point it looks at (a thin plate on a tall shelf is seen
+#: from above, not edge-on), when the arm reaches that high
+LOOK_OVER = 0.4
 
 
 @dataclass(frozen=True)
@@ -75,16 +80,19 @@ class Eyes:
     # -- aiming --------------------------------------------------------------------------------
 
     def look_at(self, point, lift: float = 0.0, allow_base: bool = False) -> bool:
-        """Aim the camera at ``point`` from above the base (``lift`` higher); with something in
-        the hand the aim turns off the point just enough that the item does not cover it."""
-        eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], CAMERA_EYE[2] + lift))
-        T = se3.look_pose(eye, point)
-        # clear of the furniture if it can be; an aim over a shelf's edge may have to graze it
-        for pose, collide in ((self.aim_past_held(T), True), (T, True), (T, False)):
-            q = self.body.solve(pose, "camera_optical", allow_base=allow_base, collide=collide)
-            if q is not None and self.body.through([q], 0.8):
-                self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
-                return True
+        """Aim the camera at ``point`` from above the base (``lift`` higher, or higher still when
+        that pose would put the arm into the furniture); with something in the hand the aim turns
+        off the point just enough that the item does not cover it. False when no aim is clear."""
+        low = CAMERA_EYE[2] + lift
+        over = max(low, float(point[2]) + LOOK_OVER)  # a high surface's top is seen from above it
+        for z in dict.fromkeys((over, low, low + RAISE)):
+            eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], z))
+            T = se3.look_pose(eye, point)
+            for pose in (self.aim_past_held(T), T):
+                q = self.body.solve(pose, "camera_optical", allow_base=allow_base)
+                if q is not None and self.body.through([q], 0.8):
+                    self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
+                    return True
         return False
 
     def aimed_at(self, point, tolerance: float = 0.15) -> bool:

@@ -151,6 +151,8 @@ class ExecutionContext:
     felt: Callable[[SceneGraph, Atom], bool | None] = lambda graph, atom: None
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
+    #: names no detector ever finds (the map's rooms and floors): never "missing" from a view
+    undetectable: frozenset = frozenset()
     #: what belief says about a goal's objects, sent with it (the scene-graph builder's ``hints``)
     hints: Callable[[SceneGraph, tuple[str, ...]], tuple] = lambda graph, names: ()
     protocol: Protocol = field(default_factory=lambda: Protocol("paper"))

@@ -3,7 +3,9 @@
 A round is work in flight (:mod:`vap_bt.bt.inflight`): a frame captured where belief puts the
 atom's objects, then the N paraphrased questions about that frame — sent as the verification
 protocol says (one after another, or in waves all in flight at once) — their vote, and, when the
-answers agree, the view-sufficiency question. Every tick polls what is in flight and returns
+answers agree, the view-sufficiency question — unless the frame's detector did not find every
+object the atom names (rooms and floors aside): a view that does not show a thing cannot settle
+a question about it, so it is insufficient without asking. Every tick polls what is in flight and returns
 RUNNING until the round is done; ``terminate`` cancels what has not been sent. The behaviour
 succeeds when the round settles on the expected value and fails otherwise; whether a failure
 means "the world disagrees" or "could not tell from here" is in :attr:`round` for its
@@ -20,7 +22,7 @@ from py_trees.common import Status
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
-from vap_bt.perception.verification import Round, RoundAsker, sufficiency_query, yes_no
+from vap_bt.perception.verification import Round, RoundAsker, sufficiency_query, unshown, yes_no
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
 
@@ -75,6 +77,10 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         cancel_all(self._answers.values())  # early stop: what is left would not change the vote
         self._answers, self._asker = {}, None
         r = asker.finish()
+        r.unshown = unshown(self.observation, self.atom, self.ctx.undetectable)
+        if r.unshown:  # the detector did not find what the atom is about: not a view of it
+            r.sufficient = False
+            return self._finish(r)
         if r.consistent and r.vote is not None:
             self._voted = r
             self._sufficiency = self.ctx.submit(self.ctx.vlm.ask, sufficiency_query(self.atom, r.questions[0]),

@@ -42,6 +42,7 @@ class Round:
     sufficient: bool | None = None
     direction: str | None = None  # the viewpoint suggested after this round, if any
     moved: bool | None = None  # whether the camera could go there
+    unshown: tuple[str, ...] = ()  # objects of the atom the frame's detector did not find
 
     @property
     def settled(self) -> bool:
@@ -50,11 +51,19 @@ class Round:
     def to_json(self) -> dict:
         return {"view": self.view, "answers": ["?" if a is None else ("yes" if a else "no") for a in self.answers],
                 "vote": self.vote, "consistent": self.consistent, "sufficient": self.sufficient,
-                "direction": self.direction, "moved": self.moved}
+                "direction": self.direction, "moved": self.moved, **({"unshown": list(self.unshown)} if self.unshown else {})}
 
 
 def objects_of(atom: Atom) -> tuple[str, ...]:
     return atom.args
+
+
+def unshown(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()) -> tuple[str, ...]:
+    """The objects ``atom`` names that the frame's detector did not find (rooms and floors, the
+    map's, are never detected and never missing). A view that shows none of a thing cannot
+    settle a question about it, whatever a model says: the detector vetoes sufficiency."""
+    found = {d.name for d in frame.detections}
+    return tuple(o for o in objects_of(atom) if o not in found and o not in undetectable)
 
 
 class RoundAsker:

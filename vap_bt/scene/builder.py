@@ -305,6 +305,10 @@ class SceneGraphBuilder:
                 return Aim(tuple(names), p)
         return Aim(tuple(names), None)
 
+    def undetectable(self) -> frozenset[str]:
+        """What no detector finds in a frame: the map's rooms and their floors."""
+        return frozenset([*(r.name for r in self.site_map.rooms), *(r.floor for r in self.site_map.rooms)])
+
     def hints(self, graph: SceneGraph, names: tuple[str, ...]) -> tuple[Hint, ...]:
         """What belief says about each of ``names``, for a goal: where it is and on or in what."""
         out = []
@@ -325,8 +329,22 @@ class SceneGraphBuilder:
             return obj.centroid
         for a in sorted(graph.location(name)):
             if _supports(a):
-                return self.point_of(graph, a.args[1], depth + 1)
+                return self._place_point(a) or self.point_of(graph, a.args[1], depth + 1)
         return self._map_point(name)
+
+    def _place_point(self, atom: Atom) -> tuple[float, float, float] | None:
+        """Where on or in a mapped piece of furniture a thing it holds would be: the middle of its
+        top for ``on``, of its cavity for ``inside`` (the map's furniture model); None when the
+        map does not model the piece."""
+        piece = self.site_map.piece(atom.args[1])
+        if piece is None or piece.pose is None:
+            return None
+        x, y, _ = piece.pose
+        if atom.predicate == "inside" and piece.cavity is not None:
+            return (x, y, sum(piece.cavity.z) / 2)
+        if atom.predicate != "inside" and piece.height is not None:
+            return (x, y, piece.height)
+        return None
 
     def _map_point(self, name: str) -> tuple[float, float, float] | None:
         piece = self.site_map.piece(name)
