@@ -139,35 +139,52 @@ class Body:
             leaving = leaving and hit
         return True
 
-    def routed(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray]:
+    def routed(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray] | None:
         """``qs`` with the arm's home pose (folded over the base) put in before a waypoint whose
-        straight way there would sweep the arm through the scene, when that detour is clear."""
+        straight way there would sweep the arm through the scene; None when that detour is not
+        clear either (the motion is refused rather than run into the furniture)."""
         out, here = [], start
         for q in qs:
             if not self.path_clear(here, q):
                 tucked = here.copy()
                 tucked[3:] = self.cfg.arm.home
-                if self.path_clear(here, tucked) and self.path_clear(tucked, q):
-                    out.append(tucked)
+                if not (self.path_clear(here, tucked) and self.path_clear(tucked, q)):
+                    return None
+                out.append(tucked)
             out.append(q)
             here = q
         return out
 
     def through(self, qs: list[np.ndarray], speed: float = 1.0, check: bool = True) -> bool:
         """Move through body-joint waypoints from the measured state (toppra-timed); False when
-        the path cannot be timed. The base's joints are driven along only when they change; an
-        arm-only path goes round by the home pose where its straight way would hit the scene
-        (``check``; a straight line into a contact is not checked)."""
+        the path cannot be timed, or (``check``) an arm-only way would hit the scene even round by
+        the home pose. A checked way is driven one straight joint-space segment at a time (a
+        spline through the waypoints would leave the checked segments); a straight line into a
+        contact is not checked. The base's joints are driven along only when they change."""
         start = self.q()
-        if len(qs) == 1 and np.max(np.abs(np.asarray(qs[0]) - start)) < 1e-4:
+        qs = [np.asarray(q, float) for q in qs]
+        if len(qs) == 1 and np.max(np.abs(qs[0] - start)) < 1e-4:
             return True
         whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > 1e-4
-        if check and not whole:
-            qs = self.routed(start, [np.asarray(q, float) for q in qs])
-        pts = np.array([start, *qs])
+        if whole or not check:
+            return self._timed([start, *qs], whole, speed)
+        route = self.routed(start, qs)
+        if route is None:
+            return False
+        here = start
+        for q in route:
+            if not self._timed([here, q], False, speed):
+                return False
+            here = q
+        return True
+
+    def _timed(self, pts: list[np.ndarray], whole: bool, speed: float) -> bool:
+        pts = np.array(pts)
         names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
         limits = self.limits if whole else arm_limits()
         path = pts if whole else pts[:, 3:]
+        if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < 1e-4:
+            return True
         try:
             traj = time_path(path, limits.scaled(speed), dt=1.0 / RATE_HZ)
         except TimingError:
