@@ -140,20 +140,29 @@ class Body:
         return True
 
     def routed(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray] | None:
-        """``qs`` with the arm's home pose (folded over the base) put in before a waypoint whose
-        straight way there would sweep the arm through the scene; None when that detour is not
-        clear either (the motion is refused rather than run into the furniture)."""
+        """``qs`` with detours put in before a waypoint whose straight way there would sweep the
+        arm through the scene: by the home pose (folded over the base), else first lifting the
+        upper arm as at home (out of a low place beside furniture), then by home; None when no
+        detour is clear either (the motion is refused rather than run into the furniture)."""
         out, here = [], start
         for q in qs:
             if not self.path_clear(here, q):
-                tucked = here.copy()
-                tucked[3:] = self.cfg.arm.home
-                if not (self.path_clear(here, tucked) and self.path_clear(tucked, q)):
+                via = next((v for v in self._detours(here) if self._clear_through([here, *v, q])), None)
+                if via is None:
                     return None
-                out.append(tucked)
+                out += via
             out.append(q)
             here = q
         return out
+
+    def _detours(self, here: np.ndarray) -> list[list[np.ndarray]]:
+        tucked, lifted = here.copy(), here.copy()
+        tucked[3:] = self.cfg.arm.home
+        lifted[4:6] = self.cfg.arm.home[1:3]  # shoulder lift and elbow as at home, the wrist kept
+        return [[tucked], [lifted, tucked], [lifted]]
+
+    def _clear_through(self, pts: list[np.ndarray]) -> bool:
+        return all(self.path_clear(a, b) for a, b in zip(pts, pts[1:]))
 
     def through(self, qs: list[np.ndarray], speed: float = 1.0, check: bool = True) -> bool:
         """Move through body-joint waypoints from the measured state (toppra-timed); False when

@@ -16,7 +16,7 @@ big, which way it lies — its masked depth fused into a point cloud.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import cv2
 import numpy as np
@@ -42,6 +42,8 @@ RAISE = 0.15
 #: the eye is at least this far above the point it looks at (a thin plate on a tall shelf is seen
 #: from above, not edge-on), when the arm reaches that high
 LOOK_OVER = 0.4
+#: a point inside a front-opening hollow is looked at from this little above it (its roof is low)
+LEVEL_OVER = 0.05
 
 
 @dataclass(frozen=True)
@@ -52,12 +54,32 @@ class Held:
     name: str
     corners: np.ndarray  # (8, 3) in the tcp frame
     extent: np.ndarray  # box size (m)
+    up: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))  # the item's up when taken, in the tcp frame
 
     @classmethod
     def taken(cls, seen: Seen, tcp: np.ndarray) -> "Held":
         inv = np.linalg.inv(tcp)
         pts = seen.corners() @ inv[:3, :3].T + inv[:3, 3]
-        return cls(seen.name, pts, seen.extent)
+        return cls(seen.name, pts, seen.extent, tcp[:3, :3].T @ np.array([0.0, 0.0, 1.0]))
+
+    def upright(self, R: np.ndarray, toward) -> np.ndarray:
+        """The hand's rotation that stands the item as it stood when taken, its approach axis
+        turned as close to ``toward`` as that allows (looks since may have tilted it: the camera
+        rides on the wrist). A vertical ``toward`` keeps the heading of ``R``."""
+        u = self.up / np.linalg.norm(self.up)
+        ez = np.array([0.0, 0.0, 1.0])
+        axis = ez if abs(u @ ez) < 0.95 else np.array([1.0, 0.0, 0.0])  # tcp-frame reference
+        v = axis - (axis @ u) * u
+        v /= np.linalg.norm(v)
+        d = np.asarray(toward, float)
+        d = d - d[2] * ez
+        if np.linalg.norm(d) < 1e-6 or abs(u @ ez) >= 0.95:  # keep the heading the hand has now
+            d = R @ v
+            d = d - d[2] * ez
+        d /= np.linalg.norm(d)
+        src = np.column_stack([u, v, np.cross(u, v)])
+        dst = np.column_stack([ez, d, np.cross(ez, d)])
+        return dst @ src.T
 
     def corners_at(self, tcp: np.ndarray) -> np.ndarray:
         """The box's corners in the map frame for the hand at ``tcp``."""
@@ -71,8 +93,9 @@ class Held:
 class Eyes:
     """Aim the wrist camera, take frames, and measure items in them."""
 
-    def __init__(self, body: Body, camera: WristCamera) -> None:
+    def __init__(self, body: Body, camera: WristCamera, level_with=lambda point: False) -> None:
         self.body, self.camera = body, camera
+        self.level_with = level_with  # points seen only from their own height (inside a hollow)
         self.held: Held | None = None
         self.cam = body.cfg.camera
         self._aim: tuple[np.ndarray, np.ndarray] | None = None  # point, camera pose of the last aim
@@ -81,11 +104,15 @@ class Eyes:
 
     def look_at(self, point, lift: float = 0.0, allow_base: bool = False) -> bool:
         """Aim the camera at ``point`` from above the base (``lift`` higher, or higher still when
-        that pose would put the arm into the furniture); with something in the hand the aim turns
+        that pose would put the arm into the furniture; a point inside a front-opening hollow
+        from its own height first); with something in the hand the aim turns
         off the point just enough that the item does not cover it. False when no aim is clear."""
         low = CAMERA_EYE[2] + lift
         over = max(low, float(point[2]) + LOOK_OVER)  # a high surface's top is seen from above it
-        for z in dict.fromkeys((over, low, low + RAISE)):
+        heights = (over, low, low + RAISE)
+        if self.level_with(point):  # into a hollow through its front: from its height, first
+            heights = (float(point[2]) + LEVEL_OVER + lift, *heights)
+        for z in dict.fromkeys(heights):
             eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], z))
             T = se3.look_pose(eye, point)
             for pose in (self.aim_past_held(T), T):

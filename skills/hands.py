@@ -42,6 +42,7 @@ APPROACH = 0.14  # pre-grasp distance along the approach axis
 SIDE_LEVEL_HEIGHT = 0.042
 SIDE_PITCH = 0.6
 SIDE_PITCHED_HEIGHT = 0.025
+SIDE_PAD = 0.015  # a level side grasp keeps this much of the pads' half height on the item
 FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
 WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
 EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
@@ -128,7 +129,11 @@ class Hands:
         if front_open or sideways:
             a = -box.front if front_open else -self.nav.toward_robot(c, where.place)
             p = c.copy()
-            if c[2] - bottom < SIDE_LEVEL_HEIGHT:
+            if c[2] - bottom < SIDE_LEVEL_HEIGHT <= seen.top - bottom - SIDE_PAD:
+                # a level hand taking it above its middle still has its pads on it: level is the
+                # hand that fits into a low hollow next (a pitched one's forearm rises behind it)
+                p[2] = bottom + SIDE_LEVEL_HEIGHT
+            elif c[2] - bottom < SIDE_LEVEL_HEIGHT:
                 # a level hand this low would put the gripper housing and the wrist into the
                 # support: the hand comes in pitched down instead, its tcp a little higher
                 a = math.cos(SIDE_PITCH) * a + np.array([0.0, 0.0, -math.sin(SIDE_PITCH)])
@@ -268,7 +273,10 @@ class Hands:
         if not self.body.holding():
             self.body.home()
             return
-        rel = np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
+        T = self.body.pose("tcp")
+        if self.eyes.held is not None:  # stood up again as it was taken, facing ahead
+            T[:3, :3] = self.eyes.held.upright(T[:3, :3], self.body.base_T()[:3, 0])
+        rel = np.linalg.inv(self.body.base_T()) @ T
         rel[:3, 3] = CARRY
         q = self.body.solve(self.body.base_T() @ rel)
         if q is not None:
@@ -324,7 +332,9 @@ class Hands:
         the middle of the part of its tray that is out, as last seen)."""
         f = self.scene.furniture[container]
         cav = f.info.cavity
-        depth = 0.03
+        # a third of the way in from the middle: the deeper the hand goes, the lower the part of
+        # the arm that passes under the cavity's front edge (a pitched hand's forearm rises behind it)
+        depth = -(f.depth / 2 - cav.wall) / 3 if cav.open == "front" else 0.03
         art = f.info.articulation
         if art is not None and art.prismatic:
             depth = f.depth / 2 - abs(art.opened) / 2 + abs(self.scene.joint.get(container, art.opened))
@@ -344,8 +354,9 @@ class Hands:
 
         def targets(base) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             """The hand's place pose, its pre-pose and the item's corners there, for the hand
-            carried as it is now to the base pose ``base``."""
+            carried to the base pose ``base`` and stood up as it was taken."""
             T = self.body.base_T(base) @ np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
+            T[:3, :3] = held.upright(T[:3, :3], a)
             corners = held.corners_at(T)
             c = corners.mean(axis=0)
             target = spot.copy()

@@ -38,6 +38,9 @@ DOOR_FIT_STEPS = 40
 LEAF_MARGIN = 0.03
 #: depth this far past a doorway means the view goes through it
 SEE_THROUGH = 0.3
+#: half size (m) of an appliance's switch (along the front, out of it, up): it stands proud of
+#: the front, where a forearm sweeping past a low hollow would catch it
+SWITCH = (0.03, 0.02, 0.022)
 
 
 @dataclass(frozen=True)
@@ -120,7 +123,7 @@ class Furniture:
         """The piece as solid boxes, its cavity carved out (the walls and floor round it remain)."""
         cav = self.info.cavity
         if cav is None:
-            return [self.outer()]
+            return [self.outer(), *self.switch_box()]
         R = np.column_stack([self.along, self.front, (0.0, 0.0, 1.0)])
         w, d, h, t = self.width, self.depth, self.height, cav.wall
         z0, z1 = cav.z
@@ -137,10 +140,26 @@ class Furniture:
             parts.append(box(-w / 2, w / 2, -d / 2, -d / 2 + t, z0, z1))  # the back wall
         else:
             parts += [box(-w / 2, w / 2, -d / 2, -d / 2 + t, z0, z1), box(-w / 2, w / 2, d / 2 - t, d / 2, z0, z1)]
-        return parts
+        return parts + self.switch_box()
+
+    def switch_box(self) -> list[Obb]:
+        """The switch standing out of the front (where the map puts its face), as a small box."""
+        if self.info.switch is None:
+            return []
+        R = np.column_stack([self.along, self.front, (0.0, 0.0, 1.0)])
+        face = np.asarray(self.info.switch, float)
+        return [Obb(face - self.front * SWITCH[1], R, np.array(SWITCH))]
 
     def top_point(self) -> np.ndarray:
         return self.to_world((0.0, 0.0, self.height))
+
+    def in_front_cavity(self, p) -> bool:
+        """Whether ``p`` lies in this piece's front-opening hollow (seen only from its level)."""
+        cav = self.info.cavity
+        if cav is None or cav.open != "front":
+            return False
+        lx, ly, lz = self.local(p)
+        return abs(lx) <= self.width / 2 and abs(ly) <= self.depth / 2 and cav.z[0] <= lz <= cav.z[1]
 
 
 class Leaf:
@@ -181,6 +200,11 @@ class SceneModel:
         self.joint: dict[str, float] = {}  # where each leaf was last seen or left
 
     # -- where things are, by the map --------------------------------------------------------
+
+    def in_front_cavity(self, p) -> bool:
+        """Whether ``p`` lies in the hollow of a front-opening container (a microwave, a cabinet):
+        a camera sees into it only from about its height, never from above its top."""
+        return any(f.in_front_cavity(p) for f in self.furniture.values())
 
     def room_at(self, x: float, y: float) -> str | None:
         return self.site.room_at(x, y)

@@ -34,6 +34,8 @@ FRONT_VIEW = 1.8
 SIDE_TURN = 0.5  # rad round the point for a view from the left or the right
 CLOSER_STEP, CLOSEST = 0.25, 0.75  # a step closer, but no nearer to the point than this
 ABOVE = 0.3  # m higher eye for a view from above
+#: a move shorter than this (m, or rad of turn) is no move: the camera would show the same view
+SAME_VIEW = 0.1
 
 
 class ViewService:
@@ -98,7 +100,9 @@ class ViewService:
             if target is None:
                 return False
             nx, ny, nyaw, lift = target
-            moves = (nx, ny) != (x, y)
+            moves = math.hypot(nx - x, ny - y) > SAME_VIEW or abs(_wrap(nyaw - yaw)) > SAME_VIEW
+            if not moves and lift == 0.0:
+                return False  # already there: the same view again would show nothing new
             # a view from elsewhere must be in this room: a base move for a view never goes
             # through a wall or a doorway
             if moves and not kit.nav.base_fits(nx, ny, kit.scene.room_at(x, y)):
@@ -112,6 +116,10 @@ class ViewService:
                 return any(kit.eyes.look_at(p, lift=h) for h in lifts)
             except (Stopped, Blocked):
                 return False
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
 
 
 def _moved_to(direction: str, here, p: np.ndarray):

@@ -6,8 +6,9 @@ the mask into body ids (``seg & 0xFFFFFF``), and body ids into object names thro
 
 Visibility of an object is the number of its visible pixels divided by its *unoccluded* projected
 size. The latter is estimated without a second render: the object's bounding box corners are
-projected into the image and the area of their convex hull is scaled by a fill factor for the
-object's shape (a sphere fills about half the hull of its box, a box nearly all of it). It counts
+projected into the image and the area of their convex hull (the union of the hulls of its links'
+boxes, for furniture with leaves: an open door does not make the carcass look hidden) is scaled by a
+fill factor for the object's shape (a sphere fills about half the hull of its box, a box nearly all of it). It counts
 parts outside the frame as not visible, which is what a camera would show. The estimate is a
 documented proxy, clipped to [0, 1].
 """
@@ -85,29 +86,42 @@ def name_image(r: Render, names: dict[int, str], ids: dict[str, int]) -> np.ndar
     return out
 
 
-def projected_area(r: Render, box: tuple[float, ...]) -> float:
-    """Area (pixels) of the convex hull of the projected corners of an axis-aligned box."""
+def _projected(r: Render, box: tuple[float, ...]) -> np.ndarray | None:
+    """Image points of an axis-aligned box's corners (None when it is all behind the camera)."""
     lo, hi = np.array(box[:3]), np.array(box[3:])
     corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
     inv = np.linalg.inv(r.pose)
     pc = (inv[:3, :3] @ corners.T).T + inv[:3, 3]
     if np.all(pc[:, 2] < r.camera.near):
-        return 0.0
+        return None
     z = np.maximum(pc[:, 2], r.camera.near)
     c = r.camera
-    uv = np.stack([c.fx * pc[:, 0] / z + c.cx, c.fy * pc[:, 1] / z + c.cy], axis=1).astype(np.float32)
-    return float(cv2.contourArea(cv2.convexHull(uv)))
+    return np.stack([c.fx * pc[:, 0] / z + c.cx, c.fy * pc[:, 1] / z + c.cy], axis=1).astype(np.float32)
 
 
-def visibility(r: Render, counts: dict[str, int], boxes: dict[str, tuple[float, ...]], fills: dict[str, float]) -> dict[str, float]:
+def projected_area(r: Render, boxes: list[tuple[float, ...]]) -> float:
+    """Area (pixels) of the union of the convex hulls of the boxes' projected corners: exact for
+    one box, rasterised on a canvas three images wide for several (a carcass and its leaves)."""
+    hulls = [cv2.convexHull(uv) for uv in (_projected(r, b) for b in boxes) if uv is not None]
+    if len(hulls) <= 1:
+        return float(cv2.contourArea(hulls[0])) if hulls else 0.0
+    h, w = r.bodies.shape
+    canvas = np.zeros((3 * h, 3 * w), np.uint8)
+    for hull in hulls:
+        pts = np.clip(hull.reshape(-1, 2) + (w, h), -10 * w, 10 * w).astype(np.int32)
+        cv2.fillConvexPoly(canvas, pts, 1)
+    return float(np.count_nonzero(canvas))
+
+
+def visibility(r: Render, counts: dict[str, int], boxes: dict[str, list[tuple[float, ...]]], fills: dict[str, float]) -> dict[str, float]:
     """Visible fraction of each named object (see the module docstring for the proxy)."""
     out = {}
-    for name, box in boxes.items():
+    for name, parts in boxes.items():
         n = counts.get(name, 0)
         if n == 0:
             out[name] = 0.0
             continue
-        area = projected_area(r, box) * fills.get(name, 0.8)
+        area = projected_area(r, parts) * fills.get(name, 0.8)
         out[name] = float(min(1.0, n / area)) if area > 0 else 0.0
     return out
 

@@ -21,7 +21,7 @@ and Table II injection), checks ``cancelled()`` and ``stop()`` before every step
   (both pads on the leaf's link with the tcp within ``BAR_REACH`` of the bar) by a ball joint at
   the tcp, so that the bar may turn in the hand and the arm drags the leaf along its arc against
   the joint's friction; released, the friction keeps the leaf where it was pulled. Opening lets
-  an item go once the fingers are ``ITEM_RELEASE`` wider than they held it, a handle once they
+  an item go once the fingers are ``ITEM_RELEASE`` wider than they held it (or fully open), a handle once they
   are ``HANDLE_CAPTURE`` apart (a loosely closed hand still traps the bar). ``holding`` is a grip
   in force — on an item or a handle. A cancelled ``move`` returns the state where the fingers
   stopped (the protocol's ``move`` answers with the gripper's state, not a MotionResult).
@@ -74,6 +74,9 @@ MIN_FORCE = 5.0
 SQUEEZE = 0.004
 #: m the fingers open past the width they held an item at before it falls out
 ITEM_RELEASE = 0.006
+#: m short of the stroke at which the fingers count as fully open (an item held near the stroke
+#: cannot be opened on by ITEM_RELEASE, yet fully open fingers hold nothing)
+FULLY_OPEN = 0.002
 #: m of opening above which a handle bar (0.024 m thick, 0.034 m across its diagonal) can slip out
 HANDLE_CAPTURE = 0.06
 #: m from the tcp to a handle bar's axis for two pads on a leaf to be a hand on its handle
@@ -335,7 +338,9 @@ class PybulletGripper:
         if r.grip is None:
             return
         width = float(np.sum(r.finger_q()))
-        if (r.grip.link == -1 and width > held_at + ITEM_RELEASE) or (r.grip.link != -1 and width > HANDLE_CAPTURE):
+        # fingers open as wide as they go have let go of whatever they held near their stroke
+        loose = min(held_at + ITEM_RELEASE, r.cfg.gripper.stroke - FULLY_OPEN)
+        if (r.grip.link == -1 and width > loose) or (r.grip.link != -1 and width > HANDLE_CAPTURE):
             r.detach()
 
 

@@ -47,19 +47,27 @@ class Truth:
     # ------------------------------------------------------------ geometry
 
     def aabb(self, name: str) -> tuple[float, ...]:
+        boxes = self.link_boxes(name)
+        lo = np.min([b[:3] for b in boxes], axis=0)
+        hi = np.max([b[3:] for b in boxes], axis=0)
+        return (*map(float, lo), *map(float, hi))
+
+    def link_boxes(self, name: str) -> list[tuple[float, ...]]:
+        """The axis-aligned box of every link of the thing (one for an item, the carcass and
+        each leaf for furniture): an open door's swing is not part of what the camera can see."""
         t = self.scene.things[name]
         if t.room is not None and not t.bodies:  # a room: its floor rectangle
             r = self.scene.plan.rooms[name]
-            return (r.x0, r.y0, 0.0, r.x1, r.y1, self.catalog.room.wall_height)
-        lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+            return [(r.x0, r.y0, 0.0, r.x1, r.y1, self.catalog.room.wall_height)]
+        out = []
         for b in t.bodies:
             links = range(-1, pb.getNumJoints(b, physicsClientId=self.scene.client))
             for link in links:
                 a, c = pb.getAABB(b, link, physicsClientId=self.scene.client)
                 if a[0] > c[0]:  # a link without shapes
                     continue
-                lo, hi = np.minimum(lo, a), np.maximum(hi, c)
-        return (*map(float, lo), *map(float, hi))
+                out.append((*map(float, a), *map(float, c)))
+        return out
 
     def center(self, name: str) -> np.ndarray:
         t = self.scene.things[name]

@@ -331,7 +331,7 @@ class PybulletWorld:
         masks = name_image(r, {b: n for b, n in names.items() if n in ids}, ids)
         dets = tuple(Detection(n, self._label(n), int(counts[n]), ids[n]) for n in seen)
         # the simulated VLM's record: how much of each object this frame shows (world side only)
-        boxes = {n: self.truth.aabb(n) for n in counts if n in self.scene.things}
+        boxes = {n: self.truth.link_boxes(n) for n in counts if n in self.scene.things}
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
