@@ -31,6 +31,8 @@ from vap_bt.robot.drivers import Arm, Base, Gripper, JointTrajectory
 RATE_HZ = 60.0
 #: rad between the samples of a joint-space way checked for collisions
 PATH_STEP = 0.05
+#: rad inside the joint limits a waypoint turned by a whole turn must stay
+UNWIND_MARGIN = 0.5
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
 IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
@@ -140,26 +142,36 @@ class Body:
         return True
 
     def routed(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray] | None:
-        """``qs`` with detours put in before a waypoint whose straight way there would sweep the
-        arm through the scene: by the home pose (folded over the base), else first lifting the
-        upper arm as at home (out of a low place beside furniture), then by home; None when no
-        detour is clear either (the motion is refused rather than run into the furniture)."""
+        """``qs`` with detours (:meth:`_detours`) put in before a waypoint whose straight way
+        there would sweep the arm through the scene or itself; None when no detour is clear
+        either (the motion is refused rather than run into the furniture)."""
         out, here = [], start
         for q in qs:
+            q = self._unwound(here, [q])[0]
             if not self.path_clear(here, q):
-                via = next((v for v in self._detours(here) if self._clear_through([here, *v, q])), None)
-                if via is None:
+                for via in self._detours(here, q):
+                    q_via = self._unwound(via[-1], [q])[0]  # as near the detour's end as it goes
+                    if self._clear_through([here, *via, q_via]):
+                        out += via
+                        q = q_via
+                        break
+                else:
                     return None
-                out += via
             out.append(q)
             here = q
         return out
 
-    def _detours(self, here: np.ndarray) -> list[list[np.ndarray]]:
+    def _detours(self, here: np.ndarray, q: np.ndarray) -> list[list[np.ndarray]]:
+        """Ways round, fewest joints changed at once first: by home; the upper arm lifted first;
+        the wrist turned first or last (a wrist turning while the elbow folds can sweep the hand
+        into the forearm), at home or where the arm is."""
         tucked, lifted = here.copy(), here.copy()
         tucked[3:] = self.cfg.arm.home
         lifted[4:6] = self.cfg.arm.home[1:3]  # shoulder lift and elbow as at home, the wrist kept
-        return [[tucked], [lifted, tucked], [lifted]]
+        wrist_first, arm_first, home_wrist = here.copy(), here.copy(), tucked.copy()
+        wrist_first[6:], arm_first[3:6], home_wrist[6:] = q[6:], q[3:6], q[6:]
+        return [[tucked], [lifted, tucked], [lifted], [wrist_first], [arm_first],
+                [tucked, home_wrist], [lifted, tucked, home_wrist]]
 
     def _clear_through(self, pts: list[np.ndarray]) -> bool:
         return all(self.path_clear(a, b) for a, b in zip(pts, pts[1:]))
@@ -171,7 +183,7 @@ class Body:
         spline through the waypoints would leave the checked segments); a straight line into a
         contact is not checked. The base's joints are driven along only when they change."""
         start = self.q()
-        qs = [np.asarray(q, float) for q in qs]
+        qs = self._unwound(start, [np.asarray(q, float) for q in qs])
         if len(qs) == 1 and np.max(np.abs(qs[0] - start)) < 1e-4:
             return True
         whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > 1e-4
@@ -186,6 +198,21 @@ class Body:
                 return False
             here = q
         return True
+
+    def _unwound(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray]:
+        """Each waypoint's arm joints turned by whole turns to the same pose nearest the one
+        before, well within the limits (a timed spline overshoots a little): IK may answer a wrist a full turn away, and driving that
+        turn sweeps the hand round through whatever is beside it."""
+        lo, hi = np.array(self.cfg.arm.lower), np.array(self.cfg.arm.upper)
+        out, prev = [], start
+        for q in qs:
+            q = q.copy()
+            arm = q[3:] + 2 * np.pi * np.round((prev[3:] - q[3:]) / (2 * np.pi))
+            ok = (arm >= lo + UNWIND_MARGIN) & (arm <= hi - UNWIND_MARGIN)
+            q[3:] = np.where(ok, arm, q[3:])
+            out.append(q)
+            prev = q
+        return out
 
     def _timed(self, pts: list[np.ndarray], whole: bool, speed: float) -> bool:
         pts = np.array(pts)

@@ -46,6 +46,7 @@ SIDE_PAD = 0.015  # a level side grasp keeps this much of the pads' half height 
 FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
 WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
 EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
+NEAR_SPOT = 0.2  # a free spot is sought this far in from a surface's front first (less reach over it)
 PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
 PRE_PLACE = 0.16  # pre-place distance along the approach axis
 GRASP_FORCE = 60.0
@@ -300,8 +301,8 @@ class Hands:
             look = np.array([x + 0.75 * math.cos(yaw), y + 0.75 * math.sin(yaw), 0.0])
         else:
             w = f.width / 2 - 0.08
-            ly = f.depth / 2 - EDGE_SPOT if edge else 0.0
-            cands = [f.to_world((lx, ly, f.height)) for lx in np.linspace(-w, w, 9)]
+            rows = (f.depth / 2 - EDGE_SPOT,) if edge else (max(0.0, f.depth / 2 - NEAR_SPOT), 0.0)
+            cands = [f.to_world((lx, ly, f.height)) for ly in rows for lx in np.linspace(-w, w, 9)]
             look = f.top_point()
         others = self.items_near(look, exclude={item, surface})
         base = np.array([x, y])
@@ -332,9 +333,7 @@ class Hands:
         the middle of the part of its tray that is out, as last seen)."""
         f = self.scene.furniture[container]
         cav = f.info.cavity
-        # a third of the way in from the middle: the deeper the hand goes, the lower the part of
-        # the arm that passes under the cavity's front edge (a pitched hand's forearm rises behind it)
-        depth = -(f.depth / 2 - cav.wall) / 3 if cav.open == "front" else 0.03
+        depth = 0.03
         art = f.info.articulation
         if art is not None and art.prismatic:
             depth = f.depth / 2 - abs(art.opened) / 2 + abs(self.scene.joint.get(container, art.opened))

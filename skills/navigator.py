@@ -31,7 +31,7 @@ from vap_bt.motion.footprint import base_free
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
 BASE_CLEARANCE = 0.40  # base centre to the front face of the furniture at least
 WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep a work pose clear
-WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15, 0.25, 0.35)  # further back, when no sideways step is clear or reaches
+WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15, 0.25, 0.35, 0.45)  # further back, when no sideways step is clear or reaches (an oven's door lies open in front)
 WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
 PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked

@@ -159,7 +159,8 @@ class Furniture:
         if cav is None or cav.open != "front":
             return False
         lx, ly, lz = self.local(p)
-        return abs(lx) <= self.width / 2 and abs(ly) <= self.depth / 2 and cav.z[0] <= lz <= cav.z[1]
+        t = cav.wall  # inside its walls (a point on the front, where the leaf is, is not in it)
+        return abs(lx) < self.width / 2 - t and abs(ly) < self.depth / 2 - t and cav.z[0] <= lz <= cav.z[1]
 
 
 class Leaf:

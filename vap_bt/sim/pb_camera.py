@@ -8,7 +8,9 @@ Visibility of an object is the number of its visible pixels divided by its *unoc
 size. The latter is estimated without a second render: the object's bounding box corners are
 projected into the image and the area of their convex hull (the union of the hulls of its links'
 boxes, for furniture with leaves: an open door does not make the carcass look hidden) is scaled by a
-fill factor for the object's shape (a sphere fills about half the hull of its box, a box nearly all of it). It counts
+fill factor for the object's shape (a sphere fills about half the hull of its box, a box nearly all of it).
+A room door is seen as its doorway: the pixels inside its closed leaf's outline that show the leaf
+or the room beyond (an open door is seen by seeing through it), over that outline's area. It counts
 parts outside the frame as not visible, which is what a camera would show. The estimate is a
 documented proxy, clipped to [0, 1].
 """
@@ -24,6 +26,8 @@ import pybullet as pb
 from robots.config import Camera
 from vap_bt.sim.pb_robot import quat_of
 
+#: m short of a doorway's plane a pixel's depth may end and still count as seen through it
+DOORWAY_SLACK = 0.1
 FILL = {"box": 0.9, "cylinder": 0.75, "sphere": 0.5, "furniture": 0.85, "door": 0.9}
 
 
@@ -124,6 +128,33 @@ def visibility(r: Render, counts: dict[str, int], boxes: dict[str, list[tuple[fl
         area = projected_area(r, parts) * fills.get(name, 0.8)
         out[name] = float(min(1.0, n / area)) if area > 0 else 0.0
     return out
+
+
+def doorway_pixels(r: Render, center, half, normal, bodies: set[int]) -> tuple[int, float]:
+    """How a doorway shows: the pixels inside the projection of its closed leaf's box that show
+    the leaf or reach past the doorway's plane (an open door is seen by seeing through it),
+    and that projection's whole area (pixels, parts outside the image included)."""
+    box = (*(np.asarray(center) - half), *(np.asarray(center) + half))
+    uv = _projected(r, box)
+    if uv is None:
+        return 0, 0.0
+    hull = cv2.convexHull(uv)
+    h, w = r.bodies.shape
+    inside = np.zeros((h, w), np.uint8)
+    cv2.fillConvexPoly(inside, np.clip(hull.reshape(-1, 2), -10 * w, 10 * w).astype(np.int32), 1)
+    rows, cols = np.nonzero(inside)
+    if len(rows) == 0:
+        return 0, float(cv2.contourArea(hull))
+    c = r.camera
+    rays = np.stack([(cols - c.cx) / c.fx, (rows - c.cy) / c.fy, np.ones(len(rows))], axis=1)
+    R, eye = r.pose[:3, :3], r.pose[:3, 3]
+    n = np.asarray(normal, float)
+    denom = rays @ (R.T @ n)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        z_plane = ((np.asarray(center) - eye) @ n) / denom  # optical depth of the doorway's plane
+    through = (r.depth[rows, cols] >= z_plane - DOORWAY_SLACK) & (z_plane > 0)
+    leaf = np.isin(r.bodies[rows, cols], list(bodies))
+    return int(np.count_nonzero(through | leaf)), float(cv2.contourArea(hull))
 
 
 def pixel_counts(r: Render, names: dict[int, str]) -> dict[str, int]:

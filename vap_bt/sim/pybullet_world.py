@@ -49,7 +49,7 @@ from vap_bt.scene.layout import floor_of, layout_facts
 from vap_bt.sim.captures import CaptureLog, CaptureRecord
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
-from vap_bt.sim.pb_camera import FILL, Render, look_pose, mask_extents, name_image, pixel_counts, render, visibility
+from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, look_pose, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_drivers import Drivers
 from vap_bt.sim.pb_injection import Injection
@@ -325,6 +325,9 @@ class PybulletWorld:
         r = self.wrist_view()
         names = self.scene.by_body()
         counts = pixel_counts(r, names)
+        doorways = self._doorways(r)
+        for name, (n, _) in doorways.items():  # a detector finds a doorway, open or shut
+            counts[name] = max(counts.get(name, 0), n)
         threshold = self.detector.pixel_threshold(r.camera.width, r.camera.height)
         seen = sorted(n for n, c in counts.items() if c >= threshold and self._detectable(n))
         ids = {n: i for i, n in enumerate(seen)}
@@ -333,12 +336,22 @@ class PybulletWorld:
         # the simulated VLM's record: how much of each object this frame shows (world side only)
         boxes = {n: self.truth.link_boxes(n) for n in counts if n in self.scene.things}
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
+        vis.update({n: min(1.0, k / (a * FILL["door"])) if a > 0 else 0.0 for n, (k, a) in doorways.items()})
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
                                         masks=mask_extents(r, names)))
         return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
                      intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
+
+    def _doorways(self, r: Render) -> dict[str, tuple[int, float]]:
+        """Each room door's doorway as the frame shows it (see :func:`doorway_pixels`)."""
+        out = {}
+        for t in self.scene.things.values():
+            if t.door is not None and t.hinge is not None:
+                h = t.hinge
+                out[t.name] = doorway_pixels(r, h.leaf_center, h.leaf_half, h.normal, set(t.bodies))
+        return out
 
     def _detectable(self, name: str) -> bool:
         t = self.scene.things.get(name)
