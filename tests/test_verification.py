@@ -175,6 +175,17 @@ def test_a_coin_flip_view_is_outvoted_only_by_more_settled_views():
     assert verdict([flip, sure, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
 
 
+def test_a_view_that_does_not_show_the_object_votes_nothing():
+    """halve_egg seed 1: the first view of the drawer did not show the knife (the detector found
+    no knife) and its coin flips voted "no"; the view that showed it said "yes" five times and was
+    judged sufficient. A guess about a thing out of view must not outvote that view."""
+    blind = rnd("ynnyn", False)
+    blind.unshown = ("cup",)
+    assert verdict([blind, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+    seen = rnd("ynnyn", False)  # the same answers about a view that shows the cup do count
+    assert verdict([seen, rnd("yyyyy", True)], exhausted=False) is None
+
+
 def test_with_the_budget_spent_only_views_that_all_agreed_stand():
     assert verdict([rnd("yyyyy", False), rnd("yyyyn", False)], exhausted=True) == Verdict(True, "agreed")
     assert verdict([rnd("yyyyy", False), rnd("yyynn", None)], exhausted=True).outcome == "unsettled"

@@ -227,8 +227,11 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
       view's answers agreed on it (independent views agreeing is evidence); otherwise the check
       is ``unsettled``: it does not overturn belief.
 
+    A view whose detector did not find the atom's objects (``unshown``) votes nothing: its
+    answers are guesses about a thing it does not show.
+
     Returns None while the check should keep looking."""
-    votes = [r.vote for r in rounds if r.vote is not None]
+    votes = [r.vote for r in rounds if r.vote is not None and not r.unshown]
     for value in (True, False):
         settled = sum(r.settled and r.vote == value for r in rounds)
         against = sum(v != value for v in votes)
