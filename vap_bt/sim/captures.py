@@ -16,11 +16,9 @@ now, and counted as ``late`` (reported, so that it could never go unnoticed).
 A record also names the pixels its frame carries (``image_sha1``, the hash the VLM backends'
 request records use, :func:`~vap_bt.perception.backends.image.rgb_sha1`), so that a model shown
 only the image — the simulated VLM behind its HTTP endpoint, :mod:`vap_bt.sim.vlm_endpoint` —
-can find the record again (:meth:`CaptureLog.by_image`), and ``draw_key``, what the simulated
-VLM's draws are seeded by: the pixels where the frame has a picture of the scene (a model at
-temperature 0 shown the same picture and the same prompt answers the same, whichever capture it
-came from), else the frame id. A world without pixels can give its frames a :func:`frame_card`:
-a small picture of nothing but the frame's id, for a model that can only be shown images.
+can find the record again (:meth:`CaptureLog.by_image`). A world without pixels can give its
+frames a :func:`frame_card`: a small picture of nothing but the frame's id, for a model that can
+only be shown images.
 """
 
 from __future__ import annotations
@@ -50,13 +48,8 @@ class CaptureRecord:
     masks: dict[str, tuple[tuple[str, ...], float]] = field(default_factory=dict)
     #: SHA-1 of the frame's rgb array (None: the frame carries no pixels)
     image_sha1: str | None = None
-    #: what the simulated VLM's draws are seeded by ("": the frame id; pixel worlds: the pixels' hash)
-    draw_key: str = ""
     _truth: dict[Atom, bool] = field(default_factory=dict)
     late: int = 0
-
-    def __post_init__(self) -> None:
-        self.draw_key = self.draw_key or self.frame_id
 
     def holds(self, atom: Atom) -> bool:
         if atom not in self._truth:
@@ -87,9 +80,9 @@ class CaptureLog:
         return self._records.get(frame_id)
 
     def by_image(self, sha1: str) -> CaptureRecord | None:
-        """The latest record whose frame carried exactly these pixels (captures that show the
-        same pixels are taken at one moment of an unchanged world: the robot looked again from
-        where it stood)."""
+        """The latest record whose frame carried exactly these pixels. Several captures show the
+        same pixels when the robot looked again without anything moving; the executive asks about
+        a frame before it captures the next, so the latest is the one it asks about."""
         frame_id = self._by_image.get(sha1)
         return self._records.get(frame_id) if frame_id is not None else None
 

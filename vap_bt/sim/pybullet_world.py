@@ -277,9 +277,8 @@ class PybulletWorld:
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
-        pixels = rgb_sha1(r.rgb)  # the simulated VLM judges a picture: the same pixels, the same answers
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
-                                        masks=mask_extents(r, names), image_sha1=pixels, draw_key=pixels))
+                                        masks=mask_extents(r, names), image_sha1=rgb_sha1(r.rgb)))
         return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
                      intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
 

@@ -13,12 +13,9 @@ error_rate * (2 - v))`` for an object in the frame — the base rate when fully 
 twice that when barely — and 0.5 when it is not in the frame (a guess). Each answer comes from a
 latent score ``z = ±mu(v) + N(0, 1)`` (+ when the truth is yes), answered yes iff ``z > 0``, with
 ``mu(v) = Phi^-1(1 - p(v))``: so answers are wrong exactly at the rate ``p(v)``, each query an
-independent draw seeded by the run's seed, what the frame shows and the prompt (answers do not
-depend on the order in which concurrent questions arrive). What the frame shows is its pixels
-where it has any (the record's ``draw_key``, :mod:`vap_bt.sim.captures`): one question asked
-twice about the same picture gets one answer, as from a model at temperature 0 — also when the
-robot captured that picture twice without anything moving, which a model cannot tell apart. A
-frame without pixels (the symbolic world) is keyed by its id.
+independent draw seeded by the run's seed, the frame and the prompt (answers do not depend on the
+order in which concurrent questions arrive; one question asked twice about one frame gets one
+answer, as from a model at temperature 0).
 
 **Token probabilities.** Every answer carries the probability the model gives it,
 ``sigmoid(4 |z|)``: a model's probabilities say something about whether it is right — its
@@ -96,7 +93,7 @@ class SimVLM:
         """The answer to ``query`` about the capture ``record`` describes (as :meth:`ask`, for a
         caller that found the record itself: the HTTP endpoint, from the image it was shown)."""
         v = self._visibility(query, record)
-        rng = random.Random(f"{self.seed}|{record.draw_key}|{query.kind}|{query.prompt}")
+        rng = random.Random(f"{self.seed}|{record.frame_id}|{query.kind}|{query.prompt}")
         if query.kind == "choice":
             choice = self._direction(query, record, v, rng)
             return Answer(choice, choice)

@@ -132,7 +132,7 @@ class SymbolicWorld:
         vis = {o: v for o in self.task.objects if (v := self._visibility_of(o, o in targets)) > 0.0}
         self._frames += 1
         frame_id = f"sym-{self.seed}-{self._frames}"
-        card = frame_card(frame_id) if self.frame_cards else None  # a card shows no scene: draws stay by id
+        card = frame_card(frame_id) if self.frame_cards else None
         self.captures.add(CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick,
                                         image_sha1=rgb_sha1(card) if card is not None else None))
         dets = tuple(self._detect(o) for o in sorted(vis) if self._detectable(o)

@@ -14,9 +14,10 @@ model needs it:
 * **which capture** — the image is decoded and its pixels hashed; the world's capture log knows
   which capture carried exactly those pixels (:meth:`~vap_bt.sim.captures.CaptureLog.by_image`).
   PNG is lossless, so the pixels are the camera's to the last bit; an image encoded lossily
-  (JPEG) does not match and is an unknown image. Frames with the same pixels were taken at one
-  moment of an unchanged world, and the simulated model's draws are keyed by the pixels
-  (:mod:`vap_bt.sim.sim_vlm`), so which of them is found makes no difference;
+  (JPEG) does not match and is an unknown image. Several captures carry the same pixels when
+  the robot looks again without anything having moved (consecutive checks from one pose, a
+  viewpoint move that failed); the latest of them is taken, which is the one being asked about:
+  the executive asks all of a frame's questions before it captures the next;
 * **which question** — the prompt is read back to its purpose and atom with the executive's own
   wording (:class:`~vap_bt.perception.lookup.QuestionLookup` over the perception profile the run
   uses) and rebuilt as the :class:`~vap_bt.perception.vlm.Query` the executive asked; unless the
