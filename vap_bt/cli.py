@@ -113,7 +113,8 @@ def _run(args, stdout) -> int:
                               max_replans=args.max_replans, planner=args.planner, transport=args.transport,
                               early_stop=args.early_stop or None, protocol=args.protocol,
                               viewpoints=args.viewpoints, vlm=args.vlm, vlm_url=args.vlm_url,
-                              vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction)
+                              vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction,
+                              vlm_latency=args.vlm_latency, vlm_logprobs=False if args.no_logprobs else None)
     check_config(task, cfg)  # bad options in one line, before the first progress line
     progress = _progress(args.quiet)
     progress(f"task {task.name}: {task.spec.instruction or task.planning.source} "
@@ -263,9 +264,15 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--seed", type=int, default=0)
     sr.add_argument("--verify", choices=["both", "pre", "eff", "none"])
     sr.add_argument("--budget", type=int, help="viewpoint budget K")
-    sr.add_argument("--vlm", choices=["sim", "openai", "gemini"],
-                    help="sim (default, offline): the world-side simulated VLM; openai: any OpenAI-compatible "
-                         "server (key from OPENAI_API_KEY); gemini: Gemini's REST API (key from GEMINI_API_KEY)")
+    sr.add_argument("--vlm", choices=["sim", "sim-http", "openai", "gemini"],
+                    help="sim (default, offline): the world-side simulated VLM; sim-http: the same model behind a "
+                         "local OpenAI-compatible endpoint, asked through the openai client; openai: any "
+                         "OpenAI-compatible server (key from OPENAI_API_KEY); gemini: Gemini's REST API (key from "
+                         "GEMINI_API_KEY)")
+    sr.add_argument("--vlm-latency", type=float, metavar="SECONDS",
+                    help="sim-http: seconds the endpoint adds to every answer (a model's inference time)")
+    sr.add_argument("--no-logprobs", action="store_true",
+                    help="HTTP backends: do not ask for token log-probabilities (the lean protocol then votes)")
     sr.add_argument("--vlm-url", help="API root of the openai/gemini backend, e.g. http://127.0.0.1:8000/v1")
     sr.add_argument("--vlm-model", help="model name for the openai/gemini backend (openai: the served model)")
     sr.add_argument("--vlm-error", type=float, help="symbolic VLM per-query error rate (default 0.05)")

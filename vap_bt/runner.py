@@ -62,10 +62,12 @@ class RunConfig:
     max_replans: int = 10
     max_seconds: float = 900.0
     injection: bool = True
-    vlm: str = "sim"  # sim (world-side, offline) | openai | gemini (see make_vlm)
+    vlm: str = "sim"  # sim (world-side, offline) | sim-http | openai | gemini (see make_vlm)
     vlm_url: str | None = None  # openai/gemini: the API root (--vlm-url)
     vlm_model: str | None = None  # openai/gemini: the model name (--vlm-model)
     vlm_error: float = 0.05
+    vlm_latency: float = 0.0  # sim-http: seconds the endpoint adds to every answer (benchmarks)
+    vlm_logprobs: bool = True  # HTTP backends: ask for token log-probabilities
     miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
     relation_error: float = _DETECTOR.relation_error  # symbolic relation detector
     transport: str = "inproc"
@@ -121,21 +123,45 @@ def make_camera(robot) -> Any:
     return ViewService(kit_for(robot)) if has_drivers(robot) else robot
 
 
-def make_vlm(task: Task, world: World, cfg: RunConfig):
+VLMS = ("sim", "sim-http", *HTTP_BACKENDS)
+
+
+def _sim_vlm(task: Task, world: World, cfg: RunConfig):
+    from vap_bt.sim.sim_vlm import SimVLM
+
+    rooms = frozenset(o for o, t in task.planning.objects.items() if t == "room")
+    return SimVLM(world.captures.get, cfg.vlm_error, seed=cfg.seed, rooms=rooms)
+
+
+def make_endpoint(task: Task, world: World, cfg: RunConfig):
+    """For ``--vlm sim-http``: the simulated VLM served on the world's side as a local
+    OpenAI-compatible endpoint (:mod:`vap_bt.sim.vlm_endpoint`), started; else None. A symbolic
+    world's frames then carry a picture of their id, since the endpoint is shown only images."""
+    if cfg.vlm != "sim-http":
+        return None
+    from vap_bt.sim.vlm_endpoint import SimVLMEndpoint
+
+    if hasattr(world, "frame_cards"):
+        world.frame_cards = True
+    return SimVLMEndpoint(_sim_vlm(task, world, cfg), world.captures, latency_s=cfg.vlm_latency).start()
+
+
+def make_vlm(task: Task, world: World, cfg: RunConfig, endpoint=None):
     """The VLM the executive asks: ``sim``, the world-side simulated one reading the world's
     capture records (served beside the camera), or a real backend over HTTP — ``openai`` (any
     OpenAI-compatible server) or ``gemini`` — at ``cfg.vlm_url`` with ``cfg.vlm_model``, its key
     from ``OPENAI_API_KEY`` / ``GEMINI_API_KEY``. A real backend is the executive's own client: it
     is shown the frames' pixels (a frame without any, as in the symbolic world, is an abstention
-    without a request) and is never served from the world's side."""
+    without a request) and is never served from the world's side. ``sim-http`` is the ``openai``
+    client talking to the simulated VLM's ``endpoint`` (:func:`make_endpoint`)."""
     if cfg.vlm == "sim":
-        from vap_bt.sim.sim_vlm import SimVLM
-
-        rooms = frozenset(o for o, t in task.planning.objects.items() if t == "room")
-        return SimVLM(world.captures.get, cfg.vlm_error, seed=cfg.seed, rooms=rooms)
+        return _sim_vlm(task, world, cfg)
+    top_logprobs = 5 if cfg.vlm_logprobs else 0
+    if cfg.vlm == "sim-http":
+        return make_backend("openai", endpoint.url, endpoint.model, api_key="", top_logprobs=top_logprobs)
     if cfg.vlm in HTTP_BACKENDS:
-        return make_backend(cfg.vlm, cfg.vlm_url, cfg.vlm_model)
-    raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} (sim, {', '.join(HTTP_BACKENDS)})")
+        return make_backend(cfg.vlm, cfg.vlm_url, cfg.vlm_model, top_logprobs=top_logprobs)
+    raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} ({', '.join(VLMS)})")
 
 
 @dataclass(frozen=True)
@@ -152,11 +178,15 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
     if cfg.world == "pybullet" and task.spec.scene is None:  # a PDDL problem has no geometry to build
         raise InputError("--world", "the pybullet world builds a household from a task file's scene:; "
                                     "this task has a PDDL problem instead: run it --world symbolic")
-    if cfg.vlm not in ("sim", *HTTP_BACKENDS):
-        raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} (sim, {', '.join(HTTP_BACKENDS)})")
-    if cfg.vlm == "sim" and (cfg.vlm_url or cfg.vlm_model):
+    if cfg.vlm not in VLMS:
+        raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} ({', '.join(VLMS)})")
+    if cfg.vlm in ("sim", "sim-http") and (cfg.vlm_url or cfg.vlm_model):
         raise InputError("--vlm-url" if cfg.vlm_url else "--vlm-model",
-                         "only for a real backend (--vlm openai|gemini); the default sim VLM has neither")
+                         f"only for a real backend (--vlm openai|gemini); the {cfg.vlm} VLM has neither")
+    if cfg.vlm_latency and cfg.vlm != "sim-http":
+        raise InputError("--vlm-latency", "only for --vlm sim-http (the simulated VLM behind its endpoint)")
+    if not cfg.vlm_latency >= 0:
+        raise InputError("--vlm-latency", f"must be >= 0 seconds, got {cfg.vlm_latency}")
     return goal_words(task, cfg)
 
 
@@ -231,11 +261,14 @@ class Session:
         self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
         self.world = make_world(self.task, self.cfg)
         self.skills = make_skills(self.task, self.world)
-        self.vlm = make_vlm(self.task, self.world, self.cfg)
+        self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
+        self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
         self._world_side_vlm = self.cfg.vlm == "sim"  # a real backend is the executive's own client
         self._goal_parser: GoalParser | None = None
         self._first_request = 0
         self.profile = make_profile(self.task, self.vlm)
+        if self.endpoint is not None:  # the served model reads questions in the words the executive asks
+            self.endpoint.read_questions(self.profile, self.task.planning)
         self._embedded = None
         if self.cfg.transport == "zenoh":
             from vap_bt.transport.embedded import EmbeddedTransport
@@ -248,6 +281,8 @@ class Session:
         self.world.reset(cfg.seed)
         if self._world_side_vlm:  # a real model has no seed: it answers at temperature 0
             self.vlm.reseed(cfg.seed)
+        if self.endpoint is not None:
+            self.endpoint.reset(cfg.seed)
         self._first_request = len(getattr(self.vlm, "requests", ()))
         skills, robot, vlm = self._transport()
         metered = MeteredVLM(vlm)
@@ -304,6 +339,8 @@ class Session:
             self._embedded.close()
         if not self._world_side_vlm:
             self.vlm.close()
+        if self.endpoint is not None:
+            self.endpoint.close()
         self.world.close()
 
     def _transport(self):
@@ -350,7 +387,10 @@ class Session:
             "world": {"name": self.world.name, "injection": self.world_situations(),
                       "detector": detector.describe() if detector is not None else None},
             "goal_parsing": self._goal_parsing_report(),
-            "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts), **self._requests()},
+            "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts),
+                    "wall_s": round(vlm.wall_s, 4), "query_s": round(vlm.seconds, 4),
+                    **({"served": self.endpoint.describe()} if self.endpoint is not None else {}),
+                    **self._requests()},
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
                            "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
                            "verifications": {"n": len(self._verified), "correct": sum(self._verified),

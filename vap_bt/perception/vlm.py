@@ -16,6 +16,7 @@ real backends answer text prompts; the simulated VLM does not parse goals.
 from __future__ import annotations
 
 import re
+import threading
 import time
 from dataclasses import dataclass
 from typing import Callable, Literal, Protocol, TypeVar, runtime_checkable
@@ -144,13 +145,21 @@ def parse_choice(text: str, options: tuple[str, ...]) -> str | None:
 
 
 class MeteredVLM:
-    """Wraps a VLM to count queries and their time per purpose (for reports and benchmarks)."""
+    """Wraps a VLM to count queries and their time per purpose (for reports and benchmarks).
+
+    ``seconds`` adds up every query's own time; ``wall_s`` is the wall time during which at least
+    one query was in flight — what the robot spent waiting on the model, which concurrent
+    questions shorten and ``seconds`` does not show. Safe to call from several threads."""
 
     def __init__(self, inner: VLM) -> None:
         self.inner = inner
         self.name = inner.name
         self.counts: dict[str, int] = {}
         self.seconds = 0.0
+        self._busy_s = 0.0
+        self._in_flight = 0
+        self._since = 0.0  # when the current stretch of queries in flight began
+        self._lock = threading.Lock()
 
     def ask(self, query: Query, frame: Frame) -> Answer:
         return self._metered(query.purpose, lambda: self.inner.ask(query, frame))
@@ -164,11 +173,26 @@ class MeteredVLM:
 
     def _metered(self, purpose: str, call: Callable[[], T]) -> T:
         t0 = time.perf_counter()
+        with self._lock:
+            if not self._in_flight:
+                self._since = t0
+            self._in_flight += 1
         try:
             return call()
         finally:
-            self.seconds += time.perf_counter() - t0
-            self.counts[purpose] = self.counts.get(purpose, 0) + 1
+            t1 = time.perf_counter()
+            with self._lock:
+                self.seconds += t1 - t0
+                self.counts[purpose] = self.counts.get(purpose, 0) + 1
+                self._in_flight -= 1
+                if not self._in_flight:
+                    self._busy_s += t1 - self._since
+
+    @property
+    def wall_s(self) -> float:
+        """Wall time with at least one query in flight, so far."""
+        with self._lock:
+            return self._busy_s + (time.perf_counter() - self._since if self._in_flight else 0.0)
 
     @property
     def total(self) -> int:

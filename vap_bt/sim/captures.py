@@ -12,13 +12,23 @@ after it is taken, before the world moves again, so a value read then is the val
 A record also stores the world's step counter at capture; a question about a frame after the
 world has stepped is answered from what was read before, or — if nothing was — from the truth
 now, and counted as ``late`` (reported, so that it could never go unnoticed).
+
+A record also names the pixels its frame carries (``image_sha1``, the hash the VLM backends'
+request records use, :func:`~vap_bt.perception.backends.image.rgb_sha1`), so that a model shown
+only the image — the simulated VLM behind its HTTP endpoint, :mod:`vap_bt.sim.vlm_endpoint` —
+can find the record again (:meth:`CaptureLog.by_image`). A world without pixels can give its
+frames a :func:`frame_card`: a small picture of nothing but the frame's id, for a model that can
+only be shown images.
 """
 
 from __future__ import annotations
 
+import hashlib
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Callable
+
+import numpy as np
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim.oracle import Oracle
@@ -36,6 +46,8 @@ class CaptureRecord:
     #: object -> (image edges its mask touches: "left", "right", "top", "bottom"; share of the image
     #: it covers) — pixel worlds only
     masks: dict[str, tuple[tuple[str, ...], float]] = field(default_factory=dict)
+    #: SHA-1 of the frame's rgb array (None: the frame carries no pixels)
+    image_sha1: str | None = None
     _truth: dict[Atom, bool] = field(default_factory=dict)
     late: int = 0
 
@@ -48,23 +60,47 @@ class CaptureRecord:
 
 
 class CaptureLog:
-    """The last ``size`` capture records, by frame id."""
+    """The last ``size`` capture records, by frame id and by the hash of their pixels."""
 
     def __init__(self, size: int = 512) -> None:
         self.size = size
         self._records: OrderedDict[str, CaptureRecord] = OrderedDict()
+        self._by_image: dict[str, str] = {}  # image hash -> the latest frame id with those pixels
 
     def add(self, record: CaptureRecord) -> None:
         self._records[record.frame_id] = record
+        if record.image_sha1 is not None:
+            self._by_image[record.image_sha1] = record.frame_id
         while len(self._records) > self.size:
-            self._records.popitem(last=False)
+            _, old = self._records.popitem(last=False)
+            if old.image_sha1 is not None and self._by_image.get(old.image_sha1) == old.frame_id:
+                del self._by_image[old.image_sha1]
 
     def get(self, frame_id: str) -> CaptureRecord | None:
         return self._records.get(frame_id)
 
+    def by_image(self, sha1: str) -> CaptureRecord | None:
+        """The latest record whose frame carried exactly these pixels. Several captures show the
+        same pixels when the robot looked again without anything moving; the executive asks about
+        a frame before it captures the next, so the latest is the one it asks about."""
+        frame_id = self._by_image.get(sha1)
+        return self._records.get(frame_id) if frame_id is not None else None
+
     def clear(self) -> None:
         self._records.clear()
+        self._by_image.clear()
 
     @property
     def late(self) -> int:
         return sum(r.late for r in self._records.values())
+
+
+#: side of a :func:`frame_card` in pixels
+CARD_SIZE = 8
+
+
+def frame_card(frame_id: str) -> np.ndarray:
+    """A ``CARD_SIZE`` square RGB picture of nothing but ``frame_id`` (its SHAKE-256 bytes as
+    pixels): distinct frames get distinct cards. It shows nothing of the scene."""
+    pixels = hashlib.shake_256(frame_id.encode()).digest(CARD_SIZE * CARD_SIZE * 3)
+    return np.frombuffer(pixels, np.uint8).reshape(CARD_SIZE, CARD_SIZE, 3).copy()

@@ -46,6 +46,7 @@ from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState, quat_xyzw
 from vap_bt.scene.layout import floor_of, layout_facts
+from vap_bt.perception.backends.image import rgb_sha1
 from vap_bt.sim.captures import CaptureLog, CaptureRecord
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
@@ -340,7 +341,7 @@ class PybulletWorld:
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
-                                        masks=mask_extents(r, names)))
+                                        masks=mask_extents(r, names), image_sha1=rgb_sha1(r.rgb)))
         return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
                      intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
 

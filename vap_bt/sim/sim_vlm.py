@@ -87,8 +87,13 @@ class SimVLM:
         record = self.records(frame.frame_id)
         if record is None:
             return Answer("", None)
+        return self.answer(query, record)
+
+    def answer(self, query: Query, record: CaptureRecord) -> Answer:
+        """The answer to ``query`` about the capture ``record`` describes (as :meth:`ask`, for a
+        caller that found the record itself: the HTTP endpoint, from the image it was shown)."""
         v = self._visibility(query, record)
-        rng = random.Random(f"{self.seed}|{frame.frame_id}|{query.kind}|{query.prompt}")
+        rng = random.Random(f"{self.seed}|{record.frame_id}|{query.kind}|{query.prompt}")
         if query.kind == "choice":
             choice = self._direction(query, record, v, rng)
             return Answer(choice, choice)

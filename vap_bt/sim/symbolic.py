@@ -18,7 +18,9 @@ Its robot interfaces are the same as a pixel world's, without the pixels:
   :class:`~vap_bt.sim.detector.DetectorModel`: objects in view, each missed at its miss rate, with
   the location relations its relation detector reports (wrong support at its error rate);
 * **viewpoints** — going to look at a thing moves the robot there (it stands at it and sees it),
-  in any room the open doors lead to;
+  in any room the open doors lead to (a frame has no pixels, unless ``frame_cards`` is set: then
+  each carries a tiny picture of its own id, :func:`~vap_bt.sim.captures.frame_card`, so that a
+  model served over HTTP, which is shown only images, can tell the frames apart);
 * **body** — the room the robot is in and whether the gripper holds something;
 * **site map** — rooms, floors, doors, furniture and the rigid facts of the task.
 """
@@ -34,7 +36,8 @@ from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.scene.layout import floor_of
-from vap_bt.sim.captures import CaptureLog, CaptureRecord
+from vap_bt.perception.backends.image import rgb_sha1
+from vap_bt.sim.captures import CaptureLog, CaptureRecord, frame_card
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.situations import SituationModel, SituationSpec
@@ -61,6 +64,7 @@ class SymbolicWorld:
         self.situations = situations or SituationModel(enabled=False)
         self.detector = detector or DetectorModel()
         self.captures = CaptureLog()
+        self.frame_cards = False  # frames carry a picture of their id (for the sim VLM served over HTTP)
         self.oracle = FunctionOracle(self._holds, self.injected)
         self._map = _site_map(task)
         self.reset(seed)
@@ -128,10 +132,12 @@ class SymbolicWorld:
         vis = {o: v for o in self.task.objects if (v := self._visibility_of(o, o in targets)) > 0.0}
         self._frames += 1
         frame_id = f"sym-{self.seed}-{self._frames}"
-        self.captures.add(CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick))
+        card = frame_card(frame_id) if self.frame_cards else None
+        self.captures.add(CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick,
+                                        image_sha1=rgb_sha1(card) if card is not None else None))
         dets = tuple(self._detect(o) for o in sorted(vis) if self._detectable(o)
                      and self._detect_rng.random() >= self.detector.miss_rate)
-        return Frame(frame_id, float(self._tick), dets, aim=self._aim)
+        return Frame(frame_id, float(self._tick), dets, rgb=card, aim=self._aim)
 
     def goto_view(self, view: Viewpoint) -> bool:
         """Stand at the viewed thing (as ``find`` does), if the open doors lead to its room."""

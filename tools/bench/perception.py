@@ -1,0 +1,292 @@
+"""Verification protocols and viewpoint strategies side by side, over the same seeded episodes of every task.
+
+Every episode runs with the simulated VLM behind its local OpenAI-compatible endpoint
+(``--vlm sim-http``: the openai client end to end, the same answers as in-process), Table II
+injection on, VLM error 0.05, in-process skills. Per task and seed, one run each of
+
+* ``paper`` — the paper's Alg. 2 (every paraphrase, one after the other, then sufficiency);
+* ``lean-nolp`` — the lean protocol against a backend that returns no logprobs (the client does
+  not ask for them): early stop, questions in flight at once, reuse of unchanged atoms;
+* ``lean`` — the lean protocol with logprobs (one confident answer stands for the vote);
+* ``greedy`` — the paper's protocol with greedy viewpoints (predefined ones around the target),
+  against ``paper``'s VLM-suggested ones (the paper's H2);
+
+and, for the first ``--wall-seeds`` seeds, ``paper`` and ``lean`` again with ``--latency`` seconds
+(0.3) added by the endpoint to every request: the VLM wall time per action (time with a query in
+flight, ``vlm.wall_s`` of the report). Those reruns must be the same episodes as without the
+latency (the answers are seeded per query, not per order): the bench checks it.
+
+Figures: VLM round trips (queries) per executed action; verification accuracy against the oracle
+(the report's ``perception.verifications``: settled values that matched the world at that moment),
+pooled, with a Wilson 95 % interval; viewpoints per uncertainty resolution: over the checks whose
+first view did not decide (more than one view), the moves made in those that ended confirmed or
+contradicted. Targets are the issue's (lean without logprobs <= 1/2 and with logprobs <= 1/4 of
+the paper's round trips at equal or better accuracy; lean's VLM wall time <= 1/5 of the paper's;
+VLM-guided viewpoints <= 1.5 per resolution and below greedy).
+
+    python tools/bench/perception.py [--seeds 2] [--wall-seeds 1] [--jobs 2] [--world pybullet]
+                                     [--latency 0.3] [--tasks collect_cup,cut_lemon] [--json out.json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import multiprocessing
+import os
+import sys
+import tempfile
+import time
+import traceback
+from collections import defaultdict
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT))
+
+from vap_bt.report import versions  # noqa: E402
+
+#: name -> RunConfig overrides (besides world, seed, vlm="sim-http", transport="inproc")
+CONFIGS = {
+    "paper": {"protocol": "paper"},
+    "lean-nolp": {"protocol": "lean", "vlm_logprobs": False},
+    "lean": {"protocol": "lean"},
+    "greedy": {"protocol": "paper", "viewpoints": "greedy"},
+}
+TIMED = ("paper", "lean")  # rerun with the endpoint's latency
+LABELS = {"paper": "paper", "lean-nolp": "lean without logprobs", "lean": "lean with logprobs",
+          "greedy": "paper, greedy viewpoints"}
+
+
+@dataclass(frozen=True)
+class Unit:
+    """One episode to run: a task file, a seed, a configuration, the endpoint's added latency."""
+
+    task: str
+    seed: int
+    config: str
+    world: str
+    latency: float = 0.0
+    vlm: str = "sim-http"  # "sim": the in-process model, to check that the endpoint gives the same episodes
+
+    @property
+    def name(self) -> str:
+        return self.config + (f"@{self.latency:g}s" if self.latency else "") + (" in-process" if self.vlm == "sim" else "")
+
+
+def _own_directory() -> None:
+    """Each worker in a directory of its own: Fast Downward's translator writes ``output.sas`` into
+    the working directory, and two planners sharing one read each other's tasks."""
+    os.chdir(tempfile.mkdtemp(prefix="vap-bench-"))
+
+
+def run(unit: Unit) -> dict:
+    """Run one episode in this (worker) process; a crash is a row saying so, not the end of the bench."""
+    try:
+        return _run(unit)
+    except Exception:  # noqa: BLE001 - reported in the table, with its traceback in the JSON
+        return {"task": unit.task, "seed": unit.seed, "config": unit.config, "latency": unit.latency,
+                "vlm": unit.vlm, "run_s": 0.0, "error": traceback.format_exc()}
+
+
+def _run(unit: Unit) -> dict:
+    from vap_bt import taskfile
+    from vap_bt.runner import RunConfig, Session
+
+    task = taskfile.load(ROOT / "trees" / f"{unit.task}.yaml")
+    cfg = RunConfig.from_task(task, world=unit.world, vlm=unit.vlm, transport="inproc", vlm_error=0.05,
+                              vlm_latency=unit.latency, **CONFIGS[unit.config])
+    t0 = time.perf_counter()
+    session = Session(task, cfg)
+    try:
+        rep = session.episode(unit.seed)
+    finally:
+        session.close()
+    return {"task": unit.task, "seed": unit.seed, "config": unit.config, "latency": unit.latency, "vlm": unit.vlm,
+            "run_s": round(time.perf_counter() - t0, 2), **figures(rep)}
+
+
+def figures(rep: dict) -> dict:
+    """What the bench reads off one report."""
+    survey_frames = {r["view"] for s in rep["perception"]["surveys"] for st in s["states"] for r in st["rounds"]}
+    requests = rep["vlm"].get("requests", [])  # the in-process model keeps no request records
+    survey = [r for r in requests if r["frame_id"] in survey_frames]
+    uncertain = [v for v in rep["verifications"] if v["views"] > 1]
+    resolved = [v for v in uncertain if v["outcome"] in ("confirmed", "contradicted")]
+    pv = rep["perception"]["verifications"]
+    return {
+        "success": bool(rep["success"] and rep["goal_satisfied"]), "claimed": bool(rep["success"]),
+        "goal_satisfied": bool(rep["goal_satisfied"]), "reason": rep["reason"],
+        "actions": len(rep["actions_executed"]), "queries": rep["vlm_queries"],
+        "survey_queries": len(survey), "by_purpose": rep["vlm"]["by_purpose"],
+        "unanswered": sum(r["outcome"] != "answer" for r in requests),
+        "served": rep["vlm"].get("served", {}).get("counts"),
+        "verified": pv["n"], "correct": pv["correct"], "unsettled": pv["unsettled"], "reused": pv["reused"],
+        "vlm_wall_s": rep["vlm"]["wall_s"], "survey_wall_s": round(sum(r["latency_s"] for r in survey), 4),
+        "uncertain": len(uncertain), "resolved": len(resolved),
+        "moves_resolved": sum(v["views"] - 1 for v in resolved), "moves_uncertain": sum(v["views"] - 1 for v in uncertain),
+        "fingerprint": json.dumps([rep["verifications"], [p["actions"] for p in rep["plans"]]], sort_keys=True),
+        "wall_s": rep["wall_s"],
+    }
+
+
+def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
+    if n == 0:
+        return 0.0, 1.0
+    p = k / n
+    mid, half = (p + z * z / (2 * n)), z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
+    return (mid - half) / (1 + z * z / n), (mid + half) / (1 + z * z / n)
+
+
+def pooled(rows: list[dict]) -> dict:
+    s = lambda key: sum(r[key] for r in rows)  # noqa: E731
+    actions = s("actions")
+    lo, hi = wilson(s("correct"), s("verified"))
+    return {"episodes": len(rows), "success": s("success"), "claimed_but_denied": sum(r["claimed"] and not r["goal_satisfied"] for r in rows),
+            "actions": actions, "queries": s("queries"), "survey_queries": s("survey_queries"),
+            "per_action": s("queries") / actions if actions else math.nan,
+            "checks_per_action": (s("queries") - s("survey_queries")) / actions if actions else math.nan,
+            "verified": s("verified"), "correct": s("correct"), "accuracy": s("correct") / s("verified") if s("verified") else math.nan,
+            "accuracy_95": [round(lo, 4), round(hi, 4)], "unsettled": s("unsettled"), "reused": s("reused"),
+            "unanswered": s("unanswered"),
+            "vlm_wall_s": s("vlm_wall_s"), "wall_per_action": s("vlm_wall_s") / actions if actions else math.nan,
+            "checks_wall_per_action": (s("vlm_wall_s") - s("survey_wall_s")) / actions if actions else math.nan,
+            "uncertain": s("uncertain"), "resolved": s("resolved"),
+            "viewpoints_per_resolution": s("moves_resolved") / s("resolved") if s("resolved") else math.nan,
+            "moves_per_resolution_all": s("moves_uncertain") / s("resolved") if s("resolved") else math.nan}
+
+
+def units(tasks: list[str], args) -> list[Unit]:
+    timed = [Unit(t, seed, c, args.world, args.latency) for seed in range(args.wall_seeds) for c in TIMED for t in tasks]
+    plain = [Unit(t, seed, c, args.world) for seed in range(args.seeds) for c in CONFIGS for t in tasks]
+    checks = [Unit(t, 0, c, args.world, vlm="sim") for c in TIMED for t in tasks] if args.check else []
+    return timed + plain + checks  # the long ones first, so that the pool ends together
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", type=int, default=2, help="seeds per task for round trips, accuracy, viewpoints")
+    ap.add_argument("--wall-seeds", type=int, default=1, help="seeds per task rerun with the latency (paper, lean)")
+    ap.add_argument("--latency", type=float, default=0.3, help="seconds the endpoint adds to every request")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--world", choices=["pybullet", "symbolic"], default="pybullet")
+    ap.add_argument("--tasks", help="comma-separated task names (default: every file in trees/)")
+    ap.add_argument("--json", help="write the rows and the summary here")
+    ap.add_argument("--check", action="store_true",
+                    help="also run seed 0 of paper and lean with the in-process sim VLM: the same episodes?")
+    args = ap.parse_args(argv)
+    tasks = args.tasks.split(",") if args.tasks else sorted(p.stem for p in (ROOT / "trees").glob("*.yaml"))
+    todo = units(tasks, args)
+    rows = collect(todo, args.jobs)
+    summary = summarise(rows, args)
+    print_summary(summary, args)
+    if args.json:
+        Path(args.json).write_text(json.dumps({"command": " ".join(["python", *sys.argv]), "args": vars(args),
+                                               "versions": versions(), "summary": summary, "rows": rows},
+                                              indent=1, default=str))
+    return 0
+
+
+def collect(todo: list[Unit], jobs: int) -> list[dict]:
+    rows, durations = [], defaultdict(list)
+    t0 = time.perf_counter()
+    with ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn"), initializer=_own_directory) as pool:
+        pending = {pool.submit(run, u): u for u in todo}
+        left = list(todo)
+        for f in as_completed(pending):
+            u = pending[f]
+            left.remove(u)
+            row = f.result()
+            rows.append(row)
+            if "error" in row:
+                print(f"  {u.task} seed {u.seed} {u.name} CRASHED: {row['error'].splitlines()[-1]}", file=sys.stderr)
+                continue
+            durations[u.name].append(row["run_s"])
+            elapsed = time.perf_counter() - t0
+            eta = sum(_expected(durations, x.name) for x in left) / jobs
+            print(f"[{len(rows)}/{len(todo)} episodes, {len(rows) / elapsed * 60:.1f}/min, about {eta / 60:.1f} min left]"
+                  f"  {u.task} seed {u.seed} {u.name}: {row['queries']} queries, {row['actions']} actions, "
+                  f"{row['correct']}/{row['verified']} correct, {'ok' if row['success'] else row['reason'][:40]}",
+                  file=sys.stderr, flush=True)
+    return rows
+
+
+def _expected(durations: dict[str, list[float]], name: str) -> float:
+    """An episode's expected duration: the mean of those of its kind so far, else of all so far."""
+    done = durations.get(name) or [d for ds in durations.values() for d in ds]
+    return sum(done) / len(done) if done else 0.0
+
+
+def summarise(all_rows: list[dict], args) -> dict:
+    rows = [r for r in all_rows if "error" not in r and r["vlm"] == "sim-http"]
+    plain = {c: pooled([r for r in rows if r["config"] == c and not r["latency"]]) for c in CONFIGS}
+    timed = {c: pooled([r for r in rows if r["config"] == c and r["latency"]]) for c in TIMED}
+    key = lambda r: (r["task"], r["seed"], r["config"])  # noqa: E731
+    base = {key(r): r["fingerprint"] for r in rows if not r["latency"]}
+    reruns = [r for r in rows if r["latency"] and key(r) in base]
+    same = sum(base[key(r)] == r["fingerprint"] for r in reruns)
+    inproc = [r for r in all_rows if "error" not in r and r["vlm"] == "sim" and key(r) in base]
+    same_inproc = sum(base[key(r)] == r["fingerprint"] for r in inproc)
+    p, nolp, lean, greedy = (plain[c] for c in ("paper", "lean-nolp", "lean", "greedy"))
+    ratio = lambda a, b: a / b if b else math.nan  # noqa: E731
+    return {
+        "plain": plain, "timed": timed, "latency_reruns_same": [same, len(reruns)],
+        "in_process_same": [same_inproc, len(inproc)],
+        "crashed": [f"{r['task']} seed {r['seed']} {r['config']}" for r in all_rows if "error" in r],
+        "ratios": {"lean_nolp_round_trips": ratio(nolp["per_action"], p["per_action"]),
+                   "lean_round_trips": ratio(lean["per_action"], p["per_action"]),
+                   "lean_wall": ratio(timed["lean"]["wall_per_action"], timed["paper"]["wall_per_action"]),
+                   "lean_checks_wall": ratio(timed["lean"]["checks_wall_per_action"],
+                                             timed["paper"]["checks_wall_per_action"])},
+        "targets": {
+            "lean_nolp_round_trips<=1/2": ratio(nolp["per_action"], p["per_action"]) <= 0.5,
+            "lean_round_trips<=1/4": ratio(lean["per_action"], p["per_action"]) <= 0.25,
+            "lean_nolp_accuracy>=paper": nolp["accuracy"] >= p["accuracy"],
+            "lean_accuracy>=paper": lean["accuracy"] >= p["accuracy"],
+            "lean_wall<=1/5": ratio(timed["lean"]["wall_per_action"], timed["paper"]["wall_per_action"]) <= 0.2,
+            "vlm_viewpoints<=1.5": p["viewpoints_per_resolution"] <= 1.5,
+            "vlm_viewpoints<greedy": p["viewpoints_per_resolution"] < greedy["viewpoints_per_resolution"]},
+    }
+
+
+def print_summary(s: dict, args) -> None:
+    plain, timed = s["plain"], s["timed"]
+    print(f"\n{args.world}, {args.seeds} seed(s) per task; VLM wall time over {args.wall_seeds} seed(s) at "
+          f"{args.latency * 1000:.0f} ms per request")
+    print(f"{'':26s} {'episodes':>8s} {'ok':>4s} {'actions':>7s} {'RT/action':>9s} {'checks':>7s} "
+          f"{'verified':>8s} {'accuracy':>8s} {'95% interval':>15s} {'unsettled':>9s} {'reused':>6s}")
+    for c, label in LABELS.items():
+        x = plain[c]
+        print(f"{label:26s} {x['episodes']:8d} {x['success']:4d} {x['actions']:7d} {x['per_action']:9.2f} "
+              f"{x['checks_per_action']:7.2f} {x['verified']:8d} {x['accuracy']:8.4f} "
+              f"{x['accuracy_95'][0]:7.3f}-{x['accuracy_95'][1]:.3f} {x['unsettled']:9d} {x['reused']:6d}")
+    r = s["ratios"]
+    print(f"round trips per action vs paper: lean without logprobs {r['lean_nolp_round_trips']:.3f}, "
+          f"with logprobs {r['lean_round_trips']:.3f}")
+    print(f"\nVLM wall time per action at {args.latency * 1000:.0f} ms/request "
+          f"(checks only: without the survey's sequential questions):")
+    for c in TIMED:
+        x = timed[c]
+        print(f"  {LABELS[c]:24s} {x['wall_per_action']:7.2f} s   checks only {x['checks_wall_per_action']:7.2f} s   "
+              f"({x['episodes']} episodes, {x['actions']} actions, {x['queries']} queries)")
+    print(f"  lean / paper: {r['lean_wall']:.3f}  (checks only {r['lean_checks_wall']:.3f}); reruns with latency the "
+          f"same episodes as without: {s['latency_reruns_same'][0]}/{s['latency_reruns_same'][1]}")
+    if s["in_process_same"][1]:
+        print(f"  in-process sim VLM runs the same episodes as through the endpoint: "
+              f"{s['in_process_same'][0]}/{s['in_process_same'][1]}")
+    print("\nviewpoints per uncertainty resolution (paper protocol; checks whose first view did not decide):")
+    for c in ("paper", "greedy"):
+        x = plain[c]
+        print(f"  {'VLM-guided' if c == 'paper' else 'greedy':12s} {x['viewpoints_per_resolution']:5.2f} moves per "
+              f"resolution ({x['resolved']} resolved of {x['uncertain']} uncertain; all moves / resolutions "
+              f"{x['moves_per_resolution_all']:.2f})")
+    if s["crashed"]:
+        print(f"\ncrashed (left out above): {', '.join(s['crashed'])}")
+    print("\ntargets: " + ", ".join(f"{k} {'met' if v else 'NOT met'}" for k, v in s["targets"].items()))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
