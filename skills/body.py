@@ -33,6 +33,9 @@ RATE_HZ = 60.0
 PATH_STEP = 0.05
 #: rad inside the joint limits a waypoint turned by a whole turn must stay
 UNWIND_MARGIN = 0.5
+#: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
+#: simulated arm's shapes carry a collision margin the model's cylinders do not
+ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01}
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
 IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
@@ -95,7 +98,7 @@ class Body:
             return None
         local = self._scene.transformed(np.linalg.inv(self.base_T(np.array([*base_pose, *np.zeros(6)]))))
         if self._checker is None:
-            self._checker = CollisionChecker(self.kin_arm, local)
+            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE)
         else:
             self._checker.place_boxes(local.poses)
         return self._checker

@@ -8,7 +8,8 @@ construction), and the link pairs the robot's YAML lists as allowed (the two fin
 Scene obstacles are boxes given as arrays, in the chain's world frame (for the arm chain: the base
 footprint frame; :meth:`SceneBoxes.transformed` moves world boxes there). They are checked against
 every robot shape except those fixed to the chain's root (for the arm chain that is the base body,
-which the navigation layer keeps clear, not IK).
+which the navigation layer keeps clear, not IK). ``scene_margins`` keeps named links further
+off the scene than the hand, which must come close to what it works on.
 """
 
 from __future__ import annotations
@@ -62,17 +63,21 @@ def _link_of(obj: pin.GeometryObject) -> str:
 class CollisionChecker:
     """Answers "is this configuration in collision?" for one chain and one set of scene boxes."""
 
-    def __init__(self, kin: Kinematics, boxes: SceneBoxes | None = None, margin: float = 0.0) -> None:
+    def __init__(self, kin: Kinematics, boxes: SceneBoxes | None = None, margin: float = 0.0,
+                 scene_margins: dict[str, float] | None = None) -> None:
         self.kin = kin
         self.boxes = boxes if boxes is not None else SceneBoxes.empty()
+        self.scene_margins = dict(scene_margins or {})
         self.geometry = kin.collision_model.copy()
         n_robot = self.geometry.ngeoms
         self._add_boxes(margin)
         self._add_self_pairs(n_robot)
         self._add_scene_pairs(n_robot)
         self.data = pin.GeometryData(self.geometry)
-        for request in self.data.collisionRequests:
-            request.security_margin = margin
+        objs = self.geometry.geometryObjects
+        for request, pair in zip(self.data.collisionRequests, self.geometry.collisionPairs):
+            extra = self.scene_margins.get(_link_of(objs[pair.first]), 0.0) if pair.second >= n_robot else 0.0
+            request.security_margin = margin + extra
 
     def _add_boxes(self, margin: float) -> None:
         for i in range(len(self.boxes)):
@@ -114,7 +119,7 @@ class CollisionChecker:
 
     def with_boxes(self, boxes: SceneBoxes, margin: float = 0.0) -> CollisionChecker:
         """A checker for the same chain in another scene."""
-        return CollisionChecker(self.kin, boxes, margin)
+        return CollisionChecker(self.kin, boxes, margin, self.scene_margins)
 
     def in_collision(self, q: np.ndarray) -> bool:
         return bool(

@@ -337,7 +337,10 @@ class PybulletGripper:
         r = self.sim.robot
         if r.grip is None:
             return
-        width = float(np.sum(r.finger_q()))
+        # the opening commanded counts too: pybullet's finger pads can sink into a held item's
+        # shape while the base drives (its constraint and the pad contacts fight), and the measured
+        # width then lags an opening that on a real gripper would already have let go
+        width = max(float(np.sum(r.finger_q())), r.opening)
         # fingers open as wide as they go have let go of whatever they held near their stroke
         loose = min(held_at + ITEM_RELEASE, r.cfg.gripper.stroke - FULLY_OPEN)
         if (r.grip.link == -1 and width > loose) or (r.grip.link != -1 and width > HANDLE_CAPTURE):
