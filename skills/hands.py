@@ -471,7 +471,8 @@ class Hands:
             self.carry()
             return Outcome(False, f"{name}: out of reach")
         stroke = T.copy()
-        stroke[2, 3] = c[2] + below  # the edge down to the item's middle: through it
+        # the edge down past the item's middle, half way to its bottom: through it, pressing
+        stroke[2, 3] = c[2] - (top - c[2]) / 2 + below
         self.body.line(stroke, steps=6, speed=0.2)
         self.body.line(T, steps=2, speed=0.4)
         self.carry()

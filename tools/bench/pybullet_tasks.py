@@ -3,9 +3,10 @@
 Each episode is a full ``vap-bt run`` of the task (embedded default is Zenoh; here in-process
 transport, the same skills and executive) in its own worker process: the house built for the
 seed, the skills planning and moving the robot through the drivers, the executive perceiving
-and replanning. Success is what the world confirms (the oracle's ``goal_satisfied`` at the end),
-never the executive's claim; a *false success* is an episode the executive called successful
-that the world denies. Wall time is per episode, on this machine, with ``--jobs`` episodes at once.
+and replanning. A *success* is an episode the executive reported successful and the world
+confirms (the oracle's ``goal_satisfied`` at the end); a *false success* one it reported that the
+world denies; *unclaimed* one whose goal holds that the executive did not report (it could not
+confirm it by looking). Wall time is per episode, on this machine, with ``--jobs`` episodes at once.
 
     python tools/bench/pybullet_tasks.py --seeds 20 --jobs 2 [--tasks boil_water,cut_lemon]
                                           [--injection off|on|both] [--json docs/figures/pybullet_tasks.json]
@@ -72,7 +73,7 @@ def main(argv: list[str] | None = None) -> int:
         for r in pool.imap_unordered(episode, jobs):
             rows.append(r)
             done, took = len(rows), time.perf_counter() - t0
-            mark = "ok" if r["world_success"] else ("FALSE SUCCESS" if r["claimed"] else "failed")
+            mark = ("ok" if r["claimed"] else "unclaimed") if r["world_success"] else ("FALSE SUCCESS" if r["claimed"] else "failed")
             print(f"[{done}/{len(jobs)}] {r['task']} seed {r['seed']} injection {'on' if r['injection'] else 'off'}: "
                   f"{mark} in {r['wall_s']:.1f} s ({r['reason']}); {done / took * 60:.1f} episodes/min, "
                   f"about {(len(jobs) - done) * took / done:.0f} s left", file=sys.stderr, flush=True)
@@ -83,7 +84,11 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def table(rows: list[dict]) -> None:
-    print(f"{'task':18s} {'injection':>9s} {'n':>4s} {'success':>8s} {'false':>6s} {'median s':>9s} {'max s':>7s}")
+    """Per task and injection mode: *success* — the executive reported success and the world
+    confirms it; *false* — reported, denied by the world; *unclaimed* — the world's goal holds but
+    the executive did not report success (it could not confirm it by looking, or gave up)."""
+    print(f"{'task':18s} {'injection':>9s} {'n':>4s} {'success':>8s} {'false':>6s} {'unclaimed':>10s} "
+          f"{'median s':>9s} {'max s':>7s}")
     for inj in (False, True):
         sub = [r for r in rows if r["injection"] == inj]
         if not sub:
@@ -91,16 +96,19 @@ def table(rows: list[dict]) -> None:
         rates = []
         for task in sorted({r["task"] for r in sub}):
             t = [r for r in sub if r["task"] == task]
-            ok = sum(r["world_success"] for r in t)
-            false = sum(r["claimed"] and not r["world_success"] for r in t)
-            walls = [r["wall_s"] for r in t]
-            rates.append(ok / len(t))
-            print(f"{task:18s} {'on' if inj else 'off':>9s} {len(t):4d} {ok / len(t):8.0%} {false:6d} "
-                  f"{statistics.median(walls):9.1f} {max(walls):7.1f}")
-        walls = [r["wall_s"] for r in sub]
-        false = sum(r["claimed"] and not r["world_success"] for r in sub)
-        print(f"{'all':18s} {'on' if inj else 'off':>9s} {len(sub):4d} {statistics.mean(rates):8.0%} {false:6d} "
-              f"{statistics.median(walls):9.1f} {max(walls):7.1f}")
+            rates.append(_row(task, inj, t))
+        _row("all", inj, sub, statistics.mean(rates))
+
+
+def _row(name: str, inj: bool, t: list[dict], rate: float | None = None) -> float:
+    ok = sum(r["claimed"] and r["world_success"] for r in t)
+    false = sum(r["claimed"] and not r["world_success"] for r in t)
+    unclaimed = sum(r["world_success"] and not r["claimed"] for r in t)
+    walls = [r["wall_s"] for r in t]
+    rate = ok / len(t) if rate is None else rate  # "all": the mean of the tasks' rates
+    print(f"{name:18s} {'on' if inj else 'off':>9s} {len(t):4d} {rate:8.0%} {false:6d} {unclaimed:10d} "
+          f"{statistics.median(walls):9.1f} {max(walls):7.1f}")
+    return rate
 
 
 if __name__ == "__main__":
