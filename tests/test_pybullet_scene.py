@@ -4,6 +4,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from skill_runs import camera
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.scene.layout import layout_facts
@@ -43,7 +44,7 @@ def test_initial_truth_matches_layout(path):
 def test_frames_carry_images_masks_and_detections():
     world = PybulletWorld(load(TREES[0].parent / "pick_plate.yaml"), injection=False)
     try:
-        obs = world.capture(world.aim_at(("mug",)))
+        obs = camera(world).capture(world.aim_at(("mug",)))  # the skills' camera service aims
         h, w = obs.rgb.shape[:2]
         assert obs.rgb.dtype == np.uint8 and obs.depth.shape == (h, w) and obs.masks.shape == (h, w)
         assert 0.1 < float(obs.depth.min()) and float(obs.depth.max()) <= 5.0
