@@ -4,7 +4,9 @@
   (vap_bt.sim, vap_bt.world), never reads an oracle, and holds nothing that reaches one;
 * skills and the transport never import py_trees;
 * only vap_bt/viz imports rerun;
-* motion is pure array code: no pybullet, no py_trees.
+* motion is pure array code: no pybullet, no py_trees;
+* the simulator decides no motion: it plans nothing (no IK, no collision checks, no path timing)
+  and imports no skill; its drivers only track what they are given, as a robot's controllers do.
 """
 
 from __future__ import annotations
@@ -73,6 +75,25 @@ def test_the_executive_side_never_imports_the_simulator():
                                                   or m.startswith("vap_bt.sim.") or m == "vap_bt.world")
                  for p in files(*EXECUTIVE_ROOMS)}
     assert not {k: v for k, v in offenders.items() if v}
+
+
+#: what of vap_bt.motion a robot's controllers use too: the joint limits and the jerk-limited
+#: point-to-point profile of the base driver (a base controller's own, not a plan)
+CONTROLLER_MOTION = {"vap_bt.motion.limits", "vap_bt.motion.tracking"}
+PLANNING = ("vap_bt.motion", "skills", "pinocchio", "toppra", "coal")
+
+
+def test_the_simulator_decides_no_motion():
+    """Nothing under vap_bt/sim plans how the robot moves: no IK, collision checking or path
+    timing (vap_bt.motion beyond the controllers' limits and profile, pinocchio, toppra, coal)
+    and no skill code; motion is the skills', through the drivers."""
+    offenders = {str(p.relative_to(ROOT)): sorted(m for m in module_imports(p) - CONTROLLER_MOTION
+                                                  if any(m == r or m.startswith(r + ".") for r in PLANNING))
+                 for p in files("vap_bt/sim")}
+    assert files("vap_bt/sim"), "no source found under vap_bt/sim"
+    assert not {k: v for k, v in offenders.items() if v}
+    used = {m for p in files("vap_bt/sim") for m in module_imports(p)}
+    assert CONTROLLER_MOTION <= used  # the allowance is what the drivers really import, no more
 
 
 def identifiers(path: Path) -> list[tuple[str, str]]:

@@ -4,6 +4,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from skill_runs import camera
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.scene.layout import layout_facts
@@ -43,7 +44,7 @@ def test_initial_truth_matches_layout(path):
 def test_frames_carry_images_masks_and_detections():
     world = PybulletWorld(load(TREES[0].parent / "pick_plate.yaml"), injection=False)
     try:
-        obs = world.capture(world.aim_at(("mug",)))
+        obs = camera(world).capture(world.aim_at(("mug",)))  # the skills' camera service aims
         h, w = obs.rgb.shape[:2]
         assert obs.rgb.dtype == np.uint8 and obs.depth.shape == (h, w) and obs.masks.shape == (h, w)
         assert 0.1 < float(obs.depth.min()) and float(obs.depth.max()) <= 5.0
@@ -54,5 +55,23 @@ def test_frames_carry_images_masks_and_detections():
         assert world.captures.get(obs.frame_id).visibility["mug"] > 0.3
         assert world.oracle.holds(Atom("inview", ("mug",)))
         assert obs.intrinsics is not None and obs.camera_pose.shape == (4, 4)
+    finally:
+        world.close()
+
+
+def test_capture_renders_where_the_camera_is_and_never_moves_the_arm():
+    """The world only renders: a capture with an aim labels the frame and moves nothing (no
+    physics step either); turning the camera there is the skills' camera service's."""
+    world = PybulletWorld(load(TREES[0].parent / "collect_cup.yaml"), injection=False, image_size=(160, 120))
+    try:
+        d = world.drivers
+        q, base, ticks = d.arm.joint_state().positions, d.base.pose(), world.ticks
+        aim = world.aim_at(("cup",))
+        frame = world.capture(aim)
+        assert frame.aim == ("cup",) and "cup" not in frame.detected()  # it is behind the robot's view
+        assert d.arm.joint_state().positions == q and tuple(d.base.pose()) == tuple(base) and world.ticks == ticks
+        looked = camera(world).capture(aim)
+        assert "cup" in looked.detected() and world.ticks > ticks
+        assert np.abs(np.subtract(d.arm.joint_state().positions, q)).max() > 0.05
     finally:
         world.close()

@@ -89,18 +89,22 @@ def test_a_lost_object_is_searched_for_room_by_room():
 @pytest.mark.slow
 def test_the_sweep_finds_what_the_first_view_does_not_show():
     """collect_cup in pybullet: from where the robot starts the cup on the coffee table is out of
-    view; the sweep finds it, and the fused point cloud puts it on the coffee table."""
+    view; the sweep (through the skills' camera service, which drives and aims) finds it, and the
+    fused point cloud puts it on the coffee table."""
+    from skill_runs import camera
+
     from vap_bt.scene.geometry import PointCloudGeometry
     from vap_bt.sim.pybullet_world import PybulletWorld
 
     task = load(TREES / "collect_cup.yaml")
     world = PybulletWorld(task, seed=0, injection=False)
     try:
-        first = world.capture()
+        view = camera(world)
+        first = view.capture()
         assert "cup" not in first.detected()
         b = SceneGraphBuilder(task.planning.knowledge, task.planning.objects, world.site_map(), PointCloudGeometry)
         b.integrate(first)
-        record = b.sweep(world, sweep_order(world.site_map(), world.state().room))
+        record = b.sweep(view, sweep_order(world.site_map(), world.state().room))
         assert "cup" in record.detected and record.frames == record.reached > 5
         assert {A("on(cup, coffee_table)"), A("in_room(cup, living_room)")} <= b.observed("cup")
         assert world.oracle.holds(A("on(cup, coffee_table)"))  # the check, not the source

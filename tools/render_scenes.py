@@ -2,7 +2,8 @@
 
 For each task file in ``trees/`` (or those named), builds the pybullet household and writes two
 images: ``<task>_overview.png`` (a bird's-eye view of the whole house) and ``<task>_wrist.png``
-(what the wrist camera sees at the start, aimed at the first goal's object).
+(what the wrist camera sees at the start, turned by the skills' camera service towards the first
+goal's object).
 
     python tools/render_scenes.py --out docs/scenes
     python tools/render_scenes.py trees/boil_water.yaml --out /tmp/scenes
@@ -15,6 +16,8 @@ from pathlib import Path
 
 import cv2
 
+from skills.kit import kit_for
+from skills.views import ViewService
 from vap_bt.sim.pybullet_world import PybulletWorld
 from vap_bt.taskfile import load
 
@@ -24,7 +27,7 @@ def render_task(path: Path, out: Path) -> list[Path]:
     world = PybulletWorld(task, seed=0, injection=False)
     try:
         goal_objects = [a for lit in task.planning.goal for a in lit.atom.args]
-        obs = world.capture(world.aim_at(tuple(goal_objects[:1])))
+        obs = ViewService(kit_for(world)).capture(world.aim_at(tuple(goal_objects[:1])))
         files = [out / f"{task.name}_overview.png", out / f"{task.name}_wrist.png"]
         cv2.imwrite(str(files[0]), cv2.cvtColor(world.overview(), cv2.COLOR_RGB2BGR), [cv2.IMWRITE_PNG_COMPRESSION, 9])
         cv2.imwrite(str(files[1]), cv2.cvtColor(obs.rgb, cv2.COLOR_RGB2BGR), [cv2.IMWRITE_PNG_COMPRESSION, 9])

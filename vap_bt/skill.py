@@ -100,7 +100,9 @@ class WorldActionSkill(Skill):
     skill reports that it started, hands the action over and turns the world's
     :class:`~vap_bt.world.ActionOutcome` into a :class:`SkillResult`. It stands in for a plugin
     whose world lacks what the plugin needs (:meth:`Skill.binds`), under the plugin's own action,
-    robot and resource (:func:`vap_bt.plugins.instantiate`).
+    robot and resource (:func:`vap_bt.plugins.instantiate`), and for the domain actions no plugin
+    implements (:func:`vap_bt.runner.make_skills`). A world with drivers (the pybullet one)
+    performs nothing: its actions are the skills' motions.
     """
 
     def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult:

@@ -64,11 +64,15 @@ class World(Protocol):
         """Restore the task's initial state; every random draw after this follows ``seed``."""
 
     def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
-        """Carry out one domain action, with this world's situation injection."""
+        """Carry out one domain action, with this world's situation injection. Only a world
+        without drivers has it (the symbolic one); a world with drivers (the pybullet one) performs
+        nothing: skills move its robot (:mod:`vap_bt.robot.drivers`)."""
 
     # the robot interfaces (vap_bt.robot.camera.Camera and Body)
     def capture(self, aim: Aim | None = None) -> Frame: ...
 
+    # without drivers, the world is its own camera service; with them, the skills' is
+    # (skills.views.ViewService: it drives and aims, and the world only renders)
     def goto_view(self, view: Viewpoint) -> bool: ...
 
     def move_view(self, aim: Aim, direction: str) -> bool: ...

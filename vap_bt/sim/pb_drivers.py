@@ -26,8 +26,8 @@ and Table II injection), checks ``cancelled()`` and ``stop()`` before every step
   in force — on an item or a handle. A cancelled ``move`` returns the state where the fingers
   stopped (the protocol's ``move`` answers with the gripper's state, not a MotionResult).
 * :class:`PybulletBase` — ``follow`` drives through the poses one after the other, each leg a
-  time-optimal jerk-limited rest-to-rest move (ruckig) at ``speed`` of the base's limits, as
-  :meth:`Motion.drive` does; ends ``blocked`` when the base falls ``BASE_TRACKING_LIMIT`` behind.
+  time-optimal jerk-limited rest-to-rest move (ruckig) at ``speed`` of the base's limits (a base
+  controller's own profile, not a plan); ends ``blocked`` when the base falls ``BASE_TRACKING_LIMIT`` behind.
 * :class:`PybulletWristCamera` — ``capture`` is the frame of what the wrist camera sees now:
   detections from the segmentation above the detector's pixel threshold, masks, metric depth,
   intrinsics, the camera pose, and the capture record the simulated VLM answers from

@@ -3,8 +3,7 @@
 Skills plan and move the robot through the drivers (:mod:`pb_drivers`); the world does not know
 how. What it is told — a sim-only hook, never part of a real robot — is which action a goal is:
 :meth:`Injection.begin` when the goal starts, :meth:`Injection.end` when it ends. ``begin`` draws
-from :class:`~vap_bt.sim.situations.SituationModel` exactly once per action (as
-:meth:`PybulletWorld.perform` always did), records the draw (:class:`InjectedSituation`, the
+from :class:`~vap_bt.sim.situations.SituationModel` exactly once per action, records the draw (:class:`InjectedSituation`, the
 oracle's ``injected()``), and arms the drawn row. From then on the situation happens in the
 hardware, never by rewriting the truth:
 
@@ -42,9 +41,7 @@ A slipping hand or item passes through the fingers until they are ``SEPARATION``
 fingers, closed at full force, would otherwise keep it by friction), and the gripper closes on
 what it was asked for (:attr:`lost_grip`), as a real gripper does when its object slips out.
 
-``begin(..., physical=False)`` records and draws without arming anything: the old world-side
-primitives (:mod:`pb_primitives`) change their own motion for the drawn row. In both modes the
-rules consult :meth:`effect`, so a press or a cut injected to fail never registers.
+The rules consult :meth:`effect`, so a press or a cut injected to fail never registers.
 """
 
 from __future__ import annotations
@@ -93,7 +90,6 @@ class _Active:
     action: str
     args: tuple[str, ...]
     spec: SituationSpec | None
-    physical: bool
     drop: _Drop | None = None
     slip_from: tuple[Thing, float] | None = None  # the handle's thing and joint value at the grip
     paths: int = 0  # base paths started during the action
@@ -122,20 +118,19 @@ class Injection:
 
     # ------------------------------------------------------------ the action
 
-    def begin(self, action: str, args: tuple[str, ...], step: int, physical: bool = True) -> SituationSpec | None:
-        """Draw for ``action`` (once), record it, and arm it when ``physical``."""
+    def begin(self, action: str, args: tuple[str, ...], step: int) -> None:
+        """Draw for ``action`` (once), record it, and arm it."""
         spec = self.situations.draw(action) if action in {s.action for s in self.situations.table} else None
         if spec is not None:
             self.log.append(InjectedSituation(action, tuple(args), spec.kind, step))
-        self.active = a = _Active(action, tuple(args), spec, physical)
-        if physical and spec is not None and spec.drops is not None:
+        self.active = a = _Active(action, tuple(args), spec)
+        if spec is not None and spec.drops is not None:
             if action in ("grasp", "takeout"):
                 a.drop = _Drop("lift")
             elif spec.drops == "held":
                 a.drop = _Drop("half_way")
             else:  # place, fill, cut: the grip is lost on the way
                 a.drop = _Drop("now", armed=True)
-        return spec
 
     def end(self) -> None:
         """The action's goal ended: a drop still pending happens now."""
@@ -152,7 +147,7 @@ class Injection:
 
     def _armed(self, *kinds: str) -> bool:
         a = self.active
-        return a is not None and a.physical and a.spec is not None and a.spec.kind in kinds
+        return a is not None and a.spec is not None and a.spec.kind in kinds
 
     def refuses_grip(self) -> bool:
         """The closing fingers get no grip on an item (grasp fails, object unchanged)."""
@@ -165,7 +160,7 @@ class Injection:
     def on_grip(self, grip: Grip, thing: Thing) -> None:
         """A grip formed: remember where, for a drop after the lift or a slip off the handle."""
         a = self.active
-        if a is None or not a.physical:
+        if a is None:
             return
         if grip.link == -1 and a.drop is not None and a.drop.trigger == "lift":
             a.drop.lift_from = self.robot.link_pose("tcp")[:3, 3]
@@ -192,7 +187,7 @@ class Injection:
         if self._ghosts:
             self._ghosts = [g for g in self._ghosts if not self._apart(g)]
         a = self.active
-        if a is None or not a.physical:
+        if a is None:
             return
         if a.slip_from is not None and self.robot.grip is not None and self.robot.grip.link != -1:
             thing, q0 = a.slip_from

@@ -176,7 +176,7 @@ class Rules:
                   np.cross(R[:, 0], (0.0, 0.0, 1.0)))  # the blade's plane holds its length and the vertical
 
 
-# ---------------------------------------------------------------- effects (also used by pb_primitives)
+# ---------------------------------------------------------------- effects
 
 
 def turn_on(cid: int, t: Thing) -> None:

@@ -13,8 +13,8 @@ Every named thing of the task becomes one or more bodies, registered in a :class
 
 Joints of doors and drawers are not position-held: a velocity motor with target 0 and a small
 force acts as friction, so they stay where they are left and move only when pushed or pulled —
-by the gripper holding the handle. :class:`Hinge` records where each joint and handle is, so a
-primitive can compute the handle's path for any joint value.
+by the gripper holding the handle. :class:`Hinge` records where each joint and handle is, which
+the site map hands the robot as the furniture model's articulation.
 """
 
 from __future__ import annotations

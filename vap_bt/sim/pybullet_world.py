@@ -7,22 +7,21 @@ scene by running physics: whoever moves the robot commands joint trajectories, s
 cutting) turn contacts and poses into object states, and the truth (:mod:`pb_truth`) is read off
 the result — through :attr:`oracle`, for the report and the simulated VLM only.
 
-Two ways move the robot. Skills elsewhere (other processes even) move it through its drivers,
-:attr:`drivers` (:mod:`pb_drivers`: arm, gripper, base, wrist camera), and tell the world which
-action a goal is with the sim-only hooks :meth:`begin_action` / :meth:`end_action`; Table II
-injection then draws once per action and makes the situation physically so at the drivers
-(:mod:`pb_injection`). The older world-side primitives (:mod:`pb_primitives`) run behind
-:meth:`perform`, which draws the same way and lets the primitive change its motion. Scripted
-disturbances (a person moves an object, a door left half open) apply before the action they name,
-either way.
+The world decides nothing about how the robot moves. Skills (in other processes even) move it
+through its drivers, :attr:`drivers` (:mod:`pb_drivers`: arm, gripper, base, wrist camera), and
+tell the world which action a goal is with the sim-only hooks :meth:`begin_action` /
+:meth:`end_action`; Table II injection then draws once per action and makes the situation
+physically so at the drivers (:mod:`pb_injection`). Scripted disturbances (a person moves an
+object, a door left half open) apply before the action they name.
 
 Its robot interfaces are what a real robot's drivers would give: the wrist camera
-(:mod:`pb_camera`) renders RGB-D and the segmentation stands for an instance detector
-(:class:`~vap_bt.sim.detector.DetectorModel`: instances below a pixel threshold are missed); it
-aims at the point it is given, never at a name; viewpoints are reached by driving the base; the
-body reports the base pose, the room localization puts it in, the arm's joints, the TCP pose and
-whether the gripper holds something; the site map has the rooms' outlines, the doors and the
-furniture's footprints, nothing that moves.
+(:mod:`pb_camera`) renders RGB-D from wherever the arm and the base have put it, and the
+segmentation stands for an instance detector (:class:`~vap_bt.sim.detector.DetectorModel`:
+instances below a pixel threshold are missed); aiming it is the skills' camera service's
+(:class:`skills.views.ViewService`), not the world's; the robot starts with its arm at
+:data:`START_ARM`, looking ahead; the body reports the base pose, the room localization puts
+it in, the arm's joints, the TCP pose and whether the gripper holds something; the site map
+has the rooms' outlines, the doors and the furniture's footprints, nothing that moves.
 
 Disturbances are dicts: ``{"at": 2, "move": "cup", "to": "counter"}`` (as the third action
 starts, the cup is put on the counter), ``{"after": 0, ...}`` (once the first action is done,
@@ -41,7 +40,7 @@ import numpy as np
 import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.robot.camera import VIEW_DIRECTIONS, Aim, Viewpoint
+from vap_bt.robot.camera import Aim
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState, quat_xyzw
@@ -55,30 +54,19 @@ from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_drivers import Drivers
 from vap_bt.sim.pb_injection import Injection
 from vap_bt.sim.pb_layout import plan_scene
-from vap_bt.sim.pb_motion import Cancelled, Motion
-from vap_bt.sim.pb_primitives import Primitives
 from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_rules import Rules
 from vap_bt.sim.pb_scene import Hinge, build_scene, switch_face, tap_outlet
 from vap_bt.sim.pb_truth import Truth
 from vap_bt.sim.situations import SituationModel
-from vap_bt.world import ActionOutcome, GoalContext, InjectedSituation
+from vap_bt.world import InjectedSituation
 
 DT = 1.0 / 60.0
 SOLVER_ITERATIONS = 20
-#: a viewpoint counts as reached when the base stops this close to it (m)
-VIEW_REACHED = 0.25
-#: a "front" view steps back to this distance from the point, squarely facing it: far enough to
-#: see all of a tall piece of furniture (a 1.05 m shelf needs about 1.8 m)
-FRONT_VIEW = 1.8
-
-
-class _NoContext:
-    def feedback(self, progress: float, text: str = "") -> None: ...
-
-    def cancelled(self) -> bool:
-        return False
-
+#: the arm's joints as an episode begins: the wrist camera over the front of the base, looking at
+#: the floor 1.5 m ahead (where a look from the home pose leaves it). An initial condition, like
+#: the base's start pose; the world never moves the arm itself
+START_ARM = (-0.871783, -2.423916, 1.924805, -1.563887, -1.058653, 0.830359)
 
 class PybulletWorld:
     """The pybullet household: physics, Table II injection, disturbances, the oracle, and the
@@ -129,7 +117,7 @@ class PybulletWorld:
             self.plan = plan_scene(self.layout, self.catalog, seed)
             self.scene = build_scene(self.cid, self.plan, self.catalog, self.types)
             self.robot = Robot(self.cid)
-            q0 = np.array([*self.plan.robot, *self.robot.cfg.arm.home])
+            q0 = np.array([*self.plan.robot, *START_ARM])
             self.robot.reset(q0)
             rigid = {a for a in layout_facts(self.layout) if a.predicate in ("clear", "openable", "fillable", "connects")}
             self.truth = Truth(self.scene, self.robot, self.catalog, rigid, self._visible_names)
@@ -138,10 +126,6 @@ class PybulletWorld:
                                        lost_grip=lambda: self.drivers.gripper.lost_grip())
             self.rules = Rules(self.scene, self.robot, self.truth, self.catalog, self.injection, DT)
             self._action: tuple[int, str, tuple[str, ...]] | None = None  # the action running now
-            self.motion = Motion(self.robot, self._tick, DT)
-            self.ctx: GoalContext = _NoContext()
-            self._progress = (0.0, 1.0)
-            self.prims = Primitives(self.scene, self.robot, self.motion, self.truth, self.catalog, self._phase)
             self.ticks = 0
             self.actions = 0
             self._view: Render | None = None
@@ -153,12 +137,11 @@ class PybulletWorld:
                 if it.held:
                     self._start_held(name)
             for _ in range(30):  # let everything settle onto its support
-                self._tick()
-            self.prims.look_at(self.prims.target_point(self.layout.robot.at or f"floor_{self.layout.robot.room}"))
+                self.step()
 
     def _start_held(self, name: str) -> None:
         t = self.scene.things[name]
-        T = self.motion.pose("tcp")
+        T = self.robot.link_pose("tcp")
         pb.resetBasePositionAndOrientation(t.body, tuple(T[:3, 3] - T[:3, 2] * 0.0), (0, 0, 0, 1),
                                            physicsClientId=self.cid)
         self.robot.attach(t.body, name)
@@ -172,11 +155,6 @@ class PybulletWorld:
 
     # ------------------------------------------------------------ stepping
 
-    def _tick(self) -> None:
-        if self.ctx.cancelled():
-            raise Cancelled()
-        self.step()
-
     def step(self) -> None:
         """One physics step; then door stops, the physics rules and Table II's effects."""
         with self._lock:
@@ -186,26 +164,7 @@ class PybulletWorld:
             self.rules.step()
             self.injection.step()
 
-    def _phase(self, progress: float, text: str) -> None:
-        lo, span = self._progress
-        self.ctx.feedback(min(1.0, lo + span * progress), text)
-
     # ------------------------------------------------------------ actions
-
-    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
-        with self._lock:
-            if self._action is not None:  # an announced action left open
-                self._end()
-            self.ctx = ctx
-            spec = self._begin(action, tuple(args), physical=False)
-            try:
-                return self._run(action, tuple(args), spec)
-            except Cancelled:
-                return ActionOutcome(False, f"{action} cancelled")
-            finally:
-                self.ctx = _NoContext()
-                self._view = None
-                self._end()
 
     def begin_action(self, action: str, args: tuple[str, ...]) -> None:
         """Sim-only hook: a goal for ``action(args)`` starts, and skills will move the robot
@@ -215,7 +174,7 @@ class PybulletWorld:
         with self._lock:
             if self._action is not None:
                 self._end()
-            self._begin(action, tuple(args), physical=True)
+            self._begin(action, tuple(args))
 
     def end_action(self, action: str | None = None, args: tuple[str, ...] | None = None) -> None:
         """Sim-only hook: the goal ended (however). A drop still pending happens now, then the
@@ -227,40 +186,18 @@ class PybulletWorld:
                 return
             self._end()
 
-    def _begin(self, action: str, args: tuple[str, ...], physical: bool):
+    def _begin(self, action: str, args: tuple[str, ...]) -> None:
         step = self.actions
         self.actions += 1
         self._disturb(step, action, args)
         self._action = (step, action, args)
-        return self.injection.begin(action, args, step, physical)
+        self.injection.begin(action, args, step)
 
     def _end(self) -> None:
         step, action, args = self._action
         self.injection.end()
         self._action = None
         self._disturb(step, action, args, when="after")
-
-    def _run(self, action: str, a: tuple[str, ...], spec) -> ActionOutcome:
-        p = self.prims
-        if action == "find":
-            return p.find(a[1], spec)
-        if action == "navigate":
-            return p.navigate(a[1], a[2], spec)
-        if action in ("grasp", "takeout"):
-            return p.grasp(a[0], spec)
-        if action in ("placeon", "placein"):
-            return p.place(a[0], a[1], action == "placein", spec)
-        if action in ("open", "close"):
-            return p.open_close(a[0], action == "open", spec)
-        if action == "turnon":
-            return p.press(a[0], spec)
-        if action == "cut":
-            return p.cut(a[0], a[1], spec)
-        if action == "fill":
-            return p.fill(a[0], a[1], spec)
-        if action == "push":
-            return p.push(a[0], a[1], spec)
-        return ActionOutcome(False, f"unknown action {action!r}")
 
     def _disturb(self, step: int, action: str, args, when: str = "at") -> None:
         for d in self.disturbances:
@@ -270,7 +207,7 @@ class PybulletWorld:
                 name, to = d["move"], d["to"]
                 if self.truth.held() == name:
                     continue
-                spot = self.prims.free_spot(to, name)
+                spot = self._free_spot(to, name)
                 t = self.scene.things[name]
                 box = self.truth.aabb(name)
                 c = self.truth.center(name)
@@ -286,8 +223,29 @@ class PybulletWorld:
             else:
                 continue
             for _ in range(20):
-                self._tick()
+                self.step()
             self._injected.append(InjectedSituation(action, tuple(args), kind, step))
+
+    def _free_spot(self, surface: str, item: str) -> np.ndarray:
+        """Where a person sets ``item`` down on ``surface``: the centre of a spot on its top far
+        from the other items on it and near the robot (on a floor: in front of the robot)."""
+        t = self.scene.things[surface]
+        others = [self.truth.center(i.name) for i in self.scene.items() if i.name != item and self.truth._on(i.name, surface)]
+        x, y, yaw = self.robot.base_pose
+        if t.room is not None:
+            cands = [np.array([x + 0.75 * math.cos(yaw) + dx * -math.sin(yaw), y + 0.75 * math.sin(yaw) + dx * math.cos(yaw), 0.0])
+                     for dx in np.linspace(-0.3, 0.3, 7)]
+        else:
+            f = t.furniture
+            w = f.kind.size[0] / 2 - 0.08
+            cands = [f.to_world((lx, 0.0, f.kind.size[2])) for lx in np.linspace(-w, w, 9)]
+        base = np.array((x, y))
+
+        def score(p):
+            clear = min([np.linalg.norm(p[:2] - o[:2]) for o in others] + [1.0])
+            return min(clear, 0.2) - 0.05 * np.linalg.norm(p[:2] - base)
+
+        return max(cands, key=score)
 
     def injected(self) -> list[InjectedSituation]:
         return list(self._injected)
@@ -314,12 +272,9 @@ class PybulletWorld:
     # ------------------------------------------------------------ robot interfaces: camera
 
     def capture(self, aim: Aim | None = None) -> Frame:
-        """Aim at ``aim.point`` (if given and not already aimed there), render, detect."""
+        """Render what the wrist camera shows now and detect. ``aim`` only labels the frame (what
+        it was taken for): aiming is whoever moves the arm's (:class:`skills.views.ViewService`)."""
         with self._lock:
-            if aim is not None and aim.point is not None:
-                point = np.asarray(aim.point, float)
-                if not self.prims.aimed_at(point):
-                    self.prims.look_at(point)
             return self._frame(aim)
 
     def _frame(self, aim: Aim | None) -> Frame:
@@ -370,84 +325,30 @@ class PybulletWorld:
             return FILL.get(t.kind.shape, 0.8)
         return FILL["door"] if t.door is not None else FILL["furniture"]
 
-    def goto_view(self, view: Viewpoint) -> bool:
-        """Drive to the viewpoint's base pose (through doors, stopping at a shut one) and aim."""
-        with self._lock:
-            try:
-                if view.base_pose is not None:
-                    x, y = view.base_pose[:2]
-                    if self.truth.room_of_point((x, y)) is None or not self._base_fits(x, y):
-                        return False
-                    self.prims.approach(tuple(view.base_pose))
-                    bx, by, _ = self.robot.base_pose
-                    if math.hypot(bx - x, by - y) > VIEW_REACHED:
-                        return False
-                if view.aim.point is None:
-                    return True
-                return self.prims.look_at(np.asarray(view.aim.point, float))
-            except Cancelled:
-                return False
-            finally:
-                self._view = None
-
-    def move_view(self, aim: Aim, direction: str) -> bool:
-        """Move the viewpoint relative to the point the executive believes its target is at."""
-        if direction not in VIEW_DIRECTIONS or aim.point is None:
-            return False
-        with self._lock:
-            p = np.asarray(aim.point, float)
-            x, y, yaw = self.robot.base_pose
-            lift = 0.0
-            if direction in ("left", "right"):
-                ang = 0.5 if direction == "left" else -0.5
-                dx, dy = x - p[0], y - p[1]
-                c, s = math.cos(ang), math.sin(ang)
-                nx, ny = p[0] + c * dx - s * dy, p[1] + s * dx + c * dy
-            elif direction == "closer":
-                v = np.array([p[0] - x, p[1] - y])
-                step = min(0.25, max(0.0, np.linalg.norm(v) - 0.75))
-                if step <= 0.02:
-                    return False
-                nx, ny = np.array([x, y]) + v / np.linalg.norm(v) * step
-            elif direction == "front":  # square on to the point, from a good viewing distance
-                v = np.array([x - p[0], y - p[1]])
-                v = v / (np.linalg.norm(v) or 1.0)
-                nx, ny = p[0] + v[0] * FRONT_VIEW, p[1] + v[1] * FRONT_VIEW
-            elif direction == "behind":
-                nx, ny = 2 * p[0] - x, 2 * p[1] - y
-            else:  # above
-                nx, ny, lift = x, y, 0.3
-            nyaw = math.atan2(p[1] - ny, p[0] - nx) if direction != "above" else yaw
-            moves = (nx, ny) != (x, y)
-            # a view from where the base stands needs no room; one from elsewhere must be in this
-            # room (a base move for a view never goes through a wall or a doorway)
-            if moves and not self._base_fits(nx, ny, self.truth.room_of_point((x, y))):
-                return False
-            try:
-                if moves:
-                    self.prims.approach((nx, ny, nyaw))  # round open leaves, like any base move
-                # from above: as high over the base as the arm reaches (close in, the highest eye
-                # may need the wrist bent further than it goes)
-                lifts = (lift, 2 * lift / 3, lift / 3) if lift > 0 else (0.0,)
-                return any(self.prims.look_at(p, lift=h, allow_base=False) for h in lifts)
-            except Cancelled:
-                return False
-            finally:
-                self._view = None
-
     def aim_at(self, names: tuple[str, ...]) -> Aim:
-        """An aim at where ``names`` truly are — for tests and tools that stage a view. It reads
-        the truth: the executive never calls it (it aims from belief)."""
+        """An aim at where ``names`` truly are — for tests and tools that stage a view (a camera
+        service then turns the camera there). It reads the truth: the executive never calls it
+        (it aims from belief)."""
         with self._lock:
             known = [n for n in names if n in self.scene.things and self.truth.held() != n]
-            point = np.mean([self.prims.target_point(n) for n in known], axis=0) if known else None
+            point = np.mean([self._target_point(n) for n in known], axis=0) if known else None
             return Aim(tuple(names), None if point is None else tuple(map(float, point)))
 
-    def seen(self, names: tuple[str, ...]) -> dict[str, float]:
-        """Capture a frame aimed at ``names`` (see :meth:`aim_at`); their visibility in it."""
-        frame = self.capture(self.aim_at(names))
-        vis = self.captures.get(frame.frame_id).visibility
-        return {n: vis.get(n, 0.0) for n in names}
+    def _target_point(self, name: str) -> np.ndarray:
+        """Where to look at ``name``: a door's middle, a cavity's, a surface's top, the floor ahead
+        of the robot for a room, an item's centre."""
+        t = self.scene.things[name]
+        if t.door is not None:
+            return np.array([t.door.x, t.door.center_y, 0.8])
+        if t.room is not None:
+            x, y, yaw = self.robot.base_pose
+            return np.array([x + 1.5 * math.cos(yaw), y + 1.5 * math.sin(yaw), 0.0])
+        if t.furniture is not None:
+            f = t.furniture
+            if f.kind.cavity is not None:
+                return f.to_world((0.0, f.kind.size[1] / 4, sum(f.kind.cavity.z) / 2))
+            return f.to_world((0.0, 0.0, f.kind.size[2]))
+        return self.truth.center(name)
 
     # ------------------------------------------------------------ robot interfaces: body and map
 
@@ -484,25 +385,6 @@ class PybulletWorld:
                 switch=_point(f.to_world(switch_face(k))) if t.switch_link is not None else None,
                 tap=_point(f.to_world(tap_outlet(k))) if k.tap else None))
         return SiteMap(rooms, doors, tuple(furniture), frozenset(self.truth.rigid))
-
-    def _base_fits(self, x: float, y: float, room: str | None = None) -> bool:
-        """The base footprint (as a circle) stays inside a room (``room`` if given) and off the
-        furniture."""
-        r = 0.42
-        here = self.truth.room_of_point((x, y))
-        if here is None or (room is not None and here != room):
-            return False
-        room = here
-        rp = self.plan.rooms[room]
-        if not (rp.x0 + r <= x <= rp.x1 - r and rp.y0 + r <= y <= rp.y1 - r):
-            return False
-        for t in self.scene.things.values():
-            if t.furniture is None:
-                continue
-            a = self.truth.aabb(t.name)
-            if a[0] - r < x < a[3] + r and a[1] - r < y < a[4] + r:
-                return False
-        return True
 
     # ------------------------------------------------------------ pictures
 

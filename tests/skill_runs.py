@@ -1,0 +1,87 @@
+"""Running the installed skills on a pybullet world open-loop, the way the executive sends them.
+
+A test names a sequence of plan actions; each becomes one goal on the in-process skill client
+over :func:`vap_bt.plugins.instantiate` — the same skills, kit and drivers a run uses — with the
+hints a correct belief would send (:func:`believed`). Views go through the skills' camera
+service (:class:`skills.views.ViewService`), which aims the wrist camera; the world only renders.
+
+The hints and the aims are the one place these helpers read the world's truth: they stand in for
+a scene graph that matches the world, so that a test exercises the motion, not perception.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from skills.kit import kit_for
+from skills.views import ViewService
+from vap_bt import plugins
+from vap_bt.skill import GoalState, Hint
+from vap_bt.transport.inprocess import InProcessSkillClient
+
+TREES = Path(__file__).resolve().parents[1] / "trees"
+
+
+def pybullet(name, situations=None, **kw):
+    """The pybullet world of ``trees/<name>.yaml`` (or of a task file path), small images."""
+    from vap_bt.sim.pybullet_world import PybulletWorld
+    from vap_bt.taskfile import load
+
+    task = load(name if isinstance(name, Path) else TREES / f"{name}.yaml")
+    return PybulletWorld(task, seed=0, injection=situations is not None, situations=situations,
+                         image_size=(160, 120), **kw)
+
+
+def believed(world, names: tuple[str, ...]) -> tuple[Hint, ...]:
+    """The goal's hints from a belief that matches the world: where each thing is (nothing for
+    what the hand holds) and, for an item, what it rests on or in."""
+    out = []
+    for n in names:
+        t = world.scene.things.get(n)
+        if t is None:
+            out.append(Hint(n))
+            continue
+        point = world.aim_at((n,)).point
+        on = inside = None
+        if t.item is not None and world.truth.held() != n:
+            inside = world.truth.container_of(n)
+            on = None if inside else world.truth.support_of(n)
+        out.append(Hint(n, point, on, inside))
+    return tuple(out)
+
+
+def parse(call: str) -> tuple[str, tuple[str, ...]]:
+    name, args = call.split("(")
+    return name, tuple(x.strip() for x in args.rstrip(")").split(",") if x.strip())
+
+
+def act(world, call: str):
+    """Send one action (``"grasp(cup, counter, kitchen)"``) as a goal; its finished handle."""
+    name, args = parse(call)
+    client = InProcessSkillClient(plugins.instantiate(world))
+    return client.send_goal(name, args, believed(world, args))
+
+
+def run(world, *calls: str) -> None:
+    """Send each action in turn; every one must succeed (the skill's own view of its motion)."""
+    for call in calls:
+        goal = act(world, call)
+        assert goal.state() is GoalState.SUCCEEDED, f"{call}: {goal.state().value} {goal.result().message}"
+
+
+def camera(world) -> ViewService:
+    """The camera service the executive would be handed for ``world``."""
+    return ViewService(kit_for(world))
+
+
+def seen(world, names: tuple[str, ...]) -> dict[str, float]:
+    """Aim the camera at where ``names`` are, take a frame, and say how much of each it shows
+    (the simulated VLM's record of the frame)."""
+    frame = camera(world).capture(world.aim_at(names))
+    vis = world.captures.get(frame.frame_id).visibility
+    return {n: vis.get(n, 0.0) for n in names}
+
+
+def move_view(world, names: tuple[str, ...], direction: str) -> bool:
+    """Move the view ``direction`` relative to where ``names`` are."""
+    return camera(world).move_view(world.aim_at(names), direction)
