@@ -118,6 +118,7 @@ def _run(args, stdout) -> int:
                               vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction,
                               vlm_latency=args.vlm_latency, vlm_logprobs=False if args.no_logprobs else None)
     check_config(task, cfg)  # bad options in one line, before the first progress line
+    remote = _remote_settings(args)
     progress = _progress(args.quiet)
     progress(f"task {task.name}: {task.spec.instruction or task.planning.source} "
              f"(world {cfg.world}, seed {cfg.seed}, verify {cfg.verify})")
@@ -127,7 +128,7 @@ def _run(args, stdout) -> int:
 
         recorder = TreeRecorder.open(args.rerun, name=f"{task.name} seed {cfg.seed}")
         progress(recorder.hint)
-    session = Session(task, cfg, progress, recorder=recorder, remote=_remote_settings(args))
+    session = Session(task, cfg, progress, recorder=recorder, remote=remote)
     rep: dict = {"success": False, "goal_satisfied": None, "reason": "interrupted", "seed": cfg.seed,
                  "command": report_mod.command_line()}
     finished = False

@@ -92,7 +92,7 @@ def run_sim(args: argparse.Namespace) -> int:
         parts.append(OracleServer(session, shared, WorldFacts(task.name, vlm)))
         if threading.current_thread() is threading.main_thread():
             signal.signal(signal.SIGTERM, lambda *_: stop.set())
-        where = ", ".join(settings.listen) or "(no listener)"
+        where = ", ".join(settings.listen) or f"the endpoints {settings.config_file} names"
         print(f"vap-bt sim: ready on {where} — {task.name}, seed {cfg.seed}, injection "
               f"{'on' if cfg.injection else 'off'}; drivers of {', '.join(robots)}; vlm on {CAMERA_ROBOT}",
               flush=True)
