@@ -7,6 +7,8 @@
 ``vap-bt tree TASK.yaml``            print the compiled tree (ascii, dot or xml) without running it
 ``vap-bt skills``                    list the installed skill plugins
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
+``vap-bt sim TASK.yaml``             host the pybullet world, its drivers, the simulated VLM and the oracle
+``vap-bt run TASK.yaml --connect EP`` run the executive against a sim and skill servers already running
 
 Exit codes are documented in :mod:`vap_bt.errors`: 0 success, 1 goal not reached, 2 bad input,
 3 no plan, 4 transport down. Errors print one line on stderr, never a traceback. Progress goes to
@@ -116,6 +118,7 @@ def _run(args, stdout) -> int:
                               vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction,
                               vlm_latency=args.vlm_latency, vlm_logprobs=False if args.no_logprobs else None)
     check_config(task, cfg)  # bad options in one line, before the first progress line
+    remote = _remote_settings(args)
     progress = _progress(args.quiet)
     progress(f"task {task.name}: {task.spec.instruction or task.planning.source} "
              f"(world {cfg.world}, seed {cfg.seed}, verify {cfg.verify})")
@@ -125,7 +128,7 @@ def _run(args, stdout) -> int:
 
         recorder = TreeRecorder.open(args.rerun, name=f"{task.name} seed {cfg.seed}")
         progress(recorder.hint)
-    session = Session(task, cfg, progress, recorder=recorder)
+    session = Session(task, cfg, progress, recorder=recorder, remote=remote)
     rep: dict = {"success": False, "goal_satisfied": None, "reason": "interrupted", "seed": cfg.seed,
                  "command": report_mod.command_line()}
     finished = False
@@ -149,6 +152,20 @@ def _run(args, stdout) -> int:
             recorder.close()
     ok = rep["success"] and rep["goal_satisfied"]
     return EXIT_OK if ok else EXIT_GOAL_NOT_REACHED
+
+
+def _remote_settings(args):
+    """``--connect``/``--zenoh-config``: the parts run elsewhere (:mod:`vap_bt.transport.connected`)."""
+    if not (args.connect or args.zenoh_config):
+        if args.listen:
+            raise InputError("--listen", "only with --connect (the executive then listens there as a Zenoh peer); "
+                                         "the embedded run picks a free loopback port itself")
+        return None
+    if args.transport == "inproc":
+        raise InputError("--transport", "inproc runs the skills in this process; --connect reaches them over Zenoh")
+    from vap_bt.transport.config import part_settings
+
+    return part_settings(args)
 
 
 def _compiled_tree(args):
@@ -294,6 +311,12 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",
                     help="zenoh (default): skill servers in this command, reached over a loopback Zenoh link; "
                          "inproc: skills called directly (fast campaigns)")
+    from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments
+
+    add_transport_arguments(sr, default_listen=False, connect_help=(
+        f"run against parts already running: the router of `vap-bt sim` (e.g. {SIM_ENDPOINT}) and the skill "
+        "servers of `vap-bt serve --world remote`; repeatable"),
+        listen_help="with --connect: also listen here, as a Zenoh peer; repeatable")
     sr.add_argument("--report", help="write the full JSON report here")
     sr.add_argument("--rerun", nargs="+", metavar="MODE",
                     help="live view in rerun: 'spawn' (a local viewer), 'serve [PORT]' (gRPC on 127.0.0.1, "
@@ -351,6 +374,17 @@ def _add_transport_commands(sub) -> None:
             "vap-bt serve --robot base --robot ur5e --world pybullet --task trees/boil_water.yaml"))
         serve.add_serve_arguments(sv)
         sv.set_defaults(func=serve.run_serve)
+    from vap_bt.transport import sim_host
+
+    sm = sub.add_parser("sim", help="host the pybullet world, its drivers, the simulated VLM and the oracle over Zenoh",
+                        **_examples(
+        "vap-bt sim trees/boil_water.yaml --no-injection          # the router on tcp/127.0.0.1:7447",
+        "vap-bt serve --robot ur5e --world remote                 # in another shell",
+        "vap-bt serve --robot base --world remote                 # in a third",
+        "vap-bt run trees/boil_water.yaml --connect tcp/127.0.0.1:7447"),
+        description=sim_host.__doc__.split("\n\n")[0])
+    sim_host.add_sim_arguments(sm)
+    sm.set_defaults(func=sim_host.run_sim)
 
 
 

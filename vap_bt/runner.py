@@ -21,7 +21,7 @@ from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.domain.planner import Planner
-from vap_bt.errors import InputError
+from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
 from vap_bt.perception.goal_parsing import GoalParse, GoalParser
 from vap_bt.perception.protocol import Protocol
@@ -126,7 +126,8 @@ def make_camera(robot) -> Any:
 VLMS = ("sim", "sim-http", *HTTP_BACKENDS)
 
 
-def _sim_vlm(task: Task, world: World, cfg: RunConfig):
+def sim_vlm(task: Task, world: World, cfg: RunConfig):
+    """The world-side simulated VLM over ``world``'s capture records (here, or in ``vap-bt sim``)."""
     from vap_bt.sim.sim_vlm import SimVLM
 
     rooms = frozenset(o for o, t in task.planning.objects.items() if t == "room")
@@ -143,7 +144,7 @@ def make_endpoint(task: Task, world: World, cfg: RunConfig):
 
     if hasattr(world, "frame_cards"):
         world.frame_cards = True
-    return SimVLMEndpoint(_sim_vlm(task, world, cfg), world.captures, latency_s=cfg.vlm_latency).start()
+    return SimVLMEndpoint(sim_vlm(task, world, cfg), world.captures, latency_s=cfg.vlm_latency).start()
 
 
 def make_vlm(task: Task, world: World, cfg: RunConfig, endpoint=None):
@@ -155,7 +156,7 @@ def make_vlm(task: Task, world: World, cfg: RunConfig, endpoint=None):
     without a request) and is never served from the world's side. ``sim-http`` is the ``openai``
     client talking to the simulated VLM's ``endpoint`` (:func:`make_endpoint`)."""
     if cfg.vlm == "sim":
-        return _sim_vlm(task, world, cfg)
+        return sim_vlm(task, world, cfg)
     top_logprobs = 5 if cfg.vlm_logprobs else 0
     if cfg.vlm == "sim-http":
         return make_backend("openai", endpoint.url, endpoint.model, api_key="", top_logprobs=top_logprobs)
@@ -251,6 +252,8 @@ class Session:
     cfg: RunConfig
     progress: Callable[[str], None] = lambda m: None
     recorder: Any = None  # a vap_bt.viz.TreeRecorder (on_tree + note), or None
+    #: a TransportSettings: the world, skills and VLM run in other processes (``vap-bt run --connect``)
+    remote: Any = None
     planner: Planner = field(init=False)
     world: World = field(init=False)
     #: the last episode's outcome (belief, context, plans), beside its report
@@ -259,27 +262,44 @@ class Session:
     def __post_init__(self) -> None:
         self.words = check_config(self.task, self.cfg)  # bad input is said before a world starts
         self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
-        self.world = make_world(self.task, self.cfg)
-        self.skills = make_skills(self.task, self.world)
-        self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
-        self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
         self._world_side_vlm = self.cfg.vlm == "sim"  # a real backend is the executive's own client
+        self._connected = None
+        if self.remote is not None:
+            self._connect()
+        else:
+            self.world = make_world(self.task, self.cfg)
+            self.skills = make_skills(self.task, self.world)
+            self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
+            self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
         self._goal_parser: GoalParser | None = None
         self._first_request = 0
         self.profile = make_profile(self.task, self.vlm)
         if self.endpoint is not None:  # the served model reads questions in the words the executive asks
             self.endpoint.read_questions(self.profile, self.task.planning)
         self._embedded = None
-        if self.cfg.transport == "zenoh":
+        if self.cfg.transport == "zenoh" and self._connected is None:
             from vap_bt.transport.embedded import EmbeddedTransport
 
             self._embedded = EmbeddedTransport(self.world, self.skills,
                                                vlm=self.vlm if self._world_side_vlm else None, camera_for=make_camera)
 
+    def _connect(self) -> None:
+        """The world, skill servers and simulated VLM of other processes (:mod:`vap_bt.transport.connected`);
+        the world is only the runner's, to reset and score by."""
+        from vap_bt.transport.connected import ConnectedTransport
+
+        if self.cfg.world != "pybullet" or self.cfg.transport != "zenoh" or self.cfg.vlm == "sim-http":
+            raise InputError("--connect", "the parts `vap-bt sim` and `vap-bt serve --world remote` host are a "
+                                          "pybullet world over Zenoh, asked through --vlm sim (or a real backend)")
+        self._connected = ConnectedTransport(self.remote, self.task.name, world_side_vlm=self._world_side_vlm)
+        self.cfg = replace(self.cfg, injection=bool(self._connected.world.info()["injection"]))  # the world's say
+        self.world, self.skills, self.endpoint = self._connected.world, {}, None
+        self.vlm = self._connected.vlm_client if self._world_side_vlm else make_vlm(self.task, None, self.cfg)
+
     def _executive(self, cfg: RunConfig, scores: list[dict]) -> tuple[Executive, MeteredVLM]:
         """A fresh world state for ``cfg.seed`` and an executive wired to it (see the module docstring)."""
-        self.world.reset(cfg.seed)
-        if self._world_side_vlm:  # a real model has no seed: it answers at temperature 0
+        self.world.reset(cfg.seed)  # a world elsewhere reseeds its simulated VLM itself
+        if self._world_side_vlm and self._connected is None:  # a real model has no seed: it answers at temperature 0
             self.vlm.reseed(cfg.seed)
         if self.endpoint is not None:
             self.endpoint.reset(cfg.seed)
@@ -331,12 +351,20 @@ class Session:
             outcome.reason = "interrupted"
             rep = self._report(cfg, outcome, metered, scores, time.perf_counter() - t0)
             raise EpisodeInterrupted(rep) from None
+        except TransportError as exc:  # a part went away mid-episode: the tree is halted, the episode ends
+            if executive.outcome is None:
+                raise  # it never came up: nothing ran
+            outcome = self.last_outcome = executive.outcome
+            outcome.reason = f"transport down: {exc}"
+            self.progress(f"stopped: transport down ({exc})")
         wall = time.perf_counter() - t0
         return self._report(cfg, outcome, metered, scores, wall)
 
     def close(self) -> None:
         if self._embedded is not None:
             self._embedded.close()
+        if self._connected is not None:
+            self._connected.close()
         if not self._world_side_vlm:
             self.vlm.close()
         if self.endpoint is not None:
@@ -344,6 +372,9 @@ class Session:
         self.world.close()
 
     def _transport(self):
+        if self._connected is not None:
+            c = self._connected
+            return c.client, c.robot, c.vlm_client if self._world_side_vlm else self.vlm
         if self._embedded is not None:
             e = self._embedded
             return e.client, e.robot, e.vlm_client if self._world_side_vlm else self.vlm
@@ -411,6 +442,10 @@ class Session:
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],
             "wall_s": round(wall, 4),
+            # actions' sent_s/done_s count from this time.perf_counter() (CLOCK_MONOTONIC on Linux:
+            # comparable with the other processes' clocks on this machine)
+            "clock_t0": round(ctx.t0, 6),
+            **({"processes": self._connected.describe()} if self._connected is not None else {}),
             "versions": versions(),
         }
 

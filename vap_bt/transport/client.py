@@ -177,6 +177,11 @@ class ZenohSkillClient:
         handle._replies = querier.get(payload=payload)  # a channel: see the module docstring
         return handle
 
+    def servers(self, robot: str) -> frozenset[str]:
+        """The names of ``robot``'s skill servers whose liveliness tokens are up now."""
+        with self._lock:
+            return frozenset(self._alive.get(robot, ()))
+
     def close(self) -> None:
         """Fail goals still in flight, withdraw subscriptions; close the session if owned."""
         with self._lock:

@@ -10,6 +10,12 @@ not. So the default here is explicit and local:
 * a short link lease (:data:`LEASE_MS`, keep-alive every lease/4) so that a hung peer is
   declared dead — and its liveliness tokens vanish — within about two seconds.
 
+An episode run as separate processes (``vap-bt sim``, ``vap-bt serve --world remote``, ``vap-bt
+run --connect``) has the sim's session as its hub: a Zenoh *router* listening on
+:data:`SIM_ENDPOINT` unless told otherwise, the other parts its *clients* (:func:`part_settings`),
+so each part needs one address and the router routes between them. A part given ``--listen`` is
+a *peer* instead, reachable there directly as well (peers that listen mesh up by gossip).
+
 ``--zenoh-config FILE`` replaces all of that with the file (router, TLS, user/password, access
 control); ``--listen``/``--connect`` given as well are written over the file's endpoints.
 
@@ -35,6 +41,8 @@ from vap_bt.errors import TransportError
 
 #: where ``vap-bt serve`` listens, and clients connect, unless told otherwise
 DEFAULT_ENDPOINT = "tcp/127.0.0.1:7448"
+#: where ``vap-bt sim`` (the episode's Zenoh router) listens, and its parts connect, by default
+SIM_ENDPOINT = "tcp/127.0.0.1:7447"
 #: link lease in ms: a peer silent this long is dropped (and its tokens with it)
 LEASE_MS = 2000
 KEEP_ALIVE = 4  # keep-alives per lease period
@@ -133,23 +141,34 @@ def _short(exc: BaseException) -> str:
     return " ".join(text.split())
 
 
-def add_transport_arguments(parser: argparse.ArgumentParser, *, default_listen: bool) -> None:
+def add_transport_arguments(parser: argparse.ArgumentParser, *, default_listen: bool,
+                            default_endpoint: str = DEFAULT_ENDPOINT, listen_help: str = "",
+                            connect_help: str = "") -> None:
     """The Zenoh options every command that opens a session shares."""
     g = parser.add_argument_group("zenoh transport")
-    hint = f" (default: {DEFAULT_ENDPOINT} when nothing else is given)" if default_listen else ""
+    hint = f" (default: {default_endpoint} when nothing else is given)" if default_listen else ""
     g.add_argument("--listen", action="append", default=[], metavar="ENDPOINT",
-                   help=f"endpoint to listen on, e.g. tcp/127.0.0.1:7448; repeatable{hint}")
+                   help=listen_help or f"endpoint to listen on, e.g. {default_endpoint}; repeatable{hint}")
     g.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
-                   help="endpoint of a peer or router to connect to; repeatable")
+                   help=connect_help or "endpoint of a peer or router to connect to; repeatable")
     g.add_argument("--zenoh-config", metavar="FILE",
                    help="a zenoh JSON5 config used as is (router, TLS, user/password)")
     g.add_argument("--peer-timeout", type=float, default=PEER_TIMEOUT_S, metavar="S",
                    help=f"seconds to wait for configured peers (default {PEER_TIMEOUT_S:g})")
 
 
-def settings_from_args(args: argparse.Namespace, *, default_listen: bool) -> TransportSettings:
+def settings_from_args(args: argparse.Namespace, *, default_listen: bool,
+                       default_endpoint: str = DEFAULT_ENDPOINT, mode: str = "peer") -> TransportSettings:
     listen = tuple(args.listen)
     if default_listen and not (args.listen or args.connect or args.zenoh_config):
-        listen = (DEFAULT_ENDPOINT,)
+        listen = (default_endpoint,)
     return TransportSettings(listen=listen, connect=tuple(args.connect),
-                             config_file=args.zenoh_config, peer_timeout=args.peer_timeout)
+                             config_file=args.zenoh_config, peer_timeout=args.peer_timeout, mode=mode)
+
+
+def part_settings(args: argparse.Namespace) -> TransportSettings:
+    """A part of an episode that reaches the others through ``vap-bt sim``'s router: a client of
+    ``--connect`` (default :data:`SIM_ENDPOINT`), or a peer when it ``--listen``s too."""
+    connect = tuple(args.connect) or (() if args.zenoh_config else (SIM_ENDPOINT,))
+    return TransportSettings(listen=tuple(args.listen), connect=connect, config_file=args.zenoh_config,
+                             peer_timeout=args.peer_timeout, mode="peer" if args.listen else "client")

@@ -361,6 +361,7 @@ class RemoteDrivers:
         self.arm, self.gripper = RemoteArm(self.link), RemoteGripper(self.link)
         self.base, self.camera = RemoteBase(self.link), RemoteCamera(self.link)
         self._map = None
+        self._stamp = float("-inf")
 
     @property
     def drivers(self) -> "RemoteDrivers":
@@ -370,12 +371,16 @@ class RemoteDrivers:
     def state(self):
         from vap_bt.robot.state import RobotState
 
-        return self.link.call("state", expect=RobotState)
+        state = self.link.call("state", expect=RobotState)
+        if float(state.stamp) < self._stamp:  # the robot's clock went back: a new episode, maybe a new site
+            self._map = None
+        self._stamp = float(state.stamp)
+        return state
 
     def site_map(self):
         from vap_bt.robot.site_map import SiteMap
 
-        if self._map is None:  # the map is static: asked once
+        if self._map is None:  # the map is static within an episode: asked once per episode
             self._map = self.link.call("map", expect=SiteMap)
         return self._map
 

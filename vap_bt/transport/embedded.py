@@ -23,6 +23,11 @@ from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
 
 
+#: the robot that carries the wrist camera: its server hosts the camera service (and, embedded,
+#: the world-side VLM beside it)
+CAMERA_ROBOT = "ur5e"
+
+
 def free_loopback_endpoint() -> str:
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
         s.bind(("127.0.0.1", 0))
@@ -36,7 +41,7 @@ class EmbeddedTransport:
     world: Any
     skills: dict[str, Skill]
     vlm: Any | None = None  # a world-side VLM to serve beside the camera
-    camera_robot: str = "ur5e"
+    camera_robot: str = CAMERA_ROBOT
     #: the camera service over the (locked) world the servers share (default: the world itself)
     camera_for: Callable[[Any], Any] = lambda world: world
     server_settings: TransportSettings | None = None

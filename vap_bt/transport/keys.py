@@ -15,6 +15,8 @@ other's goals (a client subscribes to its robots' namespaces only)::
     vap/<robot>/world/action          queryable: ActionEvent -> ActionAck (sim only: which action
                                       a goal is, for Table II injection; see world_hooks)
     vap/<robot>/alive/<server>        liveliness token of a running skill server
+    vap/world/oracle/<verb>           queryable: OracleQuery -> OracleReply (sim only: the truth
+                                      the runner scores its report by; see world_services)
 
 Robot, action, server and goal names are single key chunks: no ``/`` and none of Zenoh's
 wildcard or reserved characters, checked here once so that a bad name is one clear error.
@@ -72,6 +74,11 @@ def vlm(robot: str) -> str:
 def world_action(robot: str) -> str:
     """A simulated world's hook: the skill server says which action a goal is (sim only)."""
     return f"{ROOT}/{chunk('robot', robot)}/world/action"
+
+
+def oracle(verb: str) -> str:
+    """A simulated world's oracle, for the runner's report only (one world per Zenoh network)."""
+    return f"{ROOT}/world/oracle/{chunk('oracle verb', verb)}"
 
 
 def alive(robot: str, server: str) -> str:

@@ -39,7 +39,8 @@ robot interfaces (frames with detections, state, map, viewpoints) and the VLM se
 schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints, the
 site map carries the furniture models (height, cavity, articulation, switch, tap; a door's
 articulation), the robot's drivers travel (driver calls and replies), and a simulated world has an
-action hook (``action_event``/``action_ack``). A schema-1 frame is still recognised (its byte 8, the
+action hook (``action_event``/``action_ack``) and, added later without a bump since nothing
+changed, an oracle for the runner's report (``oracle_query``/``oracle_reply``). A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -202,6 +203,24 @@ class ActionAck:
 
 
 @dataclass(frozen=True)
+class OracleQuery:
+    """Sim only, for the runner's report (:mod:`vap_bt.transport.world_services`): ask a simulated
+    world ``verb`` (``holds``, ``injected``, ``info``, ``site_map``, ``reset``) about ``atoms``,
+    or reset it to ``seed``."""
+
+    verb: str
+    atoms: tuple[Atom, ...] = ()
+    seed: int | None = None
+
+
+@dataclass(frozen=True)
+class OracleReply:
+    """A simulated world's answer to an OracleQuery: plain JSON values."""
+
+    values: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
 class MoveViewReply:
     reachable: bool
 
@@ -359,6 +378,14 @@ def _unpack_vlm(d: dict[str, Any], _: Arrays) -> VlmRequest:
     return VlmRequest(q, d["frame_id"])
 
 
+def _pack_oracle(m: OracleQuery) -> tuple[dict[str, Any], Arrays]:
+    return {"verb": m.verb, "atoms": _atoms_out(m.atoms), "seed": m.seed}, {}
+
+
+def _unpack_oracle(d: dict[str, Any], _: Arrays) -> OracleQuery:
+    return OracleQuery(d["verb"], _atoms_in(d["atoms"]), d.get("seed"))
+
+
 # -- goal traffic: binary headers ------------------------------------------------------------
 
 
@@ -469,6 +496,8 @@ KIND_CODES = {
     "site_map": 18, "vlm_request": 19, "answer": 20,
     # schema 5: a simulated world's action hook, the robot's drivers (vap_bt.transport.drivers)
     "action_event": 21, "action_ack": 22, "driver_call": 23, "driver_reply": 24,
+    # added in schema 5 (new kinds only, nothing changed): a simulated world's oracle for the report
+    "oracle_query": 25, "oracle_reply": 26,
 }
 
 Encoder = Callable[[Any], bytes]
@@ -499,6 +528,8 @@ _JSON: dict[str, tuple[type, Packer, Unpacker]] = {
     "action_ack": (ActionAck, _pack_flat, _flat_unpacker(ActionAck)),
     "driver_call": (DriverCall, _pack_driver, _driver_unpacker(DriverCall)),
     "driver_reply": (DriverReply, _pack_driver, _driver_unpacker(DriverReply)),
+    "oracle_query": (OracleQuery, _pack_oracle, _unpack_oracle),
+    "oracle_reply": (OracleReply, _pack_flat, _flat_unpacker(OracleReply)),
 }
 _KIND_OF = {cls: kind for kind, (cls, _, _) in [*_BINARY.items(), *_JSON.items()]}
 # class -> its frame prefix and encoder (binary kinds) or packer (JSON kinds)

@@ -7,6 +7,11 @@ shared safely by the arm's and the base's skills. It prints one ``ready`` line o
 everything is declared and runs until SIGINT or SIGTERM. ``python -m vap_bt.transport.serve``
 does the same without the ``vap-bt`` wrapper.
 
+With ``--world remote`` the skills bind to a robot whose world runs in ``vap-bt sim``
+(:class:`~vap_bt.transport.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
+server is then a client of the sim's router (``--connect``, default ``tcp/127.0.0.1:7447``), and
+the camera robot's server (``ur5e``) hosts the camera service on the skills' own kit.
+
 ``vap-bt skills`` lists the installed skill plugins: action, robot, resource, where it comes
 from; broken plugins and conflicting ones are reported too (a conflict exits with code 2).
 
@@ -23,10 +28,13 @@ import threading
 
 from vap_bt import plugins
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, InputError, VapBtError
-from vap_bt.transport.config import add_transport_arguments, open_session, settings_from_args
+from vap_bt.transport.config import add_transport_arguments, open_session, part_settings, settings_from_args
 from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
 from vap_bt.transport.world_factory import make_world, parse_world_args
+
+#: ``--world remote``: the robot of a world that ``vap-bt sim`` hosts
+REMOTE = "remote"
 
 
 def add_serve_arguments(p: argparse.ArgumentParser) -> None:
@@ -34,7 +42,8 @@ def add_serve_arguments(p: argparse.ArgumentParser) -> None:
                    help="robot whose skills to host (ur5e, base, ...); repeatable; "
                         "default: every robot with a skill plugin")
     p.add_argument("--world", default="symbolic",
-                   help="symbolic, pybullet, or package.module:factory (default symbolic)")
+                   help="symbolic, pybullet, remote (the world of a running `vap-bt sim`, reached at --connect, "
+                        "default tcp/127.0.0.1:7447), or package.module:factory (default symbolic)")
     p.add_argument("--task", help="task file the symbolic/pybullet world is built from")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--world-arg", action="append", default=[], metavar="KEY=VALUE",
@@ -51,18 +60,57 @@ def run_serve(args: argparse.Namespace) -> int:
     robots = _robots(args.robot, table)
     if args.name and len(robots) > 1:
         raise InputError("--name", "a server name only fits one --robot")
+    if args.world == REMOTE:
+        return _serve_remote(args, entries, robots)
     world = make_world(args.world, args.task, args.seed, parse_world_args(args.world_arg))
     shared = LockedWorld(world)
     settings = settings_from_args(args, default_listen=True)
-    session = open_session(settings)
-    servers: list[SkillServer] = []
-    stop = threading.Event()
     try:
-        for robot in robots:
-            skills = plugins.instantiate(shared, robot, entries)
-            servers.append(SkillServer(session, robot, skills, camera=shared, name=args.name).start())
+        session = open_session(settings)
+    except BaseException:
+        world.close()
+        raise
+    servers = [SkillServer(session, robot, plugins.instantiate(shared, robot, entries), camera=shared,
+                           name=args.name) for robot in robots]
+    return _serve_until_stopped(session, servers, settings, closing=[world])
+
+
+def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
+    """Skills over a robot whose world is ``vap-bt sim``'s (:class:`RemoteRobot`); the camera
+    robot's server hosts the camera service, built on the same kit as its skills."""
+    from vap_bt.runner import make_camera
+    from vap_bt.transport.embedded import CAMERA_ROBOT
+    from vap_bt.transport.remote_robot import RemoteRobot
+
+    for option, given in (("--task", args.task), ("--world-arg", args.world_arg)):
+        if given:
+            raise InputError(option, "a remote world is vap-bt sim's: give the task to vap-bt sim")
+    settings = part_settings(args)
+    session = open_session(settings)
+    bodies = {robot: RemoteRobot(session, robot) for robot in robots}
+    try:
+        for body in bodies.values():
+            body.site_map()  # the sim serves this robot's drivers (else one TransportError, exit 4)
+    except BaseException:
+        for body in bodies.values():
+            body.close()
+        session.close()
+        raise
+    servers = [SkillServer(session, robot, plugins.instantiate(body, robot, entries), name=args.name,
+                           camera=make_camera(body) if robot == CAMERA_ROBOT else None)
+               for robot, body in bodies.items()]
+    return _serve_until_stopped(session, servers, settings, closing=list(bodies.values()))
+
+
+def _serve_until_stopped(session, servers: list[SkillServer], settings, closing: list) -> int:
+    """Start ``servers``, say ``ready``, wait for SIGINT/SIGTERM; then close everything."""
+    stop = threading.Event()
+    started: list[SkillServer] = []
+    try:
+        for server in servers:
+            started.append(server.start())
         _on_signals(stop)
-        where = ", ".join(settings.listen) or "(no listener)"
+        where = ", ".join(settings.listen) or f"(connected to {', '.join(settings.connect) or 'the configured router'})"
         hosted = "; ".join(f"{s.robot}: {' '.join(sorted(s.skills))}" for s in servers)
         print(f"vap-bt serve: ready on {where} — {hosted}", flush=True)
         while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
@@ -70,10 +118,11 @@ def run_serve(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         pass
     finally:
-        for server in servers:
+        for server in started:
             server.close()
         session.close()
-        world.close()
+        for thing in closing:
+            thing.close()
     return EXIT_OK
 
 

@@ -1,0 +1,202 @@
+"""An episode as four processes over Zenoh on 127.0.0.1: the world, two skill servers, the executive.
+
+``vap-bt sim`` hosts the pybullet world (drivers, action hook, simulated VLM, oracle) and is the
+episode's Zenoh router; ``vap-bt serve --world remote`` hosts the arm's and the base's skills
+over its drivers; ``vap-bt run --connect`` runs the executive with no world of its own and scores
+its report by asking the sim's oracle. Each part is a real subprocess in a process group of its
+own, so that whatever it started goes with it; every test ends by stopping all of them and
+checking that no process of any group is left.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterator
+
+import pytest
+
+from plugin_fixtures.zenoh_net import endpoint, free_port
+
+pytestmark = pytest.mark.timeout(300)
+
+ROOT = Path(__file__).resolve().parents[1]
+TASK = str(ROOT / "trees" / "boil_water.yaml")
+SEED = "0"  # boil_water without injection succeeds on this seed embedded as well
+
+
+@dataclass
+class Part:
+    """One process of the episode, its output in files (a pipe nobody reads would stall it)."""
+
+    name: str
+    proc: subprocess.Popen
+    out: Path
+    err: Path
+
+    def stdout(self) -> str:
+        return self.out.read_text()
+
+    def stderr(self) -> str:
+        return self.err.read_text()
+
+    def wait_for(self, pattern: str, timeout: float, stream: str = "stdout") -> re.Match:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            found = re.search(pattern, self.stdout() if stream == "stdout" else self.stderr())
+            if found:
+                return found
+            if self.proc.poll() is not None:
+                break
+            time.sleep(0.01)
+        raise AssertionError(f"{self.name}: no {pattern!r} on {stream} (exit {self.proc.poll()}):\n"
+                             f"{self.stdout()}\n{self.stderr()}")
+
+
+def _vap_bt(*args: str) -> list[str]:
+    return [sys.executable, "-m", "vap_bt.cli", *args]
+
+
+def _start(tmp: Path, name: str, argv: list[str]) -> Part:
+    out, err = tmp / f"{name}.out", tmp / f"{name}.err"
+    with out.open("w") as o, err.open("w") as e:
+        proc = subprocess.Popen(argv, stdout=o, stderr=e, stdin=subprocess.DEVNULL, cwd=ROOT,
+                                start_new_session=True)  # its own process group: killpg reaches its children
+    return Part(name, proc, out, err)
+
+
+def _group_gone(pgid: int) -> bool:
+    try:
+        os.killpg(pgid, 0)
+    except ProcessLookupError:
+        return True
+    return False
+
+
+@contextmanager
+def parts(tmp: Path) -> Iterator[tuple[str, dict[str, Part]]]:
+    """The sim and both skill servers up and ready; on exit all stopped (SIGTERM) and checked gone."""
+    ep = endpoint(free_port())
+    running: dict[str, Part] = {}
+    try:
+        running["sim"] = _start(tmp, "sim", _vap_bt("sim", TASK, "--seed", SEED, "--no-injection", "--listen", ep))
+        running["sim"].wait_for(r"vap-bt sim: ready", 120)
+        for robot, name in (("ur5e", "arm"), ("base", "base")):
+            running[name] = _start(tmp, name, _vap_bt("serve", "--robot", robot, "--world", "remote", "--connect", ep))
+        for name in ("arm", "base"):
+            running[name].wait_for(r"vap-bt serve: ready", 60)
+        yield ep, running
+    finally:
+        _stop_all(running)
+
+
+def _stop_all(running: dict[str, Part]) -> None:
+    for part in running.values():
+        if part.proc.poll() is None:
+            os.killpg(part.proc.pid, signal.SIGTERM)
+    for part in running.values():
+        try:
+            part.proc.wait(30)
+        except subprocess.TimeoutExpired:
+            os.killpg(part.proc.pid, signal.SIGKILL)
+            part.proc.wait(10)
+            raise AssertionError(f"{part.name} did not stop on SIGTERM:\n{part.stderr()}")
+    deadline = time.monotonic() + 5
+    while not all(_group_gone(p.proc.pid) for p in running.values()) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    left = [p.name for p in running.values() if not _group_gone(p.proc.pid)]
+    for p in running.values():
+        if not _group_gone(p.proc.pid):
+            os.killpg(p.proc.pid, signal.SIGKILL)
+    assert not left, f"processes left behind in the groups of {left}"
+
+
+def _run(tmp: Path, ep: str, *extra: str) -> Part:
+    return _start(tmp, "run", _vap_bt("run", TASK, "--connect", ep, "--seed", SEED, "--no-injection",
+                                      "--report", str(tmp / "report.json"), *extra))
+
+
+@pytest.mark.slow
+def test_boil_water_as_four_processes_succeeds_and_the_world_confirms_it(tmp_path):
+    with parts(tmp_path) as (ep, running):
+        run = running["run"] = _run(tmp_path, ep)
+        assert run.proc.wait(240) == 0, run.stderr()
+        report = json.loads((tmp_path / "report.json").read_text())
+        assert report["success"] and report["goal_satisfied"]  # the oracle is the sim process's
+        assert report["world"]["name"] == "pybullet" and report["config"]["injection"] is False
+        assert report["injected"] == []
+        servers = report["processes"]["servers"]
+        assert [s.split("-")[0] for s in servers["ur5e"]] == ["ur5e"]
+        assert [s.split("-")[0] for s in servers["base"]] == ["base"]
+        # every action the executive ran reached the world through a skill server: announced there
+        executed = [a["action"] for a in report["actions_executed"]]
+        assert re.findall(r"\] begin (.+)", running["sim"].stderr()) == executed
+        assert "Traceback" not in run.stderr() + running["sim"].stderr()
+        # the same parts serve another episode: the run resets the world it finds at the goal
+        again = _start(tmp_path, "again", _vap_bt("run", TASK, "--connect", ep, "--seed", SEED, "--json", "-q"))
+        assert again.proc.wait(240) == 0, again.stderr()
+        summary = json.loads(again.stdout())
+        assert summary["success"] and summary["goal_satisfied"], summary
+        other = subprocess.run(_vap_bt("run", str(ROOT / "trees" / "collect_cup.yaml"), "--connect", ep),
+                               capture_output=True, text=True, timeout=120, cwd=ROOT)
+        assert other.returncode == 2
+        assert other.stderr.strip().splitlines()[-1] == (
+            f"vap-bt: --connect: the world at {ep} runs task 'boil_water', not 'collect_cup'")
+    # stopped by SIGTERM, every part exits cleanly
+    assert {n: p.proc.returncode for n, p in running.items()} == {"sim": 0, "arm": 0, "base": 0, "run": 0}
+
+
+@pytest.mark.slow
+def test_killing_the_arm_server_mid_takeout_fails_that_goal_within_half_a_second(tmp_path):
+    with parts(tmp_path) as (ep, running):
+        run = running["run"] = _run(tmp_path, ep, "--max-replans", "1")
+        sim = running["sim"]
+        begun = sim.wait_for(r"\[([0-9.]+)\] begin takeout\(", 240, stream="stderr")
+        time.sleep(0.1)  # the skill is planning or moving the arm by now (its goal lasts about 0.5 s)
+        killed_at = time.perf_counter()  # the clock the report and the sim's log count in
+        os.killpg(running["arm"].proc.pid, signal.SIGKILL)
+        assert run.proc.wait(240) == 1, run.stderr()
+        assert running["arm"].proc.wait(10) == -signal.SIGKILL
+        report = json.loads((tmp_path / "report.json").read_text())
+        takeout = next(a for a in report["actions_executed"] if a["action"].startswith("takeout("))
+        assert takeout["state"] == "aborted" and takeout["message"] == "server vanished", takeout
+        failed_at = report["clock_t0"] + takeout["done_s"]
+        assert float(begun.group(1)) < killed_at < failed_at  # killed in the middle of the goal
+        print(f"the goal failed {failed_at - killed_at:.3f} s after the kill")  # shown with -s
+        assert failed_at - killed_at < 0.5, f"the goal failed {failed_at - killed_at:.3f} s after the kill"
+        assert not report["success"] and not report["goal_satisfied"]
+        # the executive stopped: nothing was started in the world after the dead server's goal
+        assert "stopped: transport down" in run.stderr()
+        assert sim.stderr().split("begin takeout(", 1)[1].count("] begin ") == 0
+        assert "Traceback" not in run.stderr() + running["sim"].stderr()
+    assert running["sim"].proc.returncode == 0 and running["base"].proc.returncode == 0
+
+
+@pytest.mark.parametrize("argv, code, message", [
+    (("run", TASK, "--connect", "tcp/127.0.0.1:{port}"), 4,
+     "vap-bt: zenoh could not start: Unable to connect to any of [Single(tcp/127.0.0.1:{port})]!"),
+    (("run", TASK, "--listen", "tcp/127.0.0.1:{port}"), 2,
+     "vap-bt: --listen: only with --connect (the executive then listens there as a Zenoh peer); "
+     "the embedded run picks a free loopback port itself"),
+    (("serve", "--robot", "ur5e", "--world", "remote", "--connect", "tcp/127.0.0.1:{port}"), 4,
+     "vap-bt: zenoh could not start: Unable to connect to any of [Single(tcp/127.0.0.1:{port})]!"),
+    (("serve", "--world", "remote", "--task", TASK), 2,
+     "vap-bt: --task: a remote world is vap-bt sim's: give the task to vap-bt sim"),
+    (("sim", str(ROOT / "tests" / "domains" / "nope.yaml")), 2, None),
+], ids=["run-nobody-there", "run-listen-alone", "serve-nobody-there", "serve-remote-task", "sim-no-task"])
+def test_a_part_that_cannot_start_says_why_in_one_line(argv, code, message):
+    port = free_port()
+    argv = [a.format(port=port) for a in argv]
+    done = subprocess.run(_vap_bt(*argv), capture_output=True, text=True, timeout=120, cwd=ROOT)
+    assert done.returncode == code, done.stderr
+    assert "Traceback" not in done.stderr
+    last = done.stderr.strip().splitlines()[-1]
+    assert last == message.format(port=port) if message else last.startswith("vap-bt: ") and "nope.yaml" in last

@@ -1,0 +1,126 @@
+"""The ``vap-bt sim TASK`` command: the pybullet world in a process of its own, over Zenoh.
+
+It builds the task's household (``--seed``, ``--no-injection``) and offers, on one Zenoh session:
+
+* the robot's drivers and body for every robot that has skills (``ur5e``, ``base``: one mobile
+  UR5e, two namespaces) — :class:`~vap_bt.transport.drivers.DriverServer`;
+* the sim-only action hook that arms Table II injection —
+  :class:`~vap_bt.transport.world_hooks.ActionHookServer`;
+* the simulated VLM on the camera robot's ``vlm/ask`` key —
+  :class:`~vap_bt.transport.world_services.VlmServer`;
+* the oracle the runner scores its report by —
+  :class:`~vap_bt.transport.world_services.OracleServer`.
+
+Its session is a Zenoh **router** listening on ``--listen`` (default :data:`SIM_ENDPOINT`, loopback),
+so the skill servers (``vap-bt serve --world remote``) and the executive (``vap-bt run
+--connect``) only need its address; every message between them is routed through it. Everything
+runs under the world's own lock (pybullet is not thread-safe). It prints one ``ready`` line on
+stdout once all is declared, one line on stderr per action announced (stamped
+with the monotonic clock the runner's reports count from), and runs until SIGINT or
+SIGTERM, then withdraws everything and exits 0.
+"""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import signal
+import sys
+import threading
+import time
+
+from vap_bt import plugins
+from vap_bt.errors import EXIT_OK, InputError, VapBtError
+from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, open_session, settings_from_args
+from vap_bt.transport.drivers import DriverServer
+from vap_bt.transport.embedded import CAMERA_ROBOT
+from vap_bt.transport.locked_world import LockedWorld
+from vap_bt.transport.world_hooks import ActionHookServer
+from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
+
+
+def add_sim_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("task", help="task file whose household to build (trees/*.yaml)")
+    p.add_argument("--seed", type=int, default=0, help="the world's first seed (a run resets it to its own)")
+    p.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
+    p.add_argument("--vlm-error", type=float, help="the simulated VLM's per-query error rate (default 0.05)")
+    add_transport_arguments(p, default_listen=True, default_endpoint=SIM_ENDPOINT)
+
+
+class _Announcer:
+    """The world's action hook, saying each announcement on stderr (what ran when, for the logs)."""
+
+    def __init__(self, world) -> None:
+        self.world = world
+
+    def begin_action(self, action: str, args: tuple[str, ...]) -> None:
+        self.world.begin_action(action, args)
+        _say(f"begin {action}({', '.join(args)})")
+
+    def end_action(self, action: str | None = None, args: tuple[str, ...] | None = None) -> None:
+        self.world.end_action(action, args)
+        _say(f"end {action}({', '.join(args or ())})")
+
+
+def _say(what: str) -> None:
+    """One log line on stderr, stamped with the monotonic clock the runner's reports count from
+    (``clock_t0``), so the logs of all the parts line up."""
+    print(f"vap-bt sim: [{time.perf_counter():.3f}] {what}", file=sys.stderr, flush=True)
+
+
+def run_sim(args: argparse.Namespace) -> int:
+    from vap_bt import runner, taskfile
+
+    task = taskfile.load(args.task)
+    if task.spec.scene is None:
+        raise InputError(args.task, "vap-bt sim builds a household from a task file's scene:; this task has none")
+    cfg = runner.RunConfig.from_task(task, world="pybullet", seed=args.seed, vlm_error=args.vlm_error,
+                                     injection=False if args.no_injection else None)
+    robots = tuple(sorted({e.robot for e in plugins.skill_table(plugins.discover_skills()).values()}))
+    settings = settings_from_args(args, default_listen=True, default_endpoint=SIM_ENDPOINT, mode="router")
+    world = runner.make_world(task, cfg)
+    shared = LockedWorld(world, world.lock)  # the drivers hold this lock too
+    vlm = LockedWorld(runner.sim_vlm(task, world, cfg), world.lock)
+    stop = threading.Event()
+    parts: list = []
+    session = None
+    try:
+        session = open_session(settings)
+        parts += [DriverServer(session, robot, world.drivers, shared).start() for robot in robots]
+        parts.append(ActionHookServer(session, robots, _Announcer(shared)))
+        parts.append(VlmServer(session, CAMERA_ROBOT, vlm))
+        parts.append(OracleServer(session, shared, WorldFacts(task.name, vlm)))
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGTERM, lambda *_: stop.set())
+        where = ", ".join(settings.listen) or f"the endpoints {settings.config_file} names"
+        print(f"vap-bt sim: ready on {where} — {task.name}, seed {cfg.seed}, injection "
+              f"{'on' if cfg.injection else 'off'}; drivers of {', '.join(robots)}; vlm on {CAMERA_ROBOT}",
+              flush=True)
+        while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
+            pass
+    except KeyboardInterrupt:
+        pass
+    finally:
+        for part in reversed(parts):
+            part.close()
+        if session is not None:
+            session.close()
+        world.close()
+    return EXIT_OK
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m vap_bt.transport.sim_host``: the sim command on its own."""
+    parser = argparse.ArgumentParser(prog="vap-bt sim", description=__doc__.splitlines()[0])
+    add_sim_arguments(parser)
+    args = parser.parse_args(argv)
+    logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
+    try:
+        return run_sim(args)
+    except VapBtError as exc:
+        print(f"vap-bt sim: {exc}", file=sys.stderr)
+        return exc.exit_code
+
+
+if __name__ == "__main__":
+    sys.exit(main())
