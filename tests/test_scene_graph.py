@@ -45,3 +45,17 @@ def test_relocate_replaces_the_location_and_keeps_the_hand_consistent():
     assert g.location("cup") == seen
     assert g.holds(A("hand_empty")), "nothing is held any more, so the hand must be believed empty"
     assert [c.cause for c in g.history][-2:] == ["relocate", "relocate"]
+
+
+def test_relocate_believes_what_the_frames_show_in_the_way_and_leaves_reachability_to_the_checks():
+    # pick_plate: a check found the plate out of reach; the frame then shows the bowl in front of
+    # it. Without the blocker in belief no plan could push it away.
+    g, _ = graph_for("pick_plate.yaml")
+    g.correct(A("reachable(plate)"), False)
+    where = {A("on(plate, dining_table)"), A("in_room(plate, kitchen)")}
+    mug = g.holds(A("reachable(mug)"))
+    g.relocate("plate", where | {A("blocking(bowl, plate)"), A("reachable(mug)"), A("reachable(plate)")})
+    assert g.holds(A("blocking(bowl, plate)")) and not g.holds(A("reachable(plate)"))
+    assert g.holds(A("reachable(mug)")) == mug  # only the plate's place and what stands in its way
+    g.relocate("plate", where)  # a later frame shows nothing in its way
+    assert not g.holds(A("blocking(bowl, plate)")) and not g.holds(A("reachable(plate)"))

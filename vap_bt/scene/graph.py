@@ -124,9 +124,13 @@ class SceneGraph:
         return {a for a in self.facts if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj}
 
     def relocate(self, obj: str, observed: set[Atom]) -> Change:
-        """Believe ``observed`` (this object's location atoms) instead of what was believed."""
-        new = {a for a in observed if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj}
-        ch = self._change("relocate", new, self.location(obj) - new)
+        """Believe ``observed`` (this object's location atoms, and what the frames show standing in
+        its way) instead of what was believed. Whether it can be reached is left to the checks: a
+        blocker seen is a reason the planner can act on (push it), a verdict is not overturned."""
+        new = {a for a in observed if a.args and (a.predicate in LOCATION_PREDICATES and a.args[0] == obj
+                                                  or a.predicate == "blocking" and a.args[-1] == obj)}
+        old = self.location(obj) | {a for a in self.facts if a.predicate == "blocking" and a.args[-1] == obj}
+        ch = self._change("relocate", new, old - new)
         self._sync_hand()
         return ch
 
