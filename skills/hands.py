@@ -284,8 +284,9 @@ class Hands:
             self.body.through([q], 0.8)
 
     def let_go(self) -> None:
-        self.eyes.held = None
         self.body.fingers(self.body.cfg.gripper.stroke)
+        if not self.body.holding():  # a gripper that would not open still holds what it held
+            self.eyes.held = None
 
     # -- placing -----------------------------------------------------------------------------
 

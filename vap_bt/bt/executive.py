@@ -374,7 +374,10 @@ class Executive:
         self.progress(f"    lost track of {', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
-        sweep = self.builder.sweep(self.camera, near)
+        # an item that slipped from the hand lies on the floor near the robot: look round there first
+        state = self.body.state()
+        around = tuple(self.builder.floor_views(here, state.base_pose[:2])) if here and state.base_pose else ()
+        sweep = self.builder.sweep(self.camera, near, first=around)
         rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
         if rest and not all(self.builder.placed(o, in_hand) for o in lost):

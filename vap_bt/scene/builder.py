@@ -135,13 +135,24 @@ class SceneGraphBuilder:
             if room in d.rooms:
                 out.append(self._door_view(d, room))
         if info is not None and info.bounds is not None:
-            x0, y0, x1, y1 = info.bounds
-            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-            for h in FLOOR_LOOK_HEADINGS:
-                point = (cx + FLOOR_LOOK_DISTANCE * math.cos(h), cy + FLOOR_LOOK_DISTANCE * math.sin(h), 0.0)
-                out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
+            out += self.floor_views(room)
         elif info is not None and info.floor in self.objects:
             out.append(Viewpoint(room, Aim((info.floor,)), None, f"{room} floor"))
+        return out
+
+    def floor_views(self, room: str, centre: tuple[float, float] | None = None) -> list[Viewpoint]:
+        """A look round ``room``'s floor from ``centre`` (default: the room's middle); none for a
+        room the map gives no outline."""
+        info = self.site_map.room(room)
+        if info is None or info.bounds is None:
+            return []
+        x0, y0, x1, y1 = info.bounds
+        cx, cy = centre if centre is not None else ((x0 + x1) / 2, (y0 + y1) / 2)
+        where = "" if centre is None else " from where the robot stands"
+        out = []
+        for h in FLOOR_LOOK_HEADINGS:
+            point = (cx + FLOOR_LOOK_DISTANCE * math.cos(h), cy + FLOOR_LOOK_DISTANCE * math.sin(h), 0.0)
+            out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor{where}, heading {h:+.2f}"))
         return out
 
     def _supports_things(self, ptype: str) -> bool:
@@ -173,15 +184,16 @@ class SceneGraphBuilder:
         bx, by = x + ux / n * DOOR_VIEW_DISTANCE, y + uy / n * DOOR_VIEW_DISTANCE
         return Viewpoint(room, Aim((d.name,), (x, y, DOOR_AIM_HEIGHT)), (bx, by, math.atan2(y - by, x - bx)), f"{d.name} from {room}")
 
-    def sweep(self, camera: Camera, rooms: list[str]) -> SweepRecord:
-        """Go round ``rooms`` in order, looking from each of their views; integrate every frame."""
+    def sweep(self, camera: Camera, rooms: list[str], first: tuple[Viewpoint, ...] = ()) -> SweepRecord:
+        """Go round ``rooms`` in order, looking from each of their views (after the ``first`` views,
+        which count as their room's); integrate every frame."""
         t0 = time.perf_counter()
         rec = SweepRecord(tuple(rooms))
         detected: set[str] = set()
         unreached = []
         for room in rooms:
             reached_here = 0
-            for view in self.views(room):
+            for view in [*(v for v in first if v.room == room), *self.views(room)]:
                 rec.views += 1
                 if not camera.goto_view(view):
                     continue
