@@ -29,7 +29,7 @@ from __future__ import annotations
 import itertools
 import threading
 import time
-from typing import Any, Mapping
+from typing import Any, Iterable, Mapping
 
 import zenoh
 
@@ -345,21 +345,9 @@ class _Queries:
             querier.undeclare()
 
     def ask(self, verb: str, request: Any, expect: type) -> Any:
-        for reply in self._queriers[verb].get(payload=encode(request)):
-            if reply.ok is None:
-                raise TransportError(f"{self.what} {verb} on robot {self.robot}: {_error_text(reply)}")
-            payload = reply.ok.payload.to_bytes()
-            try:
-                return decode(payload, expect)
-            except MessageError as exc:
-                try:  # the server's own explanation, if that is what came back
-                    reason = decode(payload, ErrorReply).reason
-                except MessageError:
-                    reason = str(exc)
-                raise TransportError(f"{self.what} {verb} on robot {self.robot}: {reason}") from None
-        raise TransportError(
-            f"no {self.what} on robot {self.robot!r} answered {verb} within {self.timeout:g} s"
-        )
+        return first_reply(self._queriers[verb].get(payload=encode(request)), expect,
+                           f"{self.what} {verb} on robot {self.robot}",
+                           f"no {self.what} on robot {self.robot!r} answered {verb} within {self.timeout:g} s")
 
 
 class ZenohRobot:
@@ -430,6 +418,25 @@ def _recv_until(replies: Any, deadline: float) -> zenoh.Reply | None:
 
 def _direct(fn: Any) -> zenoh.handlers.Callback:
     return zenoh.handlers.Callback(fn, indirect=False)
+
+
+def first_reply(replies: Iterable[zenoh.Reply], expect: type, what: str, silence: str) -> Any:
+    """The first reply of a query decoded as ``expect``; a TransportError naming ``what`` for an
+    error reply or a payload that is not one (with the server's own explanation when it sent an
+    ErrorReply), and ``silence`` when nobody answered."""
+    for reply in replies:
+        if reply.ok is None:
+            raise TransportError(f"{what}: {_error_text(reply)}")
+        payload = reply.ok.payload.to_bytes()
+        try:
+            return decode(payload, expect)
+        except MessageError as exc:
+            try:  # the server's own explanation, if that is what came back
+                reason = decode(payload, ErrorReply).reason
+            except MessageError:
+                reason = str(exc)
+            raise TransportError(f"{what}: {reason}") from None
+    raise TransportError(silence)
 
 
 def _error_text(reply: zenoh.Reply) -> str:

@@ -33,6 +33,7 @@ from vap_bt.errors import TransportError
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.transport import keys
+from vap_bt.transport.client import first_reply
 from vap_bt.transport.messages import (ErrorReply, MessageError, OracleQuery, OracleReply, VlmRequest, decode,
                                        encode)
 from vap_bt.world import InjectedSituation
@@ -190,17 +191,7 @@ class RemoteWorld:
              expect: type = OracleReply, timeout: float | None = None) -> Any:
         timeout = self.timeout if timeout is None else timeout
         payload = encode(OracleQuery(verb, tuple(atoms), seed))
-        for reply in self.session.get(keys.oracle(verb), payload=payload, timeout=timeout):
-            if reply.ok is None:
-                raise TransportError(f"the simulated world's oracle ({verb}): {reply.err.payload.to_string()}")
-            data = reply.ok.payload.to_bytes()
-            try:
-                return decode(data, expect)
-            except MessageError as exc:
-                try:
-                    reason = decode(data, ErrorReply).reason
-                except MessageError:
-                    reason = str(exc)
-                raise TransportError(f"the simulated world's oracle ({verb}): {reason}") from None
-        raise TransportError(f"no simulated world answered {keys.oracle(verb)} within {timeout:g} s "
-                             "(is `vap-bt sim` running and reachable?)")
+        return first_reply(self.session.get(keys.oracle(verb), payload=payload, timeout=timeout), expect,
+                           f"the simulated world's oracle ({verb})",
+                           f"no simulated world answered {keys.oracle(verb)} within {timeout:g} s "
+                           "(is `vap-bt sim` running and reachable?)")
