@@ -84,7 +84,7 @@ def test_effect_failure_is_undone_then_corrected():
     assert r["plans"][1]["engine"] in ("reuse", "cache", "search")
 
 
-def rate(name: str, verify: str, seeds=range(25)) -> float:
+def rate(name: str, verify: str, seeds=range(15)) -> float:
     s = session(name, verify=verify, vlm_error=0.05)
     return sum(r["success"] and r["goal_satisfied"] for r in map(s.episode, seeds)) / len(seeds)
 

@@ -280,6 +280,9 @@ def viewer(rrd: Path, last_tick: int, tmp_path: Path):
         try:
             page = browser.new_page()
             page.route("**/*", lambda r: r.continue_() if r.request.url.startswith("http://127.0.0.1:") else r.abort())
+            # the viewer ingests the recording a little per drawn frame, and software rendering draws
+            # a full-size frame slowly: it loads in a small window, then takes the test's size
+            page.set_viewport_size({"width": 320, "height": 240})
             page.goto(url)
             page.wait_for_function("() => window._handle !== undefined", timeout=60_000)
             deadline, state = time.monotonic() + LOAD_TIMEOUT_S, None
@@ -290,6 +293,7 @@ def viewer(rrd: Path, last_tick: int, tmp_path: Path):
                 time.sleep(1.0)
             assert state is not None and state.recording_id == recording_id, state
             assert state.ends.get("tick") == last_tick and state.current == ("tick", last_tick), state
+            page.set_viewport_size({"width": WIDTH, "height": HEIGHT})
             time.sleep(2.0)  # let the last frames render
             yield page
         finally:
