@@ -46,6 +46,7 @@ SIDE_PAD = 0.015  # a level side grasp keeps this much of the pads' half height 
 FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
 WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
 EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
+EDGE_CLEAR = 0.25  # a free spot this far in from every edge of the top is as good as one further in
 NEAR_SPOT = 0.2  # a free spot is sought this far in from a surface's front first (less reach over it)
 PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
 PRE_PLACE = 0.16  # pre-place distance along the approach axis
@@ -308,9 +309,17 @@ class Hands:
         others = self.items_near(look, exclude={item, surface})
         base = np.array([x, y])
 
+        def inward(p) -> float:
+            """How far ``p`` lies in from the top's nearest edge (a round item let go near one
+            rolls off it; a long one tips over it)."""
+            if f is None:
+                return EDGE_CLEAR
+            lx, ly, _ = f.local(p)
+            return min(f.width / 2 - abs(lx), f.depth / 2 - abs(ly))
+
         def score(p):
             clear = min([np.linalg.norm(p[:2] - o[:2]) for o in others] + [1.0])
-            return min(clear, 0.2) - 0.05 * np.linalg.norm(p[:2] - base)
+            return min(clear, 0.2) + min(inward(p), EDGE_CLEAR) - 0.05 * np.linalg.norm(p[:2] - base)
 
         return max(cands, key=score)
 

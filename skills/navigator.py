@@ -25,7 +25,7 @@ import numpy as np
 from skills.body import Body, angle_to
 from skills.eyes import Eyes
 from skills.scene_model import SceneModel
-from vap_bt.motion.footprint import base_free
+from vap_bt.motion.footprint import FOLDED_ARM, base_free, hull
 
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
@@ -36,6 +36,8 @@ WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wid
 PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked
 LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
+HAND_RADIUS = 0.07  # the gripper round its tcp, seen from above
+WRIST_BEHIND = 0.15  # the wrist behind the tcp along the hand's axis
 ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furniture to be worked
 #: base centre to a piece of furniture's front when looking at it; a surface higher than the
 #: camera's eye line is looked at from further back, to see its top
@@ -46,6 +48,8 @@ DOOR_STOP = 0.95  # base centre to a doorway when it stops in front of it on a t
 #: a door counts as open for the base to pass once it has swung this share of its travel
 DOOR_PASSABLE = 0.55
 DOOR_LOOK_HEIGHT = 0.8
+DOORWAY_SPREAD = (-0.3, 0.0, 0.3)  # across the opening, in shares of the door's width
+DOORWAY_HEIGHTS = (0.5, 0.8, 1.1, 1.4)
 CORRIDOR_SPEED = 1.0
 APPROACH_SPEED = 0.6
 
@@ -104,6 +108,13 @@ class Navigator:
     def door_point(self, door: str) -> np.ndarray:
         x, y, _ = self.scene.site.door(door).pose
         return np.array([x, y, DOOR_LOOK_HEIGHT])
+
+    def doorway_points(self, door: str) -> np.ndarray:
+        """Points spread over ``door``'s opening: the view through it is judged at each, so that a
+        held item in front of the camera hides only some of them."""
+        d = self.scene.site.door(door)
+        x, y, _ = d.pose
+        return np.array([[x, y + s * d.width, z] for s in DOORWAY_SPREAD for z in DOORWAY_HEIGHTS])
 
     def work_poses(self, point, toward, how: str, clear_of: str | None = None) -> Iterator[Pose]:
         """Base poses for working at ``point``, best first: ``toward`` is the horizontal direction
@@ -177,23 +188,26 @@ class Navigator:
     def drive_to(self, pose: Pose) -> None:
         """Along the corridor to ``pose``, through the doorways on the way; raises
         :class:`Blocked` in front of a door that is not open."""
-        x, y, yaw = self.body.base_pose()
+        x, y, _ = self.body.base_pose()
         cy = self.scene.corridor_y()
-        legs: list = [(x, cy, yaw)]
+        # on the way the arm points where the base goes: turned towards a wall or a leaf swung
+        # open beside the corridor, the folded arm would reach into it
+        along = 0.0 if pose[0] > x else math.pi
+        legs: list = [(x, cy, along)]
         crossing = [d for d in self.scene.site.doors if d.pose is not None
                     and min(x, pose[0]) < d.pose[0] < max(x, pose[0])]
         if self.scene.room_at(x, y) is not None:
             for d in sorted(crossing, key=lambda d: abs(d.pose[0] - x)):
                 side = -1.0 if x < d.pose[0] else 1.0
                 legs += [(d.pose[0] + side * DOOR_STOP, d.pose[1], 0.0 if side < 0 else math.pi), d.name,
-                         (d.pose[0] - side * DOOR_STOP, d.pose[1], pose[2])]
+                         (d.pose[0] - side * DOOR_STOP, d.pose[1], along)]
         legs += [(pose[0], cy, pose[2]), tuple(pose)]
-        for leg in legs:
+        for k, leg in enumerate(legs):
             if isinstance(leg, str):
                 if not self.door_open(leg):
                     raise Blocked(f"door {leg} is not open: stopped in front of it")
                 continue
-            self.body.drive(self.base_path(leg), CORRIDOR_SPEED)
+            self.body.drive(self.base_path(leg, reach_over=k == len(legs) - 1), CORRIDOR_SPEED)
 
     def door_open(self, door: str) -> bool:
         """Look at ``door`` and judge from the frame whether the base can pass: the leaf's points
@@ -210,32 +224,51 @@ class Navigator:
         if q is not None:
             travel = abs(leaf.art.opened)
             return abs(q) >= DOOR_PASSABLE * travel
-        return bool(self.scene.sees_through(frame, point))
+        return bool(self.scene.sees_through(frame, self.doorway_points(door)))
 
-    def base_path(self, pose: Pose) -> list[Pose]:
+    def base_path(self, pose: Pose, reach_over: bool = True) -> list[Pose]:
         """Poses to drive through to ``pose`` without the base or the arm above it running into a
         wall, furniture or an open leaf: straight if that is clear, else through a via pose
-        (backed off from the goal along its heading, or round a corner); straight if none is."""
+        (backed off from the goal along its heading, or round a corner); straight if none is.
+        With ``reach_over`` the arm may reach over what stands in front of the goal (a work pose);
+        a stop on the way (a corridor or door pose of a trip) gets no such slack."""
         here = np.array(self.body.base_pose(), float)
         goal = np.array(pose, float)
         goal[2] = angle_to(here[2], goal[2])
         obstacles = self.scene.obstacles()
+        arm = self.arm_outline()
         heading = np.array([math.cos(goal[2]), math.sin(goal[2]), 0.0])
         vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
                                                                np.array([here[0], goal[1], here[2]])]
         turned = np.array([here[0], here[1], goal[2]])  # turning on the spot first swings the arm away
         paths = [[goal], *([v, goal] for v in vias), [turned, goal], *([turned, v, goal] for v in vias),
                  *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)])]
-        for path in paths:
-            legs = [here, *path]
-            if all(self._leg_clear(a, b, obstacles) for a, b in zip(legs, legs[1:])):
-                return [tuple(map(float, p)) for p in path]
+        # the arm may reach over things only near the goal; failing that anywhere, near each stop
+        # (it can swing into an open leaf there, but that is still better than the straight way)
+        for slack_at_stops in (False, True):
+            for path in paths:
+                legs = [here, *path]
+                if all(self._leg_clear(a, b, b if slack_at_stops else (goal if reach_over else None), obstacles, arm)
+                       for a, b in zip(legs, legs[1:])):
+                    return [tuple(map(float, p)) for p in path]
         return [tuple(map(float, goal))]
 
+    def arm_outline(self) -> np.ndarray:
+        """The arm as it stands now, seen from above in the base frame: the folded arm's outline
+        grown to take in the hand and its wrist (a drive holds the arm as it is — a look may have
+        left the hand out to one side)."""
+        T = np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
+        hand = [T[:3, 3], T[:3, 3] - WRIST_BEHIND * T[:3, 2]]
+        r = HAND_RADIUS
+        pts = [np.array(FOLDED_ARM)] + [p[:2] + np.array([[r, r], [r, -r], [-r, r], [-r, -r]]) for p in hand]
+        return hull(np.vstack(pts))
+
     @staticmethod
-    def _leg_clear(a: np.ndarray, b: np.ndarray, obstacles) -> bool:
-        """A straight base move keeps the footprint off every obstacle once it has left ``a``, and
-        the folded arm too except near ``b``, where it works over the furniture."""
+    def _leg_clear(a: np.ndarray, b: np.ndarray, slack_at: np.ndarray | None, obstacles, arm=FOLDED_ARM) -> bool:
+        """A straight base move from ``a`` to ``b`` keeps the footprint off every obstacle once it
+        has left ``a``, and the arm too except near ``slack_at`` (the path's goal, where it works
+        over the furniture; None: nowhere — a via pose gets no slack, the arm would sweep into an
+        open leaf there)."""
         def way(u, v) -> float:  # a turn on the spot counts as a way too (the arm sweeps)
             return float(np.linalg.norm((v - u)[:2]) + 0.4 * abs(v[2] - u[2]))
 
@@ -244,6 +277,6 @@ class Navigator:
             q = a + (b - a) * s
             if way(a, q) < LEAVE_SLACK:
                 continue
-            if not base_free(q, obstacles, PARKED_MARGIN, folded=np.linalg.norm((b - q)[:2]) > ARM_SLACK):
+            if not base_free(q, obstacles, PARKED_MARGIN, folded=slack_at is None or np.linalg.norm((slack_at - q)[:2]) > ARM_SLACK, arm=arm):
                 return False
         return True

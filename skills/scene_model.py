@@ -38,6 +38,7 @@ DOOR_FIT_STEPS = 40
 LEAF_MARGIN = 0.03
 #: depth this far past a doorway means the view goes through it
 SEE_THROUGH = 0.3
+HIDDEN_SHARE = 0.5  # a depth return nearer than this share of a point's distance is something in front of it
 #: half size (m) of an appliance's switch (along the front, out of it, up): it stands proud of
 #: the front, where a forearm sweeping past a low hollow would catch it
 SWITCH = (0.03, 0.02, 0.022)
@@ -260,26 +261,30 @@ class SceneModel:
     # -- where things are, by looking ----------------------------------------------------------
 
     @staticmethod
-    def sees_through(frame: Frame, point, beyond: float = SEE_THROUGH) -> bool | None:
-        """Whether the frame's depth at ``point``'s pixel reaches ``beyond`` past it (the view
-        goes through an open doorway into the next room); None when the point is not in the frame
-        or has no depth return."""
+    def sees_through(frame: Frame, points, beyond: float = SEE_THROUGH) -> bool | None:
+        """Whether the frame's depth reaches ``beyond`` past most of ``points`` (the view goes
+        through an open doorway into the next room); None when no point is in the frame with a
+        depth return. A point whose pixel shows something far nearer than the point is not
+        counted: the robot's own hand, or what it holds, hides it, and says nothing of the way."""
         if frame.depth is None or frame.intrinsics is None or frame.camera_pose is None:
             return None
         fx, fy, cx, cy = frame.intrinsics
         inv = np.linalg.inv(frame.camera_pose)
-        p = inv[:3, :3] @ np.asarray(point, float) + inv[:3, 3]
-        if p[2] <= 0.05:
-            return None
-        u, v = int(round(fx * p[0] / p[2] + cx)), int(round(fy * p[1] / p[2] + cy))
         h, w = frame.depth.shape
-        if not (2 <= u < w - 2 and 2 <= v < h - 2):
-            return None
-        window = frame.depth[v - 2:v + 3, u - 2:u + 3]
-        returns = window[window > 0]
-        if returns.size == 0:
-            return None
-        return bool(np.median(returns) > p[2] + beyond)
+        votes = []
+        for point in np.atleast_2d(np.asarray(points, float)):
+            p = inv[:3, :3] @ point + inv[:3, 3]
+            if p[2] <= 0.05:
+                continue
+            u, v = int(round(fx * p[0] / p[2] + cx)), int(round(fy * p[1] / p[2] + cy))
+            if not (2 <= u < w - 2 and 2 <= v < h - 2):
+                continue
+            window = frame.depth[v - 2:v + 3, u - 2:u + 3]
+            returns = window[window > 0]
+            if returns.size == 0 or np.median(returns) < HIDDEN_SHARE * p[2]:
+                continue
+            votes.append(bool(np.median(returns) > p[2] + beyond))
+        return None if not votes else 2 * sum(votes) > len(votes)
 
     def fit_leaf(self, name: str, frame: Frame, hint: float | None = None) -> float | None:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece

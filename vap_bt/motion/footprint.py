@@ -98,7 +98,8 @@ def footprint(pose) -> np.ndarray:
     return placed([(L, W), (-L, W), (-L, -W), (L, -W)], pose)
 
 
-def base_free(pose, obstacles: list[np.ndarray], margin: float, folded: bool = False) -> bool:
-    """The base (and the folded arm ahead of it, if ``folded``) keeps ``margin`` off every obstacle."""
-    shapes = [footprint(pose)] + ([placed(FOLDED_ARM, pose)] if folded else [])
+def base_free(pose, obstacles: list[np.ndarray], margin: float, folded: bool = False, arm=FOLDED_ARM) -> bool:
+    """The base (and, if ``folded``, the arm above it: ``arm``'s outline in the base frame, the
+    folded arm's by default) keeps ``margin`` off every obstacle."""
+    shapes = [footprint(pose)] + ([placed(arm, pose)] if folded else [])
     return all(apart(s, o, margin) for s in shapes for o in obstacles)

@@ -1,0 +1,65 @@
+"""Skill geometry that needs no robot: the base's path check and the view through a doorway.
+
+* A via pose of a base path gets no slack for the arm: only near the path's goal may the folded
+  arm reach over something (the furniture it will work), never at a stop on the way, where it
+  would sweep into an open door leaf (gather_kindling: the gripper hooked the garden door's leaf
+  at a via pose and dragged it half shut).
+* Whether a doorway is open is judged over points spread across it, and a point hidden by
+  something right in front of the camera (the hand, what it holds) is not counted: a carried
+  stick in the middle of the view no longer makes an open doorway look shut.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from skills.navigator import Navigator
+from skills.scene_model import SceneModel
+from vap_bt.motion.footprint import base_free
+from vap_bt.robot.frame import Frame
+
+W, H, F = 160, 120, 100.0
+
+
+def _box(x0, y0, x1, y1) -> np.ndarray:
+    return np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], float)
+
+
+def test_a_via_pose_checks_the_folded_arm_but_the_goal_lets_it_reach_over():
+    # a leaf-like slab 0.45 m ahead of a stop: the base keeps off it, the folded arm does not;
+    # the base drives up to the stop along y, the arm meeting the slab only in the last 0.4 m
+    slab = [_box(0.40, -0.15, 0.50, 0.15)]
+    via = np.array([0.0, 0.0, 0.0])
+    assert base_free(via, slab, 0.015) and not base_free(via, slab, 0.015, folded=True)
+    start, far_goal = np.array([0.0, -1.0, 0.0]), np.array([-2.0, 0.0, 0.0])
+    assert not Navigator._leg_clear(start, via, far_goal, slab)  # a stop on the way: the arm counts
+    assert not Navigator._leg_clear(start, via, None, slab)  # a trip's stop: no slack anywhere
+    assert Navigator._leg_clear(start, via, via, slab)  # the goal itself: the arm may reach over
+
+
+def _frame(depth: np.ndarray) -> Frame:
+    """A camera at the origin looking along +x (optical z), image y down = world -z."""
+    pose = np.eye(4)
+    pose[:3, :3] = np.array([[0, 0, 1], [-1, 0, 0], [0, -1, 0]], float)
+    return Frame("f", 0.0, depth=depth.astype(np.float32), intrinsics=(F, F, W / 2, H / 2), camera_pose=pose)
+
+
+def _doorway(dist: float = 2.0) -> np.ndarray:
+    return np.array([[dist, y, z] for y in (-0.25, 0.0, 0.25) for z in (-0.3, 0.0, 0.3)])
+
+
+def test_a_doorway_seen_through_a_held_item_still_counts_as_open():
+    open_view = np.full((H, W), 5.0)
+    assert SceneModel.sees_through(_frame(open_view), _doorway()) is True
+    carried = open_view.copy()
+    carried[52:68, 72:88] = 0.12  # a held stick in the middle of the view (the doorway spans 67-93 x 45-75 px)
+    assert SceneModel.sees_through(_frame(carried), _doorway()) is True
+    # its pixel alone, as the one-point check saw it, says nothing
+    assert SceneModel.sees_through(_frame(carried), _doorway()[4:5]) is None
+
+
+def test_a_shut_doorway_is_shut_and_a_hidden_one_is_unknown():
+    shut = np.full((H, W), 2.02)  # the leaf in the doorway
+    assert SceneModel.sees_through(_frame(shut), _doorway()) is False
+    hidden = np.full((H, W), 0.1)
+    assert SceneModel.sees_through(_frame(hidden), _doorway()) is None
