@@ -175,17 +175,25 @@ class Navigator:
 
     # -- getting there -----------------------------------------------------------------------
 
-    def approach(self, pose: Pose, speed: float = APPROACH_SPEED) -> None:
+    def approach(self, pose: Pose, speed: float = APPROACH_SPEED, careful: bool = False) -> None:
         """Drive to a pose (arm folded or carrying): within a room round the obstacles, to
-        another room along the corridor and through the doorways (:meth:`drive_to`)."""
+        another room along the corridor and through the doorways (:meth:`drive_to`). A
+        ``careful`` trip (one that only serves a look) raises :class:`Blocked` where no clear way
+        is found, instead of driving straight on."""
         x, y, _ = self.body.base_pose()
         here, there = self.scene.room_at(x, y), self.scene.room_at(*pose[:2])
         if here is not None and there is not None and here != there:
-            self.drive_to(pose)
+            self.drive_to(pose, careful)
             return
-        self.body.drive(self.base_path(pose), speed)
+        self.body.drive(self._path(pose, True, careful), speed)
 
-    def drive_to(self, pose: Pose) -> None:
+    def _path(self, pose: Pose, reach_over: bool, careful: bool) -> list[Pose]:
+        path = self.base_path(pose, reach_over)
+        if path is None and careful:
+            raise Blocked("no clear way there")
+        return path or [tuple(map(float, pose))]
+
+    def drive_to(self, pose: Pose, careful: bool = False) -> None:
         """Along the corridor to ``pose``, through the doorways on the way; raises
         :class:`Blocked` in front of a door that is not open."""
         x, y, _ = self.body.base_pose()
@@ -207,7 +215,7 @@ class Navigator:
                 if not self.door_open(leg):
                     raise Blocked(f"door {leg} is not open: stopped in front of it")
                 continue
-            self.body.drive(self.base_path(leg, reach_over=k == len(legs) - 1), CORRIDOR_SPEED)
+            self.body.drive(self._path(leg, k == len(legs) - 1, careful), CORRIDOR_SPEED)
 
     def door_open(self, door: str) -> bool:
         """Look at ``door`` and judge from the frame whether the base can pass: the leaf's points
@@ -226,10 +234,10 @@ class Navigator:
             return abs(q) >= DOOR_PASSABLE * travel
         return bool(self.scene.sees_through(frame, self.doorway_points(door)))
 
-    def base_path(self, pose: Pose, reach_over: bool = True) -> list[Pose]:
+    def base_path(self, pose: Pose, reach_over: bool = True) -> list[Pose] | None:
         """Poses to drive through to ``pose`` without the base or the arm above it running into a
         wall, furniture or an open leaf: straight if that is clear, else through a via pose
-        (backed off from the goal along its heading, or round a corner); straight if none is.
+        (backed off from the goal along its heading, or round a corner); None if none is.
         With ``reach_over`` the arm may reach over what stands in front of the goal (a work pose);
         a stop on the way (a corridor or door pose of a trip) gets no such slack."""
         here = np.array(self.body.base_pose(), float)
@@ -251,7 +259,7 @@ class Navigator:
                 if all(self._leg_clear(a, b, b if slack_at_stops else (goal if reach_over else None), obstacles, arm)
                        for a, b in zip(legs, legs[1:])):
                     return [tuple(map(float, p)) for p in path]
-        return [tuple(map(float, goal))]
+        return None
 
     def arm_outline(self) -> np.ndarray:
         """The arm as it stands now, seen from above in the base frame: the folded arm's outline

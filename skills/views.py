@@ -78,7 +78,7 @@ class ViewService:
                     x, y = view.base_pose[:2]
                     if not kit.nav.base_fits(x, y):
                         return False
-                    kit.nav.approach(tuple(view.base_pose))
+                    kit.nav.approach(tuple(view.base_pose), careful=True)
                     bx, by, _ = kit.body.base_pose()
                     if math.hypot(bx - x, by - y) > VIEW_REACHED:
                         return False
@@ -109,7 +109,7 @@ class ViewService:
                 return False
             try:
                 if moves:
-                    kit.nav.approach((nx, ny, nyaw))
+                    kit.nav.approach((nx, ny, nyaw), careful=True)
                 # from above: as high over the base as the arm reaches (close in, the highest eye
                 # may need the wrist bent further than it goes)
                 lifts = (lift, 2 * lift / 3, lift / 3) if lift > 0 else (0.0,)
