@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+import numpy as np
 import pytest
 
 from vap_bt.domain.atoms import Atom
@@ -225,3 +226,20 @@ def prompts_viewpoint_query() -> Query:
     from vap_bt.perception.verification import viewpoint_query
 
     return viewpoint_query(CUP, "Is the cup on the table?", "cup")
+
+
+def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_whole():
+    from vap_bt.perception.verification import shown_whole
+    from vap_bt.robot.frame import Detection
+
+    masks = np.full((100, 100), -1, np.int32)
+    masks[40:60, 40:60] = 1  # the cup, whole, 4 % of the image
+    masks[70:100, 0:100] = 2  # the table, cut by the image's bottom and sides
+    dets = (Detection("cup", "cup", 400, 1), Detection("table", "table", 3000, 2))
+    frame = Frame("f", 0.0, detections=dets, masks=masks)
+    assert shown_whole(frame, Atom("holding", ("cup",)), frozenset(), 0.005)
+    assert not shown_whole(frame, Atom("on", ("cup", "table")), frozenset(), 0.005)  # the table is cut
+    assert shown_whole(frame, Atom("on", ("cup", "floor_kitchen")), frozenset({"floor_kitchen"}), 0.005)
+    assert not shown_whole(frame, Atom("holding", ("cup",)), frozenset(), 0.05)  # too small for that share
+    assert not shown_whole(frame, Atom("holding", ("knife",)), frozenset(), 0.005)  # not found
+    assert not shown_whole(Frame("g", 0.0, detections=dets), Atom("holding", ("cup",)), frozenset(), 0.005)  # no masks

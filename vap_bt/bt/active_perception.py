@@ -92,8 +92,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         self.rounds.append(r)
         v = verdict(self.rounds, exhausted=self.moves >= self.ctx.budget)
         if v is None:
-            nxt = self.ctx.viewpoints.next(self.moves, self.atom, r.questions[0] if r.questions else str(self.atom),
-                                           target_of(self.atom))
+            question = r.questions[0] if r.questions else self.ctx.profile.questions(self.atom, 1)[0]
+            nxt = self.ctx.viewpoints.next(self.moves, self.atom, question, target_of(self.atom))
             if isinstance(nxt, str):
                 return self._move(nxt)
             self._job, self._stage = self.ctx.submit(self.ctx.vlm.ask, nxt, self.verify.observation), "choose"

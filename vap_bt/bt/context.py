@@ -81,7 +81,7 @@ class Verification:
     def to_json(self) -> dict:
         return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
                 "expected": self.expected, "value": self.value, "outcome": self.outcome,
-                "views": len(self.rounds), "queries": sum(len(r.answers) + (r.sufficient is not None)
+                "views": len(self.rounds), "queries": sum(len(r.answers) + (r.sufficient_by == "model")
                                                           + (r.direction is not None) for r in self.rounds),
                 "rounds": [r.to_json() for r in self.rounds]}
 

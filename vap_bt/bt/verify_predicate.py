@@ -5,8 +5,10 @@ atom's objects, then the N paraphrased questions about that frame — sent as th
 protocol says (one after another, or in waves all in flight at once) — their vote, and, when the
 answers agree, the view-sufficiency question — unless the frame's detector did not find every
 object the atom names (rooms and floors aside): a view that does not show a thing cannot settle
-a question about it, so it is insufficient without asking. Every tick polls what is in flight and returns
-RUNNING until the round is done; ``terminate`` cancels what has not been sent. The behaviour
+a question about it, so it is insufficient without asking; and, in a protocol that lets the
+detector answer (lean), unless it shows every one of them whole, when it is sufficient — and
+a view that does not show one is not asked about at all (its answers would vote nothing). Every
+tick polls what is in flight and returns RUNNING until the round is done; ``terminate`` cancels what has not been sent. The behaviour
 succeeds when the round settles on the expected value and fails otherwise; whether a failure
 means "the world disagrees" or "could not tell from here" is in :attr:`round` for its
 :class:`~vap_bt.bt.active_perception.ActivePerception` decorator to weigh.
@@ -22,7 +24,7 @@ from py_trees.common import Status
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
-from vap_bt.perception.verification import Round, RoundAsker, sufficiency_query, unshown, yes_no
+from vap_bt.perception.verification import Round, RoundAsker, shown_whole, sufficiency_query, unshown, yes_no
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
 
@@ -53,12 +55,18 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
                 return Status.RUNNING
             self.observation, self._frame = self._frame.result(), None
             self._asker = RoundAsker(self.atom, self.observation, self.ctx.vote, self.ctx.profile, self.ctx.protocol)
+            missing = unshown(self.observation, self.atom, self.ctx.undetectable)
+            if missing and self.ctx.protocol.detector:
+                # answers about a view that does not show the thing vote nothing: lean asks none
+                r, self._asker = self._asker.finish(), None
+                r.unshown, r.sufficient, r.sufficient_by = missing, False, "detector"
+                return self._finish(r)
         if self._asker is not None:
             return self._ask()
         if self._sufficiency is not None:
             if not self._sufficiency.done():
                 return Status.RUNNING
-            self._voted.sufficient = yes_no(_answer(self._sufficiency))
+            self._voted.sufficient, self._voted.sufficient_by = yes_no(_answer(self._sufficiency)), "model"
             self._sufficiency = None
             return self._finish(self._voted)
         return Status.FAILURE if self.round is None else self._status(self.round)
@@ -79,9 +87,13 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         r = asker.finish()
         r.unshown = unshown(self.observation, self.atom, self.ctx.undetectable)
         if r.unshown:  # the detector did not find what the atom is about: not a view of it
-            r.sufficient = False
+            r.sufficient, r.sufficient_by = False, "detector"
             return self._finish(r)
         if r.consistent and r.vote is not None:
+            protocol = self.ctx.protocol
+            if protocol.detector and shown_whole(self.observation, self.atom, self.ctx.undetectable, protocol.whole_share):
+                r.sufficient, r.sufficient_by = True, "detector"  # everything asked about is in view, whole
+                return self._finish(r)
             self._voted = r
             self._sufficiency = self.ctx.submit(self.ctx.vlm.ask, sufficiency_query(self.atom, r.questions[0]),
                                                 self.observation)

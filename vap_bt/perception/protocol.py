@@ -13,7 +13,14 @@ then the view-sufficiency question, for every check. ``lean`` changes only how m
   votes when its answer is confident (the probability it states for its answer at least
   ``confident``: 0.95, as strong a statement as a unanimous vote and above what the simulated model
   states for a guess, 0.87 on average); otherwise the remaining paraphrases are asked and voted
-  as usual.
+  as usual;
+* **detector** — the view-sufficiency question is not asked when the frame's detector already
+  answers it: every object the atom names (rooms and floors aside) is found whole — its mask
+  clear of the image's edges — and not tiny (at least ``whole_share`` of the image). Where the
+  detector cannot tell (an object cut by the edge, small, or a frame without masks) the model is
+  asked as in the paper; where it finds an object missing, the view is insufficient in every
+  protocol, and lean asks nothing about it (answers about a view that does not show the thing
+  vote nothing in the verdict).
 """
 
 from __future__ import annotations
@@ -31,6 +38,8 @@ class Protocol:
     reuse: bool = False
     logprobs: bool = False
     confident: float = 0.95
+    detector: bool = False
+    whole_share: float = 0.005
 
     @classmethod
     def parse(cls, name: str) -> "Protocol":
@@ -44,4 +53,4 @@ class Protocol:
 
 
 PROTOCOLS = {"paper": Protocol("paper"), "lean": Protocol("lean", early_stop=True, concurrent=True, reuse=True,
-                                                               logprobs=True)}
+                                                               logprobs=True, detector=True)}

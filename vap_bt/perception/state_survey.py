@@ -56,7 +56,7 @@ def survey_states(vlm: VLM, frames: dict[str, list[Frame]], candidates: list[str
             for frame in shown:
                 r = vote_round(vlm, frame, atom, vote, profile)
                 if r.consistent and r.vote is not None:
-                    r.sufficient = check_sufficiency(vlm, frame, atom, r.questions[0])
+                    r.sufficient, r.sufficient_by = check_sufficiency(vlm, frame, atom, r.questions[0]), "model"
                 rounds.append(r)
                 if r.settled:
                     break

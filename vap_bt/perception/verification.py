@@ -43,6 +43,9 @@ class Round:
     direction: str | None = None  # the viewpoint suggested after this round, if any
     moved: bool | None = None  # whether the camera could go there
     unshown: tuple[str, ...] = ()  # objects of the atom the frame's detector did not find
+    #: who judged the view: "model" (the sufficiency question was asked) or "detector" (it found an
+    #: object missing, or — where the protocol lets it — everything whole); None when not judged
+    sufficient_by: str | None = None
 
     @property
     def settled(self) -> bool:
@@ -51,7 +54,8 @@ class Round:
     def to_json(self) -> dict:
         return {"view": self.view, "answers": ["?" if a is None else ("yes" if a else "no") for a in self.answers],
                 "vote": self.vote, "consistent": self.consistent, "sufficient": self.sufficient,
-                "direction": self.direction, "moved": self.moved, **({"unshown": list(self.unshown)} if self.unshown else {})}
+                "direction": self.direction, "moved": self.moved, **({"unshown": list(self.unshown)} if self.unshown else {}),
+                **({"sufficient_by": self.sufficient_by} if self.sufficient_by == "detector" else {})}
 
 
 def objects_of(atom: Atom) -> tuple[str, ...]:
@@ -64,6 +68,24 @@ def unshown(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()
     settle a question about it, whatever a model says: the detector vetoes sufficiency."""
     found = {d.name for d in frame.detections}
     return tuple(o for o in objects_of(atom) if o not in found and o not in undetectable)
+
+
+def shown_whole(frame: Frame, atom: Atom, undetectable: frozenset[str], least_share: float) -> bool:
+    """Whether the frame's detector finds every object ``atom`` names (rooms and floors aside)
+    whole and not tiny: its mask clear of the image's edges and at least ``least_share`` of the
+    image. False where it cannot tell (no masks in the frame)."""
+    if frame.masks is None:
+        return False
+    h, w = frame.masks.shape
+    for name in objects_of(atom):
+        if name in undetectable:
+            continue
+        mask = frame.mask(name)
+        if mask is None or mask.sum() < least_share * h * w:
+            return False
+        if mask[0].any() or mask[-1].any() or mask[:, 0].any() or mask[:, -1].any():
+            return False
+    return True
 
 
 class RoundAsker:
