@@ -34,6 +34,12 @@ WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep 
 WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15, 0.25, 0.35, 0.45)  # further back, when no sideways step is clear or reaches (an oven's door lies open in front)
 WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
 PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
+#: turns (rad) of the way from a worked point to the robot, tried in order when nothing in front of
+#: the point says which side to work it from (an item on the floor): a leaf or a piece of furniture
+#: beside it can keep the arm from one side and not from another
+AROUND = (0.0, math.pi / 4, -math.pi / 4, math.pi / 2, -math.pi / 2, 3 * math.pi / 4, -3 * math.pi / 4, math.pi)
+#: m between a work pose tried again and one the arm failed to work from (a different stand)
+AVOID_RADIUS = 0.1
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked
 LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
 ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furniture to be worked
@@ -105,11 +111,11 @@ class Navigator:
         x, y, _ = self.scene.site.door(door).pose
         return np.array([x, y, DOOR_LOOK_HEIGHT])
 
-    def work_poses(self, point, toward, how: str, clear_of: str | None = None) -> Iterator[Pose]:
+    def work_poses(self, point, toward, how: str, clear_of: str | None = None, plain: bool = True) -> Iterator[Pose]:
         """Base poses for working at ``point``, best first: ``toward`` is the horizontal direction
         from the point to where the robot stands; a reach away from it (and clear of the front of
         ``clear_of``), stepped sideways (facing the point) and then back, keeping the base clear of
-        walls, furniture and leaves as last seen. The plain pose comes last if none is clear."""
+        walls, furniture and leaves as last seen. The plain pose comes last (if ``plain``)."""
         f = np.array([toward[0], toward[1], 0.0])
         f /= np.linalg.norm(f)
         r = WORK_DISTANCE[how]
@@ -126,30 +132,57 @@ class Navigator:
                 pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
                 if base_free(pose, obstacles, WORK_MARGIN):
                     yield pose
-        p = np.asarray(point) + f * r
-        yield (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+        if plain:
+            p = np.asarray(point) + f * r
+            yield (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
-        ``reach(base_pose)`` lists — IK clear of the scene, checked from that base before it
-        moves; the first clear one when none does (the motion then finds out)."""
-        first = None
-        for pose in self.work_poses(point, toward, how, clear_of):
-            first = first or pose
-            if reach is None:
-                return pose
-            seed = self.body.q()
-            seed[:3] = pose
-            if all(self.body.solve(T, seed=seed) is not None for T in reach(pose)):
-                return pose
-        return first
+        ``reach(base_pose)`` lists — IK clear of the scene, and the arm's joint way from how it is
+        now to the first of them (the pre-pose: the rest are reached by straight lines), checked
+        from that base before it moves; the first clear one when none does (the motion then finds
+        out). A point on no piece of furniture (the floor) is also tried from the other sides round
+        it (:data:`AROUND`)."""
+        if reach is None:
+            return next(self.work_poses(point, toward, how, clear_of))
+        return self.reaching_pose(point, toward, how, clear_of, reach) or next(self.work_poses(point, toward, how, clear_of))
 
-    def toward_robot(self, point, support: str | None) -> np.ndarray:
-        """Horizontal direction from a point to the side the robot works it from."""
+    def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=()) -> Pose | None:
+        """The work pose of :meth:`work_pose` from which the arm reaches ``reach(base_pose)``, not
+        within ``AVOID_RADIUS`` of the poses in ``avoid`` (stood at already); None when there is none."""
+        return next((p for p in self._candidates(point, toward, how, clear_of, True)
+                     if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid) and self._reaches(p, reach(p))),
+                    None)
+
+    def _reaches(self, pose: Pose, targets) -> bool:
+        seed = self.body.q()
+        seed[:3] = pose
+        qs = []
+        for T in targets:
+            q = self.body.solve(T, seed=seed)
+            if q is None:
+                return False
+            qs.append(q)
+        return self.body.routed(seed, qs[:1]) is not None
+
+    def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
+        """:meth:`work_poses` along ``toward``, then (for a point on no furniture, when reach is
+        checked) the clear ones along the turned ways of :data:`AROUND`."""
+        yield from self.work_poses(point, toward, how, clear_of)
+        if not around or clear_of in self.scene.furniture:
+            return
+        for turn in AROUND[1:]:
+            c, s = math.cos(turn), math.sin(turn)
+            yield from self.work_poses(point, (c * toward[0] - s * toward[1], s * toward[0] + c * toward[1], 0.0),
+                                       how, clear_of, plain=False)
+
+    def toward_robot(self, point, support: str | None, base: Pose | None = None) -> np.ndarray:
+        """Horizontal direction from a point to the side the robot works it from (standing at
+        ``base``, default where it is)."""
         piece = self.scene.furniture.get(support or "")
         if piece is not None:
             return piece.front
-        d = np.array([*self.body.base_pose()[:2], 0.0]) - np.asarray(point, float)
+        d = np.array([*(base or self.body.base_pose())[:2], 0.0]) - np.asarray(point, float)
         d[2] = 0.0
         return d / max(np.linalg.norm(d), 1e-6)
 
