@@ -205,11 +205,15 @@ class Hands:
         """Drive to a work pose for grasping ``seen``, away from the poses ``stood`` at already;
         returns whether the hand takes it from the side (None: no pose left to try). An item on
         the floor that the hand cannot reach from above (a wall, a leaf or a piece of furniture
-        beside or over it) is taken level from the side instead, from where the arm reaches that.
+        beside or over it) is taken level from the side instead, from where the arm reaches that
+        (unless it is too flat for the pads to hold from the side).
         On the first stand, when neither way reaches, the pose for the first way (the motion finds out)."""
-        ways = (sideways,) if sideways or where.on not in self.scene.site.floors() else (False, True)
+        floor = where.on in self.scene.site.floors()
+        low = seen.top - self.bottom(seen, where) < SIDE_LEVEL_HEIGHT  # a plate: no side for the pads to take
+        ways = (sideways,) if sideways or low or not floor else (False, True)
         for way in ways:
-            pose = self.nav.reaching_pose(*self._work_request(seen, where, way), avoid=stood)
+            # down by the floor the arm folds past furniture on its way: its joint way is checked too
+            pose = self.nav.reaching_pose(*self._work_request(seen, where, way), avoid=stood, routed=floor)
             if pose is not None:
                 self.nav.approach(pose)
                 return way
@@ -405,7 +409,7 @@ class Hands:
             return G, pre, corners + (target - c)
 
         self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where,
-                                             reach=lambda base: targets(base)[1::-1]))
+                                             reach=lambda base: targets(base)[:2]))
         G, _, corners = targets(self.body.base_pose())
         self.progress(0.2, "pre-place")
         pre = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))

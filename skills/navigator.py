@@ -138,23 +138,24 @@ class Navigator:
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
-        ``reach(base_pose)`` lists — IK clear of the scene, and the arm's joint way from how it is
-        now to the first of them (the pre-pose: the rest are reached by straight lines), checked
-        from that base before it moves; the first clear one when none does (the motion then finds
-        out). A point on no piece of furniture (the floor) is also tried from the other sides round
-        it (:data:`AROUND`)."""
+        ``reach(base_pose)`` lists — IK clear of the scene, checked from that base before it
+        moves; the first clear one when none does (the motion then finds out). A point on no
+        piece of furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
         if reach is None:
             return next(self.work_poses(point, toward, how, clear_of))
         return self.reaching_pose(point, toward, how, clear_of, reach) or next(self.work_poses(point, toward, how, clear_of))
 
-    def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=()) -> Pose | None:
+    def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=(),
+                      routed: bool = False) -> Pose | None:
         """The work pose of :meth:`work_pose` from which the arm reaches ``reach(base_pose)``, not
-        within ``AVOID_RADIUS`` of the poses in ``avoid`` (stood at already); None when there is none."""
+        within ``AVOID_RADIUS`` of the poses in ``avoid`` (stood at already); None when there is
+        none. ``routed``: the arm's joint way from how it is now to the first pose (a pre-pose:
+        the rest are reached by straight lines) must be clear too."""
         return next((p for p in self._candidates(point, toward, how, clear_of, True)
-                     if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid) and self._reaches(p, reach(p))),
-                    None)
+                     if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid)
+                     and self._reaches(p, reach(p), routed)), None)
 
-    def _reaches(self, pose: Pose, targets) -> bool:
+    def _reaches(self, pose: Pose, targets, routed: bool = False) -> bool:
         seed = self.body.q()
         seed[:3] = pose
         qs = []
@@ -163,7 +164,7 @@ class Navigator:
             if q is None:
                 return False
             qs.append(q)
-        return self.body.routed(seed, qs[:1]) is not None
+        return not routed or self.body.routed(seed, qs[:1]) is not None
 
     def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
         """:meth:`work_poses` along ``toward``, then (for a point on no furniture, when reach is
