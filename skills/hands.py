@@ -7,7 +7,10 @@ there, and takes it from above across its narrow side — or level from the fron
 front-open cavity, pitched down when the item is too low for a level hand. The grasp pose is
 reached through a pre-pose ``APPROACH`` back along the approach axis, the last stretch a straight
 line; the fingers close with a force limit and the gripper says whether they stopped on
-something. What the hand then holds is remembered as the camera measured it (:class:`Held`),
+something. An item on the floor (where a situation dropped it: against a wall, beside a piece of
+furniture, under a leaf) is stood for from all round it, and taken level from the side when no
+hand from above reaches it; a grasp whose pre-pose the second look puts out of reach tries
+another stand. What the hand then holds is remembered as the camera measured it (:class:`Held`),
 which is how a place knows where the item's bottom is.
 
 IK solutions for pre-poses are kept clear of the furniture and walls of the map (cavities carved

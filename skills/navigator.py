@@ -116,13 +116,7 @@ class Navigator:
         from the point to where the robot stands; a reach away from it (and clear of the front of
         ``clear_of``), stepped sideways (facing the point) and then back, keeping the base clear of
         walls, furniture and leaves as last seen. The plain pose comes last (if ``plain``)."""
-        f = np.array([toward[0], toward[1], 0.0])
-        f /= np.linalg.norm(f)
-        r = WORK_DISTANCE[how]
-        piece = self.scene.furniture.get(clear_of or "")
-        if piece is not None:
-            front = piece.to_world((0.0, piece.depth / 2, 0.0))
-            r = max(r, float((front - np.asarray(point))[:2] @ piece.front[:2]) + BASE_CLEARANCE)
+        f, r = self._work_axis(point, toward, how, clear_of)
         side = np.array([-f[1], f[0], 0.0])
         obstacles = self.scene.obstacles()
         for back in WORK_BACKOFFS:
@@ -133,8 +127,25 @@ class Navigator:
                 if base_free(pose, obstacles, WORK_MARGIN):
                     yield pose
         if plain:
-            p = np.asarray(point) + f * r
-            yield (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+            yield self._plain_pose(point, toward, how, clear_of)
+
+    def _work_axis(self, point, toward, how: str, clear_of: str | None) -> tuple[np.ndarray, float]:
+        """The unit way from ``point`` to the robot and the reach along it (clear of the front of
+        ``clear_of``)."""
+        f = np.array([toward[0], toward[1], 0.0])
+        f /= np.linalg.norm(f)
+        r = WORK_DISTANCE[how]
+        piece = self.scene.furniture.get(clear_of or "")
+        if piece is not None:
+            front = piece.to_world((0.0, piece.depth / 2, 0.0))
+            r = max(r, float((front - np.asarray(point))[:2] @ piece.front[:2]) + BASE_CLEARANCE)
+        return f, r
+
+    def _plain_pose(self, point, toward, how: str, clear_of: str | None) -> Pose:
+        """A reach away along ``toward``, facing the point, clear or not."""
+        f, r = self._work_axis(point, toward, how, clear_of)
+        p = np.asarray(point) + f * r
+        return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
@@ -167,15 +178,14 @@ class Navigator:
         return not routed or self.body.routed(seed, qs[:1]) is not None
 
     def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
-        """:meth:`work_poses` along ``toward``, then (for a point on no furniture, when reach is
-        checked) the clear ones along the turned ways of :data:`AROUND`."""
-        yield from self.work_poses(point, toward, how, clear_of)
-        if not around or clear_of in self.scene.furniture:
-            return
-        for turn in AROUND[1:]:
+        """The clear :meth:`work_poses` along ``toward`` and (for a point on no furniture, when
+        ``around``) along the turned ways of :data:`AROUND`; the plain pose along ``toward`` last."""
+        turns = AROUND if around and clear_of not in self.scene.furniture else AROUND[:1]
+        for turn in turns:
             c, s = math.cos(turn), math.sin(turn)
             yield from self.work_poses(point, (c * toward[0] - s * toward[1], s * toward[0] + c * toward[1], 0.0),
                                        how, clear_of, plain=False)
+        yield self._plain_pose(point, toward, how, clear_of)
 
     def toward_robot(self, point, support: str | None, base: Pose | None = None) -> np.ndarray:
         """Horizontal direction from a point to the side the robot works it from (standing at
