@@ -165,3 +165,19 @@ def test_a_failure_that_comes_back_unchanged_is_looked_at_afresh_then_stops_the_
     assert [s["kind"] for s in r["situations"]] == ["execution"] * 3
     assert any("again: re-surveying" in m for m in lines)
     assert len(r["perception"]["surveys"]) == 2  # the initial one and the fresh look
+
+
+def test_a_check_that_comes_back_the_same_is_looked_at_afresh_but_does_not_stop_the_episode():
+    """An effect the camera keeps contradicting may be chance (an injected slip): the executive
+    re-surveys on its return, and only the replanning budget ends the episode."""
+    from vap_bt.bt.context import Situation
+    from vap_bt.bt.repeats import RepeatWatch, stuck
+    from vap_bt.domain.atoms import Atom
+
+    watch, belief = RepeatWatch(), frozenset({Atom.parse("hand_empty()")})
+    slip = Situation("effect", None, 2, Atom.parse("holding(cup)"), True, False)
+    failed = Situation("execution", None, 2, detail="cup: no arm pose reaches it")
+    times = [watch.count(slip, belief) for _ in range(5)]
+    assert times == [1, 2, 3, 4, 5] and not any(stuck(slip, t) for t in times)
+    assert [stuck(failed, watch.count(failed, belief)) for _ in range(3)] == [False, False, True]
+    assert watch.count(failed, belief | {Atom.parse("inview(cup)")}) == 1  # another belief: a new start

@@ -41,7 +41,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
 from vap_bt.bt.inflight import make_executor
-from vap_bt.bt.repeats import LOOK_AFRESH, STUCK, RepeatWatch, describe
+from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
@@ -202,7 +202,7 @@ class Executive:
                 out.reason = f"stopped: {situation.detail}"
                 return out
             times = repeats.count(situation, graph.state())
-            if times >= STUCK:
+            if stuck(situation, times):
                 out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
                               "(looking afresh changed nothing)")
                 return out

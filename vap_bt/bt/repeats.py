@@ -2,11 +2,14 @@
 
 A replan from the same belief after the same failure makes the same plan, and the robot does the
 same thing again. Once is worth it — a grasp the world let slip may hold the next time — but a
-failure that recurs identically (the same kind of situation at the same action, about the same
-atom with the same observation and the same message) from the same belief says that repeating
-will not help. :class:`RepeatWatch` counts such recurrences; the executive looks afresh on the
-first (:data:`LOOK_AFRESH`) and stops with the reason on a later one (:data:`STUCK`), instead of
-spending the replanning budget on the same motion.
+situation that recurs identically (the same kind at the same action, about the same atom with the
+same observation and the same message) from the same belief says that repeating alone will not
+help. :class:`RepeatWatch` counts such recurrences. On the first (:data:`LOOK_AFRESH`) the
+executive looks afresh; a skill that then fails the same way once more (:data:`STUCK`) stops the
+episode with the reason, instead of spending the replanning budget on the same motion: a motion
+planned from the same measurements fails the same way. A check that comes back the same is not
+cause to stop — an injected slip or a view the VLM could not make out may well go the other way
+the next time.
 """
 
 from __future__ import annotations
@@ -18,8 +21,14 @@ from vap_bt.domain.atoms import Atom
 
 #: the occurrence of an identical situation from an identical belief that re-surveys first
 LOOK_AFRESH = 2
-#: the occurrence at which the episode stops: looking afresh did not change what happens
+#: the occurrence of an identical failed execution at which the episode stops: looking afresh
+#: did not change what the skill does
 STUCK = 3
+
+
+def stuck(s: Situation, times: int) -> bool:
+    """Whether a situation seen ``times`` from the same belief ends the episode."""
+    return s.kind == "execution" and times >= STUCK
 
 
 class RepeatWatch:
