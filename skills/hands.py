@@ -7,7 +7,10 @@ there, and takes it from above across its narrow side — or level from the fron
 front-open cavity, pitched down when the item is too low for a level hand. The grasp pose is
 reached through a pre-pose ``APPROACH`` back along the approach axis, the last stretch a straight
 line; the fingers close with a force limit and the gripper says whether they stopped on
-something. What the hand then holds is remembered as the camera measured it (:class:`Held`),
+something. An item on the floor (where a situation dropped it: against a wall, beside a piece of
+furniture, under a leaf) is stood for from all round it, and taken level from the side when no
+hand from above reaches it; a grasp whose pre-pose the second look puts out of reach tries
+another stand. What the hand then holds is remembered as the camera measured it (:class:`Held`),
 which is how a place knows where the item's bottom is.
 
 IK solutions for pre-poses are kept clear of the furniture and walls of the map (cavities carved
@@ -53,6 +56,7 @@ PRE_PLACE = 0.16  # pre-place distance along the approach axis
 GRASP_FORCE = 60.0
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
+GRASP_STANDS = 3  # work poses a grasp tries before it gives up (the arm's reach is checked at each)
 DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
@@ -121,15 +125,17 @@ class Hands:
 
     # -- grasping ----------------------------------------------------------------------------
 
-    def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False, base=None) -> tuple[np.ndarray, np.ndarray]:
         """Grasp pose of the tcp and the approach direction for an item as seen: level from the
         front out of a front-open container (or when asked: to put it into one next), else from
-        above across its narrow side."""
+        above across its narrow side — the fingers' sides as for the base at ``base`` (x, y, yaw;
+        default where it is)."""
+        q = None if base is None else np.array([*base, *np.zeros(6)])
         c, bottom = seen.centroid.copy(), self.bottom(seen, where)
         box = self.scene.furniture.get(where.inside or "")
         front_open = box is not None and box.info.cavity is not None and box.info.cavity.open == "front"
         if front_open or sideways:
-            a = -box.front if front_open else -self.nav.toward_robot(c, where.place)
+            a = -box.front if front_open else -self.nav.toward_robot(c, where.place, base)
             p = c.copy()
             if c[2] - bottom < SIDE_LEVEL_HEIGHT <= seen.top - bottom - SIDE_PAD:
                 # a level hand taking it above its middle still has its pads on it: level is the
@@ -141,7 +147,7 @@ class Hands:
                 a = math.cos(SIDE_PITCH) * a + np.array([0.0, 0.0, -math.sin(SIDE_PITCH)])
                 p[2] = max(c[2], bottom + SIDE_PITCHED_HEIGHT)
             return se3.frame_zx(a, (0, 0, -1), p), a
-        left = self.body.base_T()[:3, 1]
+        left = self.body.base_T(q)[:3, 1]
         across = left if seen.round else np.array([-math.sin(seen.yaw), math.cos(seen.yaw), 0.0])
         across = np.array([across[0], across[1], 0.0]) / np.linalg.norm(across[:2])
         if across @ left < 0:
@@ -158,19 +164,23 @@ class Hands:
         seen = self.locate(name, point, where)
         if seen is None:
             return Outcome(False, f"{name} is not where it was believed to be: not seen")
-        G, a = self.grasp_frame(seen, where, sideways)
-        pre = G.copy()
-        pre[:3, 3] -= a * APPROACH
-        self.nav.approach(self.nav.work_pose(G[:3, 3], self.nav.toward_robot(G[:3, 3], where.place), how(a), where.place,
-                                             reach=lambda base: (pre, G)))
-        closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
-        seen = closer or seen
-        G, a = self.grasp_frame(seen, where, sideways)
-        self.progress(0.1, "pre-grasp")
-        self.body.fingers(self.body.cfg.gripper.stroke)
-        if self.reach_pre(G, a, where.inside, APPROACH) is None:
+        stood: list = []
+        while True:
+            way = self.stand_to_grasp(seen, where, sideways, stood)
+            if way is None:  # nowhere else to stand that the arm would reach it from
+                return Outcome(False, f"{name}: no arm pose reaches it")
+            stood.append(self.body.base_pose())
+            closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
+            seen = closer or seen
+            G, a = self.grasp_frame(seen, where, way)
+            self.progress(0.1, "pre-grasp")
+            self.body.fingers(self.body.cfg.gripper.stroke)
+            if self.reach_pre(G, a, where.inside, APPROACH) is not None:
+                break
+            # what the second look measured can put the hand just out of reach from here
             self.body.home()
-            return Outcome(False, f"{name}: no arm pose reaches it")
+            if len(stood) >= GRASP_STANDS:
+                return Outcome(False, f"{name}: no arm pose reaches it")
         self.progress(0.35, "approach")
         self.body.line(G, steps=4, speed=0.3)
         self.progress(0.55, "closing")
@@ -194,6 +204,40 @@ class Hands:
             return Outcome(True, f"grasp of {name} closed on nothing")
         self.carry()
         return Outcome(True)
+
+    def stand_to_grasp(self, seen: Seen, where: Where, sideways: bool, stood=()) -> bool | None:
+        """Drive to a work pose for grasping ``seen``, away from the poses ``stood`` at already;
+        returns whether the hand takes it from the side (None: no pose left to try). An item on
+        the floor that the hand cannot reach from above (a wall, a leaf or a piece of furniture
+        beside or over it) is taken level from the side instead, from where the arm reaches that
+        (unless it is too flat for the pads to hold from the side).
+        On the first stand, when neither way reaches, the pose for the first way (the motion finds out)."""
+        floor = where.on in self.scene.site.floors()
+        low = seen.top - self.bottom(seen, where) < SIDE_LEVEL_HEIGHT  # a plate: no side for the pads to take
+        ways = (sideways,) if sideways or low or not floor else (False, True)
+        for way in ways:
+            # down by the floor the arm folds past furniture on its way: its joint way is checked too
+            pose = self.nav.reaching_pose(*self._work_request(seen, where, way), avoid=stood, routed=floor)
+            if pose is not None:
+                self.nav.approach(pose)
+                return way
+        if stood:
+            return None
+        self.nav.approach(self.nav.work_pose(*self._work_request(seen, where, ways[0])))
+        return ways[0]
+
+    def _work_request(self, seen: Seen, where: Where, sideways: bool) -> tuple:
+        """What :meth:`Navigator.work_pose` takes for a grasp of ``seen``: the point, the way to
+        the robot, the approach, the support, and the pre-grasp and grasp poses from a base pose."""
+        G, a = self.grasp_frame(seen, where, sideways)
+
+        def targets(base) -> tuple[np.ndarray, np.ndarray]:
+            G, a = self.grasp_frame(seen, where, sideways, base)
+            pre = G.copy()
+            pre[:3, 3] -= a * APPROACH
+            return pre, G
+
+        return G[:3, 3], self.nav.toward_robot(G[:3, 3], where.place), how(a), where.place, targets
 
     def way_out(self, container: str, pts) -> tuple[np.ndarray, float]:
         """The way out of a container's cavity (up for a top-open one, straight out of the front

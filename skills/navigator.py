@@ -34,6 +34,12 @@ WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep 
 WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15, 0.25, 0.35, 0.45)  # further back, when no sideways step is clear or reaches (an oven's door lies open in front)
 WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
 PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
+#: turns (rad) of the way from a worked point to the robot, tried in order when nothing in front of
+#: the point says which side to work it from (an item on the floor): a leaf or a piece of furniture
+#: beside it can keep the arm from one side and not from another
+AROUND = (0.0, math.pi / 4, -math.pi / 4, math.pi / 2, -math.pi / 2, 3 * math.pi / 4, -3 * math.pi / 4, math.pi)
+#: m between a work pose tried again and one the arm failed to work from (a different stand)
+AVOID_RADIUS = 0.1
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked
 LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
 HAND_RADIUS = 0.07  # the gripper round its tcp, seen from above
@@ -116,18 +122,12 @@ class Navigator:
         x, y, _ = d.pose
         return np.array([[x, y + s * d.width, z] for s in DOORWAY_SPREAD for z in DOORWAY_HEIGHTS])
 
-    def work_poses(self, point, toward, how: str, clear_of: str | None = None) -> Iterator[Pose]:
+    def work_poses(self, point, toward, how: str, clear_of: str | None = None, plain: bool = True) -> Iterator[Pose]:
         """Base poses for working at ``point``, best first: ``toward`` is the horizontal direction
         from the point to where the robot stands; a reach away from it (and clear of the front of
         ``clear_of``), stepped sideways (facing the point) and then back, keeping the base clear of
-        walls, furniture and leaves as last seen. The plain pose comes last if none is clear."""
-        f = np.array([toward[0], toward[1], 0.0])
-        f /= np.linalg.norm(f)
-        r = WORK_DISTANCE[how]
-        piece = self.scene.furniture.get(clear_of or "")
-        if piece is not None:
-            front = piece.to_world((0.0, piece.depth / 2, 0.0))
-            r = max(r, float((front - np.asarray(point))[:2] @ piece.front[:2]) + BASE_CLEARANCE)
+        walls, furniture and leaves as last seen. The plain pose comes last (if ``plain``)."""
+        f, r = self._work_axis(point, toward, how, clear_of)
         side = np.array([-f[1], f[0], 0.0])
         obstacles = self.scene.obstacles()
         for back in WORK_BACKOFFS:
@@ -137,30 +137,74 @@ class Navigator:
                 pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
                 if base_free(pose, obstacles, WORK_MARGIN):
                     yield pose
+        if plain:
+            yield self._plain_pose(point, toward, how, clear_of)
+
+    def _work_axis(self, point, toward, how: str, clear_of: str | None) -> tuple[np.ndarray, float]:
+        """The unit way from ``point`` to the robot and the reach along it (clear of the front of
+        ``clear_of``)."""
+        f = np.array([toward[0], toward[1], 0.0])
+        f /= np.linalg.norm(f)
+        r = WORK_DISTANCE[how]
+        piece = self.scene.furniture.get(clear_of or "")
+        if piece is not None:
+            front = piece.to_world((0.0, piece.depth / 2, 0.0))
+            r = max(r, float((front - np.asarray(point))[:2] @ piece.front[:2]) + BASE_CLEARANCE)
+        return f, r
+
+    def _plain_pose(self, point, toward, how: str, clear_of: str | None) -> Pose:
+        """A reach away along ``toward``, facing the point, clear or not."""
+        f, r = self._work_axis(point, toward, how, clear_of)
         p = np.asarray(point) + f * r
-        yield (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
+        return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
         ``reach(base_pose)`` lists — IK clear of the scene, checked from that base before it
-        moves; the first clear one when none does (the motion then finds out)."""
-        first = None
-        for pose in self.work_poses(point, toward, how, clear_of):
-            first = first or pose
-            if reach is None:
-                return pose
-            seed = self.body.q()
-            seed[:3] = pose
-            if all(self.body.solve(T, seed=seed) is not None for T in reach(pose)):
-                return pose
-        return first
+        moves; the first clear one when none does (the motion then finds out). A point on no
+        piece of furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
+        if reach is None:
+            return next(self.work_poses(point, toward, how, clear_of))
+        return self.reaching_pose(point, toward, how, clear_of, reach) or next(self.work_poses(point, toward, how, clear_of))
 
-    def toward_robot(self, point, support: str | None) -> np.ndarray:
-        """Horizontal direction from a point to the side the robot works it from."""
+    def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=(),
+                      routed: bool = False) -> Pose | None:
+        """The work pose of :meth:`work_pose` from which the arm reaches ``reach(base_pose)``, not
+        within ``AVOID_RADIUS`` of the poses in ``avoid`` (stood at already); None when there is
+        none. ``routed``: the arm's joint way from how it is now to the first pose (a pre-pose:
+        the rest are reached by straight lines) must be clear too."""
+        return next((p for p in self._candidates(point, toward, how, clear_of, True)
+                     if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid)
+                     and self._reaches(p, reach(p), routed)), None)
+
+    def _reaches(self, pose: Pose, targets, routed: bool = False) -> bool:
+        seed = self.body.q()
+        seed[:3] = pose
+        qs = []
+        for T in targets:
+            q = self.body.solve(T, seed=seed)
+            if q is None:
+                return False
+            qs.append(q)
+        return not routed or self.body.routed(seed, qs[:1]) is not None
+
+    def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
+        """The clear :meth:`work_poses` along ``toward`` and (for a point on no furniture, when
+        ``around``) along the turned ways of :data:`AROUND`; the plain pose along ``toward`` last."""
+        turns = AROUND if around and clear_of not in self.scene.furniture else AROUND[:1]
+        for turn in turns:
+            c, s = math.cos(turn), math.sin(turn)
+            yield from self.work_poses(point, (c * toward[0] - s * toward[1], s * toward[0] + c * toward[1], 0.0),
+                                       how, clear_of, plain=False)
+        yield self._plain_pose(point, toward, how, clear_of)
+
+    def toward_robot(self, point, support: str | None, base: Pose | None = None) -> np.ndarray:
+        """Horizontal direction from a point to the side the robot works it from (standing at
+        ``base``, default where it is)."""
         piece = self.scene.furniture.get(support or "")
         if piece is not None:
             return piece.front
-        d = np.array([*self.body.base_pose()[:2], 0.0]) - np.asarray(point, float)
+        d = np.array([*(base or self.body.base_pose())[:2], 0.0]) - np.asarray(point, float)
         d[2] = 0.0
         return d / max(np.linalg.norm(d), 1e-6)
 

@@ -139,3 +139,45 @@ def test_zenoh_embedded_run_matches_the_in_process_run():
     assert [p["actions"] for p in a["plans"]] == [p["actions"] for p in b["plans"]]
     assert a["situations"] == b["situations"] and a["injected"] == b["injected"]
     assert [x["state"] for x in a["actions_executed"]] == [x["state"] for x in b["actions_executed"]]
+
+
+def test_a_failure_that_comes_back_unchanged_is_looked_at_afresh_then_stops_the_episode(monkeypatch):
+    """A skill that fails the same way every time, from the same belief: the second time the
+    executive re-surveys instead of only replanning, the third time it stops and says why —
+    rather than spending the replanning budget on the same motion."""
+    from vap_bt.sim.symbolic import SymbolicWorld
+    from vap_bt.world import ActionOutcome
+
+    perform = SymbolicWorld.perform
+
+    def no_grasp(self, action, args, ctx):
+        if action == "grasp":
+            return ActionOutcome(False, f"{args[0]}: no arm pose reaches it")
+        return perform(self, action, args, ctx)
+
+    monkeypatch.setattr(SymbolicWorld, "perform", no_grasp)
+    lines = []
+    task = load(TREES / "collect_cup.yaml")
+    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_error=0.0),
+                lines.append).episode(0)
+    assert not r["success"] and r["reason"].startswith("stuck: execution of grasp(cup"), r["reason"]
+    assert "no arm pose reaches it" in r["reason"] and r["replans"] == 2 < 10
+    assert [s["kind"] for s in r["situations"]] == ["execution"] * 3
+    assert any("again: re-surveying" in m for m in lines)
+    assert len(r["perception"]["surveys"]) == 2  # the initial one and the fresh look
+
+
+def test_a_check_that_comes_back_the_same_is_looked_at_afresh_but_does_not_stop_the_episode():
+    """An effect the camera keeps contradicting may be chance (an injected slip): the executive
+    re-surveys on its return, and only the replanning budget ends the episode."""
+    from vap_bt.bt.context import Situation
+    from vap_bt.bt.repeats import RepeatWatch, stuck
+    from vap_bt.domain.atoms import Atom
+
+    watch, belief = RepeatWatch(), frozenset({Atom.parse("hand_empty()")})
+    slip = Situation("effect", None, 2, Atom.parse("holding(cup)"), True, False)
+    failed = Situation("execution", None, 2, detail="cup: no arm pose reaches it")
+    times = [watch.count(slip, belief) for _ in range(5)]
+    assert times == [1, 2, 3, 4, 5] and not any(stuck(slip, t) for t in times)
+    assert [stuck(failed, watch.count(failed, belief)) for _ in range(3)] == [False, False, True]
+    assert watch.count(failed, belief | {Atom.parse("inview(cup)")}) == 1  # another belief: a new start

@@ -41,6 +41,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
 from vap_bt.bt.inflight import make_executor
+from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
@@ -85,7 +86,7 @@ class ExecutiveSettings:
 class Survey:
     """One look round: why, the sweep, and what was asked of the VLM."""
 
-    reason: str  # "initial" or "lost <objects>"
+    reason: str  # "initial", "lost <objects>", or the situation that came back unchanged
     sweep: SweepRecord
     states: list[StateAnswer] = field(default_factory=list)
     facts: frozenset[Atom] = frozenset()  # belief right after it
@@ -174,6 +175,7 @@ class Executive:
 
     def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome) -> EpisodeOutcome:
         graph = out.graph
+        repeats = RepeatWatch()
         deadline = time.monotonic() + self.s.max_seconds
         while time.monotonic() < deadline:
             tree.tick()
@@ -199,11 +201,18 @@ class Executive:
             if situation.kind == "unseen" and self.s.unseen == "stop":
                 out.reason = f"stopped: {situation.detail}"
                 return out
+            times = repeats.count(situation, graph.state())
+            if stuck(situation, times):
+                out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
+                              "(looking afresh changed nothing)")
+                return out
             if out.replans >= self.s.max_replans:
                 out.reason = f"replanning budget ({self.s.max_replans}) exhausted"
                 return out
             t0 = time.perf_counter()
             survey = self._correct(graph, situation)
+            if survey is None and times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
+                survey = self._look_afresh(graph, situation)
             if survey is not None:
                 out.surveys.append(survey)
             try:
@@ -319,6 +328,14 @@ class Executive:
             return None
         return self._resurvey(graph, lost)
 
+    def _look_afresh(self, graph: SceneGraph, s: Situation) -> Survey:
+        """A situation came back unchanged: re-survey for the items it is about (or round the
+        robot's room when it is about none), so the next plan starts from fresh frames rather
+        than from the belief that led to the same failure."""
+        names = (*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()))
+        items = list(dict.fromkeys(o for o in names if self._portable(o)))
+        return self._resurvey(graph, items, f"{describe(s)} again")
+
     def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
         """Go and look at what a check could not make out: the sweep's own view of it (or of what
         it rests on). What could not be made out is not in view: the new plan re-approaches it."""
@@ -365,13 +382,14 @@ class Executive:
                 lost.append(o)  # the camera turned toward where belief puts it, and it is not there
         return lost
 
-    def _resurvey(self, graph: SceneGraph, lost: list[str]) -> Survey:
+    def _resurvey(self, graph: SceneGraph, lost: list[str], why: str | None = None) -> Survey:
         """Sweep the rooms belief put the lost objects in and the robot's own; if that does not
-        find them, the rest of the house. Every item the sweep saw is re-located."""
+        find them, the rest of the house. Every item the sweep saw is re-located. ``why``: the
+        reason to look, when it is not that ``lost`` are lost."""
         here = self.body.state().room
         near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == "in_room" and a.args[0] == o}
                       - {here}) + ([here] if here else [])
-        self.progress(f"    lost track of {', '.join(lost)}: re-surveying {', '.join(near)}")
+        self.progress(f"    {why or 'lost track of ' + ', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
         # an item that slipped from the hand lies on the floor near the robot: look round there first
@@ -389,7 +407,7 @@ class Executive:
                 graph.relocate(o, observed)
                 graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
         graph.replace_predicates(belief.ROBOT_PREDICATES, belief.robot_facts(self.body.state(), sweep, self.builder.site_map), "survey")
-        survey = Survey(f"lost {', '.join(lost)}", sweep, facts=graph.state())
+        survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
 
