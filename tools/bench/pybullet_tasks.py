@@ -66,10 +66,12 @@ def main(argv: list[str] | None = None) -> int:
         wanted = set(args.tasks.split(","))
         paths = [p for p in paths if p.stem in wanted]
     modes = {"off": (False,), "on": (True,), "both": (False, True)}[args.injection]
-    jobs = [(str(p), inj, s) for inj in modes for p in paths for s in range(args.first_seed, args.first_seed + args.seeds)]
+    # seed by seed, both modes and every task in each: a run stopped early is still balanced
+    jobs = [(str(p), inj, s) for s in range(args.first_seed, args.first_seed + args.seeds) for inj in modes for p in paths]
     rows: list[dict] = []
     t0 = time.perf_counter()
-    with mp.get_context("spawn").Pool(args.jobs, maxtasksperchild=4) as pool:
+    pool = mp.get_context("spawn").Pool(args.jobs, maxtasksperchild=4)
+    try:
         for r in pool.imap_unordered(episode, jobs):
             rows.append(r)
             done, took = len(rows), time.perf_counter() - t0
@@ -77,10 +79,24 @@ def main(argv: list[str] | None = None) -> int:
             print(f"[{done}/{len(jobs)}] {r['task']} seed {r['seed']} injection {'on' if r['injection'] else 'off'}: "
                   f"{mark} in {r['wall_s']:.1f} s ({r['reason']}); {done / took * 60:.1f} episodes/min, "
                   f"about {(len(jobs) - done) * took / done:.0f} s left", file=sys.stderr, flush=True)
+            if args.json:  # after every episode: what ran is kept if the run is stopped
+                _write(Path(args.json), rows)
+        pool.close()
+    except KeyboardInterrupt:
+        pool.terminate()
+        print(f"stopped after {len(rows)} of {len(jobs)} episodes", file=sys.stderr)
+        table(rows)
+        return 130
+    finally:
+        pool.join()
     table(rows)
-    if args.json:
-        Path(args.json).write_text(json.dumps({"command": " ".join(sys.argv), "episodes": rows}, indent=1))
     return 0
+
+
+def _write(path: Path, rows: list[dict]) -> None:
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    tmp.write_text(json.dumps({"command": " ".join(sys.argv), "episodes": rows}, indent=1))
+    tmp.replace(path)
 
 
 def table(rows: list[dict]) -> None:
