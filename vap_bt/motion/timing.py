@@ -15,6 +15,8 @@ acceleration with 1/k^2), so every sample respects the true limits — the tests
 
 from __future__ import annotations
 
+import logging
+
 import numpy as np
 import toppra as ta
 import toppra.algorithm as algo
@@ -23,7 +25,9 @@ import toppra.constraint as constraint
 from vap_bt.motion.limits import Limits
 from vap_bt.motion.trajectory import Trajectory
 
-ta.setup_logging("WARNING")
+# A path toppra cannot time is an answer, not an alarm: time_path raises TimingError and the
+# caller plans another way. toppra's own warnings for it would flood every run's log.
+logging.getLogger("toppra").setLevel(logging.ERROR)
 
 
 class TimingError(RuntimeError):
