@@ -107,6 +107,47 @@ def test_early_stop_asks_fewer_questions_with_the_same_outcome():
     assert len(early.answers) == 4  # after four agreeing answers nothing can change
 
 
+class Sure(Scripted):
+    """Replays answers, each stated with the given probability (a backend with logprobs)."""
+
+    def __init__(self, answers, confidence: float):
+        super().__init__(answers)
+        self.confidence = confidence
+
+    def ask(self, query: Query, obs: Frame) -> Answer:
+        a = self.answers.pop(0)
+        return Answer(str(a), a, confidence=self.confidence)
+
+
+def lean_round(vlm, expected: bool) -> Round:
+    from vap_bt.perception.protocol import Protocol
+
+    return vote_round(vlm, OBS, CUP, VoteSettings(), household_profile(), Protocol.parse("lean"), expected)
+
+
+def test_lean_settles_on_three_agreeing_answers_that_confirm_the_plan():
+    r = lean_round(Scripted([True] * 5), expected=True)
+    assert r.answers == [True] * 3 and r.vote is True and r.consistent
+
+
+def test_lean_puts_a_surprise_to_the_full_vote():
+    """Three answers against what the plan expects would correct belief and replan: as in the
+    paper, four of five must agree before that happens."""
+    r = lean_round(Scripted([False] * 5), expected=True)
+    assert len(r.answers) == 4 and r.vote is False and r.consistent  # the fifth could not change it
+    split = lean_round(Scripted([True, True, False, True, True]), expected=True)
+    assert len(split.answers) == 5 and split.vote is True and split.consistent  # 4 of 5, as in the paper
+
+
+def test_a_confident_logprob_answer_stands_for_the_vote_only_when_it_confirms_the_plan():
+    sure = lean_round(Sure([True] * 5, 0.99), expected=True)
+    assert sure.answers == [True] and sure.vote is True and sure.consistent
+    surprise = lean_round(Sure([False] * 5, 0.99), expected=True)
+    assert len(surprise.answers) == 4 and surprise.vote is False and surprise.consistent
+    unsure = lean_round(Sure([True] * 5, 0.6), expected=True)
+    assert unsure.answers == [True] * 3 and unsure.consistent  # then two more, agreeing: three
+
+
 def sim_vlm(truth, visibility: dict[str, float], error_rate: float, seed: int, frames: int = 1) -> SimVLM:
     """The simulated VLM over capture records f-0, f-1, ... with the given visibility and truth."""
     oracle = FunctionOracle(truth, lambda: [])
@@ -145,6 +186,25 @@ def test_sim_vlm_guesses_about_what_it_cannot_see_and_knows_it():
     suff = [vlm.ask(Query("q", purpose="sufficiency", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
             for i in range(50)]
     assert not any(suff), "with no noise it must say the view is insufficient every time"
+
+
+def test_sim_vlm_sees_a_large_thing_the_frame_cuts_as_plainly_as_a_whole_one():
+    """A table top filling a third of the image, cut by three of its edges (a fifth of the table
+    in the frame), is plainly in the picture: the view is sufficient and the answers as good as
+    for a wholly visible table. The same fifth of a table covering 2 % of the image is not."""
+    oracle = FunctionOracle(lambda a: True, lambda: [])
+
+    def asked(share: float, purpose: str = "predicate") -> list[bool | None]:
+        masks = {"cup": ((), 0.02), "table": (("bottom", "left", "right"), share)}
+        records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {"cup": 1.0, "table": 0.2}, oracle, lambda: 0, masks=masks)
+                   for i in range(400)}
+        vlm = SimVLM(records.get, error_rate=0.05, seed=3)
+        return [vlm.ask(Query("q", purpose=purpose, about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
+                for i in range(400)]
+
+    assert sum(asked(0.33, "sufficiency")) > 0.9 * 400
+    assert sum(asked(0.33)) > 0.9 * 400  # wrong at about the base rate, 5 %
+    assert sum(asked(0.02, "sufficiency")) < 0.2 * 400
 
 
 def rnd(answers: str, sufficient: bool | None) -> Round:
@@ -228,18 +288,20 @@ def prompts_viewpoint_query() -> Query:
     return viewpoint_query(CUP, "Is the cup on the table?", "cup")
 
 
-def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_whole():
-    from vap_bt.perception.verification import shown_whole
+def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_plainly():
+    from vap_bt.perception.verification import shown_plainly
     from vap_bt.robot.frame import Detection
 
     masks = np.full((100, 100), -1, np.int32)
     masks[40:60, 40:60] = 1  # the cup, whole, 4 % of the image
-    masks[70:100, 0:100] = 2  # the table, cut by the image's bottom and sides
+    masks[70:100, 0:100] = 2  # the table, cut by the image's bottom and sides, 30 % of it
     dets = (Detection("cup", "cup", 400, 1), Detection("table", "table", 3000, 2))
     frame = Frame("f", 0.0, detections=dets, masks=masks)
-    assert shown_whole(frame, Atom("holding", ("cup",)), frozenset(), 0.005)
-    assert not shown_whole(frame, Atom("on", ("cup", "table")), frozenset(), 0.005)  # the table is cut
-    assert shown_whole(frame, Atom("on", ("cup", "floor_kitchen")), frozenset({"floor_kitchen"}), 0.005)
-    assert not shown_whole(frame, Atom("holding", ("cup",)), frozenset(), 0.05)  # too small for that share
-    assert not shown_whole(frame, Atom("holding", ("knife",)), frozenset(), 0.005)  # not found
-    assert not shown_whole(Frame("g", 0.0, detections=dets), Atom("holding", ("cup",)), frozenset(), 0.005)  # no masks
+    assert shown_plainly(frame, Atom("holding", ("cup",)), frozenset(), 0.005)
+    assert not shown_plainly(frame, Atom("on", ("cup", "table")), frozenset(), 0.005)  # the table is cut
+    assert shown_plainly(frame, Atom("on", ("cup", "table")), frozenset(), 0.005, 0.1)  # ... and large
+    assert not shown_plainly(frame, Atom("on", ("cup", "table")), frozenset(), 0.005, 0.5)  # not that large
+    assert shown_plainly(frame, Atom("on", ("cup", "floor_kitchen")), frozenset({"floor_kitchen"}), 0.005)
+    assert not shown_plainly(frame, Atom("holding", ("cup",)), frozenset(), 0.05)  # too small for that share
+    assert not shown_plainly(frame, Atom("holding", ("knife",)), frozenset(), 0.005, 0.1)  # not found
+    assert not shown_plainly(Frame("g", 0.0, detections=dets), Atom("holding", ("cup",)), frozenset(), 0.005)  # no masks

@@ -7,6 +7,15 @@ lies, and the truth at capture time. It treats every question alike: a question 
 atoms it concerns (for the action-level baselines, every atom the action implies), whichever
 strategy asked. Its parameters are fixed here with their reasons and printed in every report.
 
+**How well a frame shows a thing.** Its *visibility* is the fraction of it the frame shows (from
+the camera's record: occlusion and the parts the frame cuts off both count against it), except
+that a thing covering at least ``PLAIN_SHARE`` (a tenth) of the image is plainly in the picture,
+as well seen as a wholly visible one. A model
+judges pixels, not what lies beyond the frame: the floor under a stick, a table top filling the
+view, a fridge a step away or the stick in the gripper are no harder to make out for being cut
+by the image's edges. (Without this rule a floor filling 94 % of a frame counted as 3 % visible,
+and every question about a large thing seen from close by was judged unanswerable.)
+
 **Yes/no answers.** ``v`` is the least visibility among the objects the question names (rooms
 excluded; 1 when it names none). The chance of a wrong answer is ``p(v) = min(0.5,
 error_rate * (2 - v))`` for an object in the frame — the base rate when fully visible, up to
@@ -50,6 +59,9 @@ from vap_bt.robot.frame import Frame
 from vap_bt.sim.captures import CaptureRecord
 
 SUFFICIENT_VISIBILITY = 0.5
+#: a thing covering at least this share of the image is plainly in the picture, however much of it
+#: the frame cuts off (see the module docstring)
+PLAIN_SHARE = 0.1
 #: slope of the stated probability in the latent score (see the module docstring: overconfident)
 CONFIDENCE_SLOPE = 4.0
 #: a target smaller than this share of the image is "far": come closer
@@ -79,7 +91,7 @@ class SimVLM:
     def describe(self) -> dict:
         return {"backend": self.name, "error_rate": self.error_rate, "seed": self.seed,
                 "model": "answers from the world's record of the frame: wrong w.p. min(0.5, error_rate*(2-v)) "
-                         "for visible objects, 0.5 when unseen, via a latent score z = +-Phi^-1(1-p) + N(0,1); "
+                         f"for visible objects (v: visible fraction, or 1 for a thing covering >= {PLAIN_SHARE:g} of the image), 0.5 when unseen, via a latent score z = +-Phi^-1(1-p) + N(0,1); "
                          f"stated probability sigmoid({CONFIDENCE_SLOPE:g}|z|); sufficient iff v >= 0.5; "
                          "viewpoint read off the target's mask (edges, size, occlusion), uniform when unseen"}
 
@@ -112,10 +124,11 @@ class SimVLM:
         options = tuple(query.options)
         target = next((o for o in query.objects if o not in self.rooms), None)
         shown = record.masks.get(target) if target is not None else None
-        v = record.visibility.get(target, 0.0) if target is not None else v  # the target's own
+        v = self._seen(target, record) if target is not None else v  # the target's own
         if shown is None or v <= 0.0 or rng.random() < self._p_seen(v):
             return rng.choice(options)  # nothing in the picture says where it is (or a misreading)
         edges, share = shown
+        v = record.visibility.get(target, 0.0)  # how much of it the frame shows: is it hidden?
         want = ("front" if len(edges) > 1 or "top" in edges or "bottom" in edges or share > LARGE_IN_IMAGE
                 else edges[0] if edges else "closer" if share < SMALL_IN_IMAGE
                 else "above" if v < HIDDEN else "front")
@@ -123,7 +136,15 @@ class SimVLM:
 
     def _visibility(self, query: Query, record: CaptureRecord) -> float:
         named = [o for o in query.objects if o not in self.rooms]
-        return min((record.visibility.get(o, 0.0) for o in named), default=1.0)
+        return min((self._seen(o, record) for o in named), default=1.0)
+
+    @staticmethod
+    def _seen(name: str, record: CaptureRecord) -> float:
+        """How well the frame shows ``name``: its visible fraction, except that a thing covering
+        at least ``PLAIN_SHARE`` of the image is plainly in it (see the module docstring)."""
+        v = record.visibility.get(name, 0.0)
+        shown = record.masks.get(name)
+        return 1.0 if shown is not None and v > 0.0 and shown[1] >= PLAIN_SHARE else v
 
     def _p_wrong(self, v: float) -> float:
         return 0.5 if v <= 0.0 else self._p_seen(v)
