@@ -19,7 +19,11 @@ def test_literature_domains_run_end_to_end(cli, domain, problem, tmp_path):
     full = load_json((tmp_path / "r.json").read_text())
     if domain.startswith("blocksworld"):  # on/clear/holding have paraphrases; gripper's predicates do not
         assert full["verifications"], "with verification on, checks must have been asked"
-    assert all(v["outcome"] == "confirmed" for v in full["verifications"])
+    # nothing situated goes wrong here: every check confirms, by looking or — for what the hand
+    # holds, which no move of the base shows better than the first view — by the gripper's feel
+    assert all(v["outcome"] == "confirmed" or v["outcome"] == "felt" and v["predicate"].startswith("holding(")
+               for v in full["verifications"])
+    assert any(v["outcome"] == "confirmed" for v in full["verifications"]) or not full["verifications"]
 
 
 def session(name: str, **cfg) -> Session:

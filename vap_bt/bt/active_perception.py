@@ -11,7 +11,10 @@ and the decorator fails, which fails the plan's tree and hands control to the ex
 While nothing is decided the decorator moves the camera — at most K times — and runs the child
 again: the viewpoint strategy (:mod:`vap_bt.perception.viewpoints`) gives the direction (the
 VLM's suggestion about the last frame, or the next of the greedy round), and the move is work in
-flight like any other; the child is not ticked meanwhile. With the budget spent and nothing
+flight like any other; the child is not ticked meanwhile. A direction the robot cannot move to
+is replaced at once by another (a frame from the same spot would show the same picture), and
+when no direction is left, or the check is about the hand or what it holds (the wrist camera
+moves with the hand: no base move shows it better), the first views are all there are. With the budget spent and nothing
 decided, a value stands only if every view's answers agreed on it; otherwise the check is
 *unsettled* (the paper returns the last vote here; one vote from a view the VLM judged
 insufficient is too close to a guess to rewrite the scene graph).
@@ -34,6 +37,7 @@ from py_trees.common import Status
 
 from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception.verification import Round, choice, target_of, verdict
 
@@ -57,6 +61,8 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     def initialise(self) -> None:
         self.rounds, self.moves, self._job, self._stage = [], 0, None, "look"
+        self._refused: set[str] = set()  # directions this check could not move to
+        self._tried: set[str] = set()  # directions this check moved to or was refused
 
     def tick(self):
         if self.status != Status.RUNNING:
@@ -90,8 +96,18 @@ class ActivePerception(py_trees.decorators.Decorator):
         if r is None:  # the child did not run (interrupted)
             return Status.FAILURE
         self.rounds.append(r)
-        v = verdict(self.rounds, exhausted=self.moves >= self.ctx.budget)
+        return self._decide(exhausted=self.moves >= self.ctx.budget or self._in_hand())
+
+    def _in_hand(self) -> bool:
+        """Whether the check is about the hand or what belief has in it: the wrist camera moves
+        with the hand, so no move of the base shows it better (the gripper's feel decides what
+        the first view could not)."""
+        return not self.atom.args or Atom("holding", self.atom.args[:1]) in self.ctx.graph.facts
+
+    def _decide(self, exhausted: bool) -> Status:
+        v = verdict(self.rounds, exhausted)
         if v is None:
+            r = self.rounds[-1]
             question = r.questions[0] if r.questions else self.ctx.profile.questions(self.atom, 1)[0]
             nxt = self.ctx.viewpoints.next(self.moves, self.atom, question, target_of(self.atom))
             if isinstance(nxt, str):
@@ -110,18 +126,19 @@ class ActivePerception(py_trees.decorators.Decorator):
             return Status.RUNNING
         try:
             direction = choice(self._job.result())
-        except Exception:  # noqa: BLE001 - no answer: the move is lost, the budget is not refunded
+        except Exception:  # noqa: BLE001 - no answer: another way is taken (see _move)
             direction = None
         return self._move(direction)
 
     def _move(self, direction: str | None) -> Status:
         r = self.rounds[-1]
-        r.direction = direction
-        self.moves += 1
-        if direction is None:
+        if direction is None or direction in self._refused:  # no answer, or a way already refused
+            direction = self.ctx.viewpoints.instead(self._tried)
+        if direction is None:  # no way to a new view from here: what the views said is all there is
             r.moved = False
-            self._stage = "look"
-            return Status.RUNNING
+            return self._decide(exhausted=True)
+        r.direction = direction
+        self._tried.add(direction)
         aim = self.ctx.aim(self.ctx.graph, (target_of(self.atom), *self.atom.args))
         self._job, self._stage = self.ctx.submit(self.ctx.camera.move_view, aim, direction), "move"
         return Status.RUNNING
@@ -129,8 +146,14 @@ class ActivePerception(py_trees.decorators.Decorator):
     def _moved(self) -> Status:
         if not self._job.done():
             return Status.RUNNING
-        self.rounds[-1].moved = bool(self._job.result())
-        self._job, self._stage = None, "look"
+        r = self.rounds[-1]
+        r.moved, self._job = bool(self._job.result()), None
+        if not r.moved:  # the same spot would show the same picture: try another way at once
+            self._refused.add(r.direction)
+            r.refused += (r.direction,)
+            return self._move(None)
+        self.moves += 1
+        self._stage = "look"
         return Status.RUNNING  # the child runs again next tick, from the new view
 
     def terminate(self, new_status: Status) -> None:

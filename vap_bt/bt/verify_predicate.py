@@ -5,13 +5,15 @@ atom's objects, then the N paraphrased questions about that frame — sent as th
 protocol says (one after another, or in waves all in flight at once) — their vote, and, when the
 answers agree, the view-sufficiency question — unless the frame's detector did not find every
 object the atom names (rooms and floors aside): a view that does not show a thing cannot settle
-a question about it, so it is insufficient without asking; and, in a protocol that lets the
-detector answer (lean), unless it shows every one of them whole, when it is sufficient — and
-a view that does not show one is not asked about at all (its answers would vote nothing). Every
-tick polls what is in flight and returns RUNNING until the round is done; ``terminate`` cancels what has not been sent. The behaviour
-succeeds when the round settles on the expected value and fails otherwise; whether a failure
-means "the world disagrees" or "could not tell from here" is in :attr:`round` for its
-:class:`~vap_bt.bt.active_perception.ActivePerception` decorator to weigh.
+a question about it, so it is insufficient without asking. In a protocol that lets the detector
+answer (lean), a view that shows every one of them plainly (whole, or large) is sufficient
+without asking, a view that does not show one is not asked about at all (its answers would vote
+nothing), and otherwise the sufficiency question goes out with the first wave of questions.
+Every tick polls what is in flight and returns RUNNING until the round is done; ``terminate``
+cancels what has not been sent. The behaviour succeeds when the round settles on the expected
+value and fails otherwise; whether a failure means "the world disagrees" or "could not tell from
+here" is in :attr:`round` for its :class:`~vap_bt.bt.active_perception.ActivePerception`
+decorator to weigh.
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ from py_trees.common import Status
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
-from vap_bt.perception.verification import Round, RoundAsker, shown_whole, sufficiency_query, unshown, yes_no
+from vap_bt.perception.verification import Round, RoundAsker, shown_plainly, sufficiency_query, unshown, yes_no
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
 
@@ -42,10 +44,11 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         self._answers: dict[int, Future] = {}
         self._sufficiency: Future | None = None
         self._voted: Round | None = None
+        self._plain = False  # the detector shows everything the atom names plainly (lean)
 
     def initialise(self) -> None:
         self.round, self.observation, self._asker, self._voted = None, None, None, None
-        self._answers, self._sufficiency = {}, None
+        self._answers, self._sufficiency, self._plain = {}, None, False
         self._frame = self.ctx.submit(self.ctx.camera.capture, self.ctx.aim(self.ctx.graph, self.atom.args))
         self.feedback_message = "capturing"
 
@@ -54,22 +57,35 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
             if not self._frame.done():
                 return Status.RUNNING
             self.observation, self._frame = self._frame.result(), None
-            self._asker = RoundAsker(self.atom, self.observation, self.ctx.vote, self.ctx.profile, self.ctx.protocol)
-            missing = unshown(self.observation, self.atom, self.ctx.undetectable)
-            if missing and self.ctx.protocol.detector:
-                # answers about a view that does not show the thing vote nothing: lean asks none
-                r, self._asker = self._asker.finish(), None
-                r.unshown, r.sufficient, r.sufficient_by = missing, False, "detector"
-                return self._finish(r)
+            return self._start()
         if self._asker is not None:
             return self._ask()
-        if self._sufficiency is not None:
+        if self._sufficiency is not None and self._voted is not None:
             if not self._sufficiency.done():
                 return Status.RUNNING
             self._voted.sufficient, self._voted.sufficient_by = yes_no(_answer(self._sufficiency)), "model"
             self._sufficiency = None
             return self._finish(self._voted)
         return Status.FAILURE if self.round is None else self._status(self.round)
+
+    def _start(self) -> Status:
+        """The frame is in: start the round (or, in a protocol that lets the detector answer,
+        end it at once when the frame does not show what the atom is about)."""
+        protocol = self.ctx.protocol
+        self._asker = RoundAsker(self.atom, self.observation, self.ctx.vote, self.ctx.profile, protocol, self.expected)
+        if protocol.detector:
+            if unshown(self.observation, self.atom, self.ctx.undetectable):
+                # answers about a view that does not show the thing vote nothing: lean asks none
+                r, self._asker = self._asker.finish(), None
+                return self._judged_by_detector(r)
+            self._plain = shown_plainly(self.observation, self.atom, self.ctx.undetectable,
+                                        protocol.whole_share, protocol.large_share)
+        if protocol.concurrent and not self._plain:  # the sufficiency question rides the first wave
+            self._ask_sufficiency(self._asker.questions[0])
+        return self._ask()
+
+    def _ask_sufficiency(self, question: str) -> None:
+        self._sufficiency = self.ctx.submit(self.ctx.vlm.ask, sufficiency_query(self.atom, question), self.observation)
 
     def _ask(self) -> Status:
         asker = self._asker
@@ -85,20 +101,27 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         cancel_all(self._answers.values())  # early stop: what is left would not change the vote
         self._answers, self._asker = {}, None
         r = asker.finish()
-        r.unshown = unshown(self.observation, self.atom, self.ctx.undetectable)
-        if r.unshown:  # the detector did not find what the atom is about: not a view of it
-            r.sufficient, r.sufficient_by = False, "detector"
+        if unshown(self.observation, self.atom, self.ctx.undetectable):
+            return self._judged_by_detector(r)  # the detector did not find what the atom is about
+        if not (r.consistent and r.vote is not None):
+            cancel_all([self._sufficiency])  # nothing to judge a view by: the answers disagree
+            self._sufficiency = None
             return self._finish(r)
-        if r.consistent and r.vote is not None:
-            protocol = self.ctx.protocol
-            if protocol.detector and shown_whole(self.observation, self.atom, self.ctx.undetectable, protocol.whole_share):
-                r.sufficient, r.sufficient_by = True, "detector"  # everything asked about is in view, whole
-                return self._finish(r)
-            self._voted = r
-            self._sufficiency = self.ctx.submit(self.ctx.vlm.ask, sufficiency_query(self.atom, r.questions[0]),
-                                                self.observation)
-            self.feedback_message = f"vote={r.vote}: is the view sufficient?"
-            return Status.RUNNING
+        if self._plain:  # everything asked about is plainly in view
+            r.sufficient, r.sufficient_by = True, "detector"
+            return self._finish(r)
+        self._voted = r
+        if self._sufficiency is None:
+            self._ask_sufficiency(r.questions[0])
+        self.feedback_message = f"vote={r.vote}: is the view sufficient?"
+        return self.update()
+
+    def _judged_by_detector(self, r: Round) -> Status:
+        """The frame's detector did not find every object the atom names: an insufficient view."""
+        cancel_all([self._sufficiency])
+        self._sufficiency = None
+        r.unshown = unshown(self.observation, self.atom, self.ctx.undetectable)
+        r.sufficient, r.sufficient_by = False, "detector"
         return self._finish(r)
 
     def _finish(self, r: Round) -> Status:

@@ -12,15 +12,26 @@ then the view-sufficiency question, for every check. ``lean`` changes only how m
 * **logprobs** — where the backend reports token probabilities, one question stands for the N
   votes when its answer is confident (the probability it states for its answer at least
   ``confident``: 0.95, as strong a statement as a unanimous vote and above what the simulated model
-  states for a guess, 0.87 on average); otherwise the remaining paraphrases are asked and voted
-  as usual;
+  states for a guess, 0.87 on average) and confirms what the plan expects; otherwise more
+  paraphrases are asked and voted as usual;
+* **unanimous** — a round settles once ``unanimous`` (3) paraphrases all agree on what the plan
+  expects, without asking the other two: three independent wrong answers at the base error rate
+  (5 %) come once in 8000 rounds. A surprise — a value against the plan, which would correct
+  belief and make the robot replan — is always put to the paper's full vote (4 of 5 agreeing),
+  with or without logprobs, so that asking less never buys a wrong correction;
 * **detector** — the view-sufficiency question is not asked when the frame's detector already
-  answers it: every object the atom names (rooms and floors aside) is found whole — its mask
-  clear of the image's edges — and not tiny (at least ``whole_share`` of the image). Where the
-  detector cannot tell (an object cut by the edge, small, or a frame without masks) the model is
-  asked as in the paper; where it finds an object missing, the view is insufficient in every
-  protocol, and lean asks nothing about it (answers about a view that does not show the thing
-  vote nothing in the verdict).
+  answers it: every object the atom names (rooms and floors aside) is found plainly in view —
+  whole (its mask clear of the image's edges) and not tiny (at least ``whole_share`` of the
+  image), or large (at least ``large_share`` of the image, a table top or a floor filling the
+  view however much of it the edges cut off). Where the detector cannot tell (an object cut by
+  the edge and not large, small, or a frame without masks) the model is asked as in the paper;
+  where it finds an object missing, the view is insufficient in every protocol, and lean asks
+  nothing about it (answers about a view that does not show the thing vote nothing in the
+  verdict);
+* **sufficiency in the first wave** — where the detector cannot answer it, the view-sufficiency
+  question goes out with the round's first questions instead of after their answers (it is
+  about the same frame): one round trip of waiting, not two, at the cost of a question wasted on
+  a round whose answers then disagree.
 """
 
 from __future__ import annotations
@@ -38,8 +49,10 @@ class Protocol:
     reuse: bool = False
     logprobs: bool = False
     confident: float = 0.95
+    unanimous: int = 0  # 0: a round needs the paper's agreement share of all N answers
     detector: bool = False
     whole_share: float = 0.005
+    large_share: float = 1.0  # 1.0: no object is large enough to count without being whole
 
     @classmethod
     def parse(cls, name: str) -> "Protocol":
@@ -53,4 +66,5 @@ class Protocol:
 
 
 PROTOCOLS = {"paper": Protocol("paper"), "lean": Protocol("lean", early_stop=True, concurrent=True, reuse=True,
-                                                               logprobs=True, detector=True)}
+                                                               logprobs=True, detector=True, large_share=0.1,
+                                                               unanimous=3)}

@@ -40,8 +40,10 @@ class Round:
     vote: bool | None = None
     consistent: bool = False
     sufficient: bool | None = None
-    direction: str | None = None  # the viewpoint suggested after this round, if any
+    direction: str | None = None  # the viewpoint moved to (or last tried) after this round, if any
     moved: bool | None = None  # whether the camera could go there
+    #: directions tried after this round that the robot could not move to (before ``direction``)
+    refused: tuple[str, ...] = ()
     unshown: tuple[str, ...] = ()  # objects of the atom the frame's detector did not find
     #: who judged the view: "model" (the sufficiency question was asked) or "detector" (it found an
     #: object missing, or — where the protocol lets it — everything whole); None when not judged
@@ -54,7 +56,8 @@ class Round:
     def to_json(self) -> dict:
         return {"view": self.view, "answers": ["?" if a is None else ("yes" if a else "no") for a in self.answers],
                 "vote": self.vote, "consistent": self.consistent, "sufficient": self.sufficient,
-                "direction": self.direction, "moved": self.moved, **({"unshown": list(self.unshown)} if self.unshown else {}),
+                "direction": self.direction, "moved": self.moved, **({"refused": list(self.refused)} if self.refused else {}),
+                **({"unshown": list(self.unshown)} if self.unshown else {}),
                 **({"sufficient_by": self.sufficient_by} if self.sufficient_by == "detector" else {})}
 
 
@@ -70,10 +73,13 @@ def unshown(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()
     return tuple(o for o in objects_of(atom) if o not in found and o not in undetectable)
 
 
-def shown_whole(frame: Frame, atom: Atom, undetectable: frozenset[str], least_share: float) -> bool:
+def shown_plainly(frame: Frame, atom: Atom, undetectable: frozenset[str], least_share: float,
+                  large_share: float = 1.0) -> bool:
     """Whether the frame's detector finds every object ``atom`` names (rooms and floors aside)
-    whole and not tiny: its mask clear of the image's edges and at least ``least_share`` of the
-    image. False where it cannot tell (no masks in the frame)."""
+    plainly in view: whole and not tiny (its mask clear of the image's edges and at least
+    ``least_share`` of the image), or large (at least ``large_share`` of the image, however much
+    of it the edges cut off: a table top filling the view). False where it cannot tell (no masks
+    in the frame)."""
     if frame.masks is None:
         return False
     h, w = frame.masks.shape
@@ -81,7 +87,10 @@ def shown_whole(frame: Frame, atom: Atom, undetectable: frozenset[str], least_sh
         if name in undetectable:
             continue
         mask = frame.mask(name)
-        if mask is None or mask.sum() < least_share * h * w:
+        share = 0.0 if mask is None else mask.sum() / (h * w)
+        if share >= large_share:
+            continue
+        if share < least_share:
             return False
         if mask[0].any() or mask[-1].any() or mask[:, 0].any() or mask[:, -1].any():
             return False
@@ -100,13 +109,20 @@ class RoundAsker:
     * early stop: sequential, stopping once nothing left could change the vote or its consistency;
     * concurrent: in waves — the fewest answers that could decide the round, all at once, then
       as many more as could still decide it;
-    * logprobs: the first question alone; an answer whose confidence reaches the agreement share
-      stands for the whole vote, otherwise the others are asked as above.
+    * logprobs: the first question alone; an answer whose confidence reaches the protocol's
+      ``confident`` stands for the whole vote, otherwise the others are asked as above;
+    * unanimous: a round settles once ``protocol.unanimous`` answers all agree (three
+      paraphrases, none abstaining), without the rest.
+
+    The last two take fewer answers than the paper only for a value the plan ``expected``: a
+    surprise (a situation: belief is corrected and the robot replans on it) is always put to the
+    paper's full vote, 4 of 5 agreeing, so that the cheaper protocol costs nothing in wrong
+    corrections. Without an expectation (a survey's question) they apply to either value.
     """
 
     def __init__(self, atom: Atom, frame: Frame, s: VoteSettings, profile: PerceptionProfile,
-                 protocol: Protocol | None = None) -> None:
-        self.atom, self.frame, self.s = atom, frame, s
+                 protocol: Protocol | None = None, expected: bool | None = None) -> None:
+        self.atom, self.frame, self.s, self.expected = atom, frame, s, expected
         self.protocol = protocol or Protocol("paper", early_stop=s.early_stop)
         self.questions = profile.questions(atom, s.paraphrases)
         self.queries = [Query(prompts.predicate_query(q), about=(atom,), objects=objects_of(atom)) for q in self.questions]
@@ -123,14 +139,37 @@ class RoundAsker:
     def outstanding(self) -> int:
         return len(self.asked) - len(self.answers)
 
+    def _may_shorten(self, value: bool) -> bool:
+        """Whether fewer answers than the paper's may settle ``value``: only an expected one."""
+        return self.expected is None or value == self.expected
+
+    def _agreeing(self) -> bool | None:
+        """The value every answer so far gives (none abstaining), when fewer answers may settle
+        it; None otherwise (no answers yet, disagreement, an abstention, or a surprise)."""
+        vals = set(self.answers.values())
+        if len(vals) != 1 or None in vals:
+            return None
+        value = vals.pop()
+        return value if self._may_shorten(value) else None
+
+    @property
+    def unanimous(self) -> bool:
+        """``protocol.unanimous`` answers or more, all agreeing on a value they may settle."""
+        k = self.protocol.unanimous
+        return bool(k) and len(self.answers) >= k and self._agreeing() is not None
+
     @property
     def done(self) -> bool:
         if self.confident is not None:
             return True
         if len(self.answers) == len(self.questions):
             return True
+        if self.outstanding:
+            return False
+        if self.unanimous:
+            return True
         early = self.protocol.early_stop or self.protocol.concurrent
-        return early and not self.outstanding and _decided(self._ordered(), len(self.questions), self.need)
+        return early and _decided(self._ordered(), len(self.questions), self.need)
 
     def _ordered(self) -> list[bool | None]:
         return [self.answers[i] for i in sorted(self.answers)]
@@ -148,7 +187,10 @@ class RoundAsker:
             wave = left
         else:
             yes, no = self._counts()
-            wave = left[:max(1, math.ceil(self.need - 1e-9) - max(yes, no))]
+            want = math.ceil(self.need - 1e-9) - max(yes, no)
+            if self.protocol.unanimous and (not self.answers or self._agreeing() is not None):
+                want = min(want, self.protocol.unanimous - len(self.answers))
+            wave = left[:max(1, want)]
         self.asked += wave
         return wave
 
@@ -156,7 +198,7 @@ class RoundAsker:
         value = answer.value if isinstance(answer.value, bool) else None
         self.answers[index] = value
         if (self.protocol.logprobs and len(self.asked) == 1 and value is not None and answer.confidence is not None
-                and answer.confidence >= self.protocol.confident):
+                and answer.confidence >= self.protocol.confident and self._may_shorten(value)):
             self.confident = value
 
     def finish(self) -> Round:
@@ -171,15 +213,15 @@ class RoundAsker:
             r.vote, r.consistent = self.confident, True
             return r
         r.vote = (yes * 2 > yes + no) if yes + no else None
-        r.consistent = max(yes, no) >= self.need
+        r.consistent = max(yes, no) >= self.need or self.unanimous
         return r
 
 
 def vote_round(vlm: VLM, obs: Frame, atom: Atom, s: VoteSettings, profile: PerceptionProfile,
-               protocol: Protocol | None = None) -> Round:
+               protocol: Protocol | None = None, expected: bool | None = None) -> Round:
     """Ask the paraphrases of ``atom`` (its domain's ``profile`` has them) about ``obs`` and vote (paper Alg. 2, lines 2–4), waiting
     for each answer (the survey, and tests; behaviours use :class:`RoundAsker` without waiting)."""
-    asker = RoundAsker(atom, obs, s, profile, protocol)
+    asker = RoundAsker(atom, obs, s, profile, protocol, expected)
     while not asker.done:
         for i in asker.to_ask():
             asker.give(i, vlm.ask(asker.queries[i], obs))
@@ -230,6 +272,11 @@ def target_of(atom: Atom) -> str:
     return atom.args[0] if atom.args else "gripper"
 
 
+#: views that showed the atom's objects and must all agree for a check with its budget spent to
+#: stand without a settled view (see :func:`verdict`)
+AGREEING_VIEWS = 2
+
+
 @dataclass(frozen=True)
 class Verdict:
     """What a check's views say together: a value and how it was reached, or nothing yet."""
@@ -245,15 +292,17 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
     * a settled round decides at once when no other view voted otherwise;
     * when views disagree, a value needs more settled rounds for it than views voting against it
       (a coin-flip view that happened to look sure is outvoted by the views that did not);
-    * with the budget spent (``exhausted``) and nothing decided, a value stands only if every
-      view's answers agreed on it (independent views agreeing is evidence); otherwise the check
-      is ``unsettled``: it does not overturn belief.
+    * with the budget spent (``exhausted``) and nothing decided, a value stands only if the
+      answers of at least ``AGREEING_VIEWS`` views that showed the atom's objects, and of every
+      such view, agreed on it (independent views agreeing is evidence; one view the model found
+      insufficient is not); otherwise the check is ``unsettled``: it does not overturn belief.
 
     A view whose detector did not find the atom's objects (``unshown``) votes nothing: its
     answers are guesses about a thing it does not show.
 
     Returns None while the check should keep looking."""
-    votes = [r.vote for r in rounds if r.vote is not None and not r.unshown]
+    shown = [r for r in rounds if not r.unshown]
+    votes = [r.vote for r in shown if r.vote is not None]
     for value in (True, False):
         settled = sum(r.settled and r.vote == value for r in rounds)
         against = sum(v != value for v in votes)
@@ -261,7 +310,7 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
             return Verdict(value, "settled")
     if not exhausted:
         return None
-    agreed = {r.vote for r in rounds}
-    if all(r.consistent for r in rounds) and len(agreed) == 1 and None not in agreed:
+    agreed = {r.vote for r in shown}
+    if len(shown) >= AGREEING_VIEWS and all(r.consistent for r in shown) and len(agreed) == 1 and None not in agreed:
         return Verdict(agreed.pop(), "agreed")
     return Verdict(False, "unsettled")

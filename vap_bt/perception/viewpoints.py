@@ -9,7 +9,10 @@ Two strategies, the paper's H2 comparison:
   front of it.
 
 A strategy gives, for the k-th move of a check, either a direction at once or the query whose
-answer is the direction (the caller sends it and polls, :mod:`vap_bt.bt.inflight`).
+answer is the direction (the caller sends it and polls, :mod:`vap_bt.bt.inflight`). A direction
+the robot cannot move to (a wall, a doorway, already as close as a view gets), or no answer at
+all, is replaced by the first of the predefined round not yet tried in this check
+(:meth:`ViewpointStrategy.instead`): looking again from the same spot would show the same picture.
 """
 
 from __future__ import annotations
@@ -40,6 +43,12 @@ class ViewpointStrategy:
         if self.name == "greedy":
             return GREEDY_ORDER[move % len(GREEDY_ORDER)]
         return viewpoint_query(atom, question, target)
+
+    @staticmethod
+    def instead(tried: set[str]) -> str | None:
+        """The direction to try where the chosen one could not be reached (or none was given):
+        the first of the predefined round not in ``tried``; None once every one was."""
+        return next((d for d in GREEDY_ORDER if d not in tried), None)
 
 
 assert set(GREEDY_ORDER) == set(VIEW_DIRECTIONS)
