@@ -230,10 +230,15 @@ def test_one_lucky_view_after_views_that_said_no_does_not_decide():
     assert verdict(rounds, exhausted=True) == Verdict(False, "unsettled")
 
 
-def test_a_coin_flip_view_is_outvoted_only_by_more_settled_views():
+def test_a_view_that_said_otherwise_is_outvoted_only_by_more_settled_views():
+    against, sure = rnd("nnnnn", False), rnd("yyyny", True)  # a consistent "no", judged insufficient
+    assert verdict([against, sure], exhausted=False) is None
+    assert verdict([against, sure, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+
+
+def test_a_view_whose_answers_disagreed_among_themselves_votes_nothing():
     flip, sure = rnd("nnyny", None), rnd("yyyny", True)
-    assert verdict([flip, sure], exhausted=False) is None
-    assert verdict([flip, sure, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+    assert verdict([flip, sure], exhausted=False) == Verdict(True, "settled")
 
 
 def test_a_view_that_does_not_show_the_object_votes_nothing():
@@ -243,7 +248,10 @@ def test_a_view_that_does_not_show_the_object_votes_nothing():
     blind = rnd("ynnyn", False)
     blind.unshown = ("cup",)
     assert verdict([blind, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
-    seen = rnd("ynnyn", False)  # the same answers about a view that shows the cup do count
+    blind = rnd("nnnyn", False)
+    blind.unshown = ("cup",)  # even consistent answers about a view that does not show the cup
+    assert verdict([blind, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+    seen = rnd("nnnyn", False)  # the same answers about a view that shows the cup do count
     assert verdict([seen, rnd("yyyyy", True)], exhausted=False) is None
 
 

@@ -291,7 +291,9 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
 
     * a settled round decides at once when no other view voted otherwise;
     * when views disagree, a value needs more settled rounds for it than views voting against it
-      (a coin-flip view that happened to look sure is outvoted by the views that did not);
+      (a coin-flip view that happened to look sure is outvoted by the views that did not); a view
+      votes when its answers were consistent (the paper's gate for a round to mean anything,
+      sufficient or not): one whose paraphrases disagreed among themselves says nothing either way;
     * with the budget spent (``exhausted``) and nothing decided, a value stands only if the
       answers of at least ``AGREEING_VIEWS`` views that showed the atom's objects, and of every
       such view, agreed on it (independent views agreeing is evidence; one view the model found
@@ -302,7 +304,7 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
 
     Returns None while the check should keep looking."""
     shown = [r for r in rounds if not r.unshown]
-    votes = [r.vote for r in shown if r.vote is not None]
+    votes = [r.vote for r in shown if r.consistent and r.vote is not None]
     for value in (True, False):
         settled = sum(r.settled and r.vote == value for r in rounds)
         against = sum(v != value for v in votes)

@@ -130,21 +130,22 @@ def visibility(r: Render, counts: dict[str, int], boxes: dict[str, list[tuple[fl
     return out
 
 
-def doorway_pixels(r: Render, center, half, normal, bodies: set[int]) -> tuple[int, float]:
+def doorway_pixels(r: Render, center, half, normal, bodies: set[int]) -> tuple[int, float, tuple[str, ...]]:
     """How a doorway shows: the pixels inside the projection of its closed leaf's box that show
-    the leaf or reach past the doorway's plane (an open door is seen by seeing through it),
-    and that projection's whole area (pixels, parts outside the image included)."""
+    the leaf or reach past the doorway's plane (an open door is seen by seeing through it), that
+    projection's whole area (pixels, parts outside the image included), and the image edges
+    those pixels touch (as :func:`mask_extents` gives them for a body)."""
     box = (*(np.asarray(center) - half), *(np.asarray(center) + half))
     uv = _projected(r, box)
     if uv is None:
-        return 0, 0.0
+        return 0, 0.0, ()
     hull = cv2.convexHull(uv)
     h, w = r.bodies.shape
     inside = np.zeros((h, w), np.uint8)
     cv2.fillConvexPoly(inside, np.clip(hull.reshape(-1, 2), -10 * w, 10 * w).astype(np.int32), 1)
     rows, cols = np.nonzero(inside)
     if len(rows) == 0:
-        return 0, float(cv2.contourArea(hull))
+        return 0, float(cv2.contourArea(hull)), ()
     c = r.camera
     rays = np.stack([(cols - c.cx) / c.fx, (rows - c.cy) / c.fy, np.ones(len(rows))], axis=1)
     R, eye = r.pose[:3, :3], r.pose[:3, 3]
@@ -153,8 +154,16 @@ def doorway_pixels(r: Render, center, half, normal, bodies: set[int]) -> tuple[i
     with np.errstate(divide="ignore", invalid="ignore"):
         z_plane = ((np.asarray(center) - eye) @ n) / denom  # optical depth of the doorway's plane
     through = (r.depth[rows, cols] >= z_plane - DOORWAY_SLACK) & (z_plane > 0)
-    leaf = np.isin(r.bodies[rows, cols], list(bodies))
-    return int(np.count_nonzero(through | leaf)), float(cv2.contourArea(hull))
+    seen = through | np.isin(r.bodies[rows, cols], list(bodies))
+    return int(np.count_nonzero(seen)), float(cv2.contourArea(hull)), _edges(rows[seen], cols[seen], h, w)
+
+
+def _edges(rows: np.ndarray, cols: np.ndarray, h: int, w: int) -> tuple[str, ...]:
+    """The image edges that pixels at ``rows``, ``cols`` touch."""
+    if len(rows) == 0:
+        return ()
+    return tuple(e for e, hit in (("bottom", rows.max() == h - 1), ("left", cols.min() == 0),
+                                  ("right", cols.max() == w - 1), ("top", rows.min() == 0)) if hit)
 
 
 def pixel_counts(r: Render, names: dict[int, str]) -> dict[str, int]:
@@ -178,7 +187,5 @@ def mask_extents(r: Render, names: dict[int, str]) -> dict[str, tuple[tuple[str,
             continue
         rows, cols = np.nonzero(r.bodies == body)
         edges, n = out.get(name, ([], 0))
-        edges = sorted(set(edges) | {e for e, hit in (("left", cols.min() == 0), ("right", cols.max() == w - 1),
-                                                       ("top", rows.min() == 0), ("bottom", rows.max() == h - 1)) if hit})
-        out[name] = (edges, n + len(rows))
+        out[name] = (sorted(set(edges) | set(_edges(rows, cols, h, w))), n + len(rows))
     return {k: (tuple(e), n / (w * h)) for k, (e, n) in out.items()}

@@ -282,7 +282,7 @@ class PybulletWorld:
         names = self.scene.by_body()
         counts = pixel_counts(r, names)
         doorways = self._doorways(r)
-        for name, (n, _) in doorways.items():  # a detector finds a doorway, open or shut
+        for name, (n, _, _) in doorways.items():  # a detector finds a doorway, open or shut
             counts[name] = max(counts.get(name, 0), n)
         threshold = self.detector.pixel_threshold(r.camera.width, r.camera.height)
         seen = sorted(n for n, c in counts.items() if c >= threshold and self._detectable(n))
@@ -292,15 +292,20 @@ class PybulletWorld:
         # the simulated VLM's record: how much of each object this frame shows (world side only)
         boxes = {n: self.truth.link_boxes(n) for n in counts if n in self.scene.things}
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
-        vis.update({n: min(1.0, k / (a * FILL["door"])) if a > 0 else 0.0 for n, (k, a) in doorways.items()})
+        vis.update({n: min(1.0, k / (a * FILL["door"])) if a > 0 else 0.0 for n, (k, a, _) in doorways.items()})
+        extents = mask_extents(r, names)
+        pixels = r.bodies.size
+        for name, (k, _, edges) in doorways.items():  # the doorway is how a door shows: its extent
+            if k and k / pixels > extents.get(name, ((), 0.0))[1]:
+                extents[name] = (edges, k / pixels)
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
-                                        masks=mask_extents(r, names), image_sha1=rgb_sha1(r.rgb)))
+                                        masks=extents, image_sha1=rgb_sha1(r.rgb)))
         return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
                      intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
 
-    def _doorways(self, r: Render) -> dict[str, tuple[int, float]]:
+    def _doorways(self, r: Render) -> dict[str, tuple[int, float, tuple[str, ...]]]:
         """Each room door's doorway as the frame shows it (see :func:`doorway_pixels`)."""
         out = {}
         for t in self.scene.things.values():
