@@ -9,7 +9,12 @@ world denies; *unclaimed* one whose goal holds that the executive did not report
 confirm it by looking). Wall time is per episode, on this machine, with ``--jobs`` episodes at once.
 
     python tools/bench/pybullet_tasks.py --seeds 20 --jobs 2 [--tasks boil_water,cut_lemon]
-                                          [--injection off|on|both] [--json docs/figures/pybullet_tasks.json]
+                                          [--injection off|on|both] [--protocol paper|lean]
+                                          [--json docs/figures/pybullet_tasks.json]
+
+``--protocol`` is the verification protocol every check asks with (the paper's Alg. 2 by default,
+or the lean one: :mod:`vap_bt.perception.protocol`); a false success is as much a failure of one
+as of the other.
 
 Targets (issue: skills that move the robot): over 20 seeds per task, without injection >= 95 %
 on every task; with injection >= 80 % on average; 0 false successes; median episode <= 30 s.
@@ -29,25 +34,28 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 
-def episode(job: tuple[str, bool, int]) -> dict:
-    """One episode in this worker: (task file, injection, seed) -> the figures of its report."""
-    path, injection, seed = job
+def episode(job: tuple[str, bool, int, str]) -> dict:
+    """One episode in this worker: (task file, injection, seed, protocol) -> the figures of its report."""
+    path, injection, seed, protocol = job
     from vap_bt import taskfile
     from vap_bt.runner import RunConfig, Session
 
     task = taskfile.load(path)
     t0 = time.perf_counter()
     try:
-        session = Session(task, RunConfig.from_task(task, world="pybullet", seed=seed, injection=injection))
+        session = Session(task, RunConfig.from_task(task, world="pybullet", seed=seed, injection=injection,
+                                                           protocol=protocol))
         try:
             rep = session.episode()
         finally:
             session.close()
     except Exception as exc:  # noqa: BLE001 - a crash is a failed episode, reported as such
-        return {"task": task.name, "seed": seed, "injection": injection, "world_success": False, "claimed": False,
+        return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol,
+                "world_success": False, "claimed": False,
                 "wall_s": time.perf_counter() - t0, "reason": f"crashed: {type(exc).__name__}: {exc}",
                 "actions": 0, "replans": 0, "injected": 0}
-    return {"task": task.name, "seed": seed, "injection": injection, "world_success": bool(rep["goal_satisfied"]),
+    return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol,
+            "world_success": bool(rep["goal_satisfied"]),
             "claimed": bool(rep["success"]), "wall_s": rep["wall_s"], "reason": rep["reason"],
             "actions": len(rep["actions_executed"]), "replans": rep["replans"], "injected": len(rep["injected"])}
 
@@ -59,6 +67,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--tasks", help="comma-separated task names (default: every file in trees/)")
     ap.add_argument("--injection", choices=("off", "on", "both"), default="both")
+    ap.add_argument("--protocol", choices=("paper", "lean"), default="paper", help="how every check asks")
     ap.add_argument("--json", help="write every episode's figures here")
     args = ap.parse_args(argv)
     paths = sorted((ROOT / "trees").glob("*.yaml"))
@@ -67,7 +76,8 @@ def main(argv: list[str] | None = None) -> int:
         paths = [p for p in paths if p.stem in wanted]
     modes = {"off": (False,), "on": (True,), "both": (False, True)}[args.injection]
     # seed by seed, both modes and every task in each: a run stopped early is still balanced
-    jobs = [(str(p), inj, s) for s in range(args.first_seed, args.first_seed + args.seeds) for inj in modes for p in paths]
+    jobs = [(str(p), inj, s, args.protocol) for s in range(args.first_seed, args.first_seed + args.seeds)
+            for inj in modes for p in paths]
     rows: list[dict] = []
     t0 = time.perf_counter()
     pool = mp.get_context("spawn").Pool(args.jobs, maxtasksperchild=4)

@@ -294,7 +294,10 @@ class Executive:
                       and k.is_subtype(f.type, "container")}
         candidates = [n for n in sorted(self.builder.evidence) if n in openable | containers
                       and k.is_subtype(self.task.objects[n], sig)]
-        answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile)
+        with make_executor(self.s.threads) as executor:
+            answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile,
+                                    protocol=self.s.protocol, undetectable=self.builder.undetectable(),
+                                    executor=executor)
         complement = k.complements.get("open")
         for a in answers:
             if a.value is not None:

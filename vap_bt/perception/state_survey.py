@@ -15,11 +15,13 @@ needs one verifies it as a precondition before it acts.
 
 from __future__ import annotations
 
+from concurrent.futures import Executor
 from dataclasses import dataclass
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception.profile import PerceptionProfile
-from vap_bt.perception.verification import Round, VoteSettings, check_sufficiency, vote_round
+from vap_bt.perception.protocol import Protocol
+from vap_bt.perception.verification import Round, VoteSettings, check_sufficiency, shown_plainly, vote_round
 from vap_bt.perception.vlm import VLM
 from vap_bt.robot.frame import Frame
 
@@ -44,22 +46,41 @@ class StateAnswer:
 
 
 def survey_states(vlm: VLM, frames: dict[str, list[Frame]], candidates: list[str], vote: VoteSettings,
-                  profile: PerceptionProfile, predicates: tuple[str, ...] = SURVEYED) -> list[StateAnswer]:
+                  profile: PerceptionProfile, predicates: tuple[str, ...] = SURVEYED,
+                  protocol: Protocol | None = None, undetectable: frozenset[str] = frozenset(),
+                  executor: Executor | None = None) -> list[StateAnswer]:
     """Ask each of ``predicates`` the profile asks of the VLM about each candidate, of the frames
-    that showed it, until settled."""
-    out = []
+    that showed it, until settled — as ``protocol`` asks (default: the paper's). Given an
+    ``executor`` and a protocol that asks concurrently, every candidate is asked about at once
+    (each candidate's frames still one after another: the next is looked at only if the last
+    did not settle)."""
     predicates = tuple(p for p in predicates if profile.asks(p, 1))
-    for name in candidates:
-        shown = frames.get(name, [])
-        for p in predicates:
-            atom, rounds = Atom(p, (name,)), []
-            for frame in shown:
-                r = vote_round(vlm, frame, atom, vote, profile)
-                if r.consistent and r.vote is not None:
-                    r.sufficient, r.sufficient_by = check_sufficiency(vlm, frame, atom, r.questions[0]), "model"
-                rounds.append(r)
-                if r.settled:
-                    break
-            if rounds:
-                out.append(StateAnswer(atom, rounds))
-    return out
+    jobs = [(Atom(p, (name,)), frames[name]) for name in candidates if frames.get(name) for p in predicates]
+
+    def ask(atom: Atom, shown: list[Frame]) -> StateAnswer:
+        rounds = []
+        for frame in shown:
+            rounds.append(_round(vlm, frame, atom, vote, profile, protocol, undetectable))
+            if rounds[-1].settled:
+                break
+        return StateAnswer(atom, rounds)
+
+    if executor is not None and protocol is not None and protocol.concurrent:
+        return list(executor.map(lambda job: ask(*job), jobs))
+    return [ask(*job) for job in jobs]
+
+
+def _round(vlm: VLM, frame: Frame, atom: Atom, vote: VoteSettings, profile: PerceptionProfile,
+           protocol: Protocol | None, undetectable: frozenset[str]) -> Round:
+    """One round about one of the sweep's frames; the view-sufficiency question only when the
+    answers agree and (where the protocol lets it) the detector does not already show the thing
+    plainly."""
+    r = vote_round(vlm, frame, atom, vote, profile, protocol)
+    if not (r.consistent and r.vote is not None):
+        return r
+    if protocol is not None and protocol.detector and shown_plainly(frame, atom, undetectable, protocol.whole_share,
+                                                                     protocol.large_share):
+        r.sufficient, r.sufficient_by = True, "detector"
+    else:
+        r.sufficient, r.sufficient_by = check_sufficiency(vlm, frame, atom, r.questions[0]), "model"
+    return r
