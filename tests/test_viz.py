@@ -138,7 +138,10 @@ def test_tree_drawing_per_tick_folds_what_is_not_running(recorded):
     for a, b in zip(drawn, drawn[1:]):
         assert (a["labels"], a["statuses"], a["ids"]) != (b["labels"], b["statuses"], b["ids"])
     text = rows["/tree_text"][-1]["TextDocument:text"][0]
-    assert text.startswith("{-} plan [✓]") and "[-]" not in text and "[✕]" not in text
+    assert text.startswith("{-} plan [✓]") and "[-]" not in text
+    # what failed in the end is at most a view that did not settle, under a look that decided anyway
+    # (what the hand holds: the gripper's feel)
+    assert all(" -- vote=" in line for line in text.splitlines() if "[✕]" in line)
 
 
 def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):

@@ -51,7 +51,7 @@ def round_text(phase: str, action: str, atom: Atom, expected: bool, r: Round, vi
     if r.sufficient is not None:
         facts.append(f"view sufficient: {yes_no(r.sufficient)}")
     if r.direction is not None:
-        facts.append(f"next view: {r.direction}" + ("" if r.moved else " (could not move)"))
+        facts.append(f"next view: {r.direction}" + ("" if r.moved else " (could not move)") + _refused(r))
     qa = [f"  Q: {q} → {yes_no(a)}" for q, a in zip(r.questions, r.answers)]
     return "\n".join([f"{head}: " + "; ".join(facts), *qa])
 
@@ -64,8 +64,13 @@ def round_markdown(phase: str, action: str, atom: Atom, expected: bool, r: Round
     lines += ["", f"- vote: **{yes_no(r.vote)}** ({'consistent' if r.consistent else 'inconsistent'})",
               f"- view sufficient: {yes_no(r.sufficient)}"]
     if r.direction is not None:
-        lines.append(f"- next viewpoint: {r.direction}" + ("" if r.moved else " (could not move there)"))
+        lines.append(f"- next viewpoint: {r.direction}" + ("" if r.moved else " (could not move there)") + _refused(r))
     return "\n".join(lines)
+
+
+def _refused(r: Round) -> str:
+    """The directions tried first that the robot could not move to, if any."""
+    return f" after {', '.join(r.refused)} could not be reached" if r.refused else ""
 
 
 def verification_text(v: Verification) -> tuple[str, str]:
