@@ -14,10 +14,11 @@ VLM's suggestion about the last frame, or the next of the greedy round), and the
 flight like any other; the child is not ticked meanwhile. A direction the robot cannot move to
 is replaced at once by another (a frame from the same spot would show the same picture), and
 when no direction is left, or the check is about the hand or what it holds (the wrist camera
-moves with the hand: no base move shows it better), the first views are all there are. With the budget spent and nothing
-decided, a value stands only if every view's answers agreed on it; otherwise the check is
-*unsettled* (the paper returns the last vote here; one vote from a view the VLM judged
-insufficient is too close to a guess to rewrite the scene graph).
+moves with the hand: no base move shows it better), the views so far are all there are. With
+the budget spent and nothing decided, a value stands only if at least two views that showed the
+atom's objects, and every such view, agreed on it; otherwise the check is *unsettled* (the paper
+returns the last vote here; one vote from a view the VLM judged insufficient is too close to a
+guess to rewrite the scene graph).
 
 An unsettled *goal* atom withholds the executive's claim of success; an unsettled effect lets the
 plan go on (the next action's preconditions are checked before it acts); an unsettled
@@ -147,7 +148,11 @@ class ActivePerception(py_trees.decorators.Decorator):
         if not self._job.done():
             return Status.RUNNING
         r = self.rounds[-1]
-        r.moved, self._job = bool(self._job.result()), None
+        try:
+            r.moved = bool(self._job.result())
+        except Exception:  # noqa: BLE001 - a move that failed outright is a move not made
+            r.moved = False
+        self._job = None
         if not r.moved:  # the same spot would show the same picture: try another way at once
             self._refused.add(r.direction)
             r.refused += (r.direction,)
