@@ -21,6 +21,7 @@ import threading
 import numpy as np
 
 from skills.body import Stopped
+from skills.eyes import CAMERA_EYE
 from skills.kit import Kit
 from skills.navigator import Blocked
 from vap_bt.robot.camera import VIEW_DIRECTIONS, Aim, Viewpoint
@@ -33,7 +34,7 @@ VIEW_REACHED = 0.25
 FRONT_VIEW = 1.8
 SIDE_TURN = 0.5  # rad round the point for a view from the left or the right
 CLOSER_STEP, CLOSEST = 0.25, 0.75  # a step closer, but no nearer to the point than this
-ABOVE = 0.3  # m higher eye for a view from above
+ABOVE = 0.3  # m higher than the eye is for a view from above
 #: a move shorter than this (m, or rad of turn) is no move: the camera would show the same view
 SAME_VIEW = 0.1
 
@@ -96,6 +97,7 @@ class ViewService:
         with self._looking() as kit:
             p = np.asarray(aim.point, float)
             x, y, yaw = kit.body.base_pose()
+            eye = kit.body.pose("camera_optical")
             target = _moved_to(direction, (x, y, yaw), p)
             if target is None:
                 return False
@@ -110,12 +112,24 @@ class ViewService:
             try:
                 if moves:
                     kit.nav.approach((nx, ny, nyaw), careful=True)
-                # from above: as high over the base as the arm reaches (close in, the highest eye
-                # may need the wrist bent further than it goes)
-                lifts = (lift, 2 * lift / 3, lift / 3) if lift > 0 else (0.0,)
-                return any(kit.eyes.look_at(p, lift=h) for h in lifts)
+                # from above: higher than the eye is now, as high as the arm reaches (close in,
+                # the highest eye may need the wrist bent further than it goes)
+                now = max(0.0, float(eye[2, 3]) - CAMERA_EYE[2])
+                lifts = (now + lift, now + 2 * lift / 3, now + lift / 3) if lift > 0 else (0.0,)
+                if not any(kit.eyes.look_at(p, lift=h) for h in lifts):
+                    return False
             except (Stopped, Blocked):
                 return False
+            # a move that leaves the camera where it was (the arm could not go higher, the base
+            # stopped short) is no move: the same picture again would show nothing new
+            return _other_view(eye, kit.body.pose("camera_optical"))
+
+
+def _other_view(before: np.ndarray, after: np.ndarray) -> bool:
+    """Whether two camera poses see differently: the eye moved ``SAME_VIEW`` m, or turned
+    ``SAME_VIEW`` rad."""
+    turned = math.acos(float(np.clip(before[:3, 2] @ after[:3, 2], -1.0, 1.0)))
+    return bool(np.linalg.norm(after[:3, 3] - before[:3, 3]) > SAME_VIEW or turned > SAME_VIEW)
 
 
 def _wrap(a: float) -> float:

@@ -105,7 +105,9 @@ def test_placein_puts_the_held_item_into_the_container(worlds):
     # placing folded the arm: a look re-aims the camera and, from where the robot stands, sees
     # down into the open top; looking from above needs no base room
     assert seen(w, ("wood1", "basket"))["wood1"] >= 0.5
+    eye = w.robot.link_pose("camera_optical")[:3, 3]
     assert move_view(w, ("wood1",), "above")
+    assert w.robot.link_pose("camera_optical")[2, 3] > eye[2] + 0.1  # higher than the eye was
     assert seen(w, ("wood1", "basket"))["wood1"] >= 0.5
 
 
