@@ -303,7 +303,9 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--early-stop", action="store_true", help="stop a vote once it is decided")
     sr.add_argument("--protocol", choices=["paper", "lean"],
                     help="how checks ask: the paper's Alg. 2 (default), or lean (early stop, questions in flight "
-                         "at once, no re-asking what nothing changed, one confident logprob answer for N votes)")
+                         "at once, no re-asking what nothing changed, three agreeing answers or one confident "
+                         "logprob answer where they confirm the plan, the detector's word on whether a view "
+                         "shows enough; a surprise always gets the paper's full vote)")
     sr.add_argument("--viewpoints", choices=["vlm", "greedy"],
                     help="where to look from next: the VLM's suggestion (default) or a fixed round (paper H2)")
     sr.add_argument("--max-replans", type=int)
