@@ -39,6 +39,11 @@ LEAF_MARGIN = 0.03
 #: depth this far past a doorway means the view goes through it
 SEE_THROUGH = 0.3
 HIDDEN_SHARE = 0.5  # a depth return nearer than this share of a point's distance is something in front of it
+#: the handle bar's centre stands this far in front of its leaf's face (the furniture models')
+HANDLE_STANDOUT = 0.045
+#: m of a leaf's panel behind its face that a sight line cannot cross (a drawer's panel is only
+#: its front: the tray behind it is open from above)
+FACE_THICKNESS = 0.02
 #: half size (m) of an appliance's switch (along the front, out of it, up): it stands proud of
 #: the front, where a forearm sweeping past a low hollow would catch it
 SWITCH = (0.03, 0.02, 0.022)
@@ -182,6 +187,50 @@ class Leaf:
         R, move = self.transform(q)
         return Obb(move(np.array(self.art.leaf_center)), R, np.array(self.art.leaf_half))
 
+    def panel(self, q: float) -> Obb:
+        """The leaf (or drawer) without its handles at joint value ``q``: what a hand near the
+        bar must not touch."""
+        art = self.art
+        normal, n = np.array(art.normal), np.abs(art.normal)
+        centre, half = np.array(art.leaf_center), np.array(art.leaf_half)
+        front = float(np.array(art.handle) @ normal) - HANDLE_STANDOUT
+        back = float(centre @ normal - half @ n)
+        if art.other_side is not None:
+            back = max(back, front - art.other_side + 2 * HANDLE_STANDOUT)
+        return self._slab(front, back, q)
+
+    def face(self, q: float) -> Obb:
+        """The front of the panel at joint value ``q``, ``FACE_THICKNESS`` deep: what hides the
+        inside of the piece from a camera in front of it."""
+        front = float(np.array(self.art.handle) @ np.array(self.art.normal)) - HANDLE_STANDOUT
+        return self._slab(front, front - FACE_THICKNESS, q)
+
+    def _slab(self, front: float, back: float, q: float) -> Obb:
+        """The leaf's box at ``q`` cut to between ``front`` and ``back`` along its outward normal
+        (as at q = 0)."""
+        normal, n = np.array(self.art.normal), np.abs(self.art.normal)
+        centre, half = np.array(self.art.leaf_center), np.array(self.art.leaf_half)
+        c = centre + normal * ((front + back) / 2 - float(centre @ normal))
+        h = half * (1 - n) + n * (front - back) / 2
+        R, move = self.transform(q)
+        return Obb(move(c), R, h)
+
+    def fit(self, pts: np.ndarray, eye: np.ndarray | None) -> float | None:
+        """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
+        None when no joint value puts the leaf on any of them. A joint value is supported by the
+        points on its leaf's box and contradicted by the points the camera saw through the leaf's
+        face there: the carcass's front edge lies where a closed leaf would be, so the points on
+        it alone would call a wide-open fridge closed, but a closed leaf would have hidden the
+        inside of the cavity the camera sees."""
+        lo, hi = sorted((self.art.lower, self.art.upper))
+        values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
+        on = np.array([int(self.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values])
+        if on.max() == 0:
+            return None
+        through = np.zeros_like(on) if eye is None else np.array(
+            [int(seen_through(self.face(q), eye, pts, LEAF_MARGIN).sum()) for q in values])
+        return float(values[int(np.argmax(on - through))])
+
     def handle_at(self, q: float, side: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Handle grasp point, outward face normal and bar direction at joint value ``q`` (``side``
         -1: the handle on the other face of a room door)."""
@@ -288,19 +337,34 @@ class SceneModel:
 
     def fit_leaf(self, name: str, frame: Frame, hint: float | None = None) -> float | None:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece
-        of furniture (or door), or None when the frame does not show it."""
+        of furniture (or door) (:meth:`Leaf.fit`), or ``hint`` when the frame does not show it."""
         leaf = self.leaves.get(name)
         d = frame.detection(name)
         cloud = instance_cloud(frame, d) if (leaf is not None and d is not None) else None
         if cloud is None:
             return hint
-        pts = np.asarray(cloud.points)
-        lo, hi = sorted((leaf.art.lower, leaf.art.upper))
-        values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
-        scores = [int(leaf.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values]
-        best = int(np.argmax(scores))
-        if scores[best] == 0:
+        eye = None if frame.camera_pose is None else np.asarray(frame.camera_pose)[:3, 3]
+        q = leaf.fit(np.asarray(cloud.points), eye)
+        if q is None:
             return hint
-        q = float(values[best])
         self.joint[name] = q
         return q
+
+
+def seen_through(box: Obb, eye: np.ndarray, pts: np.ndarray, short: float) -> np.ndarray:
+    """Which of ``pts`` (seen from ``eye``) the camera saw through ``box``: the sight line to the
+    point crosses it before ending ``short`` of the point (a point on the box's own face is not
+    seen through it)."""
+    pts = np.asarray(pts, float)
+    a = (np.asarray(eye, float) - box.center) @ box.R
+    b = (pts - box.center) @ box.R
+    length = np.linalg.norm(b - a, axis=1)
+    end = np.clip(1.0 - short / np.maximum(length, 1e-9), 0.0, 1.0)
+    d = b - a  # sight lines in the box's frame, a + t d for t in [0, end]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1, t2 = (-box.half - a) / d, (box.half - a) / d
+    flat = np.abs(d) < 1e-12  # parallel to a slab: inside it throughout or never
+    inside = np.abs(a) <= box.half
+    t_lo = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2)).max(axis=1)
+    t_hi = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2)).min(axis=1)
+    return (t_lo <= t_hi) & (t_hi >= 0.0) & (t_lo <= end)
