@@ -20,7 +20,7 @@ import numpy as np
 
 import robots
 from vap_bt.motion import se3
-from vap_bt.motion.collision import CollisionChecker, SceneBoxes
+from vap_bt.motion.collision import Attached, CollisionChecker, SceneBoxes
 from vap_bt.motion.ik import IKOptions, solve_ik
 from vap_bt.motion.kinematics import Kinematics, world_to_base
 from vap_bt.motion.limits import Limits, arm_limits, base_limits
@@ -63,6 +63,7 @@ class Body:
         self.cancelled: Callable[[], bool] = lambda: False  # the running goal's
         self._checker: CollisionChecker | None = None
         self._scene: SceneBoxes = SceneBoxes.empty()
+        self._held: Attached | None = None
 
     # -- the measured state ------------------------------------------------------------------
 
@@ -93,12 +94,20 @@ class Body:
         """The furniture and walls (map frame) that IK solutions must keep clear of."""
         self._scene, self._checker = boxes, None
 
+    def hold(self, pose: np.ndarray | None, size=None) -> None:
+        """The item in the hand as a box (its centre's ``pose`` in the tcp frame, its ``size``), or
+        None: IK solutions and arm ways keep it off the scene and off the arm's own links, as
+        they keep the arm (a carried log swung into the forearm stops the arm)."""
+        held = None if pose is None else Attached("tcp", np.asarray(pose, float), np.asarray(size, float))
+        if held != self._held:
+            self._held, self._checker = held, None
+
     def _collision(self, base_pose) -> CollisionChecker | None:
         if not len(self._scene):
             return None
         local = self._scene.transformed(np.linalg.inv(self.base_T(np.array([*base_pose, *np.zeros(6)]))))
         if self._checker is None:
-            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE)
+            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE, attached=self._held)
         else:
             self._checker.place_boxes(local.poses)
         return self._checker

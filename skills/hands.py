@@ -262,29 +262,41 @@ class Hands:
         return all(base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, 0.015)
                    for s in np.linspace(0.25, 1.0, 4))
 
-    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
-        """Bring the hand to its pre-pose for going along ``a`` to ``G``: ``least`` back from
-        ``G``, with the fingertips and ``pts`` (a held item's corners when the hand is at ``G``)
-        out of the container's cavity, so that the arm's joint-space move there cannot sweep
-        through a wall. Out of a deep front-open cavity that is further than the arm reaches
-        comfortably: the base steps back first, the arm goes to the pre-pose, and the base steps
-        in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`. Returns the
-        pre-pose (the hand is there), or None when the arm cannot get there."""
+    def pre_pose(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float,
+                 pts=()) -> tuple[np.ndarray, np.ndarray]:
+        """The pre-pose for going along ``a`` to ``G`` (``least`` back from it, lifted out of a
+        top-open cavity with the fingertips and ``pts``, a held item's corners at ``G``), and the
+        way out of a front-open cavity still to go (zero for any other): the base steps back that
+        far when there is room (:meth:`reach_pre`), which leaves the arm's pose on the base as it
+        is for the pre-pose."""
         pre = G.copy()
         pre[:3, 3] -= a * least
-        step = np.zeros(3)
         box = self.scene.furniture.get(container or "")
         if box is not None and box.info.cavity is not None:
             d, out = self.way_out(container, [p - a * least for p in (G[:3, 3] + a * FINGERTIP, *pts)])
             if d[2] > 0.5:  # a top-open cavity: the arm lifts the pre-pose
                 pre[:3, 3] += d * out
             elif out > 0:
-                if self._base_step_free(d, out):
-                    step = d * out
-                    x, y, yaw = self.body.base_pose()
-                    self.body.drive([(x + step[0], y + step[1], yaw)], 0.5)
-                else:  # no room behind: the arm backs off further instead
-                    pre[:3, 3] += d * out
+                return pre, d * out
+        return pre, np.zeros(3)
+
+    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
+        """Bring the hand to its pre-pose (:meth:`pre_pose`) so that the arm's joint-space move
+        there cannot sweep through a wall. Out of a deep front-open cavity that is further than
+        the arm reaches comfortably: the base steps back first, the arm goes to the pre-pose, and
+        the base steps in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`; with
+        no room behind, the arm backs off further instead. Returns the pre-pose (the hand is
+        there), or None when the arm cannot get there."""
+        pre, back = self.pre_pose(G, a, container, least, pts)
+        step = np.zeros(3)
+        if back.any():
+            out = float(np.linalg.norm(back))
+            if self._base_step_free(back / out, out):
+                step = back
+                x, y, yaw = self.body.base_pose()
+                self.body.drive([(x + step[0], y + step[1], yaw)], 0.5)
+            else:
+                pre[:3, 3] += back
         far = pre.copy()
         far[:3, 3] += step
         if not self.body.goto_pose(far):
@@ -420,8 +432,11 @@ class Hands:
             pre[:3, 3] -= a * PRE_PLACE
             return G, pre, corners + (target - c)
 
-        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where,
-                                             reach=lambda base: targets(base)[:2]))
+        def reach(base) -> tuple[np.ndarray, np.ndarray]:
+            G, _, corners = targets(base)
+            return self.pre_pose(G, a, where if inside else None, PRE_PLACE, list(corners))[0], G
+
+        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach))
         G, _, corners = targets(self.body.base_pose())
         self.progress(0.2, "pre-place")
         pre = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))

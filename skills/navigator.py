@@ -160,12 +160,14 @@ class Navigator:
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
-        ``reach(base_pose)`` lists — IK clear of the scene, checked from that base before it
-        moves; the first clear one when none does (the motion then finds out). A point on no
-        piece of furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
+        ``reach(base_pose)`` lists — IK clear of the scene, and the arm's joint way from how it is
+        now to the first of them (a pre-pose) clear too, checked from that base before it moves;
+        the first clear one when none does (the motion then finds out). A point on no piece of
+        furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
         if reach is None:
             return next(self.work_poses(point, toward, how, clear_of))
-        return self.reaching_pose(point, toward, how, clear_of, reach) or next(self.work_poses(point, toward, how, clear_of))
+        return (self.reaching_pose(point, toward, how, clear_of, reach, routed=True)
+                or next(self.work_poses(point, toward, how, clear_of)))
 
     def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=(),
                       routed: bool = False) -> Pose | None:
