@@ -168,6 +168,28 @@ class Furniture:
         t = cav.wall  # inside its walls (a point on the front, where the leaf is, is not in it)
         return abs(lx) < self.width / 2 - t and abs(ly) < self.depth / 2 - t and cav.z[0] <= lz <= cav.z[1]
 
+    def sight_over_rim(self, p, eye_height: float, toward) -> float:
+        """How far from ``p`` (horizontally, in the direction ``toward``) an eye ``eye_height``
+        high still sees the hollow's floor under ``p`` over the rim of this piece's top-open
+        hollow (what is in it may lie on its floor, whatever height belief gives it): the near
+        wall hides the bottom of a deep basket from a camera further off. Infinite when ``p`` is
+        in no such hollow (or the eye is no higher than the rim)."""
+        cav = self.info.cavity
+        if cav is None or cav.open != "top":
+            return math.inf
+        lx, ly, lz = self.local(p)
+        half = np.array([self.width / 2 - cav.wall, self.depth / 2 - cav.wall])
+        rim = cav.z[1]
+        if not (abs(lx) < half[0] and abs(ly) < half[1] and cav.z[0] <= lz < rim) or eye_height <= rim:
+            return math.inf
+        d = np.array([np.asarray(toward, float) @ self.along, np.asarray(toward, float) @ self.front])
+        d /= max(float(np.linalg.norm(d)), 1e-9)
+        pos = np.array([lx, ly])
+        # horizontal way from p to the near wall's inner face, along d
+        wall = min((half[k] - np.sign(d[k]) * pos[k]) / abs(d[k]) for k in range(2) if abs(d[k]) > 1e-9)
+        floor = cav.z[0]
+        return float(wall * (eye_height - floor) / (rim - floor))
+
 
 class Leaf:
     """A door leaf or drawer as the map describes its motion; ``q`` is its joint value."""
@@ -256,6 +278,11 @@ class SceneModel:
         """Whether ``p`` lies in the hollow of a front-opening container (a microwave, a cabinet):
         a camera sees into it only from about its height, never from above its top."""
         return any(f.in_front_cavity(p) for f in self.furniture.values())
+
+    def sight_over_rim(self, p, eye_height: float, toward) -> float:
+        """How far off ``p`` horizontally (towards ``toward``) an eye ``eye_height`` high still
+        sees it, when it lies in a top-open hollow (:meth:`Furniture.sight_over_rim`)."""
+        return min((f.sight_over_rim(p, eye_height, toward) for f in self.furniture.values()), default=math.inf)
 
     def room_at(self, x: float, y: float) -> str | None:
         return self.site.room_at(x, y)
