@@ -38,6 +38,8 @@ UNWIND_MARGIN = 0.5
 ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01}
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
+#: an arm pose that must also have a clear way there tries every branch of the closed-form solution
+IK_BRANCHES = IKOptions(max_seeds=10, position_tolerance=2e-3, orientation_tolerance=1e-2)
 IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
 
 
@@ -115,17 +117,24 @@ class Body:
     # -- planning ----------------------------------------------------------------------------
 
     def solve(self, target: np.ndarray, frame: str = "tcp", seed: np.ndarray | None = None,
-              allow_base: bool = False, collide: bool = True) -> np.ndarray | None:
+              allow_base: bool = False, collide: bool = True, accept=None) -> np.ndarray | None:
         """Body joints putting ``frame`` at ``target`` (map 4x4): the arm alone from where the base
-        is (clear of the scene's furniture and walls), else — when allowed — arm and base."""
+        is (clear of the scene's furniture and walls, and ``accept``-ed when given: a test of the
+        body joints, tried on every branch of the arm's solution), else — when allowed — arm and
+        base."""
         seed = self.q() if seed is None else np.asarray(seed, float)
         local = world_to_base(target, tuple(seed[:3]))
-        r = solve_ik(self.kin_arm, local, frame=frame, q_init=seed[3:], options=IK,
-                     collision=self._collision(seed[:3]) if collide else None)
-        if r.success:
+
+        def body(arm: np.ndarray) -> np.ndarray:
             q = seed.copy()
-            q[3:] = _nearest_turn(r.q, seed[3:], self.kin_arm.lower, self.kin_arm.upper)
+            q[3:] = _nearest_turn(arm, seed[3:], self.kin_arm.lower, self.kin_arm.upper)
             return q
+
+        r = solve_ik(self.kin_arm, local, frame=frame, q_init=seed[3:], options=IK if accept is None else IK_BRANCHES,
+                     collision=self._collision(seed[:3]) if collide else None,
+                     accept=None if accept is None else (lambda arm: accept(body(arm))))
+        if r.success:
+            return body(r.q)
         if not allow_base:
             return None
         r = solve_ik(self.kin_mobile, target, frame=frame, q_init=seed, options=IK_MOBILE)
@@ -134,6 +143,14 @@ class Body:
         q = r.q.copy()
         q[2:] = _nearest_turn(q[2:], seed[2:], self.kin_mobile.lower[2:], self.kin_mobile.upper[2:])
         return q
+
+    def reachable(self, target: np.ndarray, frame: str = "tcp", seed: np.ndarray | None = None,
+                  allow_base: bool = False) -> np.ndarray | None:
+        """:meth:`solve`, for an arm pose the arm has a clear way to from ``seed`` (default: as it
+        is), round the scene by :meth:`routed`: the nearest branch of the solution may have none
+        where another has (a held log would sweep through the forearm on the way)."""
+        seed = self.q() if seed is None else np.asarray(seed, float)
+        return self.solve(target, frame, seed, allow_base, accept=lambda q: self.routed(seed, [q]) is not None)
 
     # -- executing -----------------------------------------------------------------------------
 
@@ -245,8 +262,9 @@ class Body:
         if not res.completed:
             raise Stopped(res.reason or "the arm stopped")
 
-    def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False) -> bool:
-        q = self.solve(T, allow_base=allow_base)
+    def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False, frame: str = "tcp") -> bool:
+        """Move ``frame`` to ``T`` by an arm pose with a clear way there (:meth:`reachable`)."""
+        q = self.reachable(T, frame, allow_base=allow_base)
         return q is not None and self.through([q], speed)
 
     def line(self, target: np.ndarray, frame: str = "tcp", steps: int = 5, speed: float = 0.4,

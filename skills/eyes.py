@@ -136,8 +136,7 @@ class Eyes:
             eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], z))
             T = se3.look_pose(eye, point)
             for pose in (self.aim_past_held(T), T):
-                q = self.body.solve(pose, "camera_optical", allow_base=allow_base)
-                if q is not None and self.body.through([q], 0.8):
+                if self.body.goto_pose(pose, 0.8, allow_base, "camera_optical"):
                     self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
                     return True
         return False

@@ -151,3 +151,16 @@ def test_a_held_box_is_kept_off_the_scene_and_the_arm(kin, checker):
     assert not CollisionChecker(kin, attached=held).in_collision(q)
     through_forearm = Attached("tcp", np.linalg.inv(tcp) @ kin.fk(q, "forearm_link"), np.array([0.05, 0.05, 0.05]))
     assert CollisionChecker(kin, attached=through_forearm).in_collision(q)
+
+
+def test_a_solution_turned_down_gives_way_to_another_branch(kin, checker):
+    q = np.array(CFG.arm.home)
+    target = kin.fk(q)
+    first = solve_ik(kin, target, q_init=q, collision=checker, options=IKOptions(max_seeds=10))
+    assert first.success and np.allclose(first.q, q, atol=1e-3)
+    other = solve_ik(kin, target, q_init=q, collision=checker, options=IKOptions(max_seeds=10),
+                     accept=lambda s: not np.allclose(s, q, atol=1e-2))
+    assert other.success and not np.allclose(other.q, q, atol=1e-2)
+    assert np.allclose(kin.fk(other.q)[:3, 3], target[:3, 3], atol=1e-3)
+    none = solve_ik(kin, target, q_init=q, options=IKOptions(max_seeds=10), accept=lambda s: False)
+    assert not none.success and none.reason == "collision"
