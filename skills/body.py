@@ -31,6 +31,9 @@ from vap_bt.robot.drivers import Arm, Base, Gripper, JointTrajectory
 RATE_HZ = 60.0
 #: rad between the samples of a joint-space way checked for collisions
 PATH_STEP = 0.05
+#: rad: a waypoint this near where the joints are is where they are (toppra finds no timing for a
+#: path of a few tenths of a milliradian, and a look already aimed was refused as unreachable)
+NO_MOVE = 1e-3
 #: rad inside the joint limits a waypoint turned by a whole turn must stay
 UNWIND_MARGIN = 0.5
 #: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
@@ -213,9 +216,9 @@ class Body:
         contact is not checked. The base's joints are driven along only when they change."""
         start = self.q()
         qs = self._unwound(start, [np.asarray(q, float) for q in qs])
-        if len(qs) == 1 and np.max(np.abs(qs[0] - start)) < 1e-4:
+        if len(qs) == 1 and np.max(np.abs(qs[0] - start)) < NO_MOVE:
             return True
-        whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > 1e-4
+        whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > NO_MOVE
         if whole or not check:
             return self._timed([start, *qs], whole, speed)
         route = self.routed(start, qs)
@@ -248,7 +251,7 @@ class Body:
         names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
         limits = self.limits if whole else arm_limits()
         path = pts if whole else pts[:, 3:]
-        if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < 1e-4:
+        if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < NO_MOVE:
             return True
         try:
             traj = time_path(path, limits.scaled(speed), dt=1.0 / RATE_HZ)
