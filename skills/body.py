@@ -224,11 +224,11 @@ class Body:
         route = self.routed(start, qs)
         if route is None:
             return False
-        here = start
         for q in route:
-            if not self._timed([here, q], False, speed):
+            # each segment from where the joints are (an arm held off its set-point by something
+            # it touched would have the next segment refused as starting elsewhere)
+            if not self._timed([self.q(), q], False, speed):
                 return False
-            here = q
         return True
 
     def _unwound(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray]:

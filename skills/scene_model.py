@@ -32,6 +32,8 @@ from vap_bt.scene.pointcloud import instance_cloud
 #: walls are where the map's room outlines are, this thick and high (a SLAM map's walls)
 WALL_THICKNESS = 0.08
 WALL_HEIGHT = 2.0
+#: the floor is a slab this thick under each room (the wrist swung through it on a way round)
+FLOOR_THICKNESS = 0.1
 #: a door's fitted opening is searched over this many joint values between closed and open
 DOOR_FIT_STEPS = 40
 #: points within this of a leaf's box count as the leaf's
@@ -326,9 +328,16 @@ class SceneModel:
         boxes = self.walls() + [f.outer() for f in self.furniture.values()] + self.leaf_boxes(moving)
         return [b.polygon() for b in boxes]
 
+    def floors(self) -> list[Obb]:
+        """The rooms' floors as slabs under their outlines (their tops at z = 0)."""
+        return [Obb.aabb((r.bounds[0], r.bounds[1], -FLOOR_THICKNESS), (r.bounds[2], r.bounds[3], 0.0))
+                for r in self.site.rooms if r.bounds is not None]
+
     def solid_boxes(self, moving: str | None = None) -> SceneBoxes:
-        """What the arm must keep clear of: walls, furniture with its cavities carved out, leaves."""
+        """What the arm must keep clear of: walls, floors, furniture with its cavities carved out,
+        leaves."""
         named = [(f"wall{i}", b) for i, b in enumerate(self.walls())]
+        named += [(f"floor{i}", b) for i, b in enumerate(self.floors())]
         named += [(f"{f.name}:{k}", b) for f in self.furniture.values() for k, b in enumerate(f.solids())]
         named += [(f"leaf:{n}", leaf.box(self.joint.get(n, 0.0))) for n, leaf in self.leaves.items() if n != moving]
         return SceneBoxes(np.array([b.pose() for _, b in named]).reshape(-1, 4, 4),
