@@ -20,7 +20,7 @@ import numpy as np
 
 import robots
 from vap_bt.motion import se3
-from vap_bt.motion.collision import CollisionChecker, SceneBoxes
+from vap_bt.motion.collision import Attached, CollisionChecker, SceneBoxes
 from vap_bt.motion.ik import IKOptions, solve_ik
 from vap_bt.motion.kinematics import Kinematics, world_to_base
 from vap_bt.motion.limits import Limits, arm_limits, base_limits
@@ -31,6 +31,9 @@ from vap_bt.robot.drivers import Arm, Base, Gripper, JointTrajectory
 RATE_HZ = 60.0
 #: rad between the samples of a joint-space way checked for collisions
 PATH_STEP = 0.05
+#: rad: a waypoint this near where the joints are is where they are (toppra finds no timing for a
+#: path of a few tenths of a milliradian, and a look already aimed was refused as unreachable)
+NO_MOVE = 1e-3
 #: rad inside the joint limits a waypoint turned by a whole turn must stay
 UNWIND_MARGIN = 0.5
 #: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
@@ -38,6 +41,8 @@ UNWIND_MARGIN = 0.5
 ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01}
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
+#: an arm pose that must also have a clear way there tries every branch of the closed-form solution
+IK_BRANCHES = IKOptions(max_seeds=10, position_tolerance=2e-3, orientation_tolerance=1e-2)
 IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
 
 
@@ -63,6 +68,7 @@ class Body:
         self.cancelled: Callable[[], bool] = lambda: False  # the running goal's
         self._checker: CollisionChecker | None = None
         self._scene: SceneBoxes = SceneBoxes.empty()
+        self._held: Attached | None = None
 
     # -- the measured state ------------------------------------------------------------------
 
@@ -93,12 +99,20 @@ class Body:
         """The furniture and walls (map frame) that IK solutions must keep clear of."""
         self._scene, self._checker = boxes, None
 
+    def hold(self, pose: np.ndarray | None, size=None) -> None:
+        """The item in the hand as a box (its centre's ``pose`` in the tcp frame, its ``size``), or
+        None: IK solutions and arm ways keep it off the scene and off the arm's own links, as
+        they keep the arm (a carried log swung into the forearm stops the arm)."""
+        held = None if pose is None else Attached("tcp", np.asarray(pose, float), np.asarray(size, float))
+        if held != self._held:
+            self._held, self._checker = held, None
+
     def _collision(self, base_pose) -> CollisionChecker | None:
         if not len(self._scene):
             return None
         local = self._scene.transformed(np.linalg.inv(self.base_T(np.array([*base_pose, *np.zeros(6)]))))
         if self._checker is None:
-            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE)
+            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE, attached=self._held)
         else:
             self._checker.place_boxes(local.poses)
         return self._checker
@@ -106,17 +120,24 @@ class Body:
     # -- planning ----------------------------------------------------------------------------
 
     def solve(self, target: np.ndarray, frame: str = "tcp", seed: np.ndarray | None = None,
-              allow_base: bool = False, collide: bool = True) -> np.ndarray | None:
+              allow_base: bool = False, collide: bool = True, accept=None) -> np.ndarray | None:
         """Body joints putting ``frame`` at ``target`` (map 4x4): the arm alone from where the base
-        is (clear of the scene's furniture and walls), else — when allowed — arm and base."""
+        is (clear of the scene's furniture and walls, and ``accept``-ed when given: a test of the
+        body joints, tried on every branch of the arm's solution), else — when allowed — arm and
+        base."""
         seed = self.q() if seed is None else np.asarray(seed, float)
         local = world_to_base(target, tuple(seed[:3]))
-        r = solve_ik(self.kin_arm, local, frame=frame, q_init=seed[3:], options=IK,
-                     collision=self._collision(seed[:3]) if collide else None)
-        if r.success:
+
+        def body(arm: np.ndarray) -> np.ndarray:
             q = seed.copy()
-            q[3:] = _nearest_turn(r.q, seed[3:], self.kin_arm.lower, self.kin_arm.upper)
+            q[3:] = _nearest_turn(arm, seed[3:], self.kin_arm.lower, self.kin_arm.upper)
             return q
+
+        r = solve_ik(self.kin_arm, local, frame=frame, q_init=seed[3:], options=IK if accept is None else IK_BRANCHES,
+                     collision=self._collision(seed[:3]) if collide else None,
+                     accept=None if accept is None else (lambda arm: accept(body(arm))))
+        if r.success:
+            return body(r.q)
         if not allow_base:
             return None
         r = solve_ik(self.kin_mobile, target, frame=frame, q_init=seed, options=IK_MOBILE)
@@ -125,6 +146,14 @@ class Body:
         q = r.q.copy()
         q[2:] = _nearest_turn(q[2:], seed[2:], self.kin_mobile.lower[2:], self.kin_mobile.upper[2:])
         return q
+
+    def reachable(self, target: np.ndarray, frame: str = "tcp", seed: np.ndarray | None = None,
+                  allow_base: bool = False) -> np.ndarray | None:
+        """:meth:`solve`, for an arm pose the arm has a clear way to from ``seed`` (default: as it
+        is), round the scene by :meth:`routed`: the nearest branch of the solution may have none
+        where another has (a held log would sweep through the forearm on the way)."""
+        seed = self.q() if seed is None else np.asarray(seed, float)
+        return self.solve(target, frame, seed, allow_base, accept=lambda q: self.routed(seed, [q]) is not None)
 
     # -- executing -----------------------------------------------------------------------------
 
@@ -187,19 +216,19 @@ class Body:
         contact is not checked. The base's joints are driven along only when they change."""
         start = self.q()
         qs = self._unwound(start, [np.asarray(q, float) for q in qs])
-        if len(qs) == 1 and np.max(np.abs(qs[0] - start)) < 1e-4:
+        if len(qs) == 1 and np.max(np.abs(qs[0] - start)) < NO_MOVE:
             return True
-        whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > 1e-4
+        whole = np.max(np.abs(np.array(qs)[:, :3] - start[:3])) > NO_MOVE
         if whole or not check:
             return self._timed([start, *qs], whole, speed)
         route = self.routed(start, qs)
         if route is None:
             return False
-        here = start
         for q in route:
-            if not self._timed([here, q], False, speed):
+            # each segment from where the joints are (an arm held off its set-point by something
+            # it touched would have the next segment refused as starting elsewhere)
+            if not self._timed([self.q(), q], False, speed):
                 return False
-            here = q
         return True
 
     def _unwound(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray]:
@@ -222,7 +251,7 @@ class Body:
         names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
         limits = self.limits if whole else arm_limits()
         path = pts if whole else pts[:, 3:]
-        if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < 1e-4:
+        if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < NO_MOVE:
             return True
         try:
             traj = time_path(path, limits.scaled(speed), dt=1.0 / RATE_HZ)
@@ -236,8 +265,9 @@ class Body:
         if not res.completed:
             raise Stopped(res.reason or "the arm stopped")
 
-    def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False) -> bool:
-        q = self.solve(T, allow_base=allow_base)
+    def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False, frame: str = "tcp") -> bool:
+        """Move ``frame`` to ``T`` by an arm pose with a clear way there (:meth:`reachable`)."""
+        q = self.reachable(T, frame, allow_base=allow_base)
         return q is not None and self.through([q], speed)
 
     def line(self, target: np.ndarray, frame: str = "tcp", steps: int = 5, speed: float = 0.4,

@@ -85,6 +85,16 @@ class Held:
         """The box's corners in the map frame for the hand at ``tcp``."""
         return self.corners @ tcp[:3, :3].T + tcp[:3, 3]
 
+    def box(self) -> tuple[np.ndarray, np.ndarray]:
+        """The item's box in the tcp frame: its centre's pose (4x4) and its size."""
+        T = np.eye(4)
+        c = self.corners
+        axes = np.column_stack([c[4] - c[0], c[2] - c[0], c[1] - c[0]])  # corners as Seen.corners orders them
+        lengths = np.linalg.norm(axes, axis=0)
+        T[:3, :3] = axes / np.maximum(lengths, 1e-9)
+        T[:3, 3] = c.mean(axis=0)
+        return T, lengths
+
     def below_tcp(self, tcp: np.ndarray) -> float:
         """How far the item's lowest corner hangs below the tcp (m), for the hand at ``tcp``."""
         return float(tcp[2, 3] - self.corners_at(tcp)[:, 2].min())
@@ -96,9 +106,19 @@ class Eyes:
     def __init__(self, body: Body, camera: WristCamera, level_with=lambda point: False) -> None:
         self.body, self.camera = body, camera
         self.level_with = level_with  # points seen only from their own height (inside a hollow)
-        self.held: Held | None = None
+        self._held: Held | None = None
         self.cam = body.cfg.camera
         self._aim: tuple[np.ndarray, np.ndarray] | None = None  # point, camera pose of the last aim
+
+    @property
+    def held(self) -> Held | None:
+        """What the hand holds as the camera measured it (None: nothing, as far as the skills know)."""
+        return self._held
+
+    @held.setter
+    def held(self, held: Held | None) -> None:
+        self._held = held
+        self.body.hold(*(held.box() if held is not None else (None,)))
 
     # -- aiming --------------------------------------------------------------------------------
 
@@ -116,8 +136,7 @@ class Eyes:
             eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], z))
             T = se3.look_pose(eye, point)
             for pose in (self.aim_past_held(T), T):
-                q = self.body.solve(pose, "camera_optical", allow_base=allow_base)
-                if q is not None and self.body.through([q], 0.8):
+                if self.body.goto_pose(pose, 0.8, allow_base, "camera_optical"):
                     self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
                     return True
         return False

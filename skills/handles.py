@@ -50,8 +50,6 @@ PARKED_MARGIN = 0.015  # footprint to obstacles when the leaf stands still
 ARM_MARGIN = 0.04  # arm and base shapes to the leaf's panel
 HAND_MARGIN = 0.006  # gripper and finger shapes to the panel (they hold a bar in front of it)
 HAND_LINKS = ("gripper_base_link", "left_finger_link", "right_finger_link")
-#: the handle bar's centre stands this far in front of its leaf's face (the furniture models')
-HANDLE_STANDOUT = 0.045
 COMFORT = 0.66  # handle distance in front of the base centre that the arm reaches best
 ANGLE_STEP = 0.07  # rad between revolute waypoints
 SLIDE_STEP = 0.025  # m between prismatic waypoints
@@ -93,22 +91,6 @@ class HandlePath:
     pre: Waypoint | None = None
 
 
-def plate(leaf: Leaf, q: float) -> Obb:
-    """The leaf (or drawer front) without its handles at joint value ``q``: what a hand near the
-    bar must not touch."""
-    art = leaf.art
-    normal, n = np.array(art.normal), np.abs(art.normal)
-    centre, half = np.array(art.leaf_center), np.array(art.leaf_half)
-    front = float(np.array(art.handle) @ normal) - HANDLE_STANDOUT
-    back = float(centre @ normal - half @ n)
-    if art.other_side is not None:
-        back = max(back, front - art.other_side + 2 * HANDLE_STANDOUT)
-    c = centre + normal * ((front + back) / 2 - float(centre @ normal))
-    h = half * (1 - n) + n * (front - back) / 2
-    R, move = leaf.transform(q)
-    return Obb(move(c), R, h)
-
-
 class HandleFollower:
     """Plans whole-body paths that carry a handle along its leaf's motion."""
 
@@ -125,7 +107,7 @@ class HandleFollower:
             fingers = dict(zip(cfg.gripper.joints, cfg.gripper.finger_positions(opening)))
             self._kin = Kinematics(joints=cfg.base.joints + cfg.arm.joints, locked=fingers)
             self.opening = opening
-        size = 2 * plate(leaf, 0.0).half
+        size = 2 * leaf.panel(0.0).half
         checker = CollisionChecker(self._kin, SceneBoxes(np.eye(4)[None], size[None]), margin=HAND_MARGIN)
         objs = checker.geometry.geometryObjects
         panel = checker.geometry.ngeoms - 1
@@ -197,7 +179,7 @@ class HandleFollower:
         """Feasible (pre-grasp, grasp) pairs, best first: base poses on a ring around the handle,
         the hand square to the leaf or turned about the bar."""
         p = G0[:3, 3]
-        box, panel = leaf.box(q0), plate(leaf, q0)
+        box, panel = leaf.box(q0), leaf.panel(q0)
         cands = []
         for lag in ((0.0,) if leaf.art.prismatic else GRASP_LAGS):
             T = self.hand_pose(leaf, side, q0, q0, G0, lag)
@@ -233,7 +215,7 @@ class HandleFollower:
         wps = [first]
         for q in values[1:]:
             prev = wps[-1]
-            box, panel = leaf.box(q), plate(leaf, q)
+            box, panel = leaf.box(q), leaf.panel(q)
             x, y, yaw = prev.q[:3]
             c, s = math.cos(yaw), math.sin(yaw)
             lags = (0.0,) if leaf.art.prismatic else tuple({min(MAX_LAG, max(-MAX_LAG, prev.lag + d)) for d in LAG_STEPS})
@@ -351,7 +333,7 @@ class Handles:
         point above the base if folding straight would sweep through the leaf), and the base
         returns to where the action began if that way is clear of the leaf for the folded arm."""
         leaf = self.scene.leaves[name]
-        box, panel = leaf.box(q), plate(leaf, q)
+        box, panel = leaf.box(q), leaf.panel(q)
         self.body.fingers(RELEASE_GRIP)
         off = self.body.pose("tcp")
         off[:3, 3] -= off[:3, 2] * 0.12

@@ -11,7 +11,10 @@ something. An item on the floor (where a situation dropped it: against a wall, b
 furniture, under a leaf) is stood for from all round it, and taken level from the side when no
 hand from above reaches it; a grasp whose pre-pose the second look puts out of reach tries
 another stand. What the hand then holds is remembered as the camera measured it (:class:`Held`),
-which is how a place knows where the item's bottom is.
+which is how a place knows where the item's bottom is; held, it is part of the arm's collision
+model (:meth:`~skills.body.Body.hold`), so the arm's ways keep it off the furniture and the arm.
+Into a top-open cavity an item is let go where the camera, looking in from the work pose, shows
+nothing yet (:meth:`Hands.spot_in_cavity`).
 
 IK solutions for pre-poses are kept clear of the furniture and walls of the map (cavities carved
 out, :class:`~skills.scene_model.SceneModel`); the straight last stretch into a grasp or onto a
@@ -50,6 +53,8 @@ FINGERTIP = 0.02  # the fingertips reach this far beyond the tcp
 WITHDRAW_MARGIN = 0.05  # an item taken out of a container clears its rim or front face by this much
 EDGE_SPOT = 0.1  # a spot "at the front edge" of a surface: its centre this far behind the edge
 EDGE_CLEAR = 0.25  # a free spot this far in from every edge of the top is as good as one further in
+CAVITY_MARGIN = 0.01  # a held item let go in a top-open cavity keeps this far off its walls
+CAVITY_CLEAR = 0.15  # a spot in a cavity this far from what lies in it already is as good as one further
 NEAR_SPOT = 0.2  # a free spot is sought this far in from a surface's front first (less reach over it)
 PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
 PRE_PLACE = 0.16  # pre-place distance along the approach axis
@@ -262,29 +267,41 @@ class Hands:
         return all(base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, 0.015)
                    for s in np.linspace(0.25, 1.0, 4))
 
-    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
-        """Bring the hand to its pre-pose for going along ``a`` to ``G``: ``least`` back from
-        ``G``, with the fingertips and ``pts`` (a held item's corners when the hand is at ``G``)
-        out of the container's cavity, so that the arm's joint-space move there cannot sweep
-        through a wall. Out of a deep front-open cavity that is further than the arm reaches
-        comfortably: the base steps back first, the arm goes to the pre-pose, and the base steps
-        in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`. Returns the
-        pre-pose (the hand is there), or None when the arm cannot get there."""
+    def pre_pose(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float,
+                 pts=()) -> tuple[np.ndarray, np.ndarray]:
+        """The pre-pose for going along ``a`` to ``G`` (``least`` back from it, lifted out of a
+        top-open cavity with the fingertips and ``pts``, a held item's corners at ``G``), and the
+        way out of a front-open cavity still to go (zero for any other): the base steps back that
+        far when there is room (:meth:`reach_pre`), which leaves the arm's pose on the base as it
+        is for the pre-pose."""
         pre = G.copy()
         pre[:3, 3] -= a * least
-        step = np.zeros(3)
         box = self.scene.furniture.get(container or "")
         if box is not None and box.info.cavity is not None:
             d, out = self.way_out(container, [p - a * least for p in (G[:3, 3] + a * FINGERTIP, *pts)])
             if d[2] > 0.5:  # a top-open cavity: the arm lifts the pre-pose
                 pre[:3, 3] += d * out
             elif out > 0:
-                if self._base_step_free(d, out):
-                    step = d * out
-                    x, y, yaw = self.body.base_pose()
-                    self.body.drive([(x + step[0], y + step[1], yaw)], 0.5)
-                else:  # no room behind: the arm backs off further instead
-                    pre[:3, 3] += d * out
+                return pre, d * out
+        return pre, np.zeros(3)
+
+    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
+        """Bring the hand to its pre-pose (:meth:`pre_pose`) so that the arm's joint-space move
+        there cannot sweep through a wall. Out of a deep front-open cavity that is further than
+        the arm reaches comfortably: the base steps back first, the arm goes to the pre-pose, and
+        the base steps in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`; with
+        no room behind, the arm backs off further instead. Returns the pre-pose (the hand is
+        there), or None when the arm cannot get there."""
+        pre, back = self.pre_pose(G, a, container, least, pts)
+        step = np.zeros(3)
+        if back.any():
+            out = float(np.linalg.norm(back))
+            if self._base_step_free(back / out, out):
+                step = back
+                x, y, yaw = self.body.base_pose()
+                self.body.drive([(x + step[0], y + step[1], yaw)], 0.5)
+            else:
+                pre[:3, 3] += back
         far = pre.copy()
         far[:3, 3] += step
         if not self.body.goto_pose(far):
@@ -324,9 +341,7 @@ class Hands:
             T[:3, :3] = self.eyes.held.upright(T[:3, :3], self.body.base_T()[:3, 0])
         rel = np.linalg.inv(self.body.base_T()) @ T
         rel[:3, 3] = CARRY
-        q = self.body.solve(self.body.base_T() @ rel)
-        if q is not None:
-            self.body.through([q], 0.8)
+        self.body.goto_pose(self.body.base_T() @ rel, 0.8)
 
     def let_go(self) -> None:
         self.body.fingers(self.body.cfg.gripper.stroke)
@@ -369,6 +384,10 @@ class Hands:
 
     def items_near(self, point, exclude: set[str]) -> list[np.ndarray]:
         """Centroids of the items a look at ``point`` shows (furniture and doors are the map's)."""
+        return [pts.mean(axis=0) for pts in self.items_seen(point, exclude)]
+
+    def items_seen(self, point, exclude: set[str]) -> list[np.ndarray]:
+        """The points of each item a look at ``point`` shows (furniture and doors are the map's)."""
         if not self.eyes.look_at(point):
             return []
         frame = self.eyes.frame()
@@ -379,8 +398,33 @@ class Hands:
                 continue
             cloud = instance_cloud(frame, d)
             if cloud is not None:
-                out.append(np.asarray(cloud.points).mean(axis=0))
+                out.append(np.asarray(cloud.points))
         return out
+
+    def spot_in_cavity(self, container: str, item: str, centre: np.ndarray, reaches) -> np.ndarray:
+        """Where on a top-open cavity's floor to let the held ``item`` go: as far from what the
+        camera shows already in the cavity as the walls allow (``centre`` when nothing is), the
+        first such spot ``reaches(spot)`` from where the robot stands. Let go over what lies there
+        already, an item would be pressed into it (a second log onto the first pushed it through
+        the basket's floor)."""
+        f = self.scene.furniture[container]
+        cav = f.info.cavity
+        others = [p for pts in self.items_seen(centre, exclude={item, container}) for p in pts
+                  if abs(f.local(p)[0]) < f.width / 2 and abs(f.local(p)[1]) < f.depth / 2 and p[2] < cav.z[1] + WITHDRAW_MARGIN]
+        if not others:
+            return centre
+        others = np.array(others)
+        # the held item keeps clear of the walls however it turns about the vertical
+        r = float(max(self.eyes.held.extent[:2])) / 2
+        mx, my = (max(0.0, size / 2 - cav.wall - r - CAVITY_MARGIN) for size in (f.width, f.depth))
+        cands = [f.to_world((lx, ly, cav.z[0])) for lx in np.linspace(-mx, mx, 5) for ly in np.linspace(-my, my, 3)]
+        c = f.local(centre)
+
+        def score(p) -> float:
+            clear = float(np.min(np.linalg.norm(others[:, :2] - p[:2], axis=1)))
+            return min(clear, CAVITY_CLEAR) - 0.05 * float(np.linalg.norm(f.local(p)[:2] - c[:2]))
+
+        return next((p for p in sorted(cands, key=score, reverse=True) if reaches(p)), centre)
 
     def cavity_spot(self, container: str) -> tuple[np.ndarray, np.ndarray]:
         """Centre of a container's cavity floor, and the direction to put things in from (a drawer:
@@ -405,14 +449,15 @@ class Hands:
         else:
             spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
 
-        def targets(base) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        def targets(base, at=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             """The hand's place pose, its pre-pose and the item's corners there, for the hand
-            carried to the base pose ``base`` and stood up as it was taken."""
+            carried to the base pose ``base`` and stood up as it was taken, the item over ``at``
+            (default: the spot)."""
             T = self.body.base_T(base) @ np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
             T[:3, :3] = held.upright(T[:3, :3], a)
             corners = held.corners_at(T)
             c = corners.mean(axis=0)
-            target = spot.copy()
+            target = (spot if at is None else at).copy()
             target[2] += (c[2] - corners[:, 2].min()) + PLACE_CLEARANCE  # its bottom just above the support
             G = T.copy()
             G[:3, 3] += target - c
@@ -420,8 +465,16 @@ class Hands:
             pre[:3, 3] -= a * PRE_PLACE
             return G, pre, corners + (target - c)
 
-        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where,
-                                             reach=lambda base: targets(base)[:2]))
+        def reach(base, at=None) -> tuple[np.ndarray, np.ndarray]:
+            G, _, corners = targets(base, at)
+            return self.pre_pose(G, a, where if inside else None, PRE_PLACE, list(corners))[0], G
+
+        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach))
+        cav = self.scene.furniture[where].info.cavity if inside else None
+        if cav is not None and cav.open == "top" and where not in self.scene.leaves:
+            # seen from the work pose, from above: what lies in the cavity already
+            here = self.body.base_pose()
+            spot = self.spot_in_cavity(where, name, spot, lambda at: self.nav.reaches(here, reach(here, at), routed=True))
         G, _, corners = targets(self.body.base_pose())
         self.progress(0.2, "pre-place")
         pre = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))

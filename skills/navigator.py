@@ -160,12 +160,14 @@ class Navigator:
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
-        ``reach(base_pose)`` lists — IK clear of the scene, checked from that base before it
-        moves; the first clear one when none does (the motion then finds out). A point on no
-        piece of furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
+        ``reach(base_pose)`` lists — IK clear of the scene, and the arm's joint way from how it is
+        now to the first of them (a pre-pose) clear too, checked from that base before it moves;
+        the first clear one when none does (the motion then finds out). A point on no piece of
+        furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
         if reach is None:
             return next(self.work_poses(point, toward, how, clear_of))
-        return self.reaching_pose(point, toward, how, clear_of, reach) or next(self.work_poses(point, toward, how, clear_of))
+        return (self.reaching_pose(point, toward, how, clear_of, reach, routed=True)
+                or next(self.work_poses(point, toward, how, clear_of)))
 
     def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=(),
                       routed: bool = False) -> Pose | None:
@@ -175,18 +177,18 @@ class Navigator:
         the rest are reached by straight lines) must be clear too."""
         return next((p for p in self._candidates(point, toward, how, clear_of, True)
                      if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid)
-                     and self._reaches(p, reach(p), routed)), None)
+                     and self.reaches(p, reach(p), routed)), None)
 
-    def _reaches(self, pose: Pose, targets, routed: bool = False) -> bool:
+    def reaches(self, pose: Pose, targets, routed: bool = False) -> bool:
+        """Whether the arm reaches every one of ``targets`` from the base at ``pose`` (``routed``:
+        the first by a clear way from how the arm is now)."""
         seed = self.body.q()
         seed[:3] = pose
-        qs = []
-        for T in targets:
-            q = self.body.solve(T, seed=seed)
+        for k, T in enumerate(targets):
+            q = self.body.reachable(T, seed=seed) if routed and k == 0 else self.body.solve(T, seed=seed)
             if q is None:
                 return False
-            qs.append(q)
-        return not routed or self.body.routed(seed, qs[:1]) is not None
+        return True
 
     def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
         """The clear :meth:`work_poses` along ``toward`` and (for a point on no furniture, when

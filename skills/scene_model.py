@@ -32,6 +32,8 @@ from vap_bt.scene.pointcloud import instance_cloud
 #: walls are where the map's room outlines are, this thick and high (a SLAM map's walls)
 WALL_THICKNESS = 0.08
 WALL_HEIGHT = 2.0
+#: the floor is a slab this thick under each room (the wrist swung through it on a way round)
+FLOOR_THICKNESS = 0.1
 #: a door's fitted opening is searched over this many joint values between closed and open
 DOOR_FIT_STEPS = 40
 #: points within this of a leaf's box count as the leaf's
@@ -39,6 +41,11 @@ LEAF_MARGIN = 0.03
 #: depth this far past a doorway means the view goes through it
 SEE_THROUGH = 0.3
 HIDDEN_SHARE = 0.5  # a depth return nearer than this share of a point's distance is something in front of it
+#: the handle bar's centre stands this far in front of its leaf's face (the furniture models')
+HANDLE_STANDOUT = 0.045
+#: m of a leaf's panel behind its face that a sight line cannot cross (a drawer's panel is only
+#: its front: the tray behind it is open from above)
+FACE_THICKNESS = 0.02
 #: half size (m) of an appliance's switch (along the front, out of it, up): it stands proud of
 #: the front, where a forearm sweeping past a low hollow would catch it
 SWITCH = (0.03, 0.02, 0.022)
@@ -163,6 +170,28 @@ class Furniture:
         t = cav.wall  # inside its walls (a point on the front, where the leaf is, is not in it)
         return abs(lx) < self.width / 2 - t and abs(ly) < self.depth / 2 - t and cav.z[0] <= lz <= cav.z[1]
 
+    def sight_over_rim(self, p, eye_height: float, toward) -> float:
+        """How far from ``p`` (horizontally, in the direction ``toward``) an eye ``eye_height``
+        high still sees the hollow's floor under ``p`` over the rim of this piece's top-open
+        hollow (what is in it may lie on its floor, whatever height belief gives it): the near
+        wall hides the bottom of a deep basket from a camera further off. Infinite when ``p`` is
+        in no such hollow (or the eye is no higher than the rim)."""
+        cav = self.info.cavity
+        if cav is None or cav.open != "top":
+            return math.inf
+        lx, ly, lz = self.local(p)
+        half = np.array([self.width / 2 - cav.wall, self.depth / 2 - cav.wall])
+        rim = cav.z[1]
+        if not (abs(lx) < half[0] and abs(ly) < half[1] and cav.z[0] <= lz < rim) or eye_height <= rim:
+            return math.inf
+        d = np.array([np.asarray(toward, float) @ self.along, np.asarray(toward, float) @ self.front])
+        d /= max(float(np.linalg.norm(d)), 1e-9)
+        pos = np.array([lx, ly])
+        # horizontal way from p to the near wall's inner face, along d
+        wall = min((half[k] - np.sign(d[k]) * pos[k]) / abs(d[k]) for k in range(2) if abs(d[k]) > 1e-9)
+        floor = cav.z[0]
+        return float(wall * (eye_height - floor) / (rim - floor))
+
 
 class Leaf:
     """A door leaf or drawer as the map describes its motion; ``q`` is its joint value."""
@@ -181,6 +210,50 @@ class Leaf:
     def box(self, q: float) -> Obb:
         R, move = self.transform(q)
         return Obb(move(np.array(self.art.leaf_center)), R, np.array(self.art.leaf_half))
+
+    def panel(self, q: float) -> Obb:
+        """The leaf (or drawer) without its handles at joint value ``q``: what a hand near the
+        bar must not touch."""
+        art = self.art
+        normal, n = np.array(art.normal), np.abs(art.normal)
+        centre, half = np.array(art.leaf_center), np.array(art.leaf_half)
+        front = float(np.array(art.handle) @ normal) - HANDLE_STANDOUT
+        back = float(centre @ normal - half @ n)
+        if art.other_side is not None:
+            back = max(back, front - art.other_side + 2 * HANDLE_STANDOUT)
+        return self._slab(front, back, q)
+
+    def face(self, q: float) -> Obb:
+        """The front of the panel at joint value ``q``, ``FACE_THICKNESS`` deep: what hides the
+        inside of the piece from a camera in front of it."""
+        front = float(np.array(self.art.handle) @ np.array(self.art.normal)) - HANDLE_STANDOUT
+        return self._slab(front, front - FACE_THICKNESS, q)
+
+    def _slab(self, front: float, back: float, q: float) -> Obb:
+        """The leaf's box at ``q`` cut to between ``front`` and ``back`` along its outward normal
+        (as at q = 0)."""
+        normal, n = np.array(self.art.normal), np.abs(self.art.normal)
+        centre, half = np.array(self.art.leaf_center), np.array(self.art.leaf_half)
+        c = centre + normal * ((front + back) / 2 - float(centre @ normal))
+        h = half * (1 - n) + n * (front - back) / 2
+        R, move = self.transform(q)
+        return Obb(move(c), R, h)
+
+    def fit(self, pts: np.ndarray, eye: np.ndarray | None) -> float | None:
+        """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
+        None when no joint value puts the leaf on any of them. A joint value is supported by the
+        points on its leaf's box and contradicted by the points the camera saw through the leaf's
+        face there: the carcass's front edge lies where a closed leaf would be, so the points on
+        it alone would call a wide-open fridge closed, but a closed leaf would have hidden the
+        inside of the cavity the camera sees."""
+        lo, hi = sorted((self.art.lower, self.art.upper))
+        values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
+        on = np.array([int(self.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values])
+        if on.max() == 0:
+            return None
+        through = np.zeros_like(on) if eye is None else np.array(
+            [int(seen_through(self.face(q), eye, pts, LEAF_MARGIN).sum()) for q in values])
+        return float(values[int(np.argmax(on - through))])
 
     def handle_at(self, q: float, side: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Handle grasp point, outward face normal and bar direction at joint value ``q`` (``side``
@@ -207,6 +280,11 @@ class SceneModel:
         """Whether ``p`` lies in the hollow of a front-opening container (a microwave, a cabinet):
         a camera sees into it only from about its height, never from above its top."""
         return any(f.in_front_cavity(p) for f in self.furniture.values())
+
+    def sight_over_rim(self, p, eye_height: float, toward) -> float:
+        """How far off ``p`` horizontally (towards ``toward``) an eye ``eye_height`` high still
+        sees it, when it lies in a top-open hollow (:meth:`Furniture.sight_over_rim`)."""
+        return min((f.sight_over_rim(p, eye_height, toward) for f in self.furniture.values()), default=math.inf)
 
     def room_at(self, x: float, y: float) -> str | None:
         return self.site.room_at(x, y)
@@ -250,9 +328,16 @@ class SceneModel:
         boxes = self.walls() + [f.outer() for f in self.furniture.values()] + self.leaf_boxes(moving)
         return [b.polygon() for b in boxes]
 
+    def floors(self) -> list[Obb]:
+        """The rooms' floors as slabs under their outlines (their tops at z = 0)."""
+        return [Obb.aabb((r.bounds[0], r.bounds[1], -FLOOR_THICKNESS), (r.bounds[2], r.bounds[3], 0.0))
+                for r in self.site.rooms if r.bounds is not None]
+
     def solid_boxes(self, moving: str | None = None) -> SceneBoxes:
-        """What the arm must keep clear of: walls, furniture with its cavities carved out, leaves."""
+        """What the arm must keep clear of: walls, floors, furniture with its cavities carved out,
+        leaves."""
         named = [(f"wall{i}", b) for i, b in enumerate(self.walls())]
+        named += [(f"floor{i}", b) for i, b in enumerate(self.floors())]
         named += [(f"{f.name}:{k}", b) for f in self.furniture.values() for k, b in enumerate(f.solids())]
         named += [(f"leaf:{n}", leaf.box(self.joint.get(n, 0.0))) for n, leaf in self.leaves.items() if n != moving]
         return SceneBoxes(np.array([b.pose() for _, b in named]).reshape(-1, 4, 4),
@@ -288,19 +373,34 @@ class SceneModel:
 
     def fit_leaf(self, name: str, frame: Frame, hint: float | None = None) -> float | None:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece
-        of furniture (or door), or None when the frame does not show it."""
+        of furniture (or door) (:meth:`Leaf.fit`), or ``hint`` when the frame does not show it."""
         leaf = self.leaves.get(name)
         d = frame.detection(name)
         cloud = instance_cloud(frame, d) if (leaf is not None and d is not None) else None
         if cloud is None:
             return hint
-        pts = np.asarray(cloud.points)
-        lo, hi = sorted((leaf.art.lower, leaf.art.upper))
-        values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
-        scores = [int(leaf.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values]
-        best = int(np.argmax(scores))
-        if scores[best] == 0:
+        eye = None if frame.camera_pose is None else np.asarray(frame.camera_pose)[:3, 3]
+        q = leaf.fit(np.asarray(cloud.points), eye)
+        if q is None:
             return hint
-        q = float(values[best])
         self.joint[name] = q
         return q
+
+
+def seen_through(box: Obb, eye: np.ndarray, pts: np.ndarray, short: float) -> np.ndarray:
+    """Which of ``pts`` (seen from ``eye``) the camera saw through ``box``: the sight line to the
+    point crosses it before ending ``short`` of the point (a point on the box's own face is not
+    seen through it)."""
+    pts = np.asarray(pts, float)
+    a = (np.asarray(eye, float) - box.center) @ box.R
+    b = (pts - box.center) @ box.R
+    length = np.linalg.norm(b - a, axis=1)
+    end = np.clip(1.0 - short / np.maximum(length, 1e-9), 0.0, 1.0)
+    d = b - a  # sight lines in the box's frame, a + t d for t in [0, end]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1, t2 = (-box.half - a) / d, (box.half - a) / d
+    flat = np.abs(d) < 1e-12  # parallel to a slab: inside it throughout or never
+    inside = np.abs(a) <= box.half
+    t_lo = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2)).max(axis=1)
+    t_hi = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2)).min(axis=1)
+    return (t_lo <= t_hi) & (t_hi >= 0.0) & (t_lo <= end)

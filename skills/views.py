@@ -30,7 +30,8 @@ from vap_bt.robot.frame import Frame
 #: a viewpoint counts as reached when the base stops this close to it (m)
 VIEW_REACHED = 0.25
 #: a "front" view steps back to this distance from the point, squarely facing it: far enough to
-#: see all of a tall piece of furniture (a 1.05 m shelf needs about 1.8 m)
+#: see all of a tall piece of furniture (a 1.05 m shelf needs about 1.8 m); a point in a deep
+#: top-open hollow (a log in a basket) only as far as the eye still sees it over the rim
 FRONT_VIEW = 1.8
 SIDE_TURN = 0.5  # rad round the point for a view from the left or the right
 CLOSER_STEP, CLOSEST = 0.25, 0.75  # a step closer, but no nearer to the point than this
@@ -98,7 +99,9 @@ class ViewService:
             p = np.asarray(aim.point, float)
             x, y, yaw = kit.body.base_pose()
             eye = kit.body.pose("camera_optical")
-            target = _moved_to(direction, (x, y, yaw), p)
+            # square on, but not so far off that the rim of a deep hollow hides the point
+            reach = kit.scene.sight_over_rim(p, CAMERA_EYE[2], (x - p[0], y - p[1], 0.0)) + CAMERA_EYE[0]
+            target = _moved_to(direction, (x, y, yaw), p, min(FRONT_VIEW, reach))
             if target is None:
                 return False
             nx, ny, nyaw, lift = target
@@ -136,9 +139,10 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
-def _moved_to(direction: str, here, p: np.ndarray):
-    """Base pose (x, y, yaw) and eye lift for a view ``direction`` of point ``p`` from ``here``;
-    None when there is no such move (already as close as a view gets)."""
+def _moved_to(direction: str, here, p: np.ndarray, front: float = FRONT_VIEW):
+    """Base pose (x, y, yaw) and eye lift for a view ``direction`` of point ``p`` from ``here``
+    (``front``: the distance a view from the front steps back to); None when there is no such
+    move (already as close as a view gets)."""
     x, y, yaw = here
     lift = 0.0
     if direction in ("left", "right"):
@@ -155,7 +159,7 @@ def _moved_to(direction: str, here, p: np.ndarray):
     elif direction == "front":  # square on to the point, from a good viewing distance
         v = np.array([x - p[0], y - p[1]])
         v = v / (np.linalg.norm(v) or 1.0)
-        nx, ny = p[0] + v[0] * FRONT_VIEW, p[1] + v[1] * FRONT_VIEW
+        nx, ny = p[0] + v[0] * front, p[1] + v[1] * front
     elif direction == "behind":
         nx, ny = 2 * p[0] - x, 2 * p[1] - y
     else:  # above

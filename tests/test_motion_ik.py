@@ -7,7 +7,7 @@ import pytest
 
 import robots
 from vap_bt.motion import se3
-from vap_bt.motion.collision import CollisionChecker, SceneBoxes
+from vap_bt.motion.collision import Attached, CollisionChecker, SceneBoxes
 from vap_bt.motion.ik import IKOptions, solve_ik
 from vap_bt.motion.kinematics import Kinematics, world_to_base
 
@@ -131,3 +131,36 @@ def test_pure_dls_without_closed_form_seeds(kin, checker):
     rate = np.mean([solve_ik(kin, T, options=opt).success for _, T in targets])
     print(f"pure DLS success {rate:.1%}")
     assert rate >= 0.98
+
+
+def test_a_held_box_is_kept_off_the_scene_and_the_arm(kin, checker):
+    """What the hand holds rides at the tcp as one more shape: a log held across the hand reaches
+    a box beside the fingers that the hand alone misses, and may not pass through the forearm."""
+    q = np.array(CFG.arm.home)
+    tcp = kin.fk(q)
+    log = np.eye(4)
+    held = Attached("tcp", log, np.array([0.5, 0.03, 0.03]))  # 0.5 m along the tcp's x, centred on it
+    side = tcp[:3, 3] + tcp[:3, 0] * 0.2  # 0.2 m along the log from the tcp
+    box = SceneBoxes.from_aabbs(np.concatenate([side - 0.03, side + 0.03])[None], ("post",))
+    assert not checker.with_boxes(box).in_collision(q)
+    carrying = CollisionChecker(kin, box, attached=held)
+    assert carrying.in_collision(q) and ("held_0", "scene:post") in carrying.colliding_pairs(q)
+    # a scene box's checker made from a carrying one carries too; with no scene the log alone at
+    # home does not touch the arm (its own wrist and hand are allowed round it)
+    assert carrying.with_boxes(SceneBoxes.empty()).attached == held
+    assert not CollisionChecker(kin, attached=held).in_collision(q)
+    through_forearm = Attached("tcp", np.linalg.inv(tcp) @ kin.fk(q, "forearm_link"), np.array([0.05, 0.05, 0.05]))
+    assert CollisionChecker(kin, attached=through_forearm).in_collision(q)
+
+
+def test_a_solution_turned_down_gives_way_to_another_branch(kin, checker):
+    q = np.array(CFG.arm.home)
+    target = kin.fk(q)
+    first = solve_ik(kin, target, q_init=q, collision=checker, options=IKOptions(max_seeds=10))
+    assert first.success and np.allclose(first.q, q, atol=1e-3)
+    other = solve_ik(kin, target, q_init=q, collision=checker, options=IKOptions(max_seeds=10),
+                     accept=lambda s: not np.allclose(s, q, atol=1e-2))
+    assert other.success and not np.allclose(other.q, q, atol=1e-2)
+    assert np.allclose(kin.fk(other.q)[:3, 3], target[:3, 3], atol=1e-3)
+    none = solve_ik(kin, target, q_init=q, options=IKOptions(max_seeds=10), accept=lambda s: False)
+    assert not none.success and none.reason == "collision"

@@ -82,7 +82,6 @@ def test_grasp_navigate_place(worlds):
     assert holds(w, "on(cup, counter)", "hand_empty", "in_room(cup, kitchen)")
 
 
-@skills_fail("takeout(cup, cabinet) is stopped: the arm falls 0.34 rad behind its set-point")
 def test_open_takeout_fill_turnon(worlds):
     w = worlds("boil_water")
     run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)")
@@ -158,7 +157,6 @@ def test_takeout_from_drawer_then_cut_after_view_moves(worlds):
     assert holds(w, "sliced(egg)", "holding(knife)")
 
 
-@skills_fail("takeout(cup, cabinet) is stopped: the arm falls 0.34 rad behind its set-point")
 def test_open_with_full_hand_sets_down_and_regrasps(worlds):
     w = worlds("boil_water")
     run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)", "takeout(cup, cabinet, kitchen)",
@@ -242,8 +240,7 @@ ARTICULATED = [  # (task scene, the thing, where the robot stands first)
     pytest.param("heat_pie", "fridge", "find(floor_kitchen, fridge, kitchen)", marks=NOT_CLOSED, id="fridge"),
     pytest.param("heat_pie", "oven", "find(floor_kitchen, oven, kitchen)", id="oven",
                  marks=skills_fail("open(oven) is refused: a sample leaves the joint limits")),
-    pytest.param("halve_egg", "drawer", "find(floor_kitchen, drawer, kitchen)", id="drawer",
-                 marks=skills_fail("close(drawer): handle out of reach")),
+    pytest.param("halve_egg", "drawer", "find(floor_kitchen, drawer, kitchen)", id="drawer"),
     pytest.param("gather_kindling", "door_lg", "find(floor_living_room, table, living_room)", id="door_lg"),
 ]
 

@@ -10,6 +10,10 @@ footprint frame; :meth:`SceneBoxes.transformed` moves world boxes there). They a
 every robot shape except those fixed to the chain's root (for the arm chain that is the base body,
 which the navigation layer keeps clear, not IK). ``scene_margins`` keeps named links further
 off the scene than the hand, which must come close to what it works on.
+
+What the hand holds rides along as one more box (:class:`Attached`, fixed in a frame of the
+chain, the tool's): it is kept off the scene like a link, and off the arm's own links except those
+moved by its joint and the joint before it (the hand and the wrist round the item).
 """
 
 from __future__ import annotations
@@ -55,6 +59,16 @@ class SceneBoxes:
         return SceneBoxes(T @ self.poses, self.sizes, self.names)
 
 
+@dataclass(frozen=True)
+class Attached:
+    """A box carried by the chain: ``pose`` (4x4) of its centre in ``frame``, ``size`` its full
+    edge lengths."""
+
+    frame: str
+    pose: np.ndarray
+    size: np.ndarray
+
+
 def _link_of(obj: pin.GeometryObject) -> str:
     # pinocchio names URDF collision shapes "<link>_<index>".
     return obj.name.rsplit("_", 1)[0]
@@ -64,11 +78,17 @@ class CollisionChecker:
     """Answers "is this configuration in collision?" for one chain and one set of scene boxes."""
 
     def __init__(self, kin: Kinematics, boxes: SceneBoxes | None = None, margin: float = 0.0,
-                 scene_margins: dict[str, float] | None = None) -> None:
+                 scene_margins: dict[str, float] | None = None, attached: Attached | None = None) -> None:
         self.kin = kin
         self.boxes = boxes if boxes is not None else SceneBoxes.empty()
         self.scene_margins = dict(scene_margins or {})
+        self.attached = attached
         self.geometry = kin.collision_model.copy()
+        if attached is not None:
+            frame = kin.model.frames[kin.model.getFrameId(attached.frame)]
+            self.geometry.addGeometryObject(pin.GeometryObject(
+                "held_0", frame.parentJoint, frame.placement * pin.SE3(np.asarray(attached.pose, float)),
+                coal.Box(*np.asarray(attached.size, float))))
         n_robot = self.geometry.ngeoms
         self._add_boxes(margin)
         self._add_self_pairs(n_robot)
@@ -119,7 +139,7 @@ class CollisionChecker:
 
     def with_boxes(self, boxes: SceneBoxes, margin: float = 0.0) -> CollisionChecker:
         """A checker for the same chain in another scene."""
-        return CollisionChecker(self.kin, boxes, margin, self.scene_margins)
+        return CollisionChecker(self.kin, boxes, margin, self.scene_margins, self.attached)
 
     def in_collision(self, q: np.ndarray) -> bool:
         return bool(

@@ -14,13 +14,14 @@ guess first, each shifted by whole turns towards it), with which DLS merely poli
 caller's initial guess (if any); then configurations drawn from a generator seeded with
 ``options.seed`` — so the answer is deterministic. ``analytic_seeds=False`` gives pure DLS.
 A converged solution that collides (self or scene, :mod:`vap_bt.motion.collision`) is rejected
-and the search goes on.
+and the search goes on; so is one the caller's ``accept`` turns down (a solution the arm has no
+clear way to from where it is: the next branch may have one).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -59,7 +60,7 @@ class IKResult:
     orientation_error: float  # rad
     iterations: int  # total over all seeds
     seeds: int  # seeds tried
-    reason: str  # "ok" | "unreachable" (no seed converged) | "collision" (all converged ones collide)
+    reason: str  # "ok" | "unreachable" (no seed converged) | "collision" (all converged ones collide or were not accepted)
 
 
 def _descend(
@@ -144,8 +145,10 @@ def solve_ik(
     q_init: np.ndarray | None = None,
     collision: CollisionChecker | None = None,
     options: IKOptions = IKOptions(),
+    accept: Callable[[np.ndarray], bool] | None = None,
 ) -> IKResult:
-    """Joint values putting ``frame`` at ``target`` (4x4, in the chain's world frame)."""
+    """Joint values putting ``frame`` at ``target`` (4x4, in the chain's world frame), clear of
+    collisions and (if given) ``accept``-ed."""
     fid = kin.frame_id(frame)
     goal = pin.SE3(np.asarray(target, dtype=float))
     best: tuple[float, np.ndarray, float, float] | None = None
@@ -157,7 +160,7 @@ def solve_ik(
         q, pos, rot, its = _descend(kin, fid, goal, next(seeds), options)
         total += its
         ok = pos <= options.position_tolerance and rot <= options.orientation_tolerance
-        if ok and collision is not None and collision.in_collision(q):
+        if ok and ((collision is not None and collision.in_collision(q)) or (accept is not None and not accept(q))):
             converged_but_colliding = True
             continue
         if ok:
