@@ -258,6 +258,11 @@ def test_a_view_that_does_not_show_the_object_votes_nothing():
 def test_with_the_budget_spent_only_views_that_all_agreed_stand():
     assert verdict([rnd("yyyyy", False), rnd("yyyyn", False)], exhausted=True) == Verdict(True, "agreed")
     assert verdict([rnd("yyyyy", False), rnd("yyynn", None)], exhausted=True).outcome == "unsettled"
+    assert verdict([rnd("yyyyy", False), rnd("nnnnn", False)], exhausted=True).outcome == "unsettled"
+    # store_firewood seed 3 (injection on): three views said yes, each judged insufficient, a
+    # fourth split 3-2; the split view says nothing either way, the three agree
+    views = [rnd("yynyy", False), rnd("yyyyy", False), rnd("yyyyy", False), rnd("ynnyy", None)]
+    assert verdict(views, exhausted=True) == Verdict(True, "agreed")
 
 
 def test_sim_vlm_probabilities_say_something_about_being_right_but_overstate_it():

@@ -272,8 +272,8 @@ def target_of(atom: Atom) -> str:
     return atom.args[0] if atom.args else "gripper"
 
 
-#: views that showed the atom's objects and must all agree for a check with its budget spent to
-#: stand without a settled view (see :func:`verdict`)
+#: views that showed the atom's objects, with consistent answers, that must agree (and none say
+#: otherwise) for a check with its budget spent to stand without a settled view (see :func:`verdict`)
 AGREEING_VIEWS = 2
 
 
@@ -294,10 +294,10 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
       (a coin-flip view that happened to look sure is outvoted by the views that did not); a view
       votes when its answers were consistent (the paper's gate for a round to mean anything,
       sufficient or not): one whose paraphrases disagreed among themselves says nothing either way;
-    * with the budget spent (``exhausted``) and nothing decided, a value stands only if the
-      answers of at least ``AGREEING_VIEWS`` views that showed the atom's objects, and of every
-      such view, agreed on it (independent views agreeing is evidence; one view the model found
-      insufficient is not); otherwise the check is ``unsettled``: it does not overturn belief.
+    * with the budget spent (``exhausted``) and nothing decided, a value stands only if at least
+      ``AGREEING_VIEWS`` views that showed the atom's objects voted for it and none voted against
+      (independent views agreeing is evidence; one view the model found insufficient is not);
+      otherwise the check is ``unsettled``: it does not overturn belief.
 
     A view whose detector did not find the atom's objects (``unshown``) votes nothing: its
     answers are guesses about a thing it does not show.
@@ -312,7 +312,6 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
             return Verdict(value, "settled")
     if not exhausted:
         return None
-    agreed = {r.vote for r in shown}
-    if len(shown) >= AGREEING_VIEWS and all(r.consistent for r in shown) and len(agreed) == 1 and None not in agreed:
-        return Verdict(agreed.pop(), "agreed")
+    if len(votes) >= AGREEING_VIEWS and len(set(votes)) == 1:
+        return Verdict(votes[0], "agreed")
     return Verdict(False, "unsettled")
