@@ -45,6 +45,11 @@ class Stopped(Exception):
     """A motion did not complete (cancelled, or the driver refused it); the skill ends."""
 
 
+class Slipped(Stopped):
+    """A drive stopped because the item the hand took slipped out of it (:meth:`Body.drive`):
+    the skill ends, and whether its action still did what it should is for perception to say."""
+
+
 def _concat(a: Limits, b: Limits) -> Limits:
     return Limits(a.names + b.names, *(np.concatenate((getattr(a, f), getattr(b, f)))
                                        for f in ("lower", "upper", "velocity", "acceleration", "jerk")))
@@ -61,6 +66,9 @@ class Body:
         self.limits = _concat(base_limits(), arm_limits())
         self.base_limits = base_limits()
         self.cancelled: Callable[[], bool] = lambda: False  # the running goal's
+        #: why a drive should stop: what the hand took is no longer between the fingers (the kit's
+        #: word: it knows what the hand took, and when it went); None while it is (:meth:`drive`)
+        self.slipped: Callable[[], str | None] = lambda: None
         self._checker: CollisionChecker | None = None
         self._scene: SceneBoxes = SceneBoxes.empty()
 
@@ -221,7 +229,9 @@ class Body:
         pts = np.array(pts)
         names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
         limits = self.limits if whole else arm_limits()
-        path = pts if whole else pts[:, 3:]
+        # within the limits, the start too: a joint driven to its limit is measured a hair past
+        # it after the physics settles, and a path from there is refused — every one, for good
+        path = np.clip(pts if whole else pts[:, 3:], limits.lower, limits.upper)
         if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < 1e-4:
             return True
         try:
@@ -238,7 +248,30 @@ class Body:
 
     def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False) -> bool:
         q = self.solve(T, allow_base=allow_base)
-        return q is not None and self.through([q], speed)
+        if q is None:
+            return False
+        if self.through([q], speed):
+            return True
+        other = self.home_branch(T, q)
+        return other is not None and self.through([other], speed)
+
+    def home_branch(self, T: np.ndarray, q: np.ndarray, start: np.ndarray | None = None) -> np.ndarray | None:
+        """The arm's solution for the tcp at ``T`` nearest the home posture, when it is another
+        one than ``q`` (the solution nearest the posture at ``start``, default as measured; the
+        base stays where it is): the way to the nearest solution can be blocked where the other
+        is clear — down to the floor in front of a counter, the solution nearest a look down
+        stretches the arm out over the counter, the one nearest home comes down in front of the
+        base. None when ``q`` moves the base, or there is no other."""
+        start = self.q() if start is None else np.asarray(start, float)
+        if np.max(np.abs(q[:3] - start[:3])) > 1e-6:
+            return None
+        seed = start.copy()
+        seed[3:] = self.cfg.arm.home
+        other = self.solve(T, seed=seed)
+        if other is None or np.max(np.abs(np.asarray(_nearest_turn(other[3:], q[3:], self.kin_arm.lower,
+                                                                      self.kin_arm.upper)) - q[3:])) < 1e-3:
+            return None
+        return other
 
     def line(self, target: np.ndarray, frame: str = "tcp", steps: int = 5, speed: float = 0.4,
              collide: bool = False) -> bool:
@@ -258,11 +291,19 @@ class Body:
         return len(qs) == steps
 
     def drive(self, poses: list[tuple[float, float, float]], speed: float = 1.0) -> None:
-        """Drive the base through ``poses`` (x, y, yaw), the arm held as it is."""
+        """Drive the base through ``poses`` (x, y, yaw), the arm held as it is. A drive stops when
+        the item the hand took has slipped out (the gripper's object detection; :attr:`slipped`),
+        as a real robot's would: driving on would leave it behind — or drive over it — where
+        nobody looks for it; stopped beside it, the robot finds it on the floor round where it
+        stands. Raises :class:`Slipped` then."""
         if not poses:
             return
-        res = self.base.follow([tuple(map(float, p)) for p in poses], speed, self.cancelled)
+        res = self.base.follow([tuple(map(float, p)) for p in poses], speed,
+                               lambda: self.cancelled() or self.slipped() is not None)
         if not res.completed:
+            slipped = self.slipped()
+            if slipped is not None and not self.cancelled():
+                raise Slipped(slipped)
             raise Stopped(res.reason or "the base stopped")
 
     def fingers(self, width: float, force: float = 40.0) -> bool:

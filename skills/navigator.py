@@ -186,7 +186,10 @@ class Navigator:
             if q is None:
                 return False
             qs.append(q)
-        return not routed or self.body.routed(seed, qs[:1]) is not None
+        if not routed:
+            return True
+        other = self.body.home_branch(targets[0], qs[0], seed)
+        return any(self.body.routed(seed, [q]) is not None for q in (qs[0], other) if q is not None)
 
     def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
         """The clear :meth:`work_poses` along ``toward`` and (for a point on no furniture, when
@@ -293,8 +296,12 @@ class Navigator:
         vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
                                                                np.array([here[0], goal[1], here[2]])]
         turned = np.array([here[0], here[1], goal[2]])  # turning on the spot first swings the arm away
+        # out of a work pose (the arm over a table, the base close by): straight back first
+        facing = np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
+        backs = [here - facing * k for k in DETOUR_BACKOFFS]
         paths = [[goal], *([v, goal] for v in vias), [turned, goal], *([turned, v, goal] for v in vias),
-                 *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)])]
+                 *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)]),
+                 *([b, goal] for b in backs), *([b, v, goal] for b in backs for v in vias)]
         # the arm may reach over things only near the goal; failing that anywhere, near each stop
         # (it can swing into an open leaf there, but that is still better than the straight way)
         for slack_at_stops in (False, True):

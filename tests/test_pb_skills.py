@@ -3,6 +3,7 @@ drivers only; the camera service turns the camera; the world is told nothing but
 goal is, and the oracle is asked afterwards. Real physics, no mocks. The Table II rows are forced
 at the drivers by :mod:`test_pb_injection`; the ones here show the skills meet them unchanged."""
 
+import math
 from pathlib import Path
 
 import pytest
@@ -223,11 +224,39 @@ def test_an_item_lying_against_a_wall_is_taken_from_the_side(worlds):
     assert holds(w, "holding(cup)")
 
 
+def test_a_knife_slid_half_under_a_table_is_taken_by_the_end_that_sticks_out(worlds):
+    # cut_lemon, seed 1 with injection: the knife fell in front of the dining table pointing in
+    # under its top; no hand from above reaches its middle there, one reaches it nearer its end
+    w = worlds("cut_lemon")
+    lay(w, "knife", (7.82, 3.49), 0.009, (0.0, 0.0, 1.6))
+    run(w, "find(floor_kitchen, knife, kitchen)", "grasp(knife, floor_kitchen, kitchen)")
+    assert holds(w, "holding(knife)")
+
+
+def test_a_knife_along_the_counter_is_reached_without_sweeping_the_hand_through_it(worlds):
+    # cut_lemon, seed 0 with injection: the knife lay along the counter's front, 0.2 m out; the
+    # arm's solution nearest its look down stretches out over the counter and every way there
+    # sweeps the hand through it, the one nearest home comes down in front of the base
+    w = worlds("cut_lemon")
+    lay(w, "knife", (5.87, 3.555), 0.009, (0.0, 0.0, 3.12))
+    run(w, "find(floor_kitchen, knife, kitchen)", "grasp(knife, floor_kitchen, kitchen)")
+    assert holds(w, "holding(knife)")
+
+
 def test_held_object_drops_during_navigation(worlds):
+    # the gripper feels the cup go: the trip stops once the cup has had the time to fall, beside
+    # it (driving on would leave it behind, in a room nobody looks in for it), and says so; that
+    # the robot is not where the action takes it is for the checks to see
     w = worlds("collect_cup", forced("navigate", "held_object_drops_during_navigation"))
-    run(w, "grasp(cup, coffee_table, living_room)", "navigate(living_room, kitchen, door_lk, cup)")
-    assert holds(w, "robot_in(kitchen)", "hand_empty")
+    run(w, "grasp(cup, coffee_table, living_room)")
+    goal = act(w, "navigate(living_room, kitchen, door_lk, cup)")
+    assert goal.state() is GoalState.SUCCEEDED and "cup slipped from the gripper" in goal.result().message
+    assert holds(w, "robot_in(living_room)")
+    assert holds(w, "hand_empty")
     assert holds(w, "on(cup, floor_living_room)") or holds(w, "on(cup, floor_kitchen)")
+    x, y, _ = w.robot.base_pose
+    cx, cy, _ = w.truth.center("cup")
+    assert math.hypot(cx - x, cy - y) < 1.0
 
 
 # ------------------------------------------------------------ doors and drawers
