@@ -69,7 +69,11 @@ class Body:
         #: why a drive should stop: what the hand took is no longer between the fingers (the kit's
         #: word: it knows what the hand took, and when it went); None while it is (:meth:`drive`)
         self.slipped: Callable[[], str | None] = lambda: None
+        #: the box of what the hand holds, as its eight corners in the tcp frame (the kit's: it
+        #: knows what the hand took, as the camera measured it); None with nothing in the hand
+        self.held_box: Callable[[], np.ndarray | None] = lambda: None
         self._checker: CollisionChecker | None = None
+        self._checker_held: bytes | None = None
         self._scene: SceneBoxes = SceneBoxes.empty()
 
     # -- the measured state ------------------------------------------------------------------
@@ -105,11 +109,33 @@ class Body:
         if not len(self._scene):
             return None
         local = self._scene.transformed(np.linalg.inv(self.base_T(np.array([*base_pose, *np.zeros(6)]))))
-        if self._checker is None:
-            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE)
+        corners = self.held_box()
+        held = None if corners is None else np.asarray(corners, float).tobytes()
+        if self._checker is None or held != self._checker_held:
+            # what the hand holds moves with it: a long item carried across the hand must not meet the arm
+            attached = None if corners is None else self._attached(np.asarray(corners, float))
+            self._checker = CollisionChecker(self.kin_arm, local, scene_margins=ARM_CLEARANCE, attached=attached)
+            self._checker_held = held
         else:
             self._checker.place_boxes(local.poses)
         return self._checker
+
+    def _attached(self, corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """A held box given by its corners in the tcp frame (:meth:`skills.scene_model.Seen.corners`
+        order: corner 0, and 1, 2, 4 along its three edges) as the checker takes it: its centre's
+        pose in the frame of the arm's last joint, and its edge lengths."""
+        edges = np.array([corners[4] - corners[0], corners[2] - corners[0], corners[1] - corners[0]])
+        size = np.linalg.norm(edges, axis=1)
+        R = np.eye(3)
+        if np.all(size > 1e-6):
+            U, _, Vt = np.linalg.svd((edges / size[:, None]).T)
+            R = U @ Vt  # the nearest rotation (the edges of a measured box are square to each other)
+            if np.linalg.det(R) < 0:  # a box is the same turned over one axis: a right-handed frame
+                R[:, 2] = -R[:, 2]
+        box = np.eye(4)
+        box[:3, :3], box[:3, 3] = R, corners.mean(axis=0)
+        tcp = self.kin_arm.model.frames[self.kin_arm.frame_id("tcp")].placement.homogeneous
+        return tcp @ box, np.maximum(size, 0.005)
 
     # -- planning ----------------------------------------------------------------------------
 

@@ -76,6 +76,7 @@ class Kit:
         self.hands = Hands(self.body, self.eyes, self.nav, self.scene)
         self.handles = Handles(self.body, self.eyes, self.nav, self.scene, self.hands)
         self.eyes.held = None
+        self.body.held_box = lambda: None if self.eyes.held is None else self.eyes.held.corners
 
     def _refresh(self) -> None:
         """Start over when the robot did (another episode), and forget a held item the gripper

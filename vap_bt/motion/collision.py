@@ -10,6 +10,10 @@ footprint frame; :meth:`SceneBoxes.transformed` moves world boxes there). They a
 every robot shape except those fixed to the chain's root (for the arm chain that is the base body,
 which the navigation layer keeps clear, not IK). ``scene_margins`` keeps named links further
 off the scene than the hand, which must come close to what it works on.
+
+What the hand holds can be attached to the chain's last joint as one more box (``attached``):
+it is checked against every robot shape not on that joint (the hand that holds it, the fingers
+round it), so that the arm does not fold into a long item it carries across the hand.
 """
 
 from __future__ import annotations
@@ -64,15 +68,21 @@ class CollisionChecker:
     """Answers "is this configuration in collision?" for one chain and one set of scene boxes."""
 
     def __init__(self, kin: Kinematics, boxes: SceneBoxes | None = None, margin: float = 0.0,
-                 scene_margins: dict[str, float] | None = None) -> None:
+                 scene_margins: dict[str, float] | None = None,
+                 attached: tuple[np.ndarray, np.ndarray] | None = None) -> None:
+        """``attached``: a box held by the last joint, as (its centre's pose in that joint's frame,
+        4x4; its full edge lengths)."""
         self.kin = kin
         self.boxes = boxes if boxes is not None else SceneBoxes.empty()
         self.scene_margins = dict(scene_margins or {})
+        self.attached = attached
         self.geometry = kin.collision_model.copy()
-        n_robot = self.geometry.ngeoms
+        n_robot = self._n_robot = self.geometry.ngeoms
         self._add_boxes(margin)
         self._add_self_pairs(n_robot)
         self._add_scene_pairs(n_robot)
+        if attached is not None:
+            self._attach(n_robot, *attached)
         self.data = pin.GeometryData(self.geometry)
         objs = self.geometry.geometryObjects
         for request, pair in zip(self.data.collisionRequests, self.geometry.collisionPairs):
@@ -109,17 +119,27 @@ class CollisionChecker:
                 if objs[i].parentJoint != 0:
                     self.geometry.addCollisionPair(pin.CollisionPair(i, b))
 
+    def _attach(self, n_robot: int, pose: np.ndarray, size: np.ndarray) -> None:
+        last = self.kin.model.njoints - 1
+        self.geometry.addGeometryObject(pin.GeometryObject("held", last, pin.SE3(np.asarray(pose, float)),
+                                                           coal.Box(*np.asarray(size, float))))
+        held = self.geometry.ngeoms - 1
+        objs = self.geometry.geometryObjects
+        for i in range(n_robot):
+            if objs[i].parentJoint != last:
+                self.geometry.addCollisionPair(pin.CollisionPair(i, held))
+
     def place_boxes(self, poses: np.ndarray) -> None:
         """Move the scene's boxes (same boxes, new poses in the chain's world frame): cheaper than a
         new checker when only the chain's root moved (a base that drove somewhere else)."""
-        objs, first = self.geometry.geometryObjects, self.geometry.ngeoms - len(self.boxes)
+        objs, first = self.geometry.geometryObjects, self._n_robot
         for i, T in enumerate(np.asarray(poses)):
             objs[first + i].placement = pin.SE3(T)
         self.boxes = SceneBoxes(np.asarray(poses), self.boxes.sizes, self.boxes.names)
 
     def with_boxes(self, boxes: SceneBoxes, margin: float = 0.0) -> CollisionChecker:
         """A checker for the same chain in another scene."""
-        return CollisionChecker(self.kin, boxes, margin, self.scene_margins)
+        return CollisionChecker(self.kin, boxes, margin, self.scene_margins, self.attached)
 
     def in_collision(self, q: np.ndarray) -> bool:
         return bool(
