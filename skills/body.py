@@ -36,6 +36,9 @@ UNWIND_MARGIN = 0.5
 #: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
 #: simulated arm's shapes carry a collision margin the model's cylinders do not
 ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01}
+#: m above a pose the hand is brought to first, and lowered from straight down, when no joint way
+#: to the pose itself is clear (to the floor right in front of furniture)
+FROM_ABOVE = (0.25, 0.45)
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
 IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, orientation_tolerance=1e-2)
@@ -278,26 +281,36 @@ class Body:
             return False
         if self.through([q], speed):
             return True
-        other = self.home_branch(T, q)
-        return other is not None and self.through([other], speed)
+        for other, from_above in self.other_ways(T, q):
+            if self.through([other], speed) and (not from_above or self.line(T, steps=4, speed=0.4, collide=True)):
+                return True
+        return False
 
-    def home_branch(self, T: np.ndarray, q: np.ndarray, start: np.ndarray | None = None) -> np.ndarray | None:
-        """The arm's solution for the tcp at ``T`` nearest the home posture, when it is another
-        one than ``q`` (the solution nearest the posture at ``start``, default as measured; the
-        base stays where it is): the way to the nearest solution can be blocked where the other
-        is clear — down to the floor in front of a counter, the solution nearest a look down
-        stretches the arm out over the counter, the one nearest home comes down in front of the
-        base. None when ``q`` moves the base, or there is no other."""
+    def other_ways(self, T: np.ndarray, q: np.ndarray, start: np.ndarray | None = None, above: bool = True):
+        """Other ways for the tcp to ``T`` than the arm's solution ``q`` nearest its posture at
+        ``start`` (default as measured; the base stays where it is), as (joints, whether the hand
+        then goes straight down to ``T``): the solution nearest the home posture, then the hand
+        above ``T`` (:data:`FROM_ABOVE`). The joint way to the nearest solution can be blocked
+        where another is clear — down to the floor by a counter, the solution nearest a look down
+        stretches the arm out over the counter, and a joint way from high up sweeps the hand
+        through its front; the one nearest home, or a hand lowered straight down to the floor
+        in front of it, is not. None of them when ``q`` moves the base; no hand from above
+        unless ``above``."""
         start = self.q() if start is None else np.asarray(start, float)
         if np.max(np.abs(q[:3] - start[:3])) > 1e-6:
-            return None
+            return
         seed = start.copy()
         seed[3:] = self.cfg.arm.home
         other = self.solve(T, seed=seed)
-        if other is None or np.max(np.abs(np.asarray(_nearest_turn(other[3:], q[3:], self.kin_arm.lower,
-                                                                      self.kin_arm.upper)) - q[3:])) < 1e-3:
-            return None
-        return other
+        if other is not None and np.max(np.abs(np.asarray(_nearest_turn(other[3:], q[3:], self.kin_arm.lower,
+                                                                         self.kin_arm.upper)) - q[3:])) >= 1e-3:
+            yield other, False
+        for up in FROM_ABOVE if above else ():
+            U = T.copy()
+            U[2, 3] += up
+            above = self.solve(U, seed=seed)
+            if above is not None:
+                yield above, True
 
     def line(self, target: np.ndarray, frame: str = "tcp", steps: int = 5, speed: float = 0.4,
              collide: bool = False) -> bool:

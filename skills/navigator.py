@@ -188,8 +188,10 @@ class Navigator:
             qs.append(q)
         if not routed:
             return True
-        other = self.body.home_branch(targets[0], qs[0], seed)
-        return any(self.body.routed(seed, [q]) is not None for q in (qs[0], other) if q is not None)
+        # the other branch of the arm counts; a hand lowered from above is the motion's last resort
+        # (judged from here, before the second look has measured the item from the work pose)
+        return self.body.routed(seed, qs[:1]) is not None or any(
+            self.body.routed(seed, [q]) is not None for q, _ in self.body.other_ways(targets[0], qs[0], seed, above=False))
 
     def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
         """The clear :meth:`work_poses` along ``toward`` and (for a point on no furniture, when

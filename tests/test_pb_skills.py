@@ -243,6 +243,15 @@ def test_a_knife_along_the_counter_is_reached_without_sweeping_the_hand_through_
     assert holds(w, "holding(knife)")
 
 
+def test_a_knife_close_along_the_counter_is_taken_with_the_hand_lowered_from_above(worlds):
+    # cut_lemon, seed 3 with injection: the knife lay 0.12 m in front of the counter, along it;
+    # every joint way to the pre-grasp swept the hand or the forearm through the counter's front
+    w = worlds("cut_lemon")
+    lay(w, "knife", (5.93, 3.63), 0.009, (0.0, 0.0, 3.12))
+    run(w, "find(floor_kitchen, knife, kitchen)", "grasp(knife, floor_kitchen, kitchen)")
+    assert holds(w, "holding(knife)")
+
+
 def test_held_object_drops_during_navigation(worlds):
     # the gripper feels the cup go: the trip stops once the cup has had the time to fall, beside
     # it (driving on would leave it behind, in a room nobody looks in for it), and says so; that
