@@ -173,6 +173,7 @@ class Hands:
         if seen is None:
             return Outcome(False, f"{name} is not where it was believed to be: not seen")
         stood: list = []
+        looks = [seen]
         while True:
             stand = self.stand_to_grasp(seen, where, sideways, stood)
             if stand is None:  # nowhere else to stand that the arm would reach it from
@@ -181,6 +182,7 @@ class Hands:
             stood.append(self.body.base_pose())
             closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
             seen = closer or seen
+            looks.append(seen)
             G, a = self.grasp_frame(seen, where, way, off=off)
             self.progress(0.1, "pre-grasp")
             self.body.fingers(self.body.cfg.gripper.stroke)
@@ -195,9 +197,12 @@ class Hands:
         self.progress(0.55, "closing")
         holding = self.body.fingers(0.0, GRASP_FORCE)
         if holding:
-            # the item reaches down to what it stands on: a camera above a flat thing (a knife on
-            # the floor) sees its top face only, and a held box that thin hides nothing it covers
-            whole = replace(seen, lo=np.array([*seen.lo[:2], min(seen.bottom, self.bottom(seen, where))]))
+            # the item as the look that showed most of it measured it (it has not moved since: a
+            # look from close by may see it cut by the frame's edge, or half hidden), and reaching
+            # down to what it stands on: a camera above a flat thing (a knife on the floor) sees
+            # its top face only, and a held box that thin or that short hides nothing it covers
+            most = max(looks, key=lambda s: float(np.prod(np.linalg.norm(s.corners()[[4, 2]] - s.corners()[0], axis=1))))
+            whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"))
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
