@@ -6,7 +6,10 @@ reaching every driver call, progress reaching the goal's feedback) and turns how
 ended into a :class:`~vap_bt.skill.SkillResult`: a motion that was stopped — cancelled, or a
 driver refused it — fails with the reason; a trip stopped at a shut door fails naming the door;
 everything else is the motion's own view (a grasp that closed on nothing still *completed*: that
-it failed is for perception to find out). A subclass sets ``action`` and implements :meth:`run`.
+it failed is for perception to find out). So is a drive the skill stopped because the item in
+the hand slipped out (:class:`~skills.body.Slipped`): the robot did what it could, the item lies
+beside it, and the checks that follow see what the action left undone — a chance event, not a
+motion that would fail the same way again. A subclass sets ``action`` and implements :meth:`run`.
 
 On a world without drivers (the symbolic one) these skills do not bind, and the world performs
 their actions instead (:func:`vap_bt.plugins.instantiate`). A simulated world also hears when an
@@ -19,7 +22,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from skills.body import Stopped
+from skills.body import Slipped, Stopped
 from skills.hands import Outcome
 from skills.kit import Kit, has_drivers, kit_for
 from skills.navigator import Blocked
@@ -50,6 +53,8 @@ class MotionSkill(Skill):
                 finally:
                     if hooks is not None:
                         hooks.end_action(self.action, tuple(args))
+        except Slipped as e:
+            return SkillResult(True, f"{call} stopped: {e}")
         except Stopped as e:
             return SkillResult(False, f"{call} stopped: {e}")
         except Blocked as e:

@@ -14,7 +14,7 @@ the base's and the arm's joints; the arm's driver takes it whenever the base's j
 from __future__ import annotations
 
 import math
-from typing import Callable
+from typing import Callable, Iterator
 
 import numpy as np
 
@@ -39,6 +39,9 @@ UNWIND_MARGIN = 0.5
 #: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
 #: simulated arm's shapes carry a collision margin the model's cylinders do not
 ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01}
+#: m above a pose the hand is brought to first, and lowered from straight down, when no joint way
+#: to the pose itself is clear (to the floor right in front of furniture)
+FROM_ABOVE = (0.25, 0.45)
 #: IK tolerances: the hand within 2 mm and 0.6 degrees of where it is sent
 IK = IKOptions(max_seeds=6, position_tolerance=2e-3, orientation_tolerance=1e-2)
 #: an arm pose that must also have a clear way there tries every branch of the closed-form solution
@@ -48,6 +51,11 @@ IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, 
 
 class Stopped(Exception):
     """A motion did not complete (cancelled, or the driver refused it); the skill ends."""
+
+
+class Slipped(Stopped):
+    """A drive stopped because the item the hand took slipped out of it (:meth:`Body.drive`):
+    the skill ends, and whether its action still did what it should is for perception to say."""
 
 
 def _concat(a: Limits, b: Limits) -> Limits:
@@ -66,6 +74,9 @@ class Body:
         self.limits = _concat(base_limits(), arm_limits())
         self.base_limits = base_limits()
         self.cancelled: Callable[[], bool] = lambda: False  # the running goal's
+        #: why a drive should stop: what the hand took is no longer between the fingers (the kit's
+        #: word: it knows what the hand took, and when it went); None while it is (:meth:`drive`)
+        self.slipped: Callable[[], str | None] = lambda: None
         self._checker: CollisionChecker | None = None
         self._scene: SceneBoxes = SceneBoxes.empty()
         self._held: Attached | None = None
@@ -103,9 +114,11 @@ class Body:
         """The item in the hand as a box (its centre's ``pose`` in the tcp frame, its ``size``), or
         None: IK solutions and arm ways keep it off the scene and off the arm's own links, as
         they keep the arm (a carried log swung into the forearm stops the arm)."""
-        held = None if pose is None else Attached("tcp", np.asarray(pose, float), np.asarray(size, float))
-        if held != self._held:
-            self._held, self._checker = held, None
+        if pose is None and self._held is None:
+            return
+        # a new checker for any other item (an Attached holds arrays: no == between two of them)
+        self._held = None if pose is None else Attached("tcp", np.asarray(pose, float), np.asarray(size, float))
+        self._checker = None
 
     def _collision(self, base_pose) -> CollisionChecker | None:
         if not len(self._scene):
@@ -250,7 +263,9 @@ class Body:
         pts = np.array(pts)
         names = (self.cfg.base.joints if whole else ()) + self.cfg.arm.joints
         limits = self.limits if whole else arm_limits()
-        path = pts if whole else pts[:, 3:]
+        # within the limits, the start too: a joint driven to its limit is measured a hair past
+        # it after the physics settles, and a path from there is refused — every one, for good
+        path = np.clip(pts if whole else pts[:, 3:], limits.lower, limits.upper)
         if len(path) == 2 and np.max(np.abs(path[1] - path[0])) < NO_MOVE:
             return True
         try:
@@ -266,9 +281,25 @@ class Body:
             raise Stopped(res.reason or "the arm stopped")
 
     def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False, frame: str = "tcp") -> bool:
-        """Move ``frame`` to ``T`` by an arm pose with a clear way there (:meth:`reachable`)."""
+        """Move ``frame`` to ``T`` by an arm pose with a clear way there (:meth:`reachable`); the
+        tcp, when no branch of the arm has one, by a hand lowered straight down (:meth:`from_above`)."""
         q = self.reachable(T, frame, allow_base=allow_base)
-        return q is not None and self.through([q], speed)
+        if q is not None and self.through([q], speed):
+            return True
+        return frame == "tcp" and any(self.through([up], speed) and self.line(T, steps=4, speed=0.4, collide=True)
+                                      for up in self.from_above(T))
+
+    def from_above(self, T: np.ndarray) -> Iterator[np.ndarray]:
+        """Arm poses (the base where it is) putting the tcp :data:`FROM_ABOVE` over ``T``, each
+        with a clear way there: whence the hand goes straight down to ``T`` when no branch of the
+        arm has a clear joint way to ``T`` itself (to the floor right in front of a counter, every
+        joint way sweeps the hand or the forearm through the counter's front)."""
+        for up in FROM_ABOVE:
+            U = np.array(T, float)
+            U[2, 3] += up
+            q = self.reachable(U)
+            if q is not None:
+                yield q
 
     def line(self, target: np.ndarray, frame: str = "tcp", steps: int = 5, speed: float = 0.4,
              collide: bool = False) -> bool:
@@ -288,11 +319,19 @@ class Body:
         return len(qs) == steps
 
     def drive(self, poses: list[tuple[float, float, float]], speed: float = 1.0) -> None:
-        """Drive the base through ``poses`` (x, y, yaw), the arm held as it is."""
+        """Drive the base through ``poses`` (x, y, yaw), the arm held as it is. A drive stops when
+        the item the hand took has slipped out (the gripper's object detection; :attr:`slipped`),
+        as a real robot's would: driving on would leave it behind — or drive over it — where
+        nobody looks for it; stopped beside it, the robot finds it on the floor round where it
+        stands. Raises :class:`Slipped` then."""
         if not poses:
             return
-        res = self.base.follow([tuple(map(float, p)) for p in poses], speed, self.cancelled)
+        res = self.base.follow([tuple(map(float, p)) for p in poses], speed,
+                               lambda: self.cancelled() or self.slipped() is not None)
         if not res.completed:
+            slipped = self.slipped()
+            if slipped is not None and not self.cancelled():
+                raise Slipped(slipped)
             raise Stopped(res.reason or "the base stopped")
 
     def fingers(self, width: float, force: float = 40.0) -> bool:

@@ -44,6 +44,8 @@ RAISE = 0.15
 LOOK_OVER = 0.4
 #: a point inside a front-opening hollow is looked at from this little above it (its roof is low)
 LEVEL_OVER = 0.05
+#: m: a held box is no thinner than this (a flat item seen from above measures no depth)
+THINNEST = 0.005
 
 
 @dataclass(frozen=True)
@@ -86,14 +88,20 @@ class Held:
         return self.corners @ tcp[:3, :3].T + tcp[:3, 3]
 
     def box(self) -> tuple[np.ndarray, np.ndarray]:
-        """The item's box in the tcp frame: its centre's pose (4x4) and its size."""
-        T = np.eye(4)
+        """The item's box in the tcp frame: its centre's pose (4x4) and its size (no edge thinner
+        than :data:`THINNEST`)."""
         c = self.corners
         axes = np.column_stack([c[4] - c[0], c[2] - c[0], c[1] - c[0]])  # corners as Seen.corners orders them
         lengths = np.linalg.norm(axes, axis=0)
-        T[:3, :3] = axes / np.maximum(lengths, 1e-9)
-        T[:3, 3] = c.mean(axis=0)
-        return T, lengths
+        R = np.eye(3)
+        if np.all(lengths > 1e-6):
+            U, _, Vt = np.linalg.svd(axes / lengths)
+            R = U @ Vt  # the nearest rotation (the edges of a measured box are square to each other)
+            if np.linalg.det(R) < 0:  # a box turned to its outline may be mirrored: the same box, right-handed
+                R[:, 2] = -R[:, 2]
+        T = np.eye(4)
+        T[:3, :3], T[:3, 3] = R, c.mean(axis=0)
+        return T, np.maximum(lengths, THINNEST)
 
     def below_tcp(self, tcp: np.ndarray) -> float:
         """How far the item's lowest corner hangs below the tcp (m), for the hand at ``tcp``."""

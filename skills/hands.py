@@ -30,7 +30,7 @@ and the executive finds out by looking whether they did.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -62,6 +62,12 @@ GRASP_FORCE = 60.0
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
 GRASP_STANDS = 3  # work poses a grasp tries before it gives up (the arm's reach is checked at each)
+#: a long item on the floor is taken off its middle when no hand reaches that (the middle of a
+#: knife that slid half under a table is under its top): this share of the way from its middle
+#: to where the pads would leave it, either way along it; an item shorter than the pads allow is
+#: taken by its middle only
+SLIDE_SHARE = 0.7
+PAD_END = 0.025  # the pads stay this far in from the end of an item taken off its middle
 DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
@@ -130,11 +136,12 @@ class Hands:
 
     # -- grasping ----------------------------------------------------------------------------
 
-    def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False, base=None) -> tuple[np.ndarray, np.ndarray]:
+    def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False, base=None,
+                    off=(0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
         """Grasp pose of the tcp and the approach direction for an item as seen: level from the
         front out of a front-open container (or when asked: to put it into one next), else from
         above across its narrow side — the fingers' sides as for the base at ``base`` (x, y, yaw;
-        default where it is)."""
+        default where it is), ``off`` (x, y) along it from its middle (:meth:`slides`)."""
         q = None if base is None else np.array([*base, *np.zeros(6)])
         c, bottom = seen.centroid.copy(), self.bottom(seen, where)
         box = self.scene.furniture.get(where.inside or "")
@@ -159,6 +166,7 @@ class Hands:
             across = -across
         z = np.array([0.0, 0.0, -1.0])
         p = c.copy()
+        p[:2] += off
         # fingertips (0.02 m beyond the tcp) reach below the top, but stay off the support
         p[2] = max(seen.top - 0.03, c[2], bottom + 0.022)
         return se3.frame_zx(z, np.cross(across, z), p), z
@@ -170,14 +178,17 @@ class Hands:
         if seen is None:
             return Outcome(False, f"{name} is not where it was believed to be: not seen")
         stood: list = []
+        looks = [seen]
         while True:
-            way = self.stand_to_grasp(seen, where, sideways, stood)
-            if way is None:  # nowhere else to stand that the arm would reach it from
+            stand = self.stand_to_grasp(seen, where, sideways, stood)
+            if stand is None:  # nowhere else to stand that the arm would reach it from
                 return Outcome(False, f"{name}: no arm pose reaches it")
+            way, off = stand
             stood.append(self.body.base_pose())
             closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
             seen = closer or seen
-            G, a = self.grasp_frame(seen, where, way)
+            looks.append(seen)
+            G, a = self.grasp_frame(seen, where, way, off=off)
             self.progress(0.1, "pre-grasp")
             self.body.fingers(self.body.cfg.gripper.stroke)
             if self.reach_pre(G, a, where.inside, APPROACH) is not None:
@@ -191,7 +202,13 @@ class Hands:
         self.progress(0.55, "closing")
         holding = self.body.fingers(0.0, GRASP_FORCE)
         if holding:
-            self.eyes.held = Held.taken(seen, self.body.pose("tcp"))
+            # the item as the look that showed most of it measured it (it has not moved since: a
+            # look from close by may see it cut by the frame's edge, or half hidden), and reaching
+            # down to what it stands on: a camera above a flat thing (a knife on the floor) sees
+            # its top face only, and a held box that thin or that short hides nothing it covers
+            most = max(looks, key=lambda s: float(np.prod(np.linalg.norm(s.corners()[[4, 2]] - s.corners()[0], axis=1))))
+            whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
+            self.eyes.held = Held.taken(whole, self.body.pose("tcp"))
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
         back[2, 3] += LIFT[how(a)]
@@ -210,34 +227,54 @@ class Hands:
         self.carry()
         return Outcome(True)
 
-    def stand_to_grasp(self, seen: Seen, where: Where, sideways: bool, stood=()) -> bool | None:
+    def stand_to_grasp(self, seen: Seen, where: Where, sideways: bool, stood=()) -> tuple[bool, np.ndarray] | None:
         """Drive to a work pose for grasping ``seen``, away from the poses ``stood`` at already;
-        returns whether the hand takes it from the side (None: no pose left to try). An item on
-        the floor that the hand cannot reach from above (a wall, a leaf or a piece of furniture
-        beside or over it) is taken level from the side instead, from where the arm reaches that
-        (unless it is too flat for the pads to hold from the side).
+        returns whether the hand takes it from the side, and where along it from its middle
+        (None: no pose left to try). An item on the floor that the hand cannot reach from above
+        (a wall, a leaf or a piece of furniture beside or over it) is taken level from the side
+        instead, from where the arm reaches that (unless it is too flat for the pads to hold from
+        the side), or from above off its middle (:meth:`slides`).
         On the first stand, when neither way reaches, the pose for the first way (the motion finds out)."""
         floor = where.on in self.scene.site.floors()
         low = seen.top - self.bottom(seen, where) < SIDE_LEVEL_HEIGHT  # a plate: no side for the pads to take
         ways = (sideways,) if sideways or low or not floor else (False, True)
-        for way in ways:
-            # down by the floor the arm folds past furniture on its way: its joint way is checked too
-            pose = self.nav.reaching_pose(*self._work_request(seen, where, way), avoid=stood, routed=floor)
-            if pose is not None:
-                self.nav.approach(pose)
-                return way
+        offs = self.slides(seen) if floor else [np.zeros(2)]
+        for off in offs:
+            for way in ways:
+                if way and off.any():
+                    continue  # a level hand takes it by the side nearest the robot: no sliding along
+                # down by the floor the arm folds past furniture on its way: its joint way is checked too
+                pose = self.nav.reaching_pose(*self._work_request(seen, where, way, off), avoid=stood, routed=floor)
+                if pose is not None:
+                    self.nav.approach(pose)
+                    return way, off
         if stood:
             return None
         self.nav.approach(self.nav.work_pose(*self._work_request(seen, where, ways[0])))
-        return ways[0]
+        return ways[0], np.zeros(2)
 
-    def _work_request(self, seen: Seen, where: Where, sideways: bool) -> tuple:
+    @staticmethod
+    def slides(seen: Seen) -> list[np.ndarray]:
+        """Where along ``seen`` a hand from above may take it, as (x, y) from its middle: the
+        middle, then either way along its longer side (:data:`SLIDE_SHARE`) for an item long
+        enough to be held off its middle."""
+        out = [np.zeros(2)]
+        if seen.round or seen.outline is None:
+            return out
+        half = float(np.linalg.norm(seen.outline[1] - seen.outline[0])) / 2
+        reach = half - PAD_END
+        if reach <= PAD_END:
+            return out
+        along = np.array([math.cos(seen.yaw), math.sin(seen.yaw)])
+        return out + [along * reach * SLIDE_SHARE * s for s in (1.0, -1.0)]
+
+    def _work_request(self, seen: Seen, where: Where, sideways: bool, off=(0.0, 0.0)) -> tuple:
         """What :meth:`Navigator.work_pose` takes for a grasp of ``seen``: the point, the way to
         the robot, the approach, the support, and the pre-grasp and grasp poses from a base pose."""
-        G, a = self.grasp_frame(seen, where, sideways)
+        G, a = self.grasp_frame(seen, where, sideways, off=off)
 
         def targets(base) -> tuple[np.ndarray, np.ndarray]:
-            G, a = self.grasp_frame(seen, where, sideways, base)
+            G, a = self.grasp_frame(seen, where, sideways, base, off=off)
             pre = G.copy()
             pre[:3, 3] -= a * APPROACH
             return pre, G
@@ -563,7 +600,10 @@ class Hands:
         c = seen.centroid
         self.nav.approach(self.nav.work_pose(c, self.nav.toward_robot(c, where.place), "top", where.place))
         seen = self.eyes.measure(name, c) or seen
-        c, top = seen.centroid, seen.top
+        # its middle from its top and bottom: the camera sees an item from above, and the centre
+        # of what it sees lies near the top (an egg's: a centimetre under it, not three)
+        c, top = seen.centroid.copy(), seen.top
+        c[2] = (top + self.bottom(seen, where)) / 2
         # the hand straight down, the blade level under it: the blade's lowest edge (from the knife
         # as the camera measured it when the hand took it) goes over the item's centre, then down
         x = self.body.pose("tcp")[:3, 0]

@@ -29,6 +29,10 @@ from vap_bt.world import GoalContext
 
 #: the driver interfaces a kit needs (attributes of what skills are bound to's ``drivers``)
 REQUIRED = ("arm", "gripper", "base", "camera")
+#: s (the robot's clock) a drive goes on after the hand lost its item, before it stops: about
+#: the time the item takes to fall from where it rides (0.95 m: 0.44 s). Stopped at once, the
+#: base would leave the falling item flying on the way the base moved — onto the base's top
+SLIP_FALL = 0.5
 
 _kits: dict[int, "Kit"] = {}
 _lock = threading.Lock()
@@ -61,6 +65,7 @@ class Kit:
         self._map = None
         self._stamp = -1.0
         self.busy = threading.Lock()  # one goal moves the robot at a time
+        self._slip_at: float | None = None  # when the gripper was first found to have lost its item
         self._start()
 
     def _start(self) -> None:
@@ -89,11 +94,14 @@ class Kit:
             self._refresh()
             self.body.set_scene(self.scene.solid_boxes())  # leaves where they were last seen
             self.body.cancelled = ctx.cancelled
+            self._slip_at = None
+            self.body.slipped = self._slipped
             self.hands.progress = ctx.feedback
             try:
                 yield self
             finally:
                 self.body.cancelled = lambda: False
+                self.body.slipped = lambda: None
                 self.hands.progress = lambda p, text: None
 
     @contextmanager
@@ -107,6 +115,17 @@ class Kit:
                 yield self
             finally:
                 self.body.cancelled = lambda: False
+
+    def _slipped(self) -> str | None:
+        """Why a drive of this goal should stop: the item the hand took slipped out of it, and
+        has had the time to fall (:data:`SLIP_FALL`)."""
+        held = self.eyes.held
+        if held is None or self.body.holding():
+            return None
+        now = float(self.robot.state().stamp)
+        if self._slip_at is None:
+            self._slip_at = now
+        return f"{held.name} slipped from the gripper" if now - self._slip_at >= SLIP_FALL else None
 
     # -- what the goal says the executive believes ---------------------------------------------
 

@@ -181,7 +181,8 @@ class Navigator:
 
     def reaches(self, pose: Pose, targets, routed: bool = False) -> bool:
         """Whether the arm reaches every one of ``targets`` from the base at ``pose`` (``routed``:
-        the first by a clear way from how the arm is now)."""
+        the first by a clear way from how the arm is now, on any branch of the arm; a hand lowered
+        from above, :meth:`~skills.body.Body.from_above`, is the motion's last resort, not counted)."""
         seed = self.body.q()
         seed[:3] = pose
         for k, T in enumerate(targets):
@@ -295,8 +296,12 @@ class Navigator:
         vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
                                                                np.array([here[0], goal[1], here[2]])]
         turned = np.array([here[0], here[1], goal[2]])  # turning on the spot first swings the arm away
+        # out of a work pose (the arm over a table, the base close by): straight back first
+        facing = np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
+        backs = [here - facing * k for k in DETOUR_BACKOFFS]
         paths = [[goal], *([v, goal] for v in vias), [turned, goal], *([turned, v, goal] for v in vias),
-                 *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)])]
+                 *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)]),
+                 *([b, goal] for b in backs), *([b, v, goal] for b in backs for v in vias)]
         # the arm may reach over things only near the goal; failing that anywhere, near each stop
         # (it can swing into an open leaf there, but that is still better than the straight way)
         for slack_at_stops in (False, True):

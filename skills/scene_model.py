@@ -63,6 +63,9 @@ class Seen:
     yaw: float
     round: bool
     frame: Frame
+    #: the corners (x, y) of the box round its points turned to its longer side (``yaw``): an
+    #: item lying at a slant fills a fraction of its axis-aligned box
+    outline: np.ndarray | None = None
 
     @property
     def top(self) -> float:
@@ -77,8 +80,10 @@ class Seen:
         return self.hi - self.lo
 
     def corners(self) -> np.ndarray:
-        return np.array([[x, y, z] for x in (self.lo[0], self.hi[0]) for y in (self.lo[1], self.hi[1])
-                         for z in (self.lo[2], self.hi[2])])
+        """The eight corners of its box, turned to its longer side when the look measured that."""
+        xy = self.outline if self.outline is not None else \
+            [(x, y) for x in (self.lo[0], self.hi[0]) for y in (self.lo[1], self.hi[1])]
+        return np.array([[x, y, z] for x, y in xy for z in (self.lo[2], self.hi[2])])
 
 
 def seen_from(frame: Frame, name: str) -> Seen | None:
@@ -92,8 +97,12 @@ def seen_from(frame: Frame, name: str) -> Seen | None:
     xy = pts[:, :2] - pts[:, :2].mean(axis=0)
     evals, evecs = np.linalg.eigh(np.cov(xy.T) if len(xy) > 2 else np.eye(2))
     major = evecs[:, 1]
+    along = xy @ evecs  # the points in the (minor, major) axes
+    a0, a1 = along.min(axis=0), along.max(axis=0)
+    mid = pts[:, :2].mean(axis=0)
+    outline = np.array([mid + evecs @ np.array([u, v]) for u in (a0[0], a1[0]) for v in (a0[1], a1[1])])
     return Seen(name, pts.mean(axis=0), lo, hi, math.atan2(major[1], major[0]),
-                bool(evals[1] < 1.6 * max(evals[0], 1e-9)), frame)
+                bool(evals[1] < 1.6 * max(evals[0], 1e-9)), frame, outline)
 
 
 class Furniture:

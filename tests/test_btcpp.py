@@ -2,7 +2,7 @@
 
 The exported XML (``vap-bt export TASK``) goes into BT.CPP's own factory through the
 ``behaviortreepy`` bindings (PyPI), with a Python node registered for every ID of the export's
-``TreeNodesModel`` (ExecuteSkill, ApplyEffects, VerifyPredicate, ActivePerception, GoalCheck), and is
+``TreeNodesModel`` (ExecuteSkill, ApplyEffects, VerifyPredicate, ActivePerception, GoalCheck, FeelHand), and is
 ticked to the end. BT.CPP's ``FileLogger2`` records what BT.CPP built and ran: its dump of the
 instantiated tree (tags, names, UIDs) and every status transition, which the test reads back.
 
@@ -132,6 +132,7 @@ def run_in_btcpp(xml: str, tmp_path: Path, verdict=lambda ports: True) -> BtcppR
         "ActivePerception": lambda: factory.register_simple_decorator(
             "ActivePerception", lambda child, node: (calls.append(("ActivePerception", node.uid())), child)[1]),
         "GoalCheck": lambda: factory.register_simple_condition("GoalCheck", leaf("GoalCheck")),
+        "FeelHand": lambda: factory.register_simple_condition("FeelHand", leaf("FeelHand")),
     }
     model = declared_ports(ET.fromstring(xml))
     assert set(model) == set(registered), "a node ID of the export has no BT.CPP registration here (or vice versa)"
@@ -218,6 +219,7 @@ def test_the_bindings_cannot_declare_ports_so_the_xml_would_not_load_as_is(cli):
     factory.register_simple_action("VerifyPredicate", lambda node: S.SUCCESS)
     factory.register_simple_decorator("ActivePerception", lambda child, node: child)
     factory.register_simple_condition("GoalCheck", lambda node: S.SUCCESS)
+    factory.register_simple_condition("FeelHand", lambda node: S.SUCCESS)
     with pytest.raises(RuntimeError, match="not in the providedPorts"):
         factory.create_tree_from_text(xml)
 

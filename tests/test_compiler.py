@@ -8,6 +8,7 @@ import pytest
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
 from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.feel_hand import FeelHand
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
 
@@ -15,11 +16,24 @@ from conftest import household_profile, tree_for
 
 
 def checks(seq: py_trees.composites.Sequence) -> list[str]:
+    """The atoms a phase asks the camera about (the gripper's word, last of an effect phase, aside)."""
     out = []
     for node in seq.children:
+        if isinstance(node, FeelHand):
+            assert node is seq.children[-1] and seq.name == "eff"
+            continue
         assert isinstance(node, ActivePerception) and isinstance(node.decorated, VerifyPredicate)
         out.append(node.decorated.name)
     return out
+
+
+def test_the_gripper_is_asked_after_every_action_that_leaves_something_in_the_hand(cup):
+    task, actions = cup
+    root = tree_for(task, actions, "both")
+    felt = [any(isinstance(c, FeelHand) for c in step.children[-1].children) for step in root.children[:-2]]
+    grasp = next(i for i, a in enumerate(actions) if a.name == "grasp")
+    place = next(i for i, a in enumerate(actions) if a.name.startswith("place"))
+    assert felt == [grasp <= i < place for i in range(len(actions))]
 
 
 def test_tree_shape_for_both(cup):

@@ -47,6 +47,17 @@ def test_folded_arm_collides_with_itself(kin, checker):
     assert checker.in_collision(q)
 
 
+def test_a_held_box_collides_with_the_arm_not_with_the_hand_holding_it(kin):
+    """What the hand holds rides at the tcp: checked against the arm, not the gripper round it."""
+    q = np.array(CFG.arm.home)
+    small = CollisionChecker(kin, attached=Attached("tcp", np.eye(4), np.array([0.06, 0.06, 0.08])))  # a cup
+    assert not small.in_collision(q)
+    # a pole through the hand, as long as the arm: it meets the arm whichever way it points
+    long = [CollisionChecker(kin, attached=Attached("tcp", T, np.array([1.6, 0.04, 0.04])))
+            for T in (np.eye(4), se3.make_pose(rotation=se3.axis_angle((0.0, 0.0, 1.0), np.pi / 2)))]
+    assert any(c.in_collision(q) for c in long)
+
+
 def test_round_trip_success_rate(kin, checker):
     opt = IKOptions(seed=11)
     targets = reachable_targets(kin, checker, 400, seed=5)

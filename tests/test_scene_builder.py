@@ -52,6 +52,22 @@ def test_detections_outside_the_task_vocabulary_are_not_objects_of_the_plan():
     assert "ghost" not in b.evidence
 
 
+def test_the_floor_round_a_spot_is_looked_at_from_all_round_it_within_its_room():
+    """Where something slipped from the hand: the floor round the spot the robot stands on (and
+    under its own base), seen from stands round it, each facing it; none beyond the room's walls."""
+    task = load(TREES / "collect_cup.yaml").planning
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 3.0)),))
+    b = SceneGraphBuilder(task.knowledge, task.objects, site)
+    views = b.spot_views("kitchen", (1.0, 1.5))
+    assert 3 <= len(views) < 6  # the stands through the wall at x = 0 are not offered
+    for v in views:
+        x, y, yaw = v.base_pose
+        assert 0.0 < x < 4.0 and 0.0 < y < 3.0
+        assert v.aim.point == (1.0, 1.5, 0.0) and v.aim.names == ("floor_kitchen",)
+        assert np.hypot(x - 1.0, y - 1.5) == pytest.approx(1.1)
+        assert np.cos(yaw) * (1.0 - x) + np.sin(yaw) * (1.5 - y) == pytest.approx(1.1)  # facing the spot
+
+
 def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     """boil_water: the cup is in the closed cabinet, which no view shows into; the task file says
     so, and the belief says which source placed it."""

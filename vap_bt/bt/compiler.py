@@ -8,7 +8,7 @@ node that succeeded is not ticked again while a later one runs::
      │   ├─ Sequence "pre"   ActivePerception(K) ─ VerifyPredicate(inview cup) …
      │   ├─ ExecuteSkill(grasp, cup, table, kitchen)
      │   ├─ ApplyEffects
-     │   └─ Sequence "eff"   ActivePerception(K) ─ VerifyPredicate(holding cup) …
+     │   └─ Sequence "eff"   ActivePerception(K) ─ VerifyPredicate(holding cup) … ─ FeelHand
      ├─ …
      ├─ Sequence "goal"   ActivePerception(K) ─ VerifyPredicate(on cup counter) …
      └─ GoalCheck
@@ -22,7 +22,9 @@ conditions are expected to hold) and the deleted atoms the rest of the plan need
 those, the camera is asked about the atoms whose predicate the domain's perception profile
 (:mod:`vap_bt.perception.profile`) sources from the VLM; every other atom — proprioception's,
 the map's (rigid facts, by default), or never checked — is recorded on the context as unchecked,
-with the profile's reason, for the report. Before claiming success, the goal's
+with the profile's reason, for the report. After an action that leaves belief holding something,
+the gripper is asked whether it still does (:class:`~vap_bt.bt.feel_hand.FeelHand`, the effect
+phase's last node: proprioception, no question to the camera). Before claiming success, the goal's
 atoms are looked at once more (``goal``, with the effect checks): an effect confirmed minutes ago
 may have been undone since (a bottle rolled off the counter). The verification mode removes whole
 phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase with nothing to
@@ -39,6 +41,7 @@ from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
 from vap_bt.bt.context import ExecutionContext, Phase, Unchecked
 from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.feel_hand import FeelHand
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.domain.atoms import Literal
@@ -82,7 +85,13 @@ def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowl
         children += _checks(ctx, "pre", expected.support, action, step, knowledge)
     children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action, expected.diff)]
     if ctx.mode.eff:
-        children += _checks(ctx, "eff", expected.effects, action, step, knowledge)
+        eff = _checks(ctx, "eff", expected.effects, action, step, knowledge)
+        after = (expected.before - expected.diff.deleted) | expected.diff.added
+        if any(a.predicate == "holding" for a in after):
+            if not eff:
+                eff = [py_trees.composites.Sequence("eff", memory=True)]
+            eff[0].add_child(FeelHand(ctx, action, step))
+        children += eff
     return py_trees.composites.Sequence(f"a{step}: {action}", memory=True, children=children)
 
 

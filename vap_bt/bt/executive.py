@@ -318,7 +318,7 @@ class Executive:
                     graph.correct(lit.atom, False)
         if s.kind == "unseen" and s.atom is not None:
             self._look_at(graph, s.atom.args)
-        dropped = self._feel_hand(graph)
+        dropped = self._feel_hand(graph, s)
         involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()),
                                         *dropped)))
         portable = [o for o in involved if self._portable(o)]
@@ -353,15 +353,25 @@ class Executive:
             graph.replace_predicates(belief.ROBOT_PREDICATES - {VIEW_PREDICATE},
                                      belief.robot_facts(self.body.state(), sweep, self.builder.site_map), "look")
 
-    def _feel_hand(self, graph: SceneGraph) -> list[str]:
+    def _feel_hand(self, graph: SceneGraph, s: Situation) -> list[str]:
         """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
-        belief had in the hand: it is somewhere else now, and must be looked for."""
-        if self.body.state().gripper_holding is not False:
+        belief had in the hand: it is somewhere else now, and must be looked for. A gripper that
+        holds something belief does not, after a failed action that was to take one thing into
+        the hand, holds that thing: the action stopped after the fingers closed (a lift or a
+        withdrawal blocked), and its effects are believed as if it had reported success."""
+        felt = self.body.state().gripper_holding
+        if felt and s.kind == "execution" and s.action is not None \
+                and not any(a.predicate == "holding" for a in graph.facts):
+            took = [a for a in s.action.diff(graph.state()).added if a.predicate == "holding"]
+            if len(took) == 1:
+                graph.apply(s.action)
+            return []
+        if felt is not False:
             return []
         held = sorted(a for a in graph.facts if a.predicate == "holding")
         for a in held:
             graph.correct(a, False, cause="gripper")
-        if held and "hand_empty" in self.task.knowledge.predicates:
+        if "hand_empty" in self.task.knowledge.predicates and Atom("hand_empty") not in graph.facts:
             graph.correct(Atom("hand_empty"), True, cause="gripper")
         return [a.args[0] for a in held]
 
@@ -395,13 +405,14 @@ class Executive:
         self.progress(f"    {why or 'lost track of ' + ', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
-        # an item that slipped from the hand lies on the floor near the robot: look round there first
+        # an item that slipped from the hand lies on the floor near the robot (or under its base,
+        # if it drove on): look at the floor round where it stands first
         state = self.body.state()
-        around = tuple(self.builder.floor_views(here, state.base_pose[:2])) if here and state.base_pose else ()
+        around = tuple(self.builder.spot_views(here, state.base_pose[:2])) if here and state.base_pose else ()
         sweep = self.builder.sweep(self.camera, near, first=around)
         rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
-        if rest and not all(self.builder.placed(o, in_hand) for o in lost):
+        if rest and not all(o in in_hand or self.builder.placed(o, in_hand) for o in lost):
             self.progress(f"    not there: searching {', '.join(rest)}")
             sweep = self.builder.sweep(self.camera, rest).after(sweep)
         for o in items:

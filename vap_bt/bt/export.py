@@ -24,6 +24,7 @@ import py_trees
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
 from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.feel_hand import FeelHand
 from vap_bt.bt.goal_check import GoalCheck
 from vap_bt.bt.verify_predicate import VerifyPredicate
 
@@ -34,6 +35,7 @@ NODE_MODELS: dict[str, tuple[str, tuple[str, ...]]] = {
     "VerifyPredicate": ("Action", ("predicate", "args", "expected")),  # RUNNING while its round is in flight
     "ActivePerception": ("Decorator", ("budget", "phase")),
     "GoalCheck": ("Condition", ("goal",)),
+    "FeelHand": ("Condition", ("action", "args")),
 }
 
 
@@ -55,7 +57,7 @@ def _element(node: py_trees.behaviour.Behaviour) -> ET.Element:
     elif isinstance(node, VerifyPredicate):
         el = ET.Element("VerifyPredicate", predicate=node.atom.predicate, args=_args(node.atom.args),
                         expected=str(node.expected).lower())
-    elif isinstance(node, (ExecuteSkill, ApplyEffects)):
+    elif isinstance(node, (ExecuteSkill, ApplyEffects, FeelHand)):
         el = ET.Element(type(node).__name__, action=node.action.name, args=_args(node.action.args))
     elif isinstance(node, GoalCheck):
         el = ET.Element("GoalCheck", goal=_args(str(l) for l in node.goal))

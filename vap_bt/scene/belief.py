@@ -67,6 +67,10 @@ def robot_facts(state: RobotState, sweep: SweepRecord | None, site_map: SiteMap)
         shown = sweep.last_frame.detected() if sweep.last_frame is not None else frozenset()
         if target in shown or target in site_map.floors():
             facts.add(Atom("inview", (target,)))
+    elif sweep is not None and state.room and (room := site_map.room(state.room)) is not None and room.floor:
+        # a look round that reached no view (every way there blocked): the robot stands on its
+        # room's floor, somewhere; believing it stands nowhere would leave the planner no move
+        facts.add(Atom("robot_at", (room.floor,)))
     return facts
 
 

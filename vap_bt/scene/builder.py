@@ -51,6 +51,13 @@ FURNITURE_AIM_HEIGHT = 0.7
 #: a look round the floor: this far from the room's centre, in these directions
 FLOOR_LOOK_DISTANCE = 1.3
 FLOOR_LOOK_HEADINGS = (-math.pi / 2, 0.0, math.pi, math.pi / 2)
+#: a look at the floor round a spot (where something slipped from the hand): from stands this far
+#: from it on every side, each facing it. Not from the spot itself: the camera never sees the
+#: floor under its own base (a flat item the base drove over lies there), and a robot at work
+#: stands by furniture it cannot turn on the spot beside. From 1.1 m the wrist camera looks
+#: steeply down at the spot and sees the floor from half a metre short of it to 0.8 m past it
+SPOT_LOOK_DISTANCE = 1.1
+SPOT_LOOK_HEADINGS = tuple(k * math.pi / 3 for k in range(6))
 #: a door is looked at from this far inside the room, at this height
 DOOR_VIEW_DISTANCE = 1.6
 DOOR_AIM_HEIGHT = 0.8
@@ -140,19 +147,34 @@ class SceneGraphBuilder:
             out.append(Viewpoint(room, Aim((info.floor,)), None, f"{room} floor"))
         return out
 
-    def floor_views(self, room: str, centre: tuple[float, float] | None = None) -> list[Viewpoint]:
-        """A look round ``room``'s floor from ``centre`` (default: the room's middle); none for a
-        room the map gives no outline."""
+    def floor_views(self, room: str) -> list[Viewpoint]:
+        """A look round ``room``'s floor from its middle; none for a room the map gives no outline."""
         info = self.site_map.room(room)
         if info is None or info.bounds is None:
             return []
         x0, y0, x1, y1 = info.bounds
-        cx, cy = centre if centre is not None else ((x0 + x1) / 2, (y0 + y1) / 2)
-        where = "" if centre is None else " from where the robot stands"
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
         out = []
         for h in FLOOR_LOOK_HEADINGS:
             point = (cx + FLOOR_LOOK_DISTANCE * math.cos(h), cy + FLOOR_LOOK_DISTANCE * math.sin(h), 0.0)
-            out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor{where}, heading {h:+.2f}"))
+            out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
+        return out
+
+    def spot_views(self, room: str, spot: tuple[float, float]) -> list[Viewpoint]:
+        """A look at ``room``'s floor round ``spot`` from stands all round it in the room, each
+        facing it (see :data:`SPOT_LOOK_DISTANCE`); a stand the base does not fit at (furniture,
+        too near a wall) is the camera service's to refuse."""
+        info = self.site_map.room(room)
+        if info is None:
+            return []
+        sx, sy = spot
+        out = []
+        for h in SPOT_LOOK_HEADINGS:
+            bx, by = sx + SPOT_LOOK_DISTANCE * math.cos(h), sy + SPOT_LOOK_DISTANCE * math.sin(h)
+            if info.bounds is not None and not (info.bounds[0] < bx < info.bounds[2] and info.bounds[1] < by < info.bounds[3]):
+                continue  # through the wall: that floor is another room's, and the spot is not seen from it
+            out.append(Viewpoint(room, Aim((info.floor,), (sx, sy, 0.0)), (bx, by, _wrap(h + math.pi)),
+                                 f"{room} floor round ({sx:.2f}, {sy:.2f}), from heading {h:+.2f}"))
         return out
 
     def _supports_things(self, ptype: str) -> bool:
@@ -371,6 +393,10 @@ class SceneGraphBuilder:
             x0, y0, x1, y1 = room.bounds
             return ((x0 + x1) / 2, (y0 + y1) / 2, 0.0)
         return None
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
 
 
 def _supports(atom: Atom) -> bool:

@@ -267,8 +267,12 @@ class PybulletGripper:
             opening = target > now
             start = r.opening
             steps = max(2, math.ceil(abs(target - start) / (2 * g.velocity[0]) / sim.dt))
-            if opening and sim.injection.gripper_stuck():
+            stuck = opening and sim.injection.gripper_stuck()
+            if stuck:
                 start = target = r.opening  # the fingers do not move; the time passes
+            # fingers that do not open let nothing go (the pads jitter on a held item: the width
+            # measured may wander past the release margin without the fingers having moved)
+            opening = opening and not stuck
             for i in range(1, steps + 1):
                 if cancelled():
                     return self.state()
