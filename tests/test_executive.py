@@ -185,3 +185,6 @@ def test_a_check_that_comes_back_the_same_is_looked_at_afresh_but_does_not_stop_
     assert times == [1, 2, 3, 4, 5] and not any(stuck(slip, t) for t in times)
     assert [stuck(failed, watch.count(failed, belief)) for _ in range(3)] == [False, False, True]
     assert watch.count(failed, belief | {Atom.parse("inview(cup)")}) == 1  # another belief: a new start
+    # a precondition the camera could not make out, back the same after the fresh look, stops too
+    unseen = Situation("unseen", None, 1, Atom.parse("inview(knife)"), True, None)
+    assert [stuck(unseen, watch.count(unseen, belief)) for _ in range(3)] == [False, False, True]

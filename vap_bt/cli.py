@@ -243,6 +243,8 @@ def _examples(*lines: str) -> dict:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from vap_bt.bt.repeats import MAX_REPLANS
+
     p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans",
                                 **_examples("vap-bt run trees/collect_cup.yaml      # in the pybullet household",
                                             "vap-bt run trees/collect_cup.yaml --world symbolic",
@@ -308,7 +310,7 @@ def build_parser() -> argparse.ArgumentParser:
                          "shows enough; a surprise always gets the paper's full vote)")
     sr.add_argument("--viewpoints", choices=["vlm", "greedy"],
                     help="where to look from next: the VLM's suggestion (default) or a fixed round (paper H2)")
-    sr.add_argument("--max-replans", type=int)
+    sr.add_argument("--max-replans", type=int, help=f"replans an episode may make (default {MAX_REPLANS})")
     sr.add_argument("--planner", choices=["fast-downward", "search"], help="engine of the first plan")
     sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",
                     help="zenoh (default): skill servers in this command, reached over a loopback Zenoh link; "

@@ -20,6 +20,7 @@ from typing import Any, Callable
 from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
+from vap_bt.bt.repeats import MAX_REPLANS
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
@@ -59,7 +60,7 @@ class RunConfig:
     budget: int = 3
     paraphrases: int = 5
     early_stop: bool = False
-    max_replans: int = 10
+    max_replans: int = MAX_REPLANS
     max_seconds: float = 900.0
     injection: bool = True
     vlm: str = "sim"  # sim (world-side, offline) | sim-http | openai | gemini (see make_vlm)

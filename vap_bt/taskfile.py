@@ -12,7 +12,7 @@ the task file. Every mistake is reported once, with the file and the field or li
     scene: {rooms: [...], doors: {...}, robot: {...}, furniture: {...}, items: {...}}
     belief: ["inside(cup, cabinet)"]
     world: pybullet        # the world a run uses (symbolic, the default, or pybullet); --world overrides
-    options: {verify: both, budget: 3, max_replans: 10}
+    options: {verify: both, budget: 3, max_replans: 20}
     perception: my_household.perception.yaml   # optional; default: the one beside the domain
 
 A task with an ``instruction:`` and no ``goal:`` has its goal parsed from the words by a real VLM
@@ -44,6 +44,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validat
 
 from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal as Lit
 from vap_bt.domain.task import PlanningTask
+from vap_bt.bt.repeats import MAX_REPLANS
 from vap_bt.errors import InputError
 from vap_bt.perception.profile import locate as locate_profile, resolve as resolve_profile
 from vap_bt.scene.layout import Layout, layout_facts
@@ -57,7 +58,7 @@ class Options(BaseModel):
     verify: Verify = "both"
     budget: int = Field(3, ge=0, description="viewpoint budget K of active perception")
     paraphrases: int = Field(5, ge=1, le=5, description="N paraphrases asked per predicate")
-    max_replans: int = Field(10, ge=0)
+    max_replans: int = Field(MAX_REPLANS, ge=0, description="replans an episode may make")
     max_seconds: float = Field(900.0, gt=0, description="the episode's budget of wall-clock time")
     injection: bool = True  # Table II situation injection in the world
 

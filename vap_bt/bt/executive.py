@@ -41,7 +41,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
 from vap_bt.bt.inflight import make_executor
-from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, describe, stuck
+from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
@@ -70,7 +70,7 @@ class ExecutiveSettings:
     mode: VerifyMode = field(default_factory=VerifyMode)
     budget: int = 3
     vote: VoteSettings = field(default_factory=VoteSettings)
-    max_replans: int = 10
+    max_replans: int = MAX_REPLANS
     #: the episode's budget in wall-clock seconds (the tree is ticked as fast as work completes,
     #: so ticks measure nothing; what the robot may spend is time)
     max_seconds: float = 900.0

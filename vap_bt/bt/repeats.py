@@ -7,9 +7,14 @@ same observation and the same message) from the same belief says that repeating 
 help. :class:`RepeatWatch` counts such recurrences. On the first (:data:`LOOK_AFRESH`) the
 executive looks afresh; a skill that then fails the same way once more (:data:`STUCK`) stops the
 episode with the reason, instead of spending the replanning budget on the same motion: a motion
-planned from the same measurements fails the same way. A check that comes back the same is not
-cause to stop — an injected slip or a view the VLM could not make out may well go the other way
-the next time.
+planned from the same measurements fails the same way. A precondition the camera could not make
+out (``unseen``) that comes back the same after looking afresh stops too: the same plan brings the
+robot to the same views (an item under furniture that its find pose never shows). A check that
+came back with a value is not cause to stop — an injected slip may well go the other way the next
+time.
+
+Replanning itself is bounded by :data:`MAX_REPLANS` (the paper sets no bound; an episode needs one
+that every situation Table II injects can use).
 """
 
 from __future__ import annotations
@@ -19,16 +24,20 @@ from collections import Counter
 from vap_bt.bt.context import Situation
 from vap_bt.domain.atoms import Atom
 
+#: replans an episode may make by default: Table II injects up to seven situations in one
+#: pybullet episode and each may take two replans (the correction, then what it uncovers); with 10,
+#: a third of the failures with injection were episodes still recovering (docs/BENCHMARKS.md)
+MAX_REPLANS = 20
 #: the occurrence of an identical situation from an identical belief that re-surveys first
 LOOK_AFRESH = 2
-#: the occurrence of an identical failed execution at which the episode stops: looking afresh
-#: did not change what the skill does
+#: the occurrence of an identical failed execution (or unseen precondition) at which the episode
+#: stops: looking afresh did not change what the skill does (or what the camera is shown)
 STUCK = 3
 
 
 def stuck(s: Situation, times: int) -> bool:
     """Whether a situation seen ``times`` from the same belief ends the episode."""
-    return s.kind == "execution" and times >= STUCK
+    return s.kind in ("execution", "unseen") and times >= STUCK
 
 
 class RepeatWatch:
