@@ -58,6 +58,10 @@ CAVITY_CLEAR = 0.15  # a spot in a cavity this far from what lies in it already 
 NEAR_SPOT = 0.2  # a free spot is sought this far in from a surface's front first (less reach over it)
 PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
 PRE_PLACE = 0.16  # pre-place distance along the approach axis
+#: rad the hand leans into a front-open cavity when an item held from above cannot go in upright:
+#: the wrist rides above the hand and would strike the face above the opening (an oven's 0.3 m);
+#: leaned, the wrist stays out in front and the item is let go tilted, to settle on the floor
+FRONT_LEANS = (0.5, 0.8, 1.05)
 GRASP_FORCE = 60.0
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
@@ -72,6 +76,15 @@ DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the bas
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
 FILL_WAIT = 1.5  # s held still under the running tap (a cup fills in about one)
+
+
+def leaned(R: np.ndarray, a: np.ndarray, angle: float) -> np.ndarray:
+    """The hand's rotation ``R`` turned about the horizontal across ``a`` so that its approach
+    axis leans ``angle`` toward ``a`` (a hand pointing down tips its fingers forward, its wrist
+    back)."""
+    across = np.cross(R[:, 2], a)
+    n = float(np.linalg.norm(across))
+    return R if angle == 0.0 or n < 1e-6 else se3.axis_angle(across / n, angle) @ R
 
 
 def how(a) -> str:
@@ -486,12 +499,12 @@ class Hands:
         else:
             spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
 
-        def targets(base, at=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        def targets(base, at=None, lean: float = 0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             """The hand's place pose, its pre-pose and the item's corners there, for the hand
-            carried to the base pose ``base`` and stood up as it was taken, the item over ``at``
-            (default: the spot)."""
+            carried to the base pose ``base`` and stood up as it was taken (then leaned ``lean``
+            toward ``a``), the item over ``at`` (default: the spot)."""
             T = self.body.base_T(base) @ np.linalg.inv(self.body.base_T()) @ self.body.pose("tcp")
-            T[:3, :3] = held.upright(T[:3, :3], a)
+            T[:3, :3] = leaned(held.upright(T[:3, :3], a), a, lean)
             corners = held.corners_at(T)
             c = corners.mean(axis=0)
             target = (spot if at is None else at).copy()
@@ -513,6 +526,9 @@ class Hands:
             here = self.body.base_pose()
             spot = self.spot_in_cavity(where, name, spot, lambda at: self.nav.reaches(here, reach(here, at), routed=True))
         G, _, corners = targets(self.body.base_pose())
+        if cav is not None and cav.open == "front" and not self.straight_in(G, a, where, corners):
+            G, corners = next(((g, c) for lean in FRONT_LEANS for g, _, c in [targets(self.body.base_pose(), lean=lean)]
+                               if self.straight_in(g, a, where, c)), (G, corners))
         self.progress(0.2, "pre-place")
         pre = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))
         if pre is None:
@@ -536,6 +552,18 @@ class Hands:
         if self.body.holding():  # the fingers opened on nothing they could let go of
             return Outcome(True, f"{name} still in the gripper")
         return Outcome(True)
+
+    def straight_in(self, G: np.ndarray, a: np.ndarray, container: str, corners, steps: int = 4) -> bool:
+        """Whether the hand can go straight from its pre-place pose into ``G`` in ``container``
+        with the arm and the held item (at ``corners`` there) clear of the scene: the last
+        stretch is moved unchecked (:meth:`Body.line`), so it is checked here, without moving."""
+        pre = self.pre_pose(G, a, container, PRE_PLACE, list(corners))[0]
+        q = self.body.solve(pre)
+        for k in range(1, steps + 1):
+            if q is None:
+                return False
+            q = self.body.solve(se3.interpolate(pre, G, k / steps), seed=q)
+        return q is not None
 
     def drop_nearby(self) -> None:
         """Let the held item fall to the floor beside the robot."""

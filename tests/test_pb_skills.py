@@ -111,6 +111,25 @@ def test_placein_puts_the_held_item_into_the_container(worlds):
     assert seen(w, ("wood1", "basket"))["wood1"] >= 0.5
 
 
+def test_an_item_held_from_above_goes_into_the_oven_leaned():
+    """The oven's opening is 0.3 m high: a pie taken from above cannot go in upright (the wrist
+    rides over the hand and strikes the face above the opening). heat_pie's seed 4 takes the pie
+    off the counter from above; upright, every placein stopped on the blocked arm and the episode
+    ended stuck. Leaned in, the pie is let go tilted and settles inside."""
+    from vap_bt.runner import RunConfig, Session
+    from vap_bt.taskfile import load
+
+    task = load(TREES / "heat_pie.yaml")
+    session = Session(task, RunConfig.from_task(task, world="pybullet", seed=4, injection=False, transport="inproc"))
+    try:
+        r = session.episode()
+    finally:
+        session.close()
+    placed = [a for a in r["actions_executed"] if a["action"].startswith("placein(apple_pie, oven")]
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+    assert placed and all(a["state"] == "succeeded" for a in placed), placed
+
+
 def test_a_held_item_does_not_hide_what_the_camera_looks_at(worlds):
     # the knife, rigid in the wrist camera's view, lay across the egg: the aim turns past it
     w = worlds("halve_egg")
