@@ -49,6 +49,8 @@ ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furn
 #: camera's eye line is looked at from further back, to see its top
 STANDOFF, TALL_STANDOFF, TALL = 1.05, 1.8, 1.0
 FLOOR_STANDOFF = 0.72  # base centre to a floor item, from the corridor side
+CORRIDOR_SLACK = 0.3  # m past the corridor's middle the robot may stand to look at a floor item
+FLOOR_NEAREST = 0.5  # base centre to a floor item at least (the base's half length and a margin)
 DOOR_VIEW = 1.8  # base centre to a doorway when looking at its door: the whole leaf in the frame
 DOOR_STOP = 0.95  # base centre to a doorway when it stops in front of it on a trip
 #: a door counts as open for the base to pass once it has swung this share of its travel
@@ -95,7 +97,14 @@ class Navigator:
         if sup is not None:
             lateral = float(np.clip(sup.local(point)[0], -sup.width / 2, sup.width / 2))
             return self._front_of(sup.name, lateral)
-        return (float(point[0]), float(min(point[1] + FLOOR_STANDOFF, self.scene.corridor_y() + 0.3)), -math.pi / 2)
+        # on the floor: from the corridor's side, at most a little past its middle (the far side
+        # is the furniture's); an item so far past it that the pose would stand on it (a cup that
+        # slipped from the hand beside the base, kicked away by the next drive) is looked at from
+        # the near side, facing the other way
+        y = min(point[1] + FLOOR_STANDOFF, self.scene.corridor_y() + CORRIDOR_SLACK)
+        if abs(y - point[1]) >= FLOOR_NEAREST:
+            return (float(point[0]), float(y), -math.pi / 2)
+        return (float(point[0]), float(point[1] - FLOOR_STANDOFF), math.pi / 2)
 
     def _front_of(self, name: str, lateral: float = 0.0) -> Pose:
         f = self.scene.furniture[name]
