@@ -111,9 +111,11 @@ class Held:
 class Eyes:
     """Aim the wrist camera, take frames, and measure items in them."""
 
-    def __init__(self, body: Body, camera: WristCamera, level_with=lambda point: False) -> None:
+    def __init__(self, body: Body, camera: WristCamera, level_with=lambda point: False,
+                 noticed=lambda frame, held: None) -> None:
         self.body, self.camera = body, camera
         self.level_with = level_with  # points seen only from their own height (inside a hollow)
+        self.noticed = noticed  # told of every frame taken, and of the item in the hand
         self._held: Held | None = None
         self.cam = body.cfg.camera
         self._aim: tuple[np.ndarray, np.ndarray] | None = None  # point, camera pose of the last aim
@@ -198,7 +200,9 @@ class Eyes:
     # -- seeing --------------------------------------------------------------------------------
 
     def frame(self) -> Frame:
-        return self.camera.capture()
+        frame = self.camera.capture()
+        self.noticed(frame, None if self._held is None else self._held.name)
+        return frame
 
     def measure(self, name: str, point, allow_base: bool = False) -> Seen | None:
         """Look at ``point`` (where ``name`` is believed to be) and measure ``name`` in the frame;

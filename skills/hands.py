@@ -311,10 +311,10 @@ class Hands:
 
     def _base_step_free(self, d: np.ndarray, out: float) -> bool:
         x, y, yaw = self.body.base_pose()
-        obstacles = self.scene.obstacles()
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles((x, y, yaw))
         from vap_bt.motion.footprint import base_free
 
-        return all(base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, 0.015)
+        return all(base_free((x + d[0] * out * s, y + d[1] * out * s, yaw), obstacles, 0.015, low=low)
                    for s in np.linspace(0.25, 1.0, 4))
 
     def pre_pose(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float,

@@ -61,7 +61,8 @@ class Kit:
         self.robot = robot
         d = robot.drivers
         self.body = Body(d.arm, d.gripper, d.base)
-        self.eyes = Eyes(self.body, d.camera, level_with=lambda p: self.scene.in_front_cavity(p))
+        self.eyes = Eyes(self.body, d.camera, level_with=lambda p: self.scene.in_front_cavity(p),
+                         noticed=lambda frame, held: self.scene.note_items(frame, held))
         self._map = None
         self._stamp = -1.0
         self.busy = threading.Lock()  # one goal moves the robot at a time

@@ -97,12 +97,16 @@ class Navigator:
         if sup is not None:
             lateral = float(np.clip(sup.local(point)[0], -sup.width / 2, sup.width / 2))
             return self._front_of(sup.name, lateral)
-        # on the floor: from the corridor's side, at most a little past its middle (the far side
-        # is the furniture's); an item so far past it that the pose would stand on it (a cup that
-        # slipped from the hand beside the base, kicked away by the next drive) is looked at from
-        # the near side, facing the other way
-        y = min(point[1] + FLOOR_STANDOFF, self.scene.corridor_y() + CORRIDOR_SLACK)
-        if abs(y - point[1]) >= FLOOR_NEAREST:
+        # on the floor: from the corridor's side, facing it, at most a little past the corridor's
+        # middle (the far side is the furniture's). An item near that line is looked at from its
+        # near side, facing the furniture: a pose held short of it stood on a slipped cup, facing
+        # away, and the drive there kicked it under the cabinet. One well past the line is looked at
+        # from the line, facing away as before: facing it, the grasp of a knife half under a table
+        # picks another work pose whose last, unchecked stretch strikes the table's edge (the
+        # arm's last stretch is not yet checked against the scene: see Hands.straight_in)
+        cap = self.scene.corridor_y() + CORRIDOR_SLACK
+        y = min(point[1] + FLOOR_STANDOFF, cap)
+        if y - point[1] >= FLOOR_NEAREST or point[1] >= cap + FLOOR_NEAREST:
             return (float(point[0]), float(y), -math.pi / 2)
         return (float(point[0]), float(point[1] - FLOOR_STANDOFF), math.pi / 2)
 
@@ -138,13 +142,13 @@ class Navigator:
         walls, furniture and leaves as last seen. The plain pose comes last (if ``plain``)."""
         f, r = self._work_axis(point, toward, how, clear_of)
         side = np.array([-f[1], f[0], 0.0])
-        obstacles = self.scene.obstacles()
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
         for back in WORK_BACKOFFS:
             p = np.asarray(point) + f * (r + back)
             for shift in WORK_SHIFTS:
                 q = p + side * shift
                 pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
-                if base_free(pose, obstacles, WORK_MARGIN):
+                if base_free(pose, obstacles, WORK_MARGIN, low=low):
                     yield pose
         if plain:
             yield self._plain_pose(point, toward, how, clear_of)
@@ -226,8 +230,8 @@ class Navigator:
         here = self.scene.room_at(x, y)
         if here is None or (room is not None and here != room):
             return False
-        obstacles = self.scene.obstacles()
-        return any(base_free((x, y, yaw), obstacles, PARKED_MARGIN) for yaw in (0.0, math.pi / 2))
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
+        return any(base_free((x, y, yaw), obstacles, PARKED_MARGIN, low=low) for yaw in (0.0, math.pi / 2))
 
     # -- getting there -----------------------------------------------------------------------
 
@@ -299,7 +303,7 @@ class Navigator:
         here = np.array(self.body.base_pose(), float)
         goal = np.array(pose, float)
         goal[2] = angle_to(here[2], goal[2])
-        obstacles = self.scene.obstacles()
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles(tuple(here))
         arm = self.arm_outline()
         heading = np.array([math.cos(goal[2]), math.sin(goal[2]), 0.0])
         vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
@@ -316,7 +320,7 @@ class Navigator:
         for slack_at_stops in (False, True):
             for path in paths:
                 legs = [here, *path]
-                if all(self._leg_clear(a, b, b if slack_at_stops else (goal if reach_over else None), obstacles, arm)
+                if all(self._leg_clear(a, b, b if slack_at_stops else (goal if reach_over else None), obstacles, arm, low)
                        for a, b in zip(legs, legs[1:])):
                     return [tuple(map(float, p)) for p in path]
         return None
@@ -332,7 +336,8 @@ class Navigator:
         return hull(np.vstack(pts))
 
     @staticmethod
-    def _leg_clear(a: np.ndarray, b: np.ndarray, slack_at: np.ndarray | None, obstacles, arm=FOLDED_ARM) -> bool:
+    def _leg_clear(a: np.ndarray, b: np.ndarray, slack_at: np.ndarray | None, obstacles, arm=FOLDED_ARM,
+                   low=()) -> bool:
         """A straight base move from ``a`` to ``b`` keeps the footprint off every obstacle once it
         has left ``a``, and the arm too except near ``slack_at`` (the path's goal, where it works
         over the furniture; None: nowhere — a via pose gets no slack, the arm would sweep into an
@@ -345,6 +350,7 @@ class Navigator:
             q = a + (b - a) * s
             if way(a, q) < LEAVE_SLACK:
                 continue
-            if not base_free(q, obstacles, PARKED_MARGIN, folded=slack_at is None or np.linalg.norm((slack_at - q)[:2]) > ARM_SLACK, arm=arm):
+            if not base_free(q, obstacles, PARKED_MARGIN, folded=slack_at is None or np.linalg.norm((slack_at - q)[:2]) > ARM_SLACK,
+                             arm=arm, low=low):
                 return False
         return True

@@ -24,11 +24,16 @@ import numpy as np
 
 from vap_bt.motion import se3
 from vap_bt.motion.collision import SceneBoxes
-from vap_bt.motion.footprint import Obb
+from vap_bt.motion.footprint import Obb, apart, footprint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import Articulation, FurnitureInfo, SiteMap
 from vap_bt.scene.pointcloud import instance_cloud
 
+#: an item whose points reach within this of the floor and stay below FLOOR_ITEM_TOP lies on the
+#: floor (m)
+FLOOR_TOUCH, FLOOR_ITEM_TOP = 0.06, 0.3
+#: m the base already is from a floor item when it counts as touching it (see low_obstacles)
+LOW_MARGIN = 0.01
 #: walls are where the map's room outlines are, this thick and high (a SLAM map's walls)
 WALL_THICKNESS = 0.08
 WALL_HEIGHT = 2.0
@@ -282,8 +287,38 @@ class SceneModel:
         self.leaves = {f.name: Leaf(f.name, f.articulation) for f in site.furniture if f.articulation}
         self.leaves.update({d.name: Leaf(d.name, d.articulation) for d in site.doors if d.articulation})
         self.joint: dict[str, float] = {}  # where each leaf was last seen or left
+        #: items last seen lying on the floor, as boxes: the base keeps off them (a drive into a
+        #: dropped cup kicks it under the furniture, where no look finds it again)
+        self.floor_items: dict[str, Obb] = {}
 
     # -- where things are, by the map --------------------------------------------------------
+
+    def note_items(self, frame: Frame, held: str | None = None) -> None:
+        """Remember where the frame shows items lying on the floor (their points reach down to
+        it and stay low); an item the frame shows anywhere else — or the one in the hand — is no
+        longer on the floor."""
+        if held is not None:
+            self.floor_items.pop(held, None)
+        mapped = self.site.static_names()
+        for d in frame.detections:
+            if d.name in mapped or d.name == held:
+                continue
+            cloud = instance_cloud(frame, d)
+            if cloud is None or not len(cloud.points):
+                continue
+            pts = np.asarray(cloud.points)
+            lo, hi = pts.min(axis=0), pts.max(axis=0)
+            if lo[2] < FLOOR_TOUCH and hi[2] < FLOOR_ITEM_TOP:
+                self.floor_items[d.name] = Obb.aabb((lo[0], lo[1], 0.0), (hi[0], hi[1], hi[2]))
+            else:
+                self.floor_items.pop(d.name, None)
+
+    def low_obstacles(self, base_now=None) -> list[np.ndarray]:
+        """Outlines of the items on the floor, for the base alone (the arm passes over them);
+        one the base at ``base_now`` already touches is left out: the way off it must stay open."""
+        here = None if base_now is None else footprint(base_now)
+        polys = [b.polygon() for b in self.floor_items.values()]
+        return [p for p in polys if here is None or apart(here, p, LOW_MARGIN)]
 
     def in_front_cavity(self, p) -> bool:
         """Whether ``p`` lies in the hollow of a front-opening container (a microwave, a cabinet):

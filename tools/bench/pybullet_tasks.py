@@ -25,6 +25,7 @@ from __future__ import annotations
 import argparse
 import json
 import multiprocessing as mp
+import signal
 import statistics
 import sys
 import time
@@ -80,6 +81,8 @@ def main(argv: list[str] | None = None) -> int:
             for inj in modes for p in paths]
     rows: list[dict] = []
     t0 = time.perf_counter()
+    # a kill stops the workers too, as Ctrl-C does: the pool's processes are not left running
+    signal.signal(signal.SIGTERM, signal.default_int_handler)
     pool = mp.get_context("spawn").Pool(args.jobs, maxtasksperchild=4)
     try:
         for r in pool.imap_unordered(episode, jobs):

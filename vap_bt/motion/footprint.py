@@ -98,8 +98,11 @@ def footprint(pose) -> np.ndarray:
     return placed([(L, W), (-L, W), (-L, -W), (L, -W)], pose)
 
 
-def base_free(pose, obstacles: list[np.ndarray], margin: float, folded: bool = False, arm=FOLDED_ARM) -> bool:
+def base_free(pose, obstacles: list[np.ndarray], margin: float, folded: bool = False, arm=FOLDED_ARM,
+              low: list[np.ndarray] = ()) -> bool:
     """The base (and, if ``folded``, the arm above it: ``arm``'s outline in the base frame, the
-    folded arm's by default) keeps ``margin`` off every obstacle."""
-    shapes = [footprint(pose)] + ([placed(arm, pose)] if folded else [])
-    return all(apart(s, o, margin) for s in shapes for o in obstacles)
+    folded arm's by default) keeps ``margin`` off every obstacle; the base alone keeps it off the
+    ``low`` ones (items on the floor, which the arm passes over)."""
+    base = footprint(pose)
+    shapes = [base] + ([placed(arm, pose)] if folded else [])
+    return all(apart(s, o, margin) for s in shapes for o in obstacles) and all(apart(base, o, margin) for o in low)
