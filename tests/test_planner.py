@@ -79,3 +79,24 @@ def test_replan_of_a_seen_state_comes_from_the_cache():
     first = planner.plan()
     assert planner.replan(task.init).engine == "cache"
     assert planner.replan(task.init).actions == first.actions
+
+
+def test_fast_downward_runs_side_by_side_in_one_folder(tmp_path):
+    """Fast Downward's driver puts its translated task in the working directory by default: two
+    planners at once from one folder searched each other's task (the task benchmark's workers
+    crashed on a plan naming another task's floor). Each run keeps its own: eight ``vap-bt
+    plan`` processes at once in one folder all plan their own problem."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    problems = [("gripper", "gripper-p4.pddl"), ("blocksworld", "blocksworld-p6.pddl"),
+                ("logistics", "logistics-p1.pddl"), ("depots", "depots-p1.pddl")] * 2
+    vap_bt = Path(sys.executable).parent / "vap-bt"
+    procs = [subprocess.Popen([str(vap_bt), "plan", str(DOMAINS / f"{d}-domain.pddl"), str(DOMAINS / p)],
+                              cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+             for d, p in problems]
+    outs = [proc.communicate(timeout=120) for proc in procs]
+    for (_, p), proc, (out, err) in zip(problems, procs, outs):
+        assert proc.returncode == 0 and "fast-downward" in out + err and "0: " in out, f"{p}: {err[-400:]}"
+    assert not list(tmp_path.iterdir())  # nothing left in the working folder

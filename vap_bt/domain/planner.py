@@ -24,10 +24,16 @@ the validator's 20–70 ms per call, times every tail tried, would dominate repl
 Tasks with action costs are planned with them: Fast Downward runs a cost-aware weighted A*
 (``lazy_wastar`` with the FF heuristic; its default, ``lama-first``, ignores costs) and the
 in-process search orders its queue by g + w·h over the costs.
+
+Fast Downward's driver writes its translated task (``output.sas``) to the working directory
+unless told otherwise; two planners running at once from one folder (two runs, or a benchmark's
+workers) then search each other's task. Ours keeps it beside the plan file, in the engine's own
+temporary folder (:func:`private_fast_downward`).
 """
 
 from __future__ import annotations
 
+import os
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -159,14 +165,13 @@ class Planner:
 
     def _fast_downward(self, task: PlanningTask) -> tuple[list[GroundAction], str]:
         from unified_planning.engines import PlanGenerationResultStatus as S
-        from unified_planning.shortcuts import OneshotPlanner
 
         params = {"fast_downward_search_config": FD_COST_CONFIG} if task.knowledge.has_costs else {}
         with warnings.catch_warnings():
             # integral PDDL ``number`` costs are reals to unified-planning, which then cannot tell
             # whether Fast Downward takes them (it does; requirements.check_costs saw they are integers)
             warnings.simplefilter("ignore")
-            with OneshotPlanner(name="fast-downward", params=params) as engine:
+            with private_fast_downward(**params) as engine:
                 result = engine.solve(task.to_up(), timeout=self.fd_timeout_s)
         if result.status in (S.SOLVED_SATISFICING, S.SOLVED_OPTIMALLY):
             k = task.knowledge
@@ -188,3 +193,19 @@ class Planner:
                                f"our grounding {sum(a.cost for a in actions)}")
         self._cache[(task.init, task.goal)] = tuple(actions)
         return Plan(actions, engine, time.perf_counter() - t0)
+
+
+def private_fast_downward(**params):
+    """unified-planning's Fast Downward engine with the translator's output in the engine's own
+    temporary folder, beside its plan file, instead of the working directory (see the module's
+    docstring)."""
+    from up_fast_downward import FastDownwardPDDLPlanner
+
+    class PrivateFastDownward(FastDownwardPDDLPlanner):
+        def _base_cmd(self, plan_filename: str) -> list[str]:
+            python, driver, *rest = super()._base_cmd(plan_filename)
+            return [python, driver, "--sas-file", os.path.join(os.path.dirname(plan_filename), "output.sas"), *rest]
+
+    engine = PrivateFastDownward(**params)
+    engine.error_on_failed_checks = False  # as OneshotPlanner(name=...) makes it: see _fast_downward
+    return engine
