@@ -306,17 +306,26 @@ class Body:
         """Move ``frame`` along a straight line to ``target`` (orientation interpolated). A line is
         the last stretch to a contact (into a grasp, onto a support), where the hand must come near
         the furniture: by default it is not kept off the scene's boxes."""
-        start, qs, seed = self.pose(frame), [], self.q()
+        qs = self.line_way(self.pose(frame), target, self.q(), frame, steps, collide)
+        if not qs:
+            return False
+        self.through(qs, speed, check=False)
+        return len(qs) == steps
+
+    def line_way(self, start: np.ndarray, target: np.ndarray, seed: np.ndarray, frame: str = "tcp",
+                 steps: int = 5, collide: bool = False) -> list[np.ndarray]:
+        """Body joints at ``steps`` even points of ``frame``'s straight line from ``start`` to
+        ``target`` (orientation interpolated), each solved from the last (the first from
+        ``seed``); as far as IK follows the line: fewer than ``steps`` where it stops. Plans, does
+        not move."""
+        qs: list[np.ndarray] = []
         for k in range(1, steps + 1):
             q = self.solve(se3.interpolate(start, target, k / steps), frame, seed, collide=collide)
             if q is None:
                 break
             qs.append(q)
             seed = q
-        if not qs:
-            return False
-        self.through(qs, speed, check=False)
-        return len(qs) == steps
+        return qs
 
     def drive(self, poses: list[tuple[float, float, float]], speed: float = 1.0) -> None:
         """Drive the base through ``poses`` (x, y, yaw), the arm held as it is. A drive stops when

@@ -559,11 +559,7 @@ class Hands:
         stretch is moved unchecked (:meth:`Body.line`), so it is checked here, without moving."""
         pre = self.pre_pose(G, a, container, PRE_PLACE, list(corners))[0]
         q = self.body.solve(pre)
-        for k in range(1, steps + 1):
-            if q is None:
-                return False
-            q = self.body.solve(se3.interpolate(pre, G, k / steps), seed=q)
-        return q is not None
+        return q is not None and len(self.body.line_way(pre, G, q, steps=steps, collide=True)) == steps
 
     def drop_nearby(self) -> None:
         """Let the held item fall to the floor beside the robot."""
