@@ -16,7 +16,8 @@ is replaced at once by another (a frame from the same spot would show the same p
 when no direction is left, or the check is about the hand or what it holds (the wrist camera
 moves with the hand: no base move shows it better), the views so far are all there are. With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
-atom's objects, and every such view, agreed on it; otherwise the check is *unsettled* (the paper
+atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
+way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper
 returns the last vote here; one vote from a view the VLM judged insufficient is too close to a
 guess to rewrite the scene graph).
 
