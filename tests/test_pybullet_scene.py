@@ -75,3 +75,26 @@ def test_capture_renders_where_the_camera_is_and_never_moves_the_arm():
         assert np.abs(np.subtract(d.arm.joint_state().positions, q)).max() > 0.05
     finally:
         world.close()
+
+
+def test_a_knife_lying_askew_in_plain_view_counts_as_seen_whole():
+    """halve_egg seed 1: a knife dropped on the kitchen floor at an angle counted as a quarter
+    visible from every side (its pixels over the projection of its axis-aligned box, which a thin
+    blade at 45 degrees fills a tenth of), so no view of it was ever judged sufficient. Its own
+    box, turned with it, is what it can fill."""
+    import math
+
+    import pybullet as pb
+
+    world = PybulletWorld(load(TREES[0].parent / "cut_lemon.yaml"), injection=False)
+    try:
+        x, y, yaw = world.drivers.base.pose()
+        knife = world.scene.things["knife"]
+        spot = (x + 1.0 * math.cos(yaw), y + 1.0 * math.sin(yaw), 0.03)
+        pb.resetBasePositionAndOrientation(knife.body, spot, pb.getQuaternionFromEuler((0, 0, yaw + 0.8)),
+                                           physicsClientId=world.scene.client)
+        obs = camera(world).capture(world.aim_at(("knife",)))
+        assert "knife" in obs.detected()
+        assert world.captures.get(obs.frame_id).visibility["knife"] > 0.6
+    finally:
+        world.close()

@@ -207,6 +207,21 @@ def test_sim_vlm_sees_a_large_thing_the_frame_cuts_as_plainly_as_a_whole_one():
     assert sum(asked(0.02, "sufficiency")) < 0.2 * 400
 
 
+def test_sim_vlm_sees_a_door_filling_half_the_image_whatever_fraction_the_record_computed():
+    """store_firewood seed 0: the camera in a doorway, the door covering half the image, its
+    computed visible fraction 0 (the door's box reached behind the camera, so its projection
+    was unbounded). The mask decides: the view is sufficient and the answers right."""
+    oracle = FunctionOracle(lambda a: True, lambda: [])
+    masks = {"door": (("left", "right", "top"), 0.53)}
+    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {"door": 0.0}, oracle, lambda: 0, masks=masks) for i in range(200)}
+    vlm = SimVLM(records.get, error_rate=0.05, seed=3)
+    door = Atom("open", ("door",))
+    for purpose in ("predicate", "sufficiency"):
+        got = [vlm.ask(Query("q", purpose=purpose, about=(door,), objects=("door",)), Frame(f"f-{i}", 0.0)).value
+               for i in range(200)]
+        assert sum(got) > 0.9 * 200, purpose
+
+
 def rnd(answers: str, sufficient: bool | None) -> Round:
     """A round from answers like "yyyyn" (y/n/? for yes/no/abstained), voted as the paper votes."""
     vals = [{"y": True, "n": False, "?": None}[c] for c in answers]
@@ -281,11 +296,13 @@ def test_sim_vlm_probabilities_say_something_about_being_right_but_overstate_it(
 
 def test_sim_vlm_reads_where_to_look_off_the_frame():
     """Cut by the image's right edge: move right; tiny: come closer; mostly hidden: look from
-    above; never in the picture: a guess among the options."""
+    above; whole and in plain view: closer; cut by the top: step back; never in the picture: a
+    guess among the options."""
     oracle = FunctionOracle(lambda a: True, lambda: [])
-    shows = {"right": ({"cup": 0.7}, {"cup": (("right",), 0.05)}), "closer": ({"cup": 0.9}, {"cup": ((), 0.002)}),
-             "above": ({"cup": 0.3}, {"cup": ((), 0.05)})}
-    for want, (vis, masks) in shows.items():
+    shows = [("right", {"cup": 0.7}, {"cup": (("right",), 0.05)}), ("closer", {"cup": 0.9}, {"cup": ((), 0.002)}),
+             ("above", {"cup": 0.3}, {"cup": ((), 0.05)}), ("closer", {"cup": 1.0}, {"cup": ((), 0.05)}),
+             ("front", {"cup": 0.6}, {"cup": (("top",), 0.3)})]
+    for want, vis, masks in shows:
         records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, vis, oracle, lambda: 0, masks=masks) for i in range(40)}
         vlm = SimVLM(records.get, error_rate=0.0, seed=5)
         got = {vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(40)}

@@ -5,10 +5,13 @@ a segmentation mask. We turn the depth buffer into metres (``far*near / (far - (
 the mask into body ids (``seg & 0xFFFFFF``), and body ids into object names through the scene.
 
 Visibility of an object is the number of its visible pixels divided by its *unoccluded* projected
-size. The latter is estimated without a second render: the object's bounding box corners are
-projected into the image and the area of their convex hull (the union of the hulls of its links'
-boxes, for furniture with leaves: an open door does not make the carcass look hidden) is scaled by a
-fill factor for the object's shape (a sphere fills about half the hull of its box, a box nearly all of it).
+size. The latter is estimated without a second render: the corners of the object's box are projected
+into the image and the area of their convex hull (the union of the hulls of its links' boxes, for
+furniture with leaves: an open door does not make the carcass look hidden) is scaled by a fill
+factor for the object's shape (a sphere fills about half the hull of its box, a box nearly all of
+it). An item's box turns with the item (a knife lying at 45 degrees fills a tenth of its
+axis-aligned box, and counted as a quarter visible seen whole); furniture's boxes are
+axis-aligned, as it stands.
 A room door is seen as its doorway: the pixels inside its closed leaf's outline that show the leaf
 or the room beyond (an open door is seen by seeing through it), over that outline's area. It counts
 parts outside the frame as not visible, which is what a camera would show. The estimate is a
@@ -90,10 +93,14 @@ def name_image(r: Render, names: dict[int, str], ids: dict[str, int]) -> np.ndar
     return out
 
 
-def _projected(r: Render, box: tuple[float, ...]) -> np.ndarray | None:
-    """Image points of an axis-aligned box's corners (None when it is all behind the camera)."""
+def box_corners(box: tuple[float, ...]) -> np.ndarray:
+    """The eight corners (8, 3) of an axis-aligned box (x0, y0, z0, x1, y1, z1)."""
     lo, hi = np.array(box[:3]), np.array(box[3:])
-    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+    return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+
+
+def _projected(r: Render, corners: np.ndarray) -> np.ndarray | None:
+    """Image points of a box's corners (None when it is all behind the camera)."""
     inv = np.linalg.inv(r.pose)
     pc = (inv[:3, :3] @ corners.T).T + inv[:3, 3]
     if np.all(pc[:, 2] < r.camera.near):
@@ -103,9 +110,10 @@ def _projected(r: Render, box: tuple[float, ...]) -> np.ndarray | None:
     return np.stack([c.fx * pc[:, 0] / z + c.cx, c.fy * pc[:, 1] / z + c.cy], axis=1).astype(np.float32)
 
 
-def projected_area(r: Render, boxes: list[tuple[float, ...]]) -> float:
-    """Area (pixels) of the union of the convex hulls of the boxes' projected corners: exact for
-    one box, rasterised on a canvas three images wide for several (a carcass and its leaves)."""
+def projected_area(r: Render, boxes: list[np.ndarray]) -> float:
+    """Area (pixels) of the union of the convex hulls of the boxes' projected corners (each box
+    given by its eight corners): exact for one box, rasterised on a canvas three images wide for
+    several (a carcass and its leaves)."""
     hulls = [cv2.convexHull(uv) for uv in (_projected(r, b) for b in boxes) if uv is not None]
     if len(hulls) <= 1:
         return float(cv2.contourArea(hulls[0])) if hulls else 0.0
@@ -117,7 +125,7 @@ def projected_area(r: Render, boxes: list[tuple[float, ...]]) -> float:
     return float(np.count_nonzero(canvas))
 
 
-def visibility(r: Render, counts: dict[str, int], boxes: dict[str, list[tuple[float, ...]]], fills: dict[str, float]) -> dict[str, float]:
+def visibility(r: Render, counts: dict[str, int], boxes: dict[str, list[np.ndarray]], fills: dict[str, float]) -> dict[str, float]:
     """Visible fraction of each named object (see the module docstring for the proxy)."""
     out = {}
     for name, parts in boxes.items():
@@ -135,8 +143,7 @@ def doorway_pixels(r: Render, center, half, normal, bodies: set[int]) -> tuple[i
     the leaf or reach past the doorway's plane (an open door is seen by seeing through it), that
     projection's whole area (pixels, parts outside the image included), and the image edges
     those pixels touch (as :func:`mask_extents` gives them for a body)."""
-    box = (*(np.asarray(center) - half), *(np.asarray(center) + half))
-    uv = _projected(r, box)
+    uv = _projected(r, box_corners((*(np.asarray(center) - half), *(np.asarray(center) + half))))
     if uv is None:
         return 0, 0.0, ()
     hull = cv2.convexHull(uv)

@@ -28,6 +28,7 @@ import numpy as np
 import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.sim.pb_camera import box_corners
 from vap_bt.sim.pb_catalog import Catalog
 from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_scene import Scene, Thing
@@ -67,6 +68,23 @@ class Truth:
                 if a[0] > c[0]:  # a link without shapes
                     continue
                 out.append((*map(float, a), *map(float, c)))
+        return out
+
+    def outline(self, name: str) -> list[np.ndarray]:
+        """The corners (8, 3) of every box the thing fills: an item's own box, turned with it
+        (a half after a cut: half its length), else :meth:`link_boxes`."""
+        t = self.scene.things[name]
+        if t.item is None or t.kind is None:
+            return [box_corners(b) for b in self.link_boxes(name)]
+        ex = np.array(t.kind.extent, float)
+        if t.states.get("sliced"):
+            ex[0] /= 2
+        unit = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]) * ex
+        out = []
+        for b in t.bodies:
+            p, q = pb.getBasePositionAndOrientation(b, physicsClientId=self.scene.client)
+            R = np.array(pb.getMatrixFromQuaternion(q)).reshape(3, 3)
+            out.append(unit @ R.T + np.asarray(p))
         return out
 
     def center(self, name: str) -> np.ndarray:

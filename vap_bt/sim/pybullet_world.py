@@ -295,7 +295,7 @@ class PybulletWorld:
         masks = name_image(r, {b: n for b, n in names.items() if n in ids}, ids)
         dets = tuple(Detection(n, self._label(n), int(counts[n]), ids[n]) for n in seen)
         # the simulated VLM's record: how much of each object this frame shows (world side only)
-        boxes = {n: self.truth.link_boxes(n) for n in counts if n in self.scene.things}
+        boxes = {n: self.truth.outline(n) for n in counts if n in self.scene.things}
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
         vis.update({n: min(1.0, k / (a * FILL["door"])) if a > 0 else 0.0 for n, (k, a, _) in doorways.items()})
         extents = mask_extents(r, names)

@@ -10,7 +10,7 @@ strategy asked. Its parameters are fixed here with their reasons and printed in 
 **How well a frame shows a thing.** Its *visibility* is the fraction of it the frame shows (from
 the camera's record: occlusion and the parts the frame cuts off both count against it), except
 that a thing covering at least ``PLAIN_SHARE`` (a tenth) of the image is plainly in the picture,
-as well seen as a wholly visible one. A model
+as well seen as a wholly visible one, whatever fraction of it the frame shows. A model
 judges pixels, not what lies beyond the frame: the floor under a stick, a table top filling the
 view, a fridge a step away or the stick in the gripper are no harder to make out for being cut
 by the image's edges. (Without this rule a floor filling 94 % of a frame counted as 3 % visible,
@@ -39,9 +39,11 @@ not see the thing asked about): true iff ``v >= 0.5``, wrong at ``p(v)``.
 **Viewpoints** come from the frame, as a model would read them off the image: the target's mask
 cut by the image's left or right edge → that way; cut by both, or by the top or bottom, or
 filling much of the image → ``front`` (step back, look squarely); small in the image →
-``closer``; in the image but mostly hidden → ``above`` (look over what is in front of it); not in
-the image at all → a uniform guess (nothing in the picture says where it is). The reading is
-wrong (a uniform choice) at the same rate ``p(v)``.
+``closer``; in the image but mostly hidden → ``above`` (look over what is in front of it); whole,
+unhidden and not filling the image → ``closer`` (a clearer view of a thing the frame shows whole
+is a nearer one: stepping back is what a thing the frame cuts needs); not in the image at all →
+a uniform guess (nothing in the picture says where it is). The reading is wrong (a uniform
+choice) at the same rate ``p(v)``.
 
 A frame the log does not know (too old, or from elsewhere) gets no answer. With
 ``error_rate = 0`` every answer about a visible object is right: "VLM noise off".
@@ -131,7 +133,7 @@ class SimVLM:
         v = record.visibility.get(target, 0.0)  # how much of it the frame shows: is it hidden?
         want = ("front" if len(edges) > 1 or "top" in edges or "bottom" in edges or share > LARGE_IN_IMAGE
                 else edges[0] if edges else "closer" if share < SMALL_IN_IMAGE
-                else "above" if v < HIDDEN else "front")
+                else "above" if v < HIDDEN else "closer")
         return want if want in options else rng.choice(options)
 
     def _visibility(self, query: Query, record: CaptureRecord) -> float:
@@ -142,9 +144,11 @@ class SimVLM:
     def _seen(name: str, record: CaptureRecord) -> float:
         """How well the frame shows ``name``: its visible fraction, except that a thing covering
         at least ``PLAIN_SHARE`` of the image is plainly in it (see the module docstring)."""
-        v = record.visibility.get(name, 0.0)
         shown = record.masks.get(name)
-        return 1.0 if shown is not None and v > 0.0 and shown[1] >= PLAIN_SHARE else v
+        # the mask, not the fraction: the fraction divides by the projection of the thing's box,
+        # which blows up when the box reaches behind the camera (a door seen from its doorway
+        # covered half the image at a computed 0.0004, and every question about it was a guess)
+        return 1.0 if shown is not None and shown[1] >= PLAIN_SHARE else record.visibility.get(name, 0.0)
 
     def _p_wrong(self, v: float) -> float:
         return 0.5 if v <= 0.0 else self._p_seen(v)
