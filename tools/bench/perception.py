@@ -19,8 +19,10 @@ latency (the answers are seeded per query, not per order): the bench checks it.
 Figures: VLM round trips (queries) per executed action; verification accuracy against the oracle
 (the report's ``perception.verifications``: settled values that matched the world at that moment),
 pooled, with a Wilson 95 % interval; viewpoints per uncertainty resolution: over the checks whose
-first view did not decide (more than one view), the moves made in those that ended confirmed or
-contradicted. Targets are the issue's (lean without logprobs <= 1/2 and with logprobs <= 1/4 of
+first view did not decide (more than one view), the moves made in those that a later view
+settled (consistent answers, judged sufficient); checks that ended on the verdict's fallback —
+the budget spent, insufficient views agreeing — are counted apart: no viewpoint resolved them.
+Targets are the issue's (lean without logprobs <= 1/2 and with logprobs <= 1/4 of
 the paper's round trips at equal or better accuracy; lean's VLM wall time <= 1/5 of the paper's;
 VLM-guided viewpoints <= 1.5 per resolution and below greedy).
 
@@ -115,7 +117,11 @@ def figures(rep: dict) -> dict:
     requests = rep["vlm"].get("requests", [])  # the in-process model keeps no request records
     survey = [r for r in requests if r["frame_id"] in survey_frames]
     uncertain = [v for v in rep["verifications"] if v["views"] > 1]
-    resolved = [v for v in uncertain if v["outcome"] in ("confirmed", "contradicted")]
+    # resolved by a viewpoint: a later view settled it (consistent answers, judged sufficient);
+    # a check whose budget ran out and whose insufficient views merely agreed (the verdict's
+    # fallback) found no view that resolved it, and is counted apart
+    decided = [v for v in uncertain if v["outcome"] in ("confirmed", "contradicted")]
+    resolved = [v for v in decided if v["rounds"][-1]["consistent"] and v["rounds"][-1]["sufficient"]]
     pv = rep["perception"]["verifications"]
     return {
         "success": bool(rep["success"] and rep["goal_satisfied"]), "claimed": bool(rep["success"]),
@@ -126,7 +132,7 @@ def figures(rep: dict) -> dict:
         "served": rep["vlm"].get("served", {}).get("counts"),
         "verified": pv["n"], "correct": pv["correct"], "unsettled": pv["unsettled"], "reused": pv["reused"],
         "vlm_wall_s": rep["vlm"]["wall_s"], "survey_wall_s": round(sum(r["latency_s"] for r in survey), 4),
-        "uncertain": len(uncertain), "resolved": len(resolved),
+        "uncertain": len(uncertain), "resolved": len(resolved), "agreed": len(decided) - len(resolved),
         "moves_resolved": sum(v["views"] - 1 for v in resolved), "moves_uncertain": sum(v["views"] - 1 for v in uncertain),
         "fingerprint": json.dumps([rep["verifications"], [p["actions"] for p in rep["plans"]]], sort_keys=True),
         "wall_s": rep["wall_s"],
@@ -154,7 +160,7 @@ def pooled(rows: list[dict]) -> dict:
             "unanswered": s("unanswered"),
             "vlm_wall_s": s("vlm_wall_s"), "wall_per_action": s("vlm_wall_s") / actions if actions else math.nan,
             "checks_wall_per_action": (s("vlm_wall_s") - s("survey_wall_s")) / actions if actions else math.nan,
-            "uncertain": s("uncertain"), "resolved": s("resolved"),
+            "uncertain": s("uncertain"), "resolved": s("resolved"), "agreed": s("agreed"),
             "viewpoints_per_resolution": s("moves_resolved") / s("resolved") if s("resolved") else math.nan,
             "moves_per_resolution_all": s("moves_uncertain") / s("resolved") if s("resolved") else math.nan}
 
@@ -281,7 +287,8 @@ def print_summary(s: dict, args) -> None:
     for c in ("paper", "greedy"):
         x = plain[c]
         print(f"  {'VLM-guided' if c == 'paper' else 'greedy':12s} {x['viewpoints_per_resolution']:5.2f} moves per "
-              f"resolution ({x['resolved']} resolved of {x['uncertain']} uncertain; all moves / resolutions "
+              f"resolution ({x['resolved']} resolved by a view that settled, of {x['uncertain']} uncertain; "
+              f"{x['agreed']} decided by agreeing views with the budget spent; all moves / resolutions "
               f"{x['moves_per_resolution_all']:.2f})")
     if s["crashed"]:
         print(f"\ncrashed (left out above): {', '.join(s['crashed'])}")
