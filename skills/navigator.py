@@ -128,6 +128,19 @@ class Navigator:
         x, y, _ = self.scene.site.door(door).pose
         return np.array([x, y, DOOR_LOOK_HEIGHT])
 
+    def leaf_view_point(self, door: str) -> np.ndarray:
+        """Where to look to see ``door`` itself: the middle of its leaf as it stands (as last
+        seen; closed, that is the doorway's middle). Open, a room door's leaf stands out into the
+        room it swung into from one side of the doorway: from a pose in front of the doorway on
+        that side it lies off to the side, outside a frame aimed at the doorway's middle (the
+        camera's half angle across is ~27 degrees), which shows the room beyond, not the door."""
+        p = self.door_point(door)
+        leaf = self.scene.leaves.get(door)
+        if leaf is None:
+            return p
+        c = leaf.box(self.scene.joint.get(door, 0.0)).center
+        return np.array([c[0], c[1], DOOR_LOOK_HEIGHT])
+
     def doorway_points(self, door: str) -> np.ndarray:
         """Points spread over ``door``'s opening: the view through it is judged at each, so that a
         held item in front of the camera hides only some of them."""
