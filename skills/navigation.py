@@ -30,7 +30,7 @@ class Navigate(BaseSkill):
         _, to_room, door = args[:3]
         kit.hands.carry()
         kit.nav.drive_to(kit.nav.door_pose(door, to_room, 1.0))
-        kit.eyes.look_at(kit.nav.door_point(door))
+        kit.eyes.look_at(kit.nav.leaf_view_point(door))
         return Outcome(True)
 
 
@@ -50,11 +50,11 @@ class Find(BaseSkill):
 
 
 def target_point(kit: Kit, name: str, believed) -> np.ndarray:
-    """Where to look at ``name``: a door's middle, a container's cavity, a surface's top, a room
+    """Where to look at ``name``: a door's leaf as it stands, a container's cavity, a surface's top, a room
     ahead of the robot, an item where belief puts it."""
     scene = kit.scene
     if scene.site.door(name) is not None:
-        return kit.nav.door_point(name)
+        return kit.nav.leaf_view_point(name)
     f = scene.furniture.get(name)
     if f is not None:
         cav = f.info.cavity

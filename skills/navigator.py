@@ -25,7 +25,7 @@ import numpy as np
 from skills.body import Body, angle_to
 from skills.eyes import Eyes
 from skills.scene_model import SceneModel
-from vap_bt.motion.footprint import FOLDED_ARM, base_free, hull
+from vap_bt.motion.footprint import FOLDED_ARM, apart, base_free, hull, placed
 
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
@@ -34,6 +34,9 @@ WORK_SHIFTS = (0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24)  # sideways, to keep 
 WORK_BACKOFFS = (0.0, 0.05, 0.1, 0.15, 0.25, 0.35, 0.45)  # further back, when no sideways step is clear or reaches (an oven's door lies open in front)
 WORK_MARGIN = 0.08  # base footprint to obstacles at a work pose (the arm is wider than the base)
 PARKED_MARGIN = 0.015  # footprint to obstacles along a drive
+#: the arm's outline to a room door's leaf (the outline is the folded arm's, and the base lags its
+#: set-point on a turn: an arm passing 3 cm off an open leaf on paper struck it)
+LEAF_MARGIN = 0.08
 #: turns (rad) of the way from a worked point to the robot, tried in order when nothing in front of
 #: the point says which side to work it from (an item on the floor): a leaf or a piece of furniture
 #: beside it can keep the arm from one side and not from another
@@ -128,6 +131,19 @@ class Navigator:
         x, y, _ = self.scene.site.door(door).pose
         return np.array([x, y, DOOR_LOOK_HEIGHT])
 
+    def leaf_view_point(self, door: str) -> np.ndarray:
+        """Where to look to see ``door`` itself: the middle of its leaf as it stands (as last
+        seen; closed, that is the doorway's middle). Open, a room door's leaf stands out into the
+        room it swung into from one side of the doorway: from a pose in front of the doorway on
+        that side it lies off to the side, outside a frame aimed at the doorway's middle (the
+        camera's half angle across is ~27 degrees), which shows the room beyond, not the door."""
+        p = self.door_point(door)
+        leaf = self.scene.leaves.get(door)
+        if leaf is None:
+            return p
+        c = leaf.box(self.scene.joint.get(door, 0.0)).center
+        return np.array([c[0], c[1], DOOR_LOOK_HEIGHT])
+
     def doorway_points(self, door: str) -> np.ndarray:
         """Points spread over ``door``'s opening: the view through it is judged at each, so that a
         held item in front of the camera hides only some of them."""
@@ -143,12 +159,14 @@ class Navigator:
         f, r = self._work_axis(point, toward, how, clear_of)
         side = np.array([-f[1], f[0], 0.0])
         obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
+        leaves, arm = self.scene.door_leaf_polygons(), self.arm_outline()
         for back in WORK_BACKOFFS:
             p = np.asarray(point) + f * (r + back)
             for shift in WORK_SHIFTS:
                 q = p + side * shift
                 pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
-                if base_free(pose, obstacles, WORK_MARGIN, low=low):
+                # the arm reaches over a table's top, not over a room door's leaf (tall, and it swings)
+                if base_free(pose, obstacles, WORK_MARGIN, low=low) and self.arm_off(pose, leaves, arm):
                     yield pose
         if plain:
             yield self._plain_pose(point, toward, how, clear_of)
@@ -304,7 +322,9 @@ class Navigator:
         goal = np.array(pose, float)
         goal[2] = angle_to(here[2], goal[2])
         obstacles, low = self.scene.obstacles(), self.scene.low_obstacles(tuple(here))
-        arm = self.arm_outline()
+        arm, leaves = self.arm_outline(), self.scene.door_leaf_polygons()
+        if not self.arm_off(goal, leaves, arm):
+            leaves = []  # a goal at a leaf on purpose (its handle's grasp): the arm's own planning
         heading = np.array([math.cos(goal[2]), math.sin(goal[2]), 0.0])
         vias = [goal - heading * k for k in DETOUR_BACKOFFS] + [np.array([goal[0], here[1], goal[2]]),
                                                                np.array([here[0], goal[1], here[2]])]
@@ -320,7 +340,8 @@ class Navigator:
         for slack_at_stops in (False, True):
             for path in paths:
                 legs = [here, *path]
-                if all(self._leg_clear(a, b, b if slack_at_stops else (goal if reach_over else None), obstacles, arm, low)
+                if all(self._leg_clear(a, b, b if slack_at_stops else (goal if reach_over else None), obstacles, arm, low,
+                                       leaves)
                        for a, b in zip(legs, legs[1:])):
                     return [tuple(map(float, p)) for p in path]
         return None
@@ -336,12 +357,22 @@ class Navigator:
         return hull(np.vstack(pts))
 
     @staticmethod
+    def arm_off(pose, leaves, arm=FOLDED_ARM) -> bool:
+        """The arm (``arm``'s outline in the base frame) at base ``pose`` keeps LEAF_MARGIN off
+        every one of ``leaves`` (room doors' leaves from above)."""
+        shape = placed(arm, pose)
+        return all(apart(shape, o, LEAF_MARGIN) for o in leaves)
+
+    @staticmethod
     def _leg_clear(a: np.ndarray, b: np.ndarray, slack_at: np.ndarray | None, obstacles, arm=FOLDED_ARM,
-                   low=()) -> bool:
+                   low=(), leaves=()) -> bool:
         """A straight base move from ``a`` to ``b`` keeps the footprint off every obstacle once it
         has left ``a``, and the arm too except near ``slack_at`` (the path's goal, where it works
         over the furniture; None: nowhere — a via pose gets no slack, the arm would sweep into an
-        open leaf there)."""
+        open leaf there). The arm keeps off ``leaves`` (room doors' leaves as they stand) even
+        there: it reaches over a table's top, but such a leaf is tall and swings when struck (an
+        arm swung into a room door's open leaf beside a floor item pushed it half shut, and the
+        door, neither open nor closed, could be neither passed nor opened)."""
         def way(u, v) -> float:  # a turn on the spot counts as a way too (the arm sweeps)
             return float(np.linalg.norm((v - u)[:2]) + 0.4 * abs(v[2] - u[2]))
 
@@ -352,5 +383,7 @@ class Navigator:
                 continue
             if not base_free(q, obstacles, PARKED_MARGIN, folded=slack_at is None or np.linalg.norm((slack_at - q)[:2]) > ARM_SLACK,
                              arm=arm, low=low):
+                return False
+            if leaves and not Navigator.arm_off(q, leaves, arm):
                 return False
         return True

@@ -366,6 +366,12 @@ class SceneModel:
         """Every door leaf and drawer where it was last seen (closed when never seen otherwise)."""
         return [leaf.box(self.joint.get(name, 0.0)) for name, leaf in self.leaves.items() if name != skip]
 
+    def door_leaf_polygons(self) -> list[np.ndarray]:
+        """The room doors' leaves where they were last seen, from above (no arm reaches over one:
+        they stand as tall as the walls; an appliance's door or a drawer it may reach over)."""
+        return [leaf.box(self.joint.get(name, 0.0)).polygon() for name, leaf in self.leaves.items()
+                if self.site.door(name) is not None]
+
     def obstacles(self, moving: str | None = None) -> list[np.ndarray]:
         """What the base must keep off, seen from above: walls, furniture, door leaves as they
         stand (except ``moving``'s, which the planner places itself)."""

@@ -62,12 +62,25 @@ class ViewService:
         self._stop.clear()
         return self.kit.looking(self._stop.is_set)
 
+    def _point(self, aim: Aim) -> np.ndarray | None:
+        """Where to aim for ``aim``: its point; for a room door, the middle of its leaf as the
+        robot last saw it stand (belief places a door at its doorway: open, the leaf stands out
+        into the room beside the doorway, off a frame aimed there from that room's side)."""
+        if aim.point is None:
+            return None
+        door = aim.names[0] if aim.names else None
+        if door is not None and self.kit.scene.site.door(door) is not None and door in self.kit.scene.leaves:
+            return self.kit.nav.leaf_view_point(door)
+        return np.asarray(aim.point, float)
+
     def capture(self, aim: Aim | None = None) -> Frame:
-        """Aim at ``aim.point`` (if given and not already aimed there) and take a frame."""
+        """Aim at ``aim``'s point (:meth:`_point`; if given and not already aimed there) and
+        take a frame."""
         with self._looking() as kit:
-            if aim is not None and aim.point is not None and not kit.eyes.aimed_at(aim.point):
+            point = None if aim is None else self._point(aim)
+            if point is not None and not kit.eyes.aimed_at(point):
                 try:
-                    kit.eyes.look_at(np.asarray(aim.point, float))
+                    kit.eyes.look_at(point)
                 except Stopped:
                     pass  # the frame shows wherever the camera stopped
             return kit.eyes.frame()
@@ -86,7 +99,7 @@ class ViewService:
                         return False
                 if view.aim.point is None:
                     return True
-                return kit.eyes.look_at(np.asarray(view.aim.point, float))
+                return kit.eyes.look_at(self._point(view.aim))
             except (Stopped, Blocked):
                 return False
 
@@ -96,7 +109,7 @@ class ViewService:
         if direction not in VIEW_DIRECTIONS or aim.point is None:
             return False
         with self._looking() as kit:
-            p = np.asarray(aim.point, float)
+            p = self._point(aim)
             x, y, yaw = kit.body.base_pose()
             eye = kit.body.pose("camera_optical")
             # square on, but not so far off that the rim of a deep hollow hides the point
