@@ -51,6 +51,8 @@ STANDOFF, TALL_STANDOFF, TALL = 1.05, 1.8, 1.0
 FLOOR_STANDOFF = 0.72  # base centre to a floor item, from the corridor side
 CORRIDOR_SLACK = 0.3  # m past the corridor's middle the robot may stand to look at a floor item
 FLOOR_NEAREST = 0.5  # base centre to a floor item at least (the base's half length and a margin)
+#: base centre to a floor item, for the poses round it tried when the preferred one is not clear
+FLOOR_AROUND = (FLOOR_STANDOFF, 0.85, 0.6, FLOOR_NEAREST)
 DOOR_VIEW = 1.8  # base centre to a doorway when looking at its door: the whole leaf in the frame
 DOOR_STOP = 0.95  # base centre to a doorway when it stops in front of it on a trip
 #: a door counts as open for the base to pass once it has swung this share of its travel
@@ -107,8 +109,37 @@ class Navigator:
         cap = self.scene.corridor_y() + CORRIDOR_SLACK
         y = min(point[1] + FLOOR_STANDOFF, cap)
         if y - point[1] >= FLOOR_NEAREST or point[1] >= cap + FLOOR_NEAREST:
-            return (float(point[0]), float(y), -math.pi / 2)
-        return (float(point[0]), float(point[1] - FLOOR_STANDOFF), math.pi / 2)
+            preferred = (float(point[0]), float(y), -math.pi / 2)
+        else:
+            preferred = (float(point[0]), float(point[1] - FLOOR_STANDOFF), math.pi / 2)
+        return self._clear_floor_standoff(point, preferred)
+
+    def _clear_floor_standoff(self, point, preferred: Pose) -> Pose:
+        """``preferred`` when the base stands clear there; else the first clear pose round the
+        item, facing it, ``FLOOR_STANDOFF`` away along the turned ways of :data:`AROUND` (from the
+        preferred side on; closer, down to ``FLOOR_NEAREST``, after that), in the item's room
+        first, the arm folded over the base clear too first. An item dropped by a doorway left
+        both the corridor-side and the near-side pose in the wall, and the drive there ran the
+        base into it. ``preferred`` (the drive will find no clear way) when none is clear."""
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
+        room = self.scene.room_at(*point[:2])
+
+        def clear(pose: Pose, folded: bool, same_room: bool) -> bool:
+            where = self.scene.room_at(*pose[:2])
+            return (where is not None and (not same_room or where == room)
+                    and base_free(pose, obstacles, PARKED_MARGIN, folded=folded, low=low))
+
+        if clear(preferred, False, False):
+            return preferred
+        toward = math.atan2(preferred[1] - point[1], preferred[0] - point[0])
+        poses = [(float(point[0] + d * math.cos(toward + t)), float(point[1] + d * math.sin(toward + t)),
+                  float(math.remainder(toward + t + math.pi, 2 * math.pi)))
+                 for d in FLOOR_AROUND for t in AROUND]
+        for same_room, folded in ((True, True), (True, False), (False, True), (False, False)):
+            for pose in poses:
+                if clear(pose, folded, same_room):
+                    return pose
+        return preferred
 
     def _front_of(self, name: str, lateral: float = 0.0) -> Pose:
         f = self.scene.furniture[name]
