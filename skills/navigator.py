@@ -279,10 +279,40 @@ class Navigator:
         self.body.drive(self._path(pose, True, careful), speed)
 
     def _path(self, pose: Pose, reach_over: bool, careful: bool) -> list[Pose]:
+        """:meth:`base_path` to ``pose``; where it finds no clear way, straight there — unless the
+        trip is ``careful`` or the straight way runs the base itself into a known obstacle (a
+        wall, furniture, a leaf, an item on the floor): then :class:`Blocked`, so the skill fails
+        and the executive replans, instead of the base pushing against the wall (a standoff by a
+        doorway: the drive stopped against the wall and the find failed the same way thrice)."""
         path = self.base_path(pose, reach_over)
-        if path is None and careful:
+        if path is not None:
+            return path
+        if careful:
             raise Blocked("no clear way there")
-        return path or [tuple(map(float, pose))]
+        if not self.straight_free(pose):
+            raise Blocked(f"no clear way to ({pose[0]:.2f}, {pose[1]:.2f}): the base would run into an obstacle")
+        return [tuple(map(float, pose))]
+
+    def straight_free(self, pose: Pose) -> bool:
+        """A straight base move from where the base stands to ``pose`` keeps the base's footprint
+        (the base alone, no margin) off the walls, furniture, leaves and floor items, once it has
+        left its start (:meth:`_leg_clear`'s ``LEAVE_SLACK``)."""
+        here = np.array(self.body.base_pose(), float)
+        goal = np.array(pose, float)
+        goal[2] = angle_to(here[2], goal[2])
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles(tuple(here))
+        n = max(2, int(np.linalg.norm((goal - here)[:2]) / 0.05) + 1)
+        for s in np.linspace(0.0, 1.0, n):
+            q = here + (goal - here) * s
+            if np.linalg.norm((q - here)[:2]) + 0.4 * abs(q[2] - here[2]) < LEAVE_SLACK:
+                continue
+            if not base_free(q, obstacles, 0.0, low=low):
+                return False
+        return True
+
+    def _stop_clear(self, pose: Pose) -> bool:
+        """The base could stand at ``pose`` (a corridor stop of a trip) clear of everything known."""
+        return base_free(pose, self.scene.obstacles(), PARKED_MARGIN, low=self.scene.low_obstacles())
 
     def drive_to(self, pose: Pose, careful: bool = False) -> None:
         """Along the corridor to ``pose``, through the doorways on the way; raises
@@ -292,7 +322,9 @@ class Navigator:
         # on the way the arm points where the base goes: turned towards a wall or a leaf swung
         # open beside the corridor, the folded arm would reach into it
         along = 0.0 if pose[0] > x else math.pi
-        legs: list = [(x, cy, along)]
+        # a corridor stop the base cannot stand at (an item dropped in the corridor lies there) is
+        # left out: the way goes on to the next stop round it
+        legs: list = [(x, cy, along)] if self._stop_clear((x, cy, along)) else []
         crossing = [d for d in self.scene.site.doors if d.pose is not None
                     and min(x, pose[0]) < d.pose[0] < max(x, pose[0])]
         if self.scene.room_at(x, y) is not None:
@@ -300,7 +332,8 @@ class Navigator:
                 side = -1.0 if x < d.pose[0] else 1.0
                 legs += [(d.pose[0] + side * DOOR_STOP, d.pose[1], 0.0 if side < 0 else math.pi), d.name,
                          (d.pose[0] - side * DOOR_STOP, d.pose[1], along)]
-        legs += [(pose[0], cy, pose[2]), tuple(pose)]
+        legs += [(pose[0], cy, pose[2])] if self._stop_clear((pose[0], cy, pose[2])) else []
+        legs.append(tuple(pose))
         for k, leg in enumerate(legs):
             if isinstance(leg, str):
                 if not self.door_open(leg):

@@ -177,6 +177,16 @@ def test_a_floor_item_by_a_doorway_is_looked_at_from_a_clear_pose_round_it():
     assert nav.standoff("cup", np.array([1.0, 1.0, 0.03])) == (1.0, 1.0 + 0.72, -np.pi / 2)
 
 
+def test_a_drive_that_finds_no_clear_way_does_not_run_the_base_into_a_wall():
+    class Here:
+        def base_pose(self):
+            return (4.35, 2.2, np.pi / 2)
+
+    nav = Navigator(Here(), _two_rooms(), None)
+    assert not nav.straight_free((4.35, 1.41, np.pi / 2))  # into the wall beside the doorway
+    assert nav.straight_free((3.63, 2.2, np.pi / 2))
+
+
 def test_an_item_seen_on_the_floor_is_kept_off_by_the_base_not_the_arm():
     # retrieve_bottles seed 1 with injection: a bottle dropped in the garden was driven into and
     # pushed 3 m across it over four trips; the base now keeps off what frames show on the floor
