@@ -25,7 +25,7 @@ import numpy as np
 from skills.body import Body, angle_to
 from skills.eyes import Eyes
 from skills.scene_model import SceneModel
-from vap_bt.motion.footprint import FOLDED_ARM, base_free, hull
+from vap_bt.motion.footprint import FOLDED_ARM, apart, base_free, footprint, hull
 
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
@@ -296,11 +296,16 @@ class Navigator:
     def straight_free(self, pose: Pose) -> bool:
         """A straight base move from where the base stands to ``pose`` keeps the base's footprint
         (the base alone, no margin) off the walls, furniture, leaves and floor items, once it has
-        left its start (:meth:`_leg_clear`'s ``LEAVE_SLACK``)."""
+        left its start (:meth:`_leg_clear`'s ``LEAVE_SLACK``). An obstacle the base already
+        overlaps where it stands is left out, as :meth:`SceneModel.low_obstacles` leaves out a
+        floor item under it: the way off it must stay open (gather_kindling seed 1: a leaf fitted
+        half open across where the base stood after passing the doorway refused every way on)."""
         here = np.array(self.body.base_pose(), float)
         goal = np.array(pose, float)
         goal[2] = angle_to(here[2], goal[2])
-        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles(tuple(here))
+        start = footprint(tuple(here))
+        obstacles = [o for o in self.scene.obstacles() if apart(start, o, 0.0)]
+        low = self.scene.low_obstacles(tuple(here))
         n = max(2, int(np.linalg.norm((goal - here)[:2]) / 0.05) + 1)
         for s in np.linspace(0.0, 1.0, n):
             q = here + (goal - here) * s

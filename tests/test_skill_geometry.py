@@ -185,6 +185,11 @@ def test_a_drive_that_finds_no_clear_way_does_not_run_the_base_into_a_wall():
     nav = Navigator(Here(), _two_rooms(), None)
     assert not nav.straight_free((4.35, 1.41, np.pi / 2))  # into the wall beside the doorway
     assert nav.straight_free((3.63, 2.2, np.pi / 2))
+    # the base standing in an obstacle (a leaf fitted across it) may still drive off it
+    nav.scene = SceneModel(SiteMap(nav.scene.site.rooms, nav.scene.site.doors,
+                                   (FurnitureInfo("crate", "crate", "surface", "living_room", (4.35, 2.0, 0.0),
+                                                  (0.3, 0.3), 0.4),)))
+    assert nav.straight_free((3.63, 2.2, np.pi / 2)) and not nav.straight_free((4.35, 1.41, np.pi / 2))
 
 
 def test_an_item_seen_on_the_floor_is_kept_off_by_the_base_not_the_arm():
