@@ -25,7 +25,7 @@ import numpy as np
 from skills.body import Body, angle_to
 from skills.eyes import Eyes
 from skills.scene_model import SceneModel
-from vap_bt.motion.footprint import FOLDED_ARM, apart, base_free, hull, placed
+from vap_bt.motion.footprint import FOLDED_ARM, apart, base_free, footprint, hull, placed
 
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
@@ -54,6 +54,8 @@ STANDOFF, TALL_STANDOFF, TALL = 1.05, 1.8, 1.0
 FLOOR_STANDOFF = 0.72  # base centre to a floor item, from the corridor side
 CORRIDOR_SLACK = 0.3  # m past the corridor's middle the robot may stand to look at a floor item
 FLOOR_NEAREST = 0.5  # base centre to a floor item at least (the base's half length and a margin)
+#: base centre to a floor item, for the poses round it tried when the preferred one is not clear
+FLOOR_AROUND = (FLOOR_STANDOFF, 0.85, 0.6, FLOOR_NEAREST)
 DOOR_VIEW = 1.8  # base centre to a doorway when looking at its door: the whole leaf in the frame
 DOOR_STOP = 0.95  # base centre to a doorway when it stops in front of it on a trip
 #: a door counts as open for the base to pass once it has swung this share of its travel
@@ -110,8 +112,37 @@ class Navigator:
         cap = self.scene.corridor_y() + CORRIDOR_SLACK
         y = min(point[1] + FLOOR_STANDOFF, cap)
         if y - point[1] >= FLOOR_NEAREST or point[1] >= cap + FLOOR_NEAREST:
-            return (float(point[0]), float(y), -math.pi / 2)
-        return (float(point[0]), float(point[1] - FLOOR_STANDOFF), math.pi / 2)
+            preferred = (float(point[0]), float(y), -math.pi / 2)
+        else:
+            preferred = (float(point[0]), float(point[1] - FLOOR_STANDOFF), math.pi / 2)
+        return self._clear_floor_standoff(point, preferred)
+
+    def _clear_floor_standoff(self, point, preferred: Pose) -> Pose:
+        """``preferred`` when the base stands clear there; else the first clear pose round the
+        item, facing it, ``FLOOR_STANDOFF`` away along the turned ways of :data:`AROUND` (from the
+        preferred side on; closer, down to ``FLOOR_NEAREST``, after that), in the item's room
+        first, the arm folded over the base clear too first. An item dropped by a doorway left
+        both the corridor-side and the near-side pose in the wall, and the drive there ran the
+        base into it. ``preferred`` (the drive will find no clear way) when none is clear."""
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
+        room = self.scene.room_at(*point[:2])
+
+        def clear(pose: Pose, folded: bool, same_room: bool) -> bool:
+            where = self.scene.room_at(*pose[:2])
+            return (where is not None and (not same_room or where == room)
+                    and base_free(pose, obstacles, PARKED_MARGIN, folded=folded, low=low))
+
+        if clear(preferred, False, False):
+            return preferred
+        toward = math.atan2(preferred[1] - point[1], preferred[0] - point[0])
+        poses = [(float(point[0] + d * math.cos(toward + t)), float(point[1] + d * math.sin(toward + t)),
+                  float(math.remainder(toward + t + math.pi, 2 * math.pi)))
+                 for d in FLOOR_AROUND for t in AROUND]
+        for same_room, folded in ((True, True), (True, False), (False, True), (False, False)):
+            for pose in poses:
+                if clear(pose, folded, same_room):
+                    return pose
+        return preferred
 
     def _front_of(self, name: str, lateral: float = 0.0) -> Pose:
         f = self.scene.furniture[name]
@@ -266,10 +297,45 @@ class Navigator:
         self.body.drive(self._path(pose, True, careful), speed)
 
     def _path(self, pose: Pose, reach_over: bool, careful: bool) -> list[Pose]:
+        """:meth:`base_path` to ``pose``; where it finds no clear way, straight there — unless the
+        trip is ``careful`` or the straight way runs the base itself into a known obstacle (a
+        wall, furniture, a leaf, an item on the floor): then :class:`Blocked`, so the skill fails
+        and the executive replans, instead of the base pushing against the wall (a standoff by a
+        doorway: the drive stopped against the wall and the find failed the same way thrice)."""
         path = self.base_path(pose, reach_over)
-        if path is None and careful:
+        if path is not None:
+            return path
+        if careful:
             raise Blocked("no clear way there")
-        return path or [tuple(map(float, pose))]
+        if not self.straight_free(pose):
+            raise Blocked(f"no clear way to ({pose[0]:.2f}, {pose[1]:.2f}): the base would run into an obstacle")
+        return [tuple(map(float, pose))]
+
+    def straight_free(self, pose: Pose) -> bool:
+        """A straight base move from where the base stands to ``pose`` keeps the base's footprint
+        (the base alone, no margin) off the walls, furniture, leaves and floor items, once it has
+        left its start (:meth:`_leg_clear`'s ``LEAVE_SLACK``). An obstacle the base already
+        overlaps where it stands is left out, as :meth:`SceneModel.low_obstacles` leaves out a
+        floor item under it: the way off it must stay open (gather_kindling seed 1: a leaf fitted
+        half open across where the base stood after passing the doorway refused every way on)."""
+        here = np.array(self.body.base_pose(), float)
+        goal = np.array(pose, float)
+        goal[2] = angle_to(here[2], goal[2])
+        start = footprint(tuple(here))
+        obstacles = [o for o in self.scene.obstacles() if apart(start, o, 0.0)]
+        low = self.scene.low_obstacles(tuple(here))
+        n = max(2, int(np.linalg.norm((goal - here)[:2]) / 0.05) + 1)
+        for s in np.linspace(0.0, 1.0, n):
+            q = here + (goal - here) * s
+            if np.linalg.norm((q - here)[:2]) + 0.4 * abs(q[2] - here[2]) < LEAVE_SLACK:
+                continue
+            if not base_free(q, obstacles, 0.0, low=low):
+                return False
+        return True
+
+    def _stop_clear(self, pose: Pose) -> bool:
+        """The base could stand at ``pose`` (a corridor stop of a trip) clear of everything known."""
+        return base_free(pose, self.scene.obstacles(), PARKED_MARGIN, low=self.scene.low_obstacles())
 
     def drive_to(self, pose: Pose, careful: bool = False) -> None:
         """Along the corridor to ``pose``, through the doorways on the way; raises
@@ -279,7 +345,9 @@ class Navigator:
         # on the way the arm points where the base goes: turned towards a wall or a leaf swung
         # open beside the corridor, the folded arm would reach into it
         along = 0.0 if pose[0] > x else math.pi
-        legs: list = [(x, cy, along)]
+        # a corridor stop the base cannot stand at (an item dropped in the corridor lies there) is
+        # left out: the way goes on to the next stop round it
+        legs: list = [(x, cy, along)] if self._stop_clear((x, cy, along)) else []
         crossing = [d for d in self.scene.site.doors if d.pose is not None
                     and min(x, pose[0]) < d.pose[0] < max(x, pose[0])]
         if self.scene.room_at(x, y) is not None:
@@ -287,7 +355,8 @@ class Navigator:
                 side = -1.0 if x < d.pose[0] else 1.0
                 legs += [(d.pose[0] + side * DOOR_STOP, d.pose[1], 0.0 if side < 0 else math.pi), d.name,
                          (d.pose[0] - side * DOOR_STOP, d.pose[1], along)]
-        legs += [(pose[0], cy, pose[2]), tuple(pose)]
+        legs += [(pose[0], cy, pose[2])] if self._stop_clear((pose[0], cy, pose[2])) else []
+        legs.append(tuple(pose))
         for k, leg in enumerate(legs):
             if isinstance(leg, str):
                 if not self.door_open(leg):
