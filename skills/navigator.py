@@ -325,13 +325,7 @@ class Navigator:
         obstacles = [o for o in self.scene.obstacles() if apart(start, o, 0.0)]
         low = self.scene.low_obstacles(tuple(here))
         n = max(2, int(np.linalg.norm((goal - here)[:2]) / 0.05) + 1)
-        for s in np.linspace(0.0, 1.0, n):
-            q = here + (goal - here) * s
-            if np.linalg.norm((q - here)[:2]) + 0.4 * abs(q[2] - here[2]) < LEAVE_SLACK:
-                continue
-            if not base_free(q, obstacles, 0.0, low=low):
-                return False
-        return True
+        return all(base_free(q, obstacles, 0.0, low=low) for q in _past_start(here, goal, n))
 
     def _stop_clear(self, pose: Pose) -> bool:
         """The base could stand at ``pose`` (a corridor stop of a trip) clear of everything known."""
@@ -442,17 +436,24 @@ class Navigator:
         there: it reaches over a table's top, but such a leaf is tall and swings when struck (an
         arm swung into a room door's open leaf beside a floor item pushed it half shut, and the
         door, neither open nor closed, could be neither passed nor opened)."""
-        def way(u, v) -> float:  # a turn on the spot counts as a way too (the arm sweeps)
-            return float(np.linalg.norm((v - u)[:2]) + 0.4 * abs(v[2] - u[2]))
-
-        n = max(2, int(way(a, b) / 0.08) + 1)
-        for s in np.linspace(0.0, 1.0, n):
-            q = a + (b - a) * s
-            if way(a, q) < LEAVE_SLACK:
-                continue
+        for q in _past_start(a, b, max(2, int(_way(a, b) / 0.08) + 1)):
             if not base_free(q, obstacles, PARKED_MARGIN, folded=slack_at is None or np.linalg.norm((slack_at - q)[:2]) > ARM_SLACK,
                              arm=arm, low=low):
                 return False
             if leaves and not Navigator.arm_off(q, leaves, arm):
                 return False
         return True
+
+
+def _way(u: np.ndarray, v: np.ndarray) -> float:
+    """Length of a base move, a turn on the spot counting too (the arm sweeps)."""
+    return float(np.linalg.norm((v - u)[:2]) + 0.4 * abs(v[2] - u[2]))
+
+
+def _past_start(a: np.ndarray, b: np.ndarray, n: int):
+    """``n`` evenly spaced poses of the straight base move from ``a`` to ``b``, less those within
+    ``LEAVE_SLACK`` of ``a`` (a drive may start close to an obstacle)."""
+    for s in np.linspace(0.0, 1.0, n):
+        q = a + (b - a) * s
+        if _way(a, q) >= LEAVE_SLACK:
+            yield q

@@ -79,7 +79,7 @@ class Truth:
         ex = np.array(t.kind.extent, float)
         if t.states.get("sliced"):
             ex[0] /= 2
-        unit = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]) * ex
+        unit = box_corners((*(-ex / 2), *(ex / 2)))
         out = []
         for b in t.bodies:
             p, q = pb.getBasePositionAndOrientation(b, physicsClientId=self.scene.client)

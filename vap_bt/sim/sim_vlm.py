@@ -132,8 +132,7 @@ class SimVLM:
         edges, share = shown
         v = record.visibility.get(target, 0.0)  # how much of it the frame shows: is it hidden?
         want = ("front" if len(edges) > 1 or "top" in edges or "bottom" in edges or share > LARGE_IN_IMAGE
-                else edges[0] if edges else "closer" if share < SMALL_IN_IMAGE
-                else "above" if v < HIDDEN else "closer")
+                else edges[0] if edges else "above" if v < HIDDEN and share >= SMALL_IN_IMAGE else "closer")
         return want if want in options else rng.choice(options)
 
     def _visibility(self, query: Query, record: CaptureRecord) -> float:
