@@ -25,7 +25,7 @@ import numpy as np
 from skills.body import Body, angle_to
 from skills.eyes import Eyes
 from skills.scene_model import SceneModel
-from vap_bt.motion.footprint import FOLDED_ARM, apart, base_free, footprint, hull, placed
+from vap_bt.motion.footprint import FOLDED_ARM, apart, base_free, footprint, hull, near, placed
 
 #: base centre to the worked point, horizontally, for a top-down and a horizontal approach
 WORK_DISTANCE = {"top": 0.62, "front": 0.74}
@@ -424,7 +424,7 @@ class Navigator:
         """The arm (``arm``'s outline in the base frame) at base ``pose`` keeps LEAF_MARGIN off
         every one of ``leaves`` (room doors' leaves from above)."""
         shape = placed(arm, pose)
-        return all(apart(shape, o, LEAF_MARGIN) for o in leaves)
+        return all(apart(shape, o, LEAF_MARGIN) for o in near(shape, leaves, LEAF_MARGIN))
 
     @staticmethod
     def _leg_clear(a: np.ndarray, b: np.ndarray, slack_at: np.ndarray | None, obstacles, arm=FOLDED_ARM,

@@ -103,6 +103,28 @@ def test_unreachable_target_fails_cleanly(kin):
     far = se3.make_pose((3.0, 0.0, 0.5))
     r = solve_ik(kin, far, options=IKOptions(max_seeds=3))
     assert not r.success and r.reason == "unreachable" and r.position_error > 1.0
+    # no closed-form branch: out of reach, and random restarts would not change that
+    assert r.seeds == 0
+    guess = solve_ik(kin, far, q_init=np.array(CFG.arm.home), options=IKOptions(max_seeds=3))
+    assert not guess.success and guess.seeds == 1  # the caller's guess is still polished
+    # pure DLS has no branches to go by: it spends its seeds
+    assert solve_ik(kin, far, options=IKOptions(max_seeds=3, analytic_seeds=False)).seeds == 3
+
+
+def test_when_every_branch_is_turned_down_random_seeds_are_not_tried(kin):
+    """Every closed-form branch converges and is refused: random seeds would only find them again."""
+    from vap_bt.motion import ur_analytic
+
+    q = np.array(CFG.arm.home)
+    target = kin.fk(q)
+    branches = len(ur_analytic.solve(*_flange_problem(kin, target)))
+    r = solve_ik(kin, target, q_init=q, options=IKOptions(max_seeds=20), accept=lambda s: False)
+    assert not r.success and r.reason == "collision" and r.seeds == branches + 1 < 20
+
+
+def _flange_problem(kin, target):
+    wab, flange = kin.flange_offsets("tcp")
+    return se3.inverse(wab) @ target @ se3.inverse(flange), kin.config.arm.dh
 
 
 def test_world_target_with_the_base_elsewhere(kin):

@@ -243,3 +243,25 @@ def test_the_arm_model_takes_another_held_item_in_place_of_the_first():
     assert np.allclose(body._collision((1.0, 1.0, 0.0)).attached.size, (0.4, 0.03, 0.03))
     body.hold(None)
     assert body._collision((1.0, 1.0, 0.0)).attached is None
+
+
+def test_the_quick_box_test_agrees_with_the_full_separation_test():
+    """``near`` drops only polygons whose bounding boxes are more than the margin apart, and
+    those are apart; ``apart`` with its quick test says what the full test over every axis says."""
+    from vap_bt.motion.footprint import apart, footprint, near
+
+    def apart_slowly(a, b, margin):
+        axes = [np.array([1.0, 0.0]), np.array([0.0, 1.0])]
+        for poly in (a, b):
+            for e in np.roll(poly, -1, axis=0) - poly:
+                axes.append(np.array([e[1], -e[0]]) / np.linalg.norm(e))
+        return any((a @ n).min() > (b @ n).max() + margin or (b @ n).min() > (a @ n).max() + margin for n in axes)
+
+    rng = np.random.default_rng(3)
+    shapes = [footprint((*rng.uniform(0, 3, 2), rng.uniform(-3, 3))) for _ in range(300)]
+    for k in range(0, 300, 3):
+        s, margin = shapes[k], float(rng.uniform(0.0, 0.3))
+        kept = near(s, shapes, margin)
+        assert all(apart(s, o, margin) for o in shapes if not any(o is p for p in kept))
+        assert [apart(s, o, margin) for o in shapes] == [apart_slowly(s, o, margin) for o in shapes]
+        assert any(o is s for o in kept)

@@ -62,5 +62,5 @@ def describe(s: Situation) -> str:
     if s.kind == "execution":
         return f"execution of {s.action} failed ({s.detail})"
     if s.kind == "unseen":
-        return f"could not see whether {s.atom} holds before {s.action}"
+        return f"could not see whether {s.atom} holds " + (f"before {s.action}" if s.action else "at the goal")
     return f"{s.kind} {s.atom} observed {s.observed}" + (f" at {s.action}" if s.action else "")

@@ -73,17 +73,37 @@ def hull(pts: np.ndarray) -> np.ndarray:
     return np.array(lower[:-1] + upper[:-1])
 
 
+def _normals(poly: np.ndarray) -> np.ndarray:
+    """A convex polygon's unit edge normals (degenerate edges left out)."""
+    edges = np.roll(poly, -1, axis=0) - poly
+    normals = np.stack([edges[:, 1], -edges[:, 0]], axis=1)
+    lengths = np.linalg.norm(normals, axis=1)
+    keep = lengths > 1e-9
+    return normals[keep] / lengths[keep, None]
+
+
 def apart(a: np.ndarray, b: np.ndarray, margin: float) -> bool:
-    """True when two convex polygons are separated by more than ``margin`` along some edge normal."""
-    for poly in (a, b):
-        edges = np.roll(poly, -1, axis=0) - poly
-        normals = np.stack([edges[:, 1], -edges[:, 0]], axis=1)
-        lengths = np.linalg.norm(normals, axis=1)
-        for n in normals[lengths > 1e-9] / lengths[lengths > 1e-9, None]:
-            pa, pb = a @ n, b @ n
-            if pa.min() > pb.max() + margin or pb.min() > pa.max() + margin:
-                return True
-    return False
+    """True when two convex polygons are separated by more than ``margin`` along some axis: x, y
+    (their bounding boxes, the quick test) or an edge normal of either."""
+    if (a.min(0) > b.max(0) + margin).any() or (b.min(0) > a.max(0) + margin).any():
+        return True
+    n = np.concatenate([_normals(a), _normals(b)])
+    pa, pb = a @ n.T, b @ n.T
+    return bool(np.any((pa.min(0) > pb.max(0) + margin) | (pb.min(0) > pa.max(0) + margin)))
+
+
+def near(shape: np.ndarray, polys: list[np.ndarray], margin: float) -> list[np.ndarray]:
+    """The ``polys`` whose bounding boxes come within ``margin`` of ``shape``'s: the others are
+    :func:`apart` from it already. One pass over all of them: a base pose is tested against every
+    wall and piece of furniture of the house, thousands of times per work-pose search, and nearly
+    all of them are far away."""
+    if not polys:
+        return []
+    pts = np.concatenate(polys)
+    starts = np.cumsum([0] + [len(p) for p in polys[:-1]])
+    lo, hi = np.minimum.reduceat(pts, starts), np.maximum.reduceat(pts, starts)
+    close = np.all((lo <= shape.max(0) + margin) & (shape.min(0) <= hi + margin), axis=1)
+    return [p for p, c in zip(polys, close) if c]
 
 
 def placed(local, pose) -> np.ndarray:
@@ -105,4 +125,5 @@ def base_free(pose, obstacles: list[np.ndarray], margin: float, folded: bool = F
     ``low`` ones (items on the floor, which the arm passes over)."""
     base = footprint(pose)
     shapes = [base] + ([placed(arm, pose)] if folded else [])
-    return all(apart(s, o, margin) for s in shapes for o in obstacles) and all(apart(base, o, margin) for o in low)
+    return (all(apart(s, o, margin) for s in shapes for o in near(s, obstacles, margin))
+            and all(apart(base, o, margin) for o in near(base, list(low), margin)))

@@ -12,7 +12,10 @@ A seed that stalls or runs out of iterations is abandoned for the next one. Seed
 for the UR arm chain, the closed-form solutions of :mod:`ur_analytic` (nearest to the initial
 guess first, each shifted by whole turns towards it), with which DLS merely polishes; the
 caller's initial guess (if any); then configurations drawn from a generator seeded with
-``options.seed`` — so the answer is deterministic. ``analytic_seeds=False`` gives pure DLS.
+``options.seed`` — so the answer is deterministic — but for the UR chain only when some
+closed-form branch failed to converge (near a singularity): when every branch converged, or
+there is none (out of reach), random seeds would only find the same branches or nothing.
+``analytic_seeds=False`` gives pure DLS.
 A converged solution that collides (self or scene, :mod:`vap_bt.motion.collision`) is rejected
 and the search goes on; so is one the caller's ``accept`` turns down (a solution the arm has no
 clear way to from where it is: the next branch may have one).
@@ -128,13 +131,15 @@ def _analytic_seeds(kin: Kinematics, frame: str, target: np.ndarray, q_ref: np.n
 
 
 def _seeds(kin: Kinematics, frame: str, target: np.ndarray, q_init: np.ndarray | None, opt: IKOptions):
+    """(seed, kind) in order: kind "analytic", "initial" or "random"."""
     if opt.analytic_seeds:
-        yield from _analytic_seeds(kin, frame, target, q_init)
+        for q in _analytic_seeds(kin, frame, target, q_init):
+            yield q, "analytic"
     if q_init is not None:
-        yield kin.clamp(q_init)
+        yield kin.clamp(q_init), "initial"
     rng = np.random.default_rng(opt.seed)
     while True:
-        yield kin.random_configuration(rng)
+        yield kin.random_configuration(rng), "random"
 
 
 def solve_ik(
@@ -156,10 +161,23 @@ def solve_ik(
     converged_but_colliding = False
     q0 = None if q_init is None else np.asarray(q_init, dtype=float)
     seeds = _seeds(kin, frame, np.asarray(target, dtype=float), q0, options)
-    for n in range(1, options.max_seeds + 1):
-        q, pos, rot, its = _descend(kin, fid, goal, next(seeds), options)
+    # The closed form lists every branch of the arm: when each of them converged (and was turned
+    # down) or there is none (the target is out of reach), random seeds only find the same
+    # branches again or nothing. Most failed searches are of these two kinds (a work-pose search
+    # asks for hands the arm cannot reach, or reaches only into the furniture), and random seeds
+    # made them the bulk of an episode's planning time.
+    closed_form = options.analytic_seeds and kin.flange_offsets(frame) is not None
+    branches_failed = False
+    q, pos, rot, n = (kin.clamp(np.zeros(len(kin.lower))) if q0 is None else q0), math.inf, math.inf, 0
+    for _ in range(options.max_seeds):
+        q_seed, kind = next(seeds)
+        if kind == "random" and closed_form and not branches_failed:
+            break
+        n += 1
+        q, pos, rot, its = _descend(kin, fid, goal, q_seed, options)
         total += its
         ok = pos <= options.position_tolerance and rot <= options.orientation_tolerance
+        branches_failed |= kind == "analytic" and not ok
         if ok and ((collision is not None and collision.in_collision(q)) or (accept is not None and not accept(q))):
             converged_but_colliding = True
             continue
@@ -169,6 +187,6 @@ def solve_ik(
         if best is None or score < best[0]:
             best = (score, q, pos, rot)
     reason = "collision" if converged_but_colliding else "unreachable"
-    if best is None:  # every seed converged into a collision
-        return IKResult(False, q, pos, rot, total, options.max_seeds, reason)
-    return IKResult(False, best[1], best[2], best[3], total, options.max_seeds, reason)
+    if best is None:  # every seed converged into a collision, or none was worth trying
+        return IKResult(False, q, pos, rot, total, n, reason)
+    return IKResult(False, best[1], best[2], best[3], total, n, reason)
