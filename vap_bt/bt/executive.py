@@ -415,6 +415,11 @@ class Executive:
         if rest and not all(o in in_hand or self.builder.placed(o, in_hand) for o in lost):
             self.progress(f"    not there: searching {', '.join(rest)}")
             sweep = self.builder.sweep(self.camera, rest).after(sweep)
+        if not all(o in in_hand or self.builder.placed(o, in_hand) for o in lost):
+            # the sweep's views leave the rooms' corners out: what rolled away lies there
+            rooms = [*near, *rest]
+            self.progress(f"    still not found: looking into the corners of {', '.join(rooms)}")
+            sweep = self.builder.look_round(self.camera, [(r, self.builder.corner_views(r)) for r in rooms]).after(sweep)
         for o in items:
             observed = self.builder.observed(o, in_hand)
             if o not in in_hand and self.builder.placed(o, in_hand):
