@@ -68,26 +68,29 @@ def test_the_floor_round_a_spot_is_looked_at_from_all_round_it_within_its_room()
         assert np.cos(yaw) * (1.0 - x) + np.sin(yaw) * (1.5 - y) == pytest.approx(1.1)  # facing the spot
 
 
-def test_the_corners_of_a_room_are_looked_into_from_inside_it_each_facing_its_corner():
+def test_the_floor_along_every_wall_is_looked_at_from_inside_the_room_facing_the_wall():
     """The last look for a lost item: the look round the floor from the room's middle leaves the
-    corners out, and a dropped bottle rolls into one."""
-    from vap_bt.scene.builder import CORNER_INSET, CORNER_LOOK_DISTANCE
+    feet of the walls out, and a dropped bottle rolls to one. Every point of the floor by a wall,
+    corners included, is within half a frame of some look's aim."""
+    from vap_bt.scene.builder import WALL_LOOK_DISTANCE, WALL_LOOK_INSET, WALL_LOOK_SPACING
 
     task = load(TREES / "collect_cup.yaml").planning
     site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 3.0)),))
     b = SceneGraphBuilder(task.knowledge, task.objects, site)
-    views = b.corner_views("kitchen")
-    corners = {(CORNER_INSET, CORNER_INSET), (4.0 - CORNER_INSET, CORNER_INSET),
-               (4.0 - CORNER_INSET, 3.0 - CORNER_INSET), (CORNER_INSET, 3.0 - CORNER_INSET)}
-    assert {v.aim.point[:2] for v in views} == corners
+    views = b.wall_views("kitchen")
+    assert len(views) == 2 * 4 + 2 * 3  # 4 m walls in four looks, 3 m ones in three
     for v in views:
         (px, py, _), (x, y, yaw) = v.aim.point, v.base_pose
         assert 0.0 < x < 4.0 and 0.0 < y < 3.0 and v.aim.names == ("floor_kitchen",)
-        assert np.hypot(x - px, y - py) == pytest.approx(CORNER_LOOK_DISTANCE)
-        assert np.cos(yaw) * (px - x) + np.sin(yaw) * (py - y) == pytest.approx(CORNER_LOOK_DISTANCE)
-        # out along the diagonal, toward the middle
-        assert np.hypot(x - 2.0, y - 1.5) < np.hypot(px - 2.0, py - 1.5)
-    assert b.corner_views("nowhere") == []
+        assert min(px, 4.0 - px, py, 3.0 - py) == pytest.approx(WALL_LOOK_INSET)  # by a wall
+        assert np.hypot(x - px, y - py) == pytest.approx(WALL_LOOK_DISTANCE)
+        assert np.cos(yaw) * (px - x) + np.sin(yaw) * (py - y) == pytest.approx(WALL_LOOK_DISTANCE)  # facing it
+    aims = np.array([v.aim.point[:2] for v in views])
+    foot = [(t, 0.0) for t in np.linspace(0, 4, 41)] + [(4.0, t) for t in np.linspace(0, 3, 31)]
+    foot += [(t, 3.0) for t in np.linspace(0, 4, 41)] + [(0.0, t) for t in np.linspace(0, 3, 31)]
+    reach = np.hypot(WALL_LOOK_SPACING / 2, WALL_LOOK_INSET) + 1e-9
+    assert all(np.min(np.hypot(*(aims - p).T)) <= reach for p in foot)
+    assert b.wall_views("nowhere") == []
 
 
 def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():

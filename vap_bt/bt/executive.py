@@ -397,7 +397,8 @@ class Executive:
 
     def _resurvey(self, graph: SceneGraph, lost: list[str], why: str | None = None) -> Survey:
         """Sweep the rooms belief put the lost objects in and the robot's own; if that does not
-        find them, the rest of the house. Every item the sweep saw is re-located. ``why``: the
+        find them, the rest of the house; then the floor along every wall of those rooms, until
+        they are found. Every item the sweep saw is re-located. ``why``: the
         reason to look, when it is not that ``lost`` are lost."""
         here = self.body.state().room
         near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == "in_room" and a.args[0] == o}
@@ -412,14 +413,19 @@ class Executive:
         sweep = self.builder.sweep(self.camera, near, first=around)
         rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
-        if rest and not all(o in in_hand or self.builder.placed(o, in_hand) for o in lost):
+
+        def found() -> bool:
+            return all(o in in_hand or self.builder.placed(o, in_hand) for o in lost)
+
+        if rest and not found():
             self.progress(f"    not there: searching {', '.join(rest)}")
             sweep = self.builder.sweep(self.camera, rest).after(sweep)
-        if not all(o in in_hand or self.builder.placed(o, in_hand) for o in lost):
-            # the sweep's views leave the rooms' corners out: what rolled away lies there
+        if not found():
+            # the sweep's views leave the feet of the walls out: what rolled away lies there
             rooms = [*near, *rest]
-            self.progress(f"    still not found: looking into the corners of {', '.join(rooms)}")
-            sweep = self.builder.look_round(self.camera, [(r, self.builder.corner_views(r)) for r in rooms]).after(sweep)
+            self.progress(f"    still not found: looking along the walls of {', '.join(rooms)}")
+            sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
+                                            until=found).after(sweep)
         for o in items:
             observed = self.builder.observed(o, in_hand)
             if o not in in_hand and self.builder.placed(o, in_hand):

@@ -56,12 +56,14 @@ FLOOR_LOOK_HEADINGS = (-math.pi / 2, 0.0, math.pi, math.pi / 2)
 #: floor under its own base (a flat item the base drove over lies there), and a robot at work
 #: stands by furniture it cannot turn on the spot beside. From 1.1 m the wrist camera looks
 #: steeply down at the spot and sees the floor from half a metre short of it to 0.8 m past it
-#: the last look for a lost item: each corner of a room's floor from this far out along its
-#: diagonal, aimed ``CORNER_INSET`` in from both walls. The look round the floor from the room's
-#: middle leaves the corners out of the frame, and a bottle that slipped from the hand rolled
-#: into one (retrieve_bottles, seed 7 with injection): no plan could find it
-CORNER_LOOK_DISTANCE = 1.2
-CORNER_INSET = 0.5
+#: the last look for a lost item: the floor along every wall of a room, at points this far in from
+#: the wall and at most this far apart, each seen from this much further in. The look round the
+#: floor from a room's middle leaves the walls' feet out of the frame, and a bottle that slipped
+#: from the hand rolls to a wall (retrieve_bottles, seeds 7 and 12 with injection): no plan could
+#: find it. At 1.2 m the frame (55 degrees wide) spans about 1.2 m of floor along the wall
+WALL_LOOK_INSET = 0.3
+WALL_LOOK_SPACING = 1.2
+WALL_LOOK_DISTANCE = 1.2
 SPOT_LOOK_DISTANCE = 1.1
 SPOT_LOOK_HEADINGS = tuple(k * math.pi / 3 for k in range(6))
 #: a door is looked at from this far inside the room, at this height
@@ -166,21 +168,26 @@ class SceneGraphBuilder:
             out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
         return out
 
-    def corner_views(self, room: str) -> list[Viewpoint]:
-        """A look at each corner of ``room``'s floor from out along its diagonal, facing it (see
-        :data:`CORNER_LOOK_DISTANCE`); none for a room the map gives no outline."""
+    def wall_views(self, room: str) -> list[Viewpoint]:
+        """A look at ``room``'s floor along each of its walls, corners included: points
+        ``WALL_LOOK_INSET`` in from the wall, at most ``WALL_LOOK_SPACING`` apart, each from
+        ``WALL_LOOK_DISTANCE`` further in, facing the wall; none for a room the map gives no
+        outline."""
         info = self.site_map.room(room)
         if info is None or info.bounds is None:
             return []
         x0, y0, x1, y1 = info.bounds
-        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
         out = []
-        for px, py in ((x0 + CORNER_INSET, y0 + CORNER_INSET), (x1 - CORNER_INSET, y0 + CORNER_INSET),
-                       (x1 - CORNER_INSET, y1 - CORNER_INSET), (x0 + CORNER_INSET, y1 - CORNER_INSET)):
-            h = math.atan2(cy - py, cx - px)  # from the corner toward the middle
-            stand = (px + CORNER_LOOK_DISTANCE * math.cos(h), py + CORNER_LOOK_DISTANCE * math.sin(h), _wrap(h + math.pi))
-            out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0)), stand,
-                                 f"{room} floor's corner at ({px:.2f}, {py:.2f})"))
+        # each wall: its start corner, the way along it, its length and the way into the room
+        for (ax, ay), (ux, uy), length, (nx, ny) in (((x0, y0), (1, 0), x1 - x0, (0, 1)), ((x1, y0), (0, 1), y1 - y0, (-1, 0)),
+                                                     ((x1, y1), (-1, 0), x1 - x0, (0, -1)), ((x0, y1), (0, -1), y1 - y0, (1, 0))):
+            n = max(1, math.ceil(length / WALL_LOOK_SPACING))
+            for k in range(n):
+                s = (k + 0.5) * length / n
+                px, py = ax + ux * s + nx * WALL_LOOK_INSET, ay + uy * s + ny * WALL_LOOK_INSET
+                stand = (px + nx * WALL_LOOK_DISTANCE, py + ny * WALL_LOOK_DISTANCE, math.atan2(-ny, -nx))
+                out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0)), stand,
+                                     f"{room} floor by the wall at ({px:.2f}, {py:.2f})"))
         return out
 
     def spot_views(self, room: str, spot: tuple[float, float]) -> list[Viewpoint]:
@@ -235,16 +242,21 @@ class SceneGraphBuilder:
         return self.look_round(camera, [(room, [*(v for v in first if v.room == room), *self.views(room)])
                                         for room in rooms])
 
-    def look_round(self, camera: Camera, rooms: list[tuple[str, list[Viewpoint]]]) -> SweepRecord:
+    def look_round(self, camera: Camera, rooms: list[tuple[str, list[Viewpoint]]],
+                   until: Callable[[], bool] | None = None) -> SweepRecord:
         """Look from each room's given views in order, integrating every frame (a sweep, or a
-        search of particular spots such as :meth:`corner_views`)."""
+        search of particular spots such as :meth:`wall_views`); a search stops as soon as
+        ``until()`` holds after a frame."""
         t0 = time.perf_counter()
         rec = SweepRecord(tuple(room for room, _ in rooms))
         detected: set[str] = set()
         unreached = []
+        found = False
         for room, views in rooms:
             reached_here = 0
             for view in views:
+                if found:
+                    break
                 rec.views += 1
                 if not camera.goto_view(view):
                     continue
@@ -253,8 +265,9 @@ class SceneGraphBuilder:
                 rec.frames += 1
                 detected |= self.integrate(frame)
                 rec.last_view, rec.last_frame = view, frame
+                found = until is not None and until()
             rec.reached += reached_here
-            if not reached_here:
+            if not reached_here and not found:
                 unreached.append(room)
         rec.detected, rec.unreached_rooms = frozenset(detected), tuple(unreached)
         rec.seconds = time.perf_counter() - t0
