@@ -38,7 +38,8 @@ NO_MOVE = 1e-3
 UNWIND_MARGIN = 0.5
 #: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
 #: simulated arm's shapes carry a collision margin the model's cylinders do not
-ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01}
+ARM_CLEARANCE = {"shoulder_link": 0.02, "upper_arm_link": 0.02, "forearm_link": 0.02, "wrist_1_link": 0.01,
+                 "wrist_2_link": 0.01}
 #: m above a pose the hand is brought to first, and lowered from straight down, when no joint way
 #: to the pose itself is clear (to the floor right in front of furniture)
 FROM_ABOVE = (0.25, 0.45)

@@ -62,12 +62,17 @@ class Kit:
         d = robot.drivers
         self.body = Body(d.arm, d.gripper, d.base)
         self.eyes = Eyes(self.body, d.camera, level_with=lambda p: self.scene.in_front_cavity(p),
-                         noticed=lambda frame, held: self.scene.note_items(frame, held))
+                         noticed=self._noticed)
         self._map = None
         self._stamp = -1.0
         self.busy = threading.Lock()  # one goal moves the robot at a time
         self._slip_at: float | None = None  # when the gripper was first found to have lost its item
         self._start()
+
+    def _noticed(self, frame, held: str | None) -> None:
+        """What every frame the eyes take tells the scene model: items on the floor, leaves."""
+        self.scene.note_items(frame, held)
+        self.scene.note_leaves(frame)
 
     def _start(self) -> None:
         site = self.robot.site_map()

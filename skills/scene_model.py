@@ -313,6 +313,17 @@ class SceneModel:
             else:
                 self.floor_items.pop(d.name, None)
 
+    def note_leaves(self, frame: Frame) -> None:
+        """Fit the leaf of every piece of furniture the frame shows (:meth:`fit_leaf`): a door
+        the hand let go of may swing, or be knocked shut, after the action that set it. A
+        fridge door that closed after a takeout was still believed open, and every arm way to
+        the pie on the floor in front of it went through the door as it really stood (heat_pie,
+        seeds 0, 3 and 18 with injection). Room doors are fitted where a trip looks at them:
+        only their own view shows enough of them."""
+        for d in frame.detections:
+            if d.name in self.leaves and self.site.door(d.name) is None:
+                self.fit_leaf(d.name, frame)
+
     def low_obstacles(self, base_now=None) -> list[np.ndarray]:
         """Outlines of the items on the floor, for the base alone (the arm passes over them);
         one the base at ``base_now`` already touches is left out: the way off it must stay open."""
