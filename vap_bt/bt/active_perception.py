@@ -21,7 +21,8 @@ way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *u
 returns the last vote here; one vote from a view the VLM judged insufficient is too close to a
 guess to rewrite the scene graph).
 
-An unsettled *goal* atom withholds the executive's claim of success; an unsettled effect lets the
+An unsettled *goal* atom withholds the executive's claim of success (the executive goes to look at
+it and checks the goal again: :func:`~vap_bt.bt.executive.unconfirmed_goal`); an unsettled effect lets the
 plan go on (the next action's preconditions are checked before it acts); an unsettled
 *precondition* first asks the body (``ctx.felt``: the gripper knows whether it holds
 something), then follows the context's ``unseen`` policy — by default it is a situation of kind

@@ -142,7 +142,8 @@ class ExecutionContext:
     progress: Callable[[str], None] = lambda msg: None
     situation: Situation | None = None
     verifications: list[Verification] = field(default_factory=list)
-    #: goal atoms the final look could not settle: success is not claimed over them
+    #: goal atoms the final look could not settle: success is not claimed over them (the
+    #: executive looks again, and clears this for the next tree)
     unconfirmed_goal: list[Atom] = field(default_factory=list)
     actions: list[dict] = field(default_factory=list)
     unseen: UnseenPolicy = "look"
