@@ -306,7 +306,9 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
     with viewer(boil.path, last_tick, tmp_path) as page:
         end = _shot(page, tmp_path / "end.png")
         green, orange = _ink(end, Status.SUCCESS), _ink(end, Status.RUNNING)
-        assert green > 1000, f"the finished tree's green labels are not drawn ({green} px)"
+        # a drawn label is some tens of green pixels, none when the panel draws nothing; the last
+        # tree is the last plan's, shorter after a replan (985 px in one such run), so the bar is well under
+        assert green > 500, f"the finished tree's green labels are not drawn ({green} px)"
         assert orange < 30, f"nothing runs at the end, yet orange is drawn in the tree panel ({orange} px)"
 
         # a tick where a later action is spread out, its preconditions confirmed and its skill in
