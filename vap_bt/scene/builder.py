@@ -255,8 +255,6 @@ class SceneGraphBuilder:
         for room, views in rooms:
             reached_here = 0
             for view in views:
-                if found:
-                    break
                 rec.views += 1
                 if not camera.goto_view(view):
                     continue
@@ -266,9 +264,13 @@ class SceneGraphBuilder:
                 detected |= self.integrate(frame)
                 rec.last_view, rec.last_frame = view, frame
                 found = until is not None and until()
+                if found:
+                    break
             rec.reached += reached_here
-            if not reached_here and not found:
+            if not reached_here:
                 unreached.append(room)
+            if found:
+                break
         rec.detected, rec.unreached_rooms = frozenset(detected), tuple(unreached)
         rec.seconds = time.perf_counter() - t0
         return rec
