@@ -101,3 +101,31 @@ def test_ctrl_c_halts_the_tree_and_cancels_the_goal_in_flight(endless, monkeypat
     assert stop.value.report["reason"] == "interrupted"
     assert halted, "Ctrl-C must cancel the goal in flight (the halt, before anything is closed)"
     assert len(seen) == 1, "no further action may start after the interruption"
+
+
+def test_the_time_budget_halts_a_replanned_tree_and_cancels_its_goal_in_flight(endless, monkeypatch):
+    """The first action fails at once, so the executive replans and ticks a new tree; the budget
+    ends while that tree's goal runs: it is the one halted, and its goal cancelled."""
+    from vap_bt.world import ActionOutcome
+
+    seen, _ = endless
+    endless_perform = SymbolicWorld.perform
+    calls = {"n": 0}
+
+    def fail_first(self, action, args, ctx):
+        calls["n"] += 1
+        if calls["n"] == 1:
+            seen.append({"action": action, "cancelled": False, "failed": True})
+            return ActionOutcome(False, "the first try fails")
+        return endless_perform(self, action, args, ctx)
+
+    monkeypatch.setattr(SymbolicWorld, "perform", fail_first)
+    session = _session(max_seconds=3.0)
+    try:
+        report = session.episode()
+        halted = _cancelled_before_close(seen)
+    finally:
+        session.close()
+    assert "time budget (3 s) exhausted" in report["reason"] and report["replans"] >= 1
+    assert len(seen) >= 2 and not seen[-1].get("failed"), "the replanned tree's action should be running"
+    assert halted, "the goal in flight in the replanned tree must be cancelled by the halt"

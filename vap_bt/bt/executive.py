@@ -174,61 +174,66 @@ class Executive:
             executor.shutdown(wait=False, cancel_futures=True)
 
     def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome) -> EpisodeOutcome:
-        graph = out.graph
-        repeats = RepeatWatch()
-        deadline = time.monotonic() + self.s.max_seconds
-        while time.monotonic() < deadline:
-            tree.tick()
-            out.ticks += 1
-            self.on_tree(tree, out.ticks)
-            status = tree.root.status
-            if status == Status.SUCCESS and not ctx.unconfirmed_goal:
-                out.success, out.reason = True, "goal reached"
-                return out
-            if status == Status.RUNNING:
-                if self.s.tick_period_s:
-                    time.sleep(self.s.tick_period_s)
-                continue
-            if status == Status.SUCCESS:  # the tree got through, but the camera could not confirm the goal
-                situation = unconfirmed_goal(ctx.unconfirmed_goal, len(plan.actions))
-                ctx.unconfirmed_goal.clear()
-            else:
-                situation, ctx.situation = ctx.situation, None
-            if situation is None:
-                out.reason = "the tree failed without a situation"
-                return out
-            out.situations.append(situation)
-            if situation.kind == "unseen" and self.s.unseen == "stop":
-                out.reason = f"stopped: {situation.detail}"
-                return out
-            times = repeats.count(situation, graph.state())
-            if stuck(situation, times):
-                out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
-                              "(looking afresh changed nothing)")
-                return out
-            if out.replans >= self.s.max_replans:
-                out.reason = f"replanning budget ({self.s.max_replans}) exhausted"
-                return out
-            t0 = time.perf_counter()
-            survey = self._correct(graph, situation)
-            if survey is None and times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
-                survey = self._look_afresh(graph, situation)
-            if survey is not None:
-                out.surveys.append(survey)
-            try:
-                plan = self.planner.replan(graph.state(), plan.actions[situation.step:], self.task.goal)
-            except UnsolvableError as exc:
-                out.reason = f"no plan after {situation.kind} situation: {exc}"
-                return out
+        # the tree ticked last is halted however this ends (a replan replaces the one run() built,
+        # and a time budget or Ctrl-C may come while the replanned tree has a goal in flight)
+        try:
+            graph = out.graph
+            repeats = RepeatWatch()
+            deadline = time.monotonic() + self.s.max_seconds
+            while time.monotonic() < deadline:
+                tree.tick()
+                out.ticks += 1
+                self.on_tree(tree, out.ticks)
+                status = tree.root.status
+                if status == Status.SUCCESS and not ctx.unconfirmed_goal:
+                    out.success, out.reason = True, "goal reached"
+                    return out
+                if status == Status.RUNNING:
+                    if self.s.tick_period_s:
+                        time.sleep(self.s.tick_period_s)
+                    continue
+                if status == Status.SUCCESS:  # the tree got through, but the camera could not confirm the goal
+                    situation = unconfirmed_goal(ctx.unconfirmed_goal, len(plan.actions))
+                    ctx.unconfirmed_goal.clear()
+                else:
+                    situation, ctx.situation = ctx.situation, None
+                if situation is None:
+                    out.reason = "the tree failed without a situation"
+                    return out
+                out.situations.append(situation)
+                if situation.kind == "unseen" and self.s.unseen == "stop":
+                    out.reason = f"stopped: {situation.detail}"
+                    return out
+                times = repeats.count(situation, graph.state())
+                if stuck(situation, times):
+                    out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
+                                  "(looking afresh changed nothing)")
+                    return out
+                if out.replans >= self.s.max_replans:
+                    out.reason = f"replanning budget ({self.s.max_replans}) exhausted"
+                    return out
+                t0 = time.perf_counter()
+                survey = self._correct(graph, situation)
+                if survey is None and times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
+                    survey = self._look_afresh(graph, situation)
+                if survey is not None:
+                    out.surveys.append(survey)
+                try:
+                    plan = self.planner.replan(graph.state(), plan.actions[situation.step:], self.task.goal)
+                except UnsolvableError as exc:
+                    out.reason = f"no plan after {situation.kind} situation: {exc}"
+                    return out
+                self.halt(tree)
+                tree = self._tree(ctx, plan)
+                out.replan_seconds.append(time.perf_counter() - t0)
+                out.replans += 1
+                out.plans.append(plan)
+                self.progress(f"replan #{out.replans} ({plan.engine}, {out.replan_seconds[-1] * 1000:.1f} ms): "
+                              f"{len(plan)} actions")
+            out.reason = f"time budget ({self.s.max_seconds:g} s) exhausted"
+            return out
+        finally:
             self.halt(tree)
-            tree = self._tree(ctx, plan)
-            out.replan_seconds.append(time.perf_counter() - t0)
-            out.replans += 1
-            out.plans.append(plan)
-            self.progress(f"replan #{out.replans} ({plan.engine}, {out.replan_seconds[-1] * 1000:.1f} ms): "
-                          f"{len(plan)} actions")
-        out.reason = f"time budget ({self.s.max_seconds:g} s) exhausted"
-        return out
 
     @staticmethod
     def halt(tree: py_trees.trees.BehaviourTree) -> None:
