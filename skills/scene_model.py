@@ -43,6 +43,12 @@ FLOOR_THICKNESS = 0.1
 DOOR_FIT_STEPS = 40
 #: points within this of a leaf's box count as the leaf's
 LEAF_MARGIN = 0.03
+#: points of a frame's cloud a new leaf fit must explain beyond the believed joint value before a
+#: glance replaces the belief (:meth:`SceneModel.note_leaves`). A piece's instance cloud holds a
+#: few hundred points; a door seen swung or shut explained 80-300 more than the stale belief in the
+#: episodes looked at, an oblique frame of the foot of a leaf 0-10 either way (boil_water seed 16
+#: with injection flipped an open cabinet door shut and open again on such frames)
+LEAF_REFIT_POINTS = 40
 #: depth this far past a doorway means the view goes through it
 SEE_THROUGH = 0.3
 HIDDEN_SHARE = 0.5  # a depth return nearer than this share of a point's distance is something in front of it
@@ -253,13 +259,16 @@ class Leaf:
         R, move = self.transform(q)
         return Obb(move(c), R, h)
 
-    def fit(self, pts: np.ndarray, eye: np.ndarray | None) -> float | None:
+    def fit(self, pts: np.ndarray, eye: np.ndarray | None, believed: float | None = None) -> float | None:
         """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
         None when no joint value puts the leaf on any of them. A joint value is supported by the
         points on its leaf's box and contradicted by the points the camera saw through the leaf's
         face there: the carcass's front edge lies where a closed leaf would be, so the points on
         it alone would call a wide-open fridge closed, but a closed leaf would have hidden the
-        inside of the cavity the camera sees."""
+        inside of the cavity the camera sees. With ``believed`` (where the leaf is thought to
+        stand), the best value must explain :data:`LEAF_REFIT_POINTS` more points than the belief
+        does, else the belief stands: a frame that shows only a leaf's foot or edge explains a few
+        points either way, and the ties and near-ties between such values are not evidence."""
         lo, hi = sorted((self.art.lower, self.art.upper))
         values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
         on = np.array([int(self.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values])
@@ -267,7 +276,13 @@ class Leaf:
             return None
         through = np.zeros_like(on) if eye is None else np.array(
             [int(seen_through(self.face(q), eye, pts, LEAF_MARGIN).sum()) for q in values])
-        return float(values[int(np.argmax(on - through))])
+        score = on - through
+        best = int(np.argmax(score))
+        if believed is not None:
+            now = int(np.argmin(np.abs(values - believed)))
+            if score[best] - score[now] < LEAF_REFIT_POINTS:
+                return believed
+        return float(values[best])
 
     def handle_at(self, q: float, side: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Handle grasp point, outward face normal and bar direction at joint value ``q`` (``side``
@@ -314,16 +329,17 @@ class SceneModel:
                 self.floor_items.pop(d.name, None)
 
     def note_leaves(self, frame: Frame) -> None:
-        """Fit the leaf of every piece of furniture the frame shows (:meth:`fit_leaf`): a door
-        the hand let go of may swing, or be knocked shut, after the action that set it. A
-        fridge door that closed after a takeout was still believed open, and the arm's way to
-        the pie on the floor in front of it went through the door as it really stood (heat_pie,
-        seed 0 with injection). A frame that shows only the foot of a leaf can fit it wrong
-        (heat_pie seed 1: an open fridge door fitted closed); the fit is not gated yet. Room
-        doors are fitted where a trip looks at them: only their own view shows enough of them."""
+        """Fit the leaf of every piece of furniture the frame shows, against where it is believed
+        to stand (:meth:`fit_leaf` with ``gated``): a door the hand let go of may swing, or be
+        knocked shut, after the action that set it. A fridge door that closed after a takeout was
+        still believed open, and the arm's way to the pie on the floor in front of it went
+        through the door as it really stood (heat_pie, seed 0 with injection). A glance changes
+        the belief only on clear evidence (:data:`LEAF_REFIT_POINTS`): ungated, a frame showing
+        only a leaf's foot called an open fridge or cabinet door closed. Room doors are fitted
+        where a trip looks at them: only their own view shows enough of them."""
         for d in frame.detections:
             if d.name in self.leaves and self.site.door(d.name) is None:
-                self.fit_leaf(d.name, frame)
+                self.fit_leaf(d.name, frame, gated=True)
 
     def low_obstacles(self, base_now=None) -> list[np.ndarray]:
         """Outlines of the items on the floor, for the base alone (the arm passes over them);
@@ -433,16 +449,18 @@ class SceneModel:
             votes.append(bool(np.median(returns) > p[2] + beyond))
         return None if not votes else 2 * sum(votes) > len(votes)
 
-    def fit_leaf(self, name: str, frame: Frame, hint: float | None = None) -> float | None:
+    def fit_leaf(self, name: str, frame: Frame, hint: float | None = None, gated: bool = False) -> float | None:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece
-        of furniture (or door) (:meth:`Leaf.fit`), or ``hint`` when the frame does not show it."""
+        of furniture (or door) (:meth:`Leaf.fit`), or ``hint`` when the frame does not show it.
+        ``gated``: the believed value stands unless the frame clearly explains another better
+        (a passing glance, not a look aimed at the leaf)."""
         leaf = self.leaves.get(name)
         d = frame.detection(name)
         cloud = instance_cloud(frame, d) if (leaf is not None and d is not None) else None
         if cloud is None:
             return hint
         eye = None if frame.camera_pose is None else np.asarray(frame.camera_pose)[:3, 3]
-        q = leaf.fit(np.asarray(cloud.points), eye)
+        q = leaf.fit(np.asarray(cloud.points), eye, self.joint.get(name, 0.0) if gated else None)
         if q is None:
             return hint
         self.joint[name] = q

@@ -114,6 +114,19 @@ def test_a_closed_fridge_is_fitted_closed():
     assert abs(leaf.fit(np.vstack([face, below]), EYE)) < 0.05
 
 
+def test_a_glance_at_a_leafs_foot_leaves_the_belief_and_a_clear_view_changes_it():
+    leaf = Leaf("fridge", FRIDGE)
+    # the front under the door and a few points of the door's foot, seen in passing: a closed
+    # leaf explains them a little better than the open one believed (the ungated fit said closed)
+    foot = np.vstack([_grid(np.linspace(1.13, 1.82, 8), [3.75], [0.72, 0.73]),
+                      _grid(np.linspace(1.3, 1.6, 6), [3.726], [0.75])])  # 22 points
+    assert abs(leaf.fit(foot, EYE)) < 0.05
+    assert leaf.fit(foot, EYE, believed=1.6) == 1.6
+    # the whole face of the shut door: clear evidence, the belief goes
+    face = _grid(np.linspace(1.14, 1.80, 20), [3.726], np.linspace(0.75, 1.25, 12))
+    assert abs(leaf.fit(np.vstack([face, foot]), EYE, believed=1.6)) < 0.05
+
+
 def test_a_log_in_a_basket_is_seen_over_the_rim_from_near_enough_only():
     # the store_firewood basket: 0.46 x 0.36 m, 0.30 m high, front facing -y
     basket = Furniture(FurnitureInfo("basket", "basket", "container", "storage_room", (6.9, 4.14, -np.pi / 2),
