@@ -31,6 +31,7 @@ from skills.body import Body
 from skills.eyes import Held
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, Leaf, SceneModel, Seen
+from skills.views import CLOSEST, _moved_to
 from vap_bt.motion.footprint import base_free
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
@@ -278,3 +279,12 @@ def test_the_quick_box_test_agrees_with_the_full_separation_test():
         assert all(apart(s, o, margin) for o in shapes if not any(o is p for p in kept))
         assert [apart(s, o, margin) for o in shapes] == [apart_slowly(s, o, margin) for o in shapes]
         assert any(o is s for o in kept)
+
+
+def test_a_view_closer_halves_the_distance_down_to_the_nearest_view():
+    p = np.array([3.0, 0.0, 0.8])
+    far = _moved_to("closer", (0.5, 0.0, 0.0), p)  # 2.5 m off: half way in, facing the point
+    assert np.allclose(far[:3], (1.75, 0.0, 0.0))
+    near = _moved_to("closer", (2.0, 0.0, 0.0), p)  # 1 m off: a quarter-metre step, to the nearest view
+    assert np.isclose(p[0] - near[0], CLOSEST)
+    assert _moved_to("closer", (p[0] - CLOSEST - 0.01, 0.0, 0.0), p) is None  # already as close as a view gets

@@ -312,6 +312,26 @@ def test_sim_vlm_reads_where_to_look_off_the_frame():
     assert len({vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(200)}) == 6
 
 
+def test_sim_vlm_reads_where_to_look_for_an_unseen_target_off_its_place():
+    """The cup out of the picture, the table it should stand on in it: look over the table, or
+    turn the way the table leaves the image; neither in the picture: a guess."""
+    oracle = FunctionOracle(lambda a: True, lambda: [])
+    shows = [("above", {"table": 0.9}, {"table": ((), 0.2)}),
+             ("left", {"table": 0.6}, {"table": (("left",), 0.2)}),
+             ("above", {"table": 1.0}, {"table": (("left", "bottom"), 0.6)})]
+    for want, vis, masks in shows:
+        records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, vis, oracle, lambda: 0, masks=masks) for i in range(40)}
+        vlm = SimVLM(records.get, error_rate=0.0, seed=5)
+        got = {vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(40)}
+        assert got == {want}, (want, got)
+    # at the model's error rate the reading is wrong now and then: a uniform choice
+    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {"table": 0.9}, oracle, lambda: 0, masks={"table": ((), 0.2)})
+               for i in range(400)}
+    vlm = SimVLM(records.get, error_rate=0.2, seed=5)
+    got = [vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(400)]
+    assert 0.6 < got.count("above") / len(got) < 0.95 and len(set(got)) == 6
+
+
 def prompts_viewpoint_query() -> Query:
     from vap_bt.perception.verification import viewpoint_query
 

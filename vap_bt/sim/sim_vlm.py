@@ -41,9 +41,14 @@ cut by the image's left or right edge → that way; cut by both, or by the top o
 filling much of the image → ``front`` (step back, look squarely); small in the image →
 ``closer``; in the image but mostly hidden → ``above`` (look over what is in front of it); whole,
 unhidden and not filling the image → ``closer`` (a clearer view of a thing the frame shows whole
-is a nearer one: stepping back is what a thing the frame cuts needs); not in the image at all →
-a uniform guess (nothing in the picture says where it is). The reading is wrong (a uniform
-choice) at the same rate ``p(v)``.
+is a nearer one: stepping back is what a thing the frame cuts needs). A target not in the image
+whose place is — the other object the question names: the drawer the knife should be in, the
+counter the bottle should stand on — is read as hidden in or behind that place: the place's mask
+cut by the image's left or right edge alone → that way (bring the place into the picture), else
+``above`` (look over or into it), as a model reads "no knife in sight, but there is the drawer
+it should be in". Nothing named in the picture → a uniform guess (nothing in it says where to look). The reading is wrong
+(a uniform choice) at the same rate ``p(v)``, ``v`` being how well the frame shows what it is
+read off.
 
 A frame the log does not know (too old, or from elsewhere) gets no answer. With
 ``error_rate = 0`` every answer about a visible object is right: "VLM noise off".
@@ -95,7 +100,8 @@ class SimVLM:
                 "model": "answers from the world's record of the frame: wrong w.p. min(0.5, error_rate*(2-v)) "
                          f"for visible objects (v: visible fraction, or 1 for a thing covering >= {PLAIN_SHARE:g} of the image), 0.5 when unseen, via a latent score z = +-Phi^-1(1-p) + N(0,1); "
                          f"stated probability sigmoid({CONFIDENCE_SLOPE:g}|z|); sufficient iff v >= 0.5; "
-                         "viewpoint read off the target's mask (edges, size, occlusion), uniform when unseen"}
+                         "viewpoint read off the target's mask (edges, size, occlusion), off its place's when the target is unseen "
+                         "(its left or right edge, else above), uniform when neither is in the picture"}
 
     def ask(self, query: Query, frame: Frame) -> Answer:
         record = self.records(frame.frame_id)
@@ -122,9 +128,20 @@ class SimVLM:
         return Answer("yes" if value else "no", value, confidence=round(confidence, 4))
 
     def _direction(self, query: Query, record: CaptureRecord, v: float, rng: random.Random) -> str:
-        """The viewpoint the frame suggests for the question's target (its first object)."""
+        """The viewpoint the frame suggests for the question's target (its first object), or, with
+        the target out of the picture, for the place the question puts it (see the module
+        docstring)."""
         options = tuple(query.options)
-        target = next((o for o in query.objects if o not in self.rooms), None)
+        named = [o for o in query.objects if o not in self.rooms]
+        target = named[0] if named else None
+        if target is not None and self._seen(target, record) <= 0.0:
+            place = next((o for o in named[1:] if self._seen(o, record) > 0.0), None)
+            if place is not None:
+                edges, _ = record.masks.get(place, ((), 0.0))
+                if rng.random() < self._p_seen(self._seen(place, record)):
+                    return rng.choice(options)  # a misreading
+                want = edges[0] if len(edges) == 1 and edges[0] in ("left", "right") else "above"
+                return want if want in options else rng.choice(options)
         shown = record.masks.get(target) if target is not None else None
         v = self._seen(target, record) if target is not None else v  # the target's own
         if shown is None or v <= 0.0 or rng.random() < self._p_seen(v):
