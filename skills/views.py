@@ -172,7 +172,7 @@ def _moved_to(direction: str, here, p: np.ndarray, front: float = FRONT_VIEW):
         step = min(max(CLOSER_STEP, d / 2), max(0.0, d - CLOSEST))
         if step <= 0.02:
             return None
-        nx, ny = np.array([x, y]) + v / np.linalg.norm(v) * step
+        nx, ny = np.array([x, y]) + v / d * step
     elif direction == "front":  # square on to the point, from a good viewing distance
         v = np.array([x - p[0], y - p[1]])
         v = v / (np.linalg.norm(v) or 1.0)

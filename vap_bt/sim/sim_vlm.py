@@ -46,9 +46,9 @@ whose place is — the other object the question names: the drawer the knife sho
 counter the bottle should stand on — is read as hidden in or behind that place: the place's mask
 cut by the image's left or right edge alone → that way (bring the place into the picture), else
 ``above`` (look over or into it), as a model reads "no knife in sight, but there is the drawer
-it should be in". Nothing named in the picture → a uniform guess (nothing in it says where to look). The reading is wrong
-(a uniform choice) at the same rate ``p(v)``, ``v`` being how well the frame shows what it is
-read off.
+it should be in". Nothing named in the picture → a uniform guess (nothing in it says where to
+look). The reading is wrong (a uniform choice) at the same rate ``p(v)``, ``v`` being how well
+the frame shows what it is read off.
 
 A frame the log does not know (too old, or from elsewhere) gets no answer. With
 ``error_rate = 0`` every answer about a visible object is right: "VLM noise off".
@@ -130,31 +130,44 @@ class SimVLM:
     def _direction(self, query: Query, record: CaptureRecord, v: float, rng: random.Random) -> str:
         """The viewpoint the frame suggests for the question's target (its first object), or, with
         the target out of the picture, for the place the question puts it (see the module
-        docstring)."""
+        docstring); a uniform choice where the frame says nothing, or is misread."""
+        named = self._named(query)
+        place = self._place_in_view(named, record)
+        want = (self._place_way(place, record, rng) if place is not None
+                else self._target_way(named[0] if named else None, record, v, rng))
         options = tuple(query.options)
-        named = [o for o in query.objects if o not in self.rooms]
-        target = named[0] if named else None
-        if target is not None and self._seen(target, record) <= 0.0:
-            place = next((o for o in named[1:] if self._seen(o, record) > 0.0), None)
-            if place is not None:
-                edges, _ = record.masks.get(place, ((), 0.0))
-                if rng.random() < self._p_seen(self._seen(place, record)):
-                    return rng.choice(options)  # a misreading
-                want = edges[0] if len(edges) == 1 and edges[0] in ("left", "right") else "above"
-                return want if want in options else rng.choice(options)
+        return want if want in options else rng.choice(options)
+
+    def _place_in_view(self, named: list[str], record: CaptureRecord) -> str | None:
+        """The first other object named that the frame shows, when it does not show the target."""
+        if not named or self._seen(named[0], record) > 0.0:
+            return None
+        return next((o for o in named[1:] if self._seen(o, record) > 0.0), None)
+
+    def _place_way(self, place: str, record: CaptureRecord, rng: random.Random) -> str | None:
+        """Over the place, or the way its mask leaves the image sideways; None when misread."""
+        if rng.random() < self._p_seen(self._seen(place, record)):
+            return None
+        edges, _ = record.masks.get(place, ((), 0.0))
+        return edges[0] if len(edges) == 1 and edges[0] in ("left", "right") else "above"
+
+    def _target_way(self, target: str | None, record: CaptureRecord, v: float, rng: random.Random) -> str | None:
+        """The way the target's mask asks for; None when it is not in the picture, or misread."""
         shown = record.masks.get(target) if target is not None else None
         v = self._seen(target, record) if target is not None else v  # the target's own
         if shown is None or v <= 0.0 or rng.random() < self._p_seen(v):
-            return rng.choice(options)  # nothing in the picture says where it is (or a misreading)
+            return None
         edges, share = shown
         v = record.visibility.get(target, 0.0)  # how much of it the frame shows: is it hidden?
-        want = ("front" if len(edges) > 1 or "top" in edges or "bottom" in edges or share > LARGE_IN_IMAGE
+        return ("front" if len(edges) > 1 or "top" in edges or "bottom" in edges or share > LARGE_IN_IMAGE
                 else edges[0] if edges else "above" if v < HIDDEN and share >= SMALL_IN_IMAGE else "closer")
-        return want if want in options else rng.choice(options)
+
+    def _named(self, query: Query) -> list[str]:
+        """The objects the question names, rooms left out (a room is where, not what)."""
+        return [o for o in query.objects if o not in self.rooms]
 
     def _visibility(self, query: Query, record: CaptureRecord) -> float:
-        named = [o for o in query.objects if o not in self.rooms]
-        return min((self._seen(o, record) for o in named), default=1.0)
+        return min((self._seen(o, record) for o in self._named(query)), default=1.0)
 
     @staticmethod
     def _seen(name: str, record: CaptureRecord) -> float:
