@@ -150,11 +150,12 @@ class Hands:
     # -- grasping ----------------------------------------------------------------------------
 
     def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False, base=None,
-                    off=(0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
+                    off=(0.0, 0.0), turned: bool = False) -> tuple[np.ndarray, np.ndarray]:
         """Grasp pose of the tcp and the approach direction for an item as seen: level from the
         front out of a front-open container (or when asked: to put it into one next), else from
         above across its narrow side — the fingers' sides as for the base at ``base`` (x, y, yaw;
-        default where it is), ``off`` (x, y) along it from its middle (:meth:`slides`)."""
+        default where it is), ``off`` (x, y) along it from its middle (:meth:`slides`); ``turned``,
+        the hand half a turn round about the approach (the pads swap sides, the camera moves)."""
         q = None if base is None else np.array([*base, *np.zeros(6)])
         c, bottom = seen.centroid.copy(), self.bottom(seen, where)
         box = self.scene.furniture.get(where.inside or "")
@@ -175,7 +176,7 @@ class Hands:
         left = self.body.base_T(q)[:3, 1]
         across = left if seen.round else np.array([-math.sin(seen.yaw), math.cos(seen.yaw), 0.0])
         across = np.array([across[0], across[1], 0.0]) / np.linalg.norm(across[:2])
-        if across @ left < 0:
+        if (across @ left < 0) != turned:  # turned: the same grasp, the hand half a turn round
             across = -across
         z = np.array([0.0, 0.0, -1.0])
         p = c.copy()
@@ -196,12 +197,12 @@ class Hands:
             stand = self.stand_to_grasp(seen, where, sideways, stood)
             if stand is None:  # nowhere else to stand that the arm would reach it from
                 return Outcome(False, f"{name}: no arm pose reaches it")
-            way, off = stand
+            way, off, turned = stand
             stood.append(self.body.base_pose())
             closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
             seen = closer or seen
             looks.append(seen)
-            G, a = self.grasp_frame(seen, where, way, off=off)
+            G, a = self.grasp_frame(seen, where, way, off=off, turned=turned)
             self.progress(0.1, "pre-grasp")
             self.body.fingers(self.body.cfg.gripper.stroke)
             if self.reach_pre(G, a, where.inside, APPROACH) is not None:
@@ -240,9 +241,11 @@ class Hands:
         self.carry()
         return Outcome(True)
 
-    def stand_to_grasp(self, seen: Seen, where: Where, sideways: bool, stood=()) -> tuple[bool, np.ndarray] | None:
+    def stand_to_grasp(self, seen: Seen, where: Where, sideways: bool,
+                       stood=()) -> tuple[bool, np.ndarray, bool] | None:
         """Drive to a work pose for grasping ``seen``, away from the poses ``stood`` at already;
-        returns whether the hand takes it from the side, and where along it from its middle
+        returns whether the hand takes it from the side, where along it from its middle, and
+        whether from above with the hand half a turn round (:meth:`grasp_frame`)
         (None: no pose left to try). An item on the floor that the hand cannot reach from above
         (a wall, a leaf or a piece of furniture beside or over it) is taken level from the side
         instead, from where the arm reaches that (unless it is too flat for the pads to hold from
@@ -252,19 +255,22 @@ class Hands:
         low = seen.top - self.bottom(seen, where) < SIDE_LEVEL_HEIGHT  # a plate: no side for the pads to take
         ways = (sideways,) if sideways or low or not floor else (False, True)
         offs = self.slides(seen) if floor else [np.zeros(2)]
-        for off in offs:
-            for way in ways:
-                if way and off.any():
-                    continue  # a level hand takes it by the side nearest the robot: no sliding along
-                # down by the floor the arm folds past furniture on its way: its joint way is checked too
-                pose = self.nav.reaching_pose(*self._work_request(seen, where, way, off), avoid=stood, routed=floor)
-                if pose is not None:
-                    self.nav.approach(pose)
-                    return way, off
+        # a level hand takes it by the side nearest the robot: no sliding along, no turning round;
+        # from above, the hand half a turn round is the same grasp of a two-finger gripper with the
+        # wrist camera on the other side (by a fridge's foot one side of it is under the door)
+        tries = [(way, off, turned) for off in offs for way in ways
+                 for turned in ((False,) if way else (False, True)) if not (way and off.any())]
+        for way, off, turned in tries:
+            # down by the floor the arm folds past furniture on its way: its joint way is checked too
+            pose = self.nav.reaching_pose(*self._work_request(seen, where, way, off, turned), avoid=stood,
+                                          routed=floor)
+            if pose is not None:
+                self.nav.approach(pose)
+                return way, off, turned
         if stood:
             return None
         self.nav.approach(self.nav.work_pose(*self._work_request(seen, where, ways[0])))
-        return ways[0], np.zeros(2)
+        return ways[0], np.zeros(2), False
 
     @staticmethod
     def slides(seen: Seen) -> list[np.ndarray]:
@@ -281,13 +287,14 @@ class Hands:
         along = np.array([math.cos(seen.yaw), math.sin(seen.yaw)])
         return out + [along * reach * SLIDE_SHARE * s for s in (1.0, -1.0)]
 
-    def _work_request(self, seen: Seen, where: Where, sideways: bool, off=(0.0, 0.0)) -> tuple:
+    def _work_request(self, seen: Seen, where: Where, sideways: bool, off=(0.0, 0.0),
+                      turned: bool = False) -> tuple:
         """What :meth:`Navigator.work_pose` takes for a grasp of ``seen``: the point, the way to
         the robot, the approach, the support, and the pre-grasp and grasp poses from a base pose."""
-        G, a = self.grasp_frame(seen, where, sideways, off=off)
+        G, a = self.grasp_frame(seen, where, sideways, off=off, turned=turned)
 
         def targets(base) -> tuple[np.ndarray, np.ndarray]:
-            G, a = self.grasp_frame(seen, where, sideways, base, off=off)
+            G, a = self.grasp_frame(seen, where, sideways, base, off=off, turned=turned)
             pre = G.copy()
             pre[:3, 3] -= a * APPROACH
             return pre, G
