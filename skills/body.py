@@ -36,6 +36,13 @@ PATH_STEP = 0.05
 NO_MOVE = 1e-3
 #: rad inside the joint limits a waypoint turned by a whole turn must stay
 UNWIND_MARGIN = 0.5
+#: the one turn a commanded shoulder lift is written in: a joint-space way between two values in it
+#: never swings the upper arm through pointing straight down into its own mount (+pi/2, the same
+#: pose as -3pi/2). Turned towards the last pose instead (the short way), a look swung it from
+#: 0.8 rad forward-down to 3.4 rad back-up through the mount, the arm stalled against the base, and
+#: the value drifted on to 5.59 rad, where the next line down crossed the 2 pi limit and was
+#: refused (store_firewood seed 18)
+SHOULDER_TURN = (-1.5 * np.pi, 0.5 * np.pi)
 #: m the arm's links (not the hand, which works close to things) keep off walls and furniture: the
 #: simulated arm's shapes carry a collision margin the model's cylinders do not. The camera's
 #: housing on the flange too: above a pie at the foot of a fridge it scraped the carcass's front
@@ -250,14 +257,15 @@ class Body:
     def _unwound(self, start: np.ndarray, qs: list[np.ndarray]) -> list[np.ndarray]:
         """Each waypoint's arm joints turned by whole turns to the same pose nearest the one
         before, well within the limits (a timed spline overshoots a little): IK may answer a wrist a full turn away, and driving that
-        turn sweeps the hand round through whatever is beside it."""
+        turn sweeps the hand round through whatever is beside it. The shoulder's lift is written
+        in :data:`SHOULDER_TURN` instead: the short way round may lead through the arm's mount."""
         lo, hi = np.array(self.cfg.arm.lower), np.array(self.cfg.arm.upper)
         out, prev = [], start
         for q in qs:
             q = q.copy()
             arm = q[3:] + 2 * np.pi * np.round((prev[3:] - q[3:]) / (2 * np.pi))
             ok = (arm >= lo + UNWIND_MARGIN) & (arm <= hi - UNWIND_MARGIN)
-            q[3:] = np.where(ok, arm, q[3:])
+            q[3:] = _shoulder_in_turn(np.where(ok, arm, q[3:]))
             out.append(q)
             prev = q
         return out
@@ -367,6 +375,15 @@ def _nearest_turn(q: np.ndarray, ref: np.ndarray, lower: np.ndarray, upper: np.n
     shifted = q - 2 * np.pi * np.round((q - ref) / (2 * np.pi))
     ok = (shifted >= lower) & (shifted <= upper)
     return np.where(ok, shifted, q)
+
+
+def _shoulder_in_turn(arm: np.ndarray) -> np.ndarray:
+    """The arm's joints with the shoulder's lift written in :data:`SHOULDER_TURN`."""
+    lo, hi = SHOULDER_TURN
+    out = np.array(arm, float)
+    if not lo <= out[1] < hi:  # (only then: the same value written back may differ in its last bit)
+        out[1] = lo + (out[1] - lo) % (hi - lo)
+    return out
 
 
 def angle_to(a: float, b: float) -> float:

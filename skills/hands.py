@@ -62,6 +62,10 @@ PRE_PLACE = 0.16  # pre-place distance along the approach axis
 #: the wrist rides above the hand and would strike the face above the opening (an oven's 0.3 m);
 #: leaned, the wrist stays out in front and the item is let go tilted, to settle on the floor
 FRONT_LEANS = (0.5, 0.8, 1.05)
+#: a hand holding a lying item is rolled about it to go into a top-open cavity from above when
+#: its approach is this far off vertical (sine), and the item's long side lies this close to the
+#: roll's axis (cosine): rolled about its length a log still lies, rolled about its width it stands
+LAY_LEVEL, LAY_ALONG = 0.5, 0.9
 GRASP_FORCE = 60.0
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
@@ -85,6 +89,24 @@ def leaned(R: np.ndarray, a: np.ndarray, angle: float) -> np.ndarray:
     across = np.cross(R[:, 2], a)
     n = float(np.linalg.norm(across))
     return R if angle == 0.0 or n < 1e-6 else se3.axis_angle(across / n, angle) @ R
+
+
+def laid_over(held, R: np.ndarray, a: np.ndarray) -> float:
+    """The lean (:func:`leaned`) that turns a hand at ``R`` holding ``held`` to approach along
+    ``a`` by rolling it about the item's long side, when that keeps the item lying as it lay: a
+    level hand holds a log lying across its approach, and a basket open on top takes the log only
+    from above (level, the wrist and the forearm would go down below its rim). 0 when the hand
+    approaches along ``a`` already, or when the roll would stand the item on its end."""
+    z = R[:, 2]
+    across = np.cross(z, a)
+    n = float(np.linalg.norm(across))
+    if n < LAY_LEVEL:
+        return 0.0
+    box, size = held.box()
+    long = R @ box[:3, :3][:, int(np.argmax(size))]
+    if abs(float(long @ across)) / n < LAY_ALONG:
+        return 0.0
+    return math.acos(float(np.clip(z @ a, -1.0, 1.0)))
 
 
 def how(a) -> str:
@@ -506,7 +528,12 @@ class Hands:
         else:
             spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
 
-        def targets(base, at=None, lean: float = 0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        cav = self.scene.furniture[where].info.cavity if inside else None
+        top_open = cav is not None and cav.open == "top"
+        # a top-open cavity is gone into from above: a level hand holding a lying item rolls it over
+        lay = laid_over(held, held.upright(self.body.pose("tcp")[:3, :3], a), a) if top_open else 0.0
+
+        def targets(base, at=None, lean: float = lay) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             """The hand's place pose, its pre-pose and the item's corners there, for the hand
             carried to the base pose ``base`` and stood up as it was taken (then leaned ``lean``
             toward ``a``), the item over ``at`` (default: the spot)."""
@@ -527,8 +554,7 @@ class Hands:
             return self.pre_pose(G, a, where if inside else None, PRE_PLACE, list(corners))[0], G
 
         self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach))
-        cav = self.scene.furniture[where].info.cavity if inside else None
-        if cav is not None and cav.open == "top" and where not in self.scene.leaves:
+        if top_open and where not in self.scene.leaves:
             # seen from the work pose, from above: what lies in the cavity already
             here = self.body.base_pose()
             spot = self.spot_in_cavity(where, name, spot, lambda at: self.nav.reaches(here, reach(here, at), routed=True))

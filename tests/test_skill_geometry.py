@@ -29,6 +29,8 @@ import numpy as np
 
 from skills.body import Body
 from skills.eyes import Held
+from skills.hands import laid_over, leaned
+from vap_bt.motion import se3
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, Leaf, SceneModel, Seen
 from skills.views import CLOSEST, _moved_to
@@ -247,6 +249,48 @@ def test_a_held_box_turned_to_a_slanted_outline_is_a_right_handed_pose():
     assert np.allclose(sorted(size), (0.01, 0.02, 0.2))
     local = (c - tcp[:3, 3] - T[:3, 3]) @ T[:3, :3]  # the corners in the box's frame
     assert np.allclose(np.abs(local), size / 2)  # the same box
+
+
+def _held_level(lo, hi) -> tuple[Held, np.ndarray]:
+    """An item seen in the box ``lo``..``hi`` taken by a level hand approaching along +y."""
+    lo, hi = np.array(lo, float), np.array(hi, float)
+    seen = Seen("item", (lo + hi) / 2, lo, hi, 0.0, False, None)
+    tcp = se3.frame_zx((0.0, 1.0, 0.0), (0.0, 0.0, -1.0), (lo + hi) / 2)
+    return Held.taken(seen, tcp), tcp
+
+
+def test_a_level_hand_rolls_a_log_lying_across_it_over_to_go_in_from_above():
+    down = np.array([0.0, 0.0, -1.0])
+    log, tcp = _held_level((0.88, 1.968, 0.0), (1.12, 2.032, 0.064))  # lying along x, across the hand
+    lean = laid_over(log, tcp[:3, :3], down)
+    assert np.isclose(lean, np.pi / 2)
+    R = leaned(tcp[:3, :3], down, lean)
+    assert np.allclose(R[:, 2], down)  # the hand now goes in from above
+    T = tcp.copy()
+    T[:3, :3] = R
+    c = log.corners_at(T)
+    assert np.allclose(np.ptp(c, axis=0), (0.24, 0.064, 0.064), atol=1e-9)  # the log still lies along x
+    # a log lying along the approach would stand on its end, a standing cup would tip over
+    along, tcp = _held_level((0.968, 1.88, 0.0), (1.032, 2.12, 0.064))
+    cup, _ = _held_level((0.96, 1.96, 0.0), (1.04, 2.04, 0.10))
+    assert laid_over(along, tcp[:3, :3], down) == 0.0 and laid_over(cup, tcp[:3, :3], down) == 0.0
+    # a hand already from above is not turned
+    above = se3.frame_zx(down, (1.0, 0.0, 0.0), (1.0, 2.0, 0.1))
+    assert laid_over(log, above[:3, :3], down) == 0.0
+
+
+def test_a_commanded_shoulder_lift_never_swings_the_upper_arm_through_its_mount():
+    body = Body(None, None, None)
+    start = np.array([1.0, 1.0, 0.0, -0.3, 0.8, 1.4, -1.2, -1.6, 1.3])  # the upper arm forward and down
+    back = start.copy()
+    back[4] = 3.4  # leaning back and up: the short way there passes pi/2, straight down
+    (q,) = body._unwound(start, [back])
+    assert np.isclose(q[4], 3.4 - 2 * np.pi)  # the same pose, reached up and over instead
+    assert not min(start[4], q[4]) < np.pi / 2 < max(start[4], q[4])  # the way does not pass straight down
+    drifted = start.copy()
+    drifted[4] = 5.59  # the upper arm up and forward, written a turn up
+    (q,) = body._unwound(drifted, [drifted])
+    assert np.isclose(q[4], 5.59 - 2 * np.pi)
 
 
 def test_the_arm_model_takes_another_held_item_in_place_of_the_first():
