@@ -51,6 +51,8 @@ ARM_SLACK = 0.5  # the last part of a drive, where the arm reaches over the furn
 #: base centre to a piece of furniture's front when looking at it; a surface higher than the
 #: camera's eye line is looked at from further back, to see its top
 STANDOFF, TALL_STANDOFF, TALL = 1.05, 1.8, 1.0
+#: m along a furniture's front a look pose moves off one where the base would not stand clear
+FRONT_SHIFTS = (0.0, 0.2, -0.2, 0.4, -0.4)
 FLOOR_STANDOFF = 0.72  # base centre to a floor item, from the corridor side
 CORRIDOR_SLACK = 0.3  # m past the corridor's middle the robot may stand to look at a floor item
 FLOOR_NEAREST = 0.5  # base centre to a floor item at least (the base's half length and a margin)
@@ -87,7 +89,7 @@ class Navigator:
         its support's front, facing it, or from the corridor side when it is on the floor."""
         f = self.scene.furniture.get(name)
         if f is not None:
-            return self._front_of(name)
+            return self._clear_front(name)
         door = self.scene.site.door(name)
         if door is not None:
             here = self.scene.room_at(*self.body.base_pose()[:2]) or door.rooms[0]
@@ -101,7 +103,7 @@ class Navigator:
         sup = self.scene.furniture.get(support or "")
         if sup is not None:
             lateral = float(np.clip(sup.local(point)[0], -sup.width / 2, sup.width / 2))
-            return self._front_of(sup.name, lateral)
+            return self._clear_front(sup.name, lateral)
         # on the floor: from the corridor's side, facing it, at most a little past the corridor's
         # middle (the far side is the furniture's). An item near that line is looked at from its
         # near side, facing the furniture: a pose held short of it stood on a slipped cup, facing
@@ -143,6 +145,15 @@ class Navigator:
                 if clear(pose, folded, same_room):
                     return pose
         return preferred
+
+    def _clear_front(self, name: str, lateral: float = 0.0) -> Pose:
+        """:meth:`_front_of` where the base stands clear there, else the nearest clear pose along
+        the furniture's front (:data:`FRONT_SHIFTS`): a knife dropped in front of the cutting board
+        lay under the pose to look at the egg from, and the find failed on it three times.
+        The first pose (the drive will find no clear way) when none is clear."""
+        obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
+        poses = [self._front_of(name, lateral + d) for d in FRONT_SHIFTS]
+        return next((p for p in poses if base_free(p, obstacles, PARKED_MARGIN, low=low)), poses[0])
 
     def _front_of(self, name: str, lateral: float = 0.0) -> Pose:
         f = self.scene.furniture[name]

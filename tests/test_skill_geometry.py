@@ -30,11 +30,11 @@ import numpy as np
 from skills.body import Body
 from skills.eyes import Held
 from skills.hands import laid_over, leaned
-from vap_bt.motion import se3
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, Leaf, SceneModel, Seen
 from skills.views import CLOSEST, _moved_to
-from vap_bt.motion.footprint import base_free
+from vap_bt.motion import se3
+from vap_bt.motion.footprint import Obb, base_free
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 
@@ -191,6 +191,22 @@ def test_a_floor_item_by_a_doorway_is_looked_at_from_a_clear_pose_round_it():
     assert abs(np.remainder(facing - pose[2] + np.pi, 2 * np.pi) - np.pi) < 1e-6
     # a clear preferred pose is kept as it was
     assert nav.standoff("cup", np.array([1.0, 1.0, 0.03])) == (1.0, 1.0 + 0.72, -np.pi / 2)
+
+
+def test_a_look_at_an_item_on_a_support_stands_clear_of_an_item_dropped_before_it():
+    # halve_egg seed 1 with injection: the knife dropped in front of the cutting board lay under
+    # the pose to look at the egg from, and the find failed on it three times
+    board = FurnitureInfo("cutting_board", "cutting_board", "surface", "kitchen", (3.0, 4.0, 0.0), (0.6, 0.5), 0.9)
+    scene = SceneModel(SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 6.0, 4.4)),), (), (board,)))
+    nav = Navigator(None, scene, None)
+    egg = np.array([3.0, 4.0, 0.93])
+    first = nav.standoff("egg", egg, "cutting_board")
+    scene.floor_items["knife"] = Obb.aabb((first[0] - 0.1, first[1] - 0.03, 0.0), (first[0] + 0.1, first[1] + 0.03, 0.02))
+    assert not base_free(first, scene.obstacles(), 0.015, low=scene.low_obstacles())
+    pose = nav.standoff("egg", egg, "cutting_board")
+    assert base_free(pose, scene.obstacles(), 0.015, low=scene.low_obstacles())
+    assert pose[2] == first[2] and 0.1 < np.hypot(pose[0] - first[0], pose[1] - first[1]) <= 0.4  # along the front
+    assert np.isclose((np.array(pose[:2]) - first[:2]) @ (np.cos(first[2]), np.sin(first[2])), 0.0)
 
 
 def test_a_drive_that_finds_no_clear_way_does_not_run_the_base_into_a_wall():
