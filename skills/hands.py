@@ -3,8 +3,9 @@
 Every motion starts from a measurement. To grasp, the skill looks where the executive believes
 the item is (the goal's hint), measures it in the frame (:class:`~skills.scene_model.Seen`:
 centroid, box, the yaw of its longer side), stands at a work pose for it, looks again from
-there, and takes it from above across its narrow side — or level from the front out of a
-front-open cavity, pitched down when the item is too low for a level hand. The grasp pose is
+there, and takes it from above across its narrow side (the hand either way round: the two
+fingers are alike, the wrist camera is not) — or level from the front out of a front-open
+cavity, pitched down when the item is too low for a level hand. The grasp pose is
 reached through a pre-pose ``APPROACH`` back along the approach axis, the last stretch a straight
 line; the fingers close with a force limit and the gripper says whether they stopped on
 something. An item on the floor (where a situation dropped it: against a wall, beside a piece of
@@ -14,7 +15,8 @@ another stand. What the hand then holds is remembered as the camera measured it 
 which is how a place knows where the item's bottom is; held, it is part of the arm's collision
 model (:meth:`~skills.body.Body.hold`), so the arm's ways keep it off the furniture and the arm.
 Into a top-open cavity an item is let go where the camera, looking in from the work pose, shows
-nothing yet (:meth:`Hands.spot_in_cavity`).
+nothing yet (:meth:`Hands.spot_in_cavity`), from above: a level hand holding a log lying across
+it rolls it over about its length first (:func:`laid_over`).
 
 IK solutions for pre-poses are kept clear of the furniture and walls of the map (cavities carved
 out, :class:`~skills.scene_model.SceneModel`); the straight last stretch into a grasp or onto a
@@ -91,7 +93,7 @@ def leaned(R: np.ndarray, a: np.ndarray, angle: float) -> np.ndarray:
     return R if angle == 0.0 or n < 1e-6 else se3.axis_angle(across / n, angle) @ R
 
 
-def laid_over(held, R: np.ndarray, a: np.ndarray) -> float:
+def laid_over(held: Held, R: np.ndarray, a: np.ndarray) -> float:
     """The lean (:func:`leaned`) that turns a hand at ``R`` holding ``held`` to approach along
     ``a`` by rolling it about the item's long side, when that keeps the item lying as it lay: a
     level hand holds a log lying across its approach, and a basket open on top takes the log only
