@@ -73,6 +73,17 @@ def test_replan_searches_when_the_tail_no_longer_works():
     assert task.with_state(state).validate(again.actions)
 
 
+def test_a_door_left_ajar_is_opened_though_it_is_neither_open_nor_closed():
+    """Table I: open needs only the door in view. The camera found the door neither open nor
+    closed (ajar), so the belief holds neither atom; the plan still gets through it by opening it."""
+    task = load(TREES / "collect_cup.yaml").planning
+    ajar = frozenset(set(task.init) - {Atom("open", ("door_lk",)), Atom("closed", ("door_lk",))})
+    plan = Planner(task.with_state(ajar), first_engine="search").plan()
+    assert [a.args for a in plan.actions if a.name == "open"] == [("door_lk",)]
+    assert task.with_state(ajar).validate(plan.actions)
+    assert up_valid(task.with_state(ajar), plan.actions)
+
+
 def test_replan_of_a_seen_state_comes_from_the_cache():
     task = load(TREES / "boil_water.yaml").planning
     planner = Planner(task, first_engine="search")

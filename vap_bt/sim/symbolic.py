@@ -105,10 +105,14 @@ class SymbolicWorld:
         if not ga.applicable(truth):
             self._new_view()
             return ActionOutcome(False, f"{ga}: nothing to act on")
+        intended = set(ga.apply(frozenset(self.atoms)))
         if spec is not None and self._inject(spec, ga):
-            self._injected.append(InjectedSituation(action, tuple(args), spec.kind, self._step))
+            # a failure that leaves the world as success would (an open door "fails to open") is
+            # no situation: there is nothing to detect, so the oracle does not count it
+            if self.atoms != intended:
+                self._injected.append(InjectedSituation(action, tuple(args), spec.kind, self._step))
         else:
-            self.atoms = set(ga.apply(frozenset(self.atoms)))
+            self.atoms = intended
         self._new_view()
         ctx.feedback(1.0, f"{ga} done")
         return ActionOutcome(True)
