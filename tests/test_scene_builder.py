@@ -179,3 +179,52 @@ def test_an_object_moved_by_a_person_is_noticed_and_relocated_from_the_frame():
         assert r["success"] and r["goal_satisfied"], r["reason"]
     finally:
         s.close()
+
+
+class MeasuredAt:
+    """Geometry (the builder's protocol) that measured each detected object at a given point."""
+
+    def __init__(self, at: dict[str, tuple[float, float, float]]) -> None:
+        self.at = at
+
+    def integrate(self, frame: Frame) -> list[str]:
+        return [d.name for d in frame.detections]
+
+    def forget(self, names) -> None:
+        for n in names:
+            self.at.pop(n, None)
+
+    def relations(self, name: str, held=()) -> set[Atom]:
+        return set()
+
+    def centroid(self, name: str):
+        return self.at.get(name)
+
+    def box(self, name: str):
+        return None
+
+
+def test_a_checks_view_moves_belief_point_to_where_the_frame_showed_the_thing():
+    """UpdateFromObservation (Alg. 2): a cup just set down on the counter is aimed at the middle
+    of the counter's top until a frame shows it; then at where the frame showed it. What the hand
+    holds, and a thing the frame does not show, keep their points; no fact changes."""
+    from vap_bt.scene.graph import SceneGraph, SceneObject
+
+    task = load(TREES / "collect_cup.yaml").planning
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen"),),
+                   furniture=(FurnitureInfo("counter", "counter", "surface", "kitchen", pose=(2.0, 1.0, 0.0), height=0.9),))
+    b = SceneGraphBuilder(task.knowledge, task.objects, site,
+                          geometry=lambda *_: MeasuredAt({"cup": (2.6, 1.2, 0.95), "counter": (2.0, 1.0, 0.45)}))
+    graph = SceneGraph({"cup": SceneObject("cup", "cup", centroid=(0.0, 0.0, 0.4), located=frozenset({A("on(cup, coffee_table)")}))},
+                       {A("on(cup, counter)")})
+    facts = set(graph.facts)
+    assert b.aim(graph, ("cup",)).point == (2.0, 1.0, 0.9)  # the measured point is stale: the counter's top
+    b.observe(graph, Frame("f1", 0.0, (Detection("counter", "counter"),), depth=np.zeros((2, 2), np.float32)))
+    assert b.aim(graph, ("cup",)).point == (2.0, 1.0, 0.9)  # a frame without the cup says nothing of it
+    b.observe(graph, Frame("f2", 0.0, (Detection("cup", "cup"),), depth=np.zeros((2, 2), np.float32)))
+    assert b.aim(graph, ("cup",)).point == (2.6, 1.2, 0.95)
+    assert graph.facts == facts and b.detected("cup")
+    graph.facts = {A("holding(cup)")}
+    b.geometry.at["cup"] = (9.0, 9.0, 9.0)
+    b.observe(graph, Frame("f3", 0.0, (Detection("cup", "cup"),), depth=np.zeros((2, 2), np.float32)))
+    assert graph.objects["cup"].centroid == (2.6, 1.2, 0.95)  # in the hand: the wrist camera's view places nothing
