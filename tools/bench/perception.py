@@ -37,6 +37,7 @@ import json
 import math
 import multiprocessing
 import os
+import random
 import sys
 import tempfile
 import time
@@ -147,6 +148,32 @@ def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
     return (mid - half) / (1 + z * z / n), (mid + half) / (1 + z * z / n)
 
 
+#: resamples for the bootstrap intervals of the viewpoint figures (seeded: the bench is reproducible)
+BOOTSTRAP = 2000
+
+
+def _per_resolution(rows: list[dict]) -> float:
+    resolved = sum(r["resolved"] for r in rows)
+    return sum(r["moves_resolved"] for r in rows) / resolved if resolved else math.nan
+
+
+def bootstrap(pairs: list[tuple[list[dict], list[dict]]], seed: int = 0) -> tuple[float, float]:
+    """95 % percentile interval of (viewpoints per resolution of the first) minus (of the second),
+    resampling whole episodes — a (task, seed) with its row under each configuration — since the
+    checks of one episode are not independent of each other."""
+    rng = random.Random(seed)
+    diffs = []
+    for _ in range(BOOTSTRAP):
+        pick = [pairs[rng.randrange(len(pairs))] for _ in pairs]
+        d = _per_resolution([r for a, _ in pick for r in a]) - _per_resolution([r for _, b in pick for r in b])
+        if not math.isnan(d):
+            diffs.append(d)
+    diffs.sort()
+    if not diffs:
+        return math.nan, math.nan
+    return diffs[int(0.025 * len(diffs))], diffs[min(len(diffs) - 1, int(0.975 * len(diffs)))]
+
+
 def pooled(rows: list[dict]) -> dict:
     s = lambda key: sum(r[key] for r in rows)  # noqa: E731
     actions = s("actions")
@@ -237,10 +264,17 @@ def summarise(all_rows: list[dict], args) -> dict:
     inproc = [r for r in all_rows if "error" not in r and r["vlm"] == "sim" and key(r) in base]
     same_inproc = sum(base[key(r)] == r["fingerprint"] for r in inproc)
     p, nolp, lean, greedy = (plain[c] for c in ("paper", "lean-nolp", "lean", "greedy"))
+    by_episode = defaultdict(dict)
+    for r in rows:
+        if not r["latency"] and r["config"] in ("paper", "greedy"):
+            by_episode[(r["task"], r["seed"])][r["config"]] = r
+    pairs = [([e["paper"]], [e["greedy"]]) for e in by_episode.values() if len(e) == 2]
     ratio = lambda a, b: a / b if b else math.nan  # noqa: E731
     return {
         "plain": plain, "timed": timed, "latency_reruns_same": [same, len(reruns)],
         "in_process_same": [same_inproc, len(inproc)],
+        # VLM-guided minus greedy viewpoints per resolution, over the episodes both ran
+        "viewpoints_difference_95": [round(x, 3) for x in bootstrap(pairs)],
         "crashed": [f"{r['task']} seed {r['seed']} {r['config']}" for r in all_rows if "error" in r],
         "ratios": {"lean_nolp_round_trips": ratio(nolp["per_action"], p["per_action"]),
                    "lean_round_trips": ratio(lean["per_action"], p["per_action"]),
@@ -256,6 +290,10 @@ def summarise(all_rows: list[dict], args) -> dict:
             "vlm_viewpoints<=1.5": p["viewpoints_per_resolution"] <= 1.5,
             "vlm_viewpoints<greedy": p["viewpoints_per_resolution"] < greedy["viewpoints_per_resolution"]},
     }
+
+
+def p_minus_g(plain: dict) -> float:
+    return plain["paper"]["viewpoints_per_resolution"] - plain["greedy"]["viewpoints_per_resolution"]
 
 
 def print_summary(s: dict, args) -> None:
@@ -290,6 +328,8 @@ def print_summary(s: dict, args) -> None:
               f"resolution ({x['resolved']} resolved by a view that settled, of {x['uncertain']} uncertain; "
               f"{x['agreed']} decided by agreeing views with the budget spent; all moves / resolutions "
               f"{x['moves_per_resolution_all']:.2f})")
+    lo, hi = s["viewpoints_difference_95"]
+    print(f"  VLM-guided minus greedy: {p_minus_g(plain):+.2f}, 95 % bootstrap interval over episodes {lo:+.2f} to {hi:+.2f}")
     if s["crashed"]:
         print(f"\ncrashed (left out above): {', '.join(s['crashed'])}")
     print("\ntargets: " + ", ".join(f"{k} {'met' if v else 'NOT met'}" for k, v in s["targets"].items()))

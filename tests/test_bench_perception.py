@@ -1,0 +1,34 @@
+"""The perception bench's viewpoint statistics (tools/bench/perception.py): the bootstrap interval
+of VLM-guided minus greedy viewpoints per resolution, resampling whole episodes."""
+
+from __future__ import annotations
+
+import sys
+
+from conftest import ROOT
+
+sys.path.insert(0, str(ROOT / "tools" / "bench"))
+import perception  # noqa: E402
+
+
+def episode(resolved: int, moves: int) -> dict:
+    return {"resolved": resolved, "moves_resolved": moves}
+
+
+def test_the_same_moves_under_both_strategies_give_an_interval_of_zero():
+    pairs = [([episode(3, 4)], [episode(3, 4)]), ([episode(2, 2)], [episode(2, 2)])]
+    assert perception.bootstrap(pairs) == (0.0, 0.0)
+
+
+def test_a_strategy_that_always_needs_one_move_more_is_told_apart():
+    pairs = [([episode(2, 2)], [episode(2, 4)]) for _ in range(20)]
+    lo, hi = perception.bootstrap(pairs)
+    assert lo == hi == -1.0
+
+
+def test_noisy_episodes_give_an_interval_that_holds_the_pooled_difference():
+    pairs = [([episode(2, 2 + (i % 3 == 0))], [episode(2, 2 + (i % 2 == 0))]) for i in range(30)]
+    pooled = perception._per_resolution([a for p in pairs for a in p[0]]) - \
+        perception._per_resolution([b for p in pairs for b in p[1]])
+    lo, hi = perception.bootstrap(pairs)
+    assert lo < pooled < hi and lo < 0 < hi
