@@ -146,33 +146,3 @@ def test_the_greedy_round_skips_a_way_it_was_refused_before():
     status, node, ctx = run(child, camera, strategy="greedy")
     assert status == Status.SUCCESS
     assert camera.asked == ["left", "right", "behind"]  # after "left", "right" is refused: "behind" instead
-
-
-def test_each_move_is_aimed_after_the_last_view_is_folded_into_belief():
-    """Alg. 2's UpdateFromObservation comes before the next view: the move is aimed at where
-    belief puts the target once the check's last frame has updated it."""
-    from vap_bt.robot.camera import Aim
-
-    seen, aims = [], []
-
-    class AimingCamera(Camera):
-        def move_view(self, aim, direction: str) -> bool:
-            aims.append(aim.point)
-            return super().move_view(aim, direction)
-
-    def observe(graph, frame):
-        seen.append(frame.frame_id)
-
-    def aim(graph, names):
-        return Aim(names, (float(len(seen)), 0.0, 0.0))
-
-    from vap_bt.scene.graph import SceneGraph
-    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False), view("yyyyn", False), view("yyyyy", True)])
-    ctx = ExecutionContext(graph=SceneGraph.of_facts(set()), vlm=Suggests("left"), camera=AimingCamera(), skills=None,
-                           observe=observe, aim=aim)
-    node = ActivePerception(ctx, child, "pre", None, 0)
-    for _ in range(50):
-        node.tick_once()
-        if node.status != Status.RUNNING:
-            break
-    assert node.status == Status.SUCCESS and seen == ["f", "f"] and aims == [(1.0, 0.0, 0.0), (2.0, 0.0, 0.0)]

@@ -11,9 +11,7 @@ and the decorator fails, which fails the plan's tree and hands control to the ex
 While nothing is decided the decorator moves the camera — at most K times — and runs the child
 again: the viewpoint strategy (:mod:`vap_bt.perception.viewpoints`) gives the direction (the
 VLM's suggestion about the last frame, or the next of the greedy round), and the move is work in
-flight like any other; the child is not ticked meanwhile. Before it moves, the last frame is folded
-into belief (``ctx.observe``, Alg. 2's UpdateFromObservation), so the next view is aimed at where
-that frame showed the target rather than where belief had put it. A direction the robot cannot move to
+flight like any other; the child is not ticked meanwhile. A direction the robot cannot move to
 is replaced at once by another (a frame from the same spot would show the same picture), and
 when no direction is left, or the check is about the hand or what it holds (the wrist camera
 moves with the hand: no base move shows it better), the views so far are all there are. With
@@ -144,15 +142,9 @@ class ActivePerception(py_trees.decorators.Decorator):
             return self._decide(exhausted=True)
         r.direction = direction
         self._tried.add(direction)
-        self._job, self._stage = self.ctx.submit(self._look_from_elsewhere, self.verify.observation, direction), "move"
-        return Status.RUNNING
-
-    def _look_from_elsewhere(self, frame, direction: str) -> bool:
-        """Work in flight: fold the last view into belief (Alg. 2's UpdateFromObservation), then
-        move the view ``direction`` round where belief now puts the atom's target."""
-        self.ctx.observe(self.ctx.graph, frame)
         aim = self.ctx.aim(self.ctx.graph, (target_of(self.atom), *self.atom.args))
-        return self.ctx.camera.move_view(aim, direction)
+        self._job, self._stage = self.ctx.submit(self.ctx.camera.move_view, aim, direction), "move"
+        return Status.RUNNING
 
     def _moved(self) -> Status:
         if not self._job.done():

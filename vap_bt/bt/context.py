@@ -23,7 +23,6 @@ from vap_bt.perception.viewpoints import ViewpointStrategy
 from vap_bt.perception.vlm import VLM
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.robot.camera import Aim, Camera
-from vap_bt.robot.frame import Frame
 from vap_bt.skill import SkillClient
 
 Phase = Literal["pre", "eff", "goal"]
@@ -153,9 +152,6 @@ class ExecutionContext:
     felt: Callable[[SceneGraph, Atom], bool | None] = lambda graph, atom: None
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
-    #: UpdateFromObservation (paper Alg. 2): fold a check's frame into belief's geometry before
-    #: the next view of the check is aimed (the scene-graph builder's ``observe``)
-    observe: Callable[[SceneGraph, Frame], None] = lambda graph, frame: None
     #: names no detector ever finds (the map's rooms and floors): never "missing" from a view
     undetectable: frozenset = frozenset()
     #: what belief says about a goal's objects, sent with it (the scene-graph builder's ``hints``)

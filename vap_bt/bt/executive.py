@@ -152,7 +152,7 @@ class Executive:
         executor = make_executor(self.s.threads)
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, observe=self.builder.observe, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt,
+                               aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                verified=Verified(self.s.protocol.reuse), executor=executor,
                                record=self.on_verification, profile=self.profile)

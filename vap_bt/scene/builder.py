@@ -293,21 +293,6 @@ class SceneGraphBuilder:
             self.geometry.integrate(frame)
         return names
 
-    def observe(self, graph: SceneGraph, frame: Frame) -> None:
-        """UpdateFromObservation (paper Alg. 2): fold a check's view into the evidence, and put
-        belief's point for each portable object the frame shows where the frame showed it. A
-        check's next view then aims at the thing, not at the middle of what belief says it rests
-        on (a bottle just set down at the end of a counter was cut by the image's edge in every
-        view aimed at the counter's middle). Facts are the check's verdict's to change."""
-        for name in self.integrate(frame):
-            obj = graph.objects.get(name)
-            if obj is None or name in self._static or Atom("holding", (name,)) in graph.facts:
-                continue
-            now = self.node(name)
-            if now.centroid is not None:
-                graph.objects[name] = obj.seen(centroid=now.centroid, box=now.box,
-                                               located=frozenset(graph.location(name)))
-
     def forget(self, names) -> None:
         """Drop what earlier frames said of ``names`` (they may have moved since)."""
         for n in names:
