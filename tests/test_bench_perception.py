@@ -16,19 +16,18 @@ def episode(resolved: int, moves: int) -> dict:
 
 
 def test_the_same_moves_under_both_strategies_give_an_interval_of_zero():
-    pairs = [([episode(3, 4)], [episode(3, 4)]), ([episode(2, 2)], [episode(2, 2)])]
+    pairs = [(episode(3, 4), episode(3, 4)), (episode(2, 2), episode(2, 2))]
     assert perception.bootstrap(pairs) == (0.0, 0.0)
 
 
 def test_a_strategy_that_always_needs_one_move_more_is_told_apart():
-    pairs = [([episode(2, 2)], [episode(2, 4)]) for _ in range(20)]
+    pairs = [(episode(2, 2), episode(2, 4)) for _ in range(20)]
     lo, hi = perception.bootstrap(pairs)
     assert lo == hi == -1.0
 
 
 def test_noisy_episodes_give_an_interval_that_holds_the_pooled_difference():
-    pairs = [([episode(2, 2 + (i % 3 == 0))], [episode(2, 2 + (i % 2 == 0))]) for i in range(30)]
-    pooled = perception._per_resolution([a for p in pairs for a in p[0]]) - \
-        perception._per_resolution([b for p in pairs for b in p[1]])
+    pairs = [(episode(2, 2 + (i % 3 == 0)), episode(2, 2 + (i % 2 == 0))) for i in range(30)]
+    pooled = perception._per_resolution([a for a, _ in pairs]) - perception._per_resolution([b for _, b in pairs])
     lo, hi = perception.bootstrap(pairs)
     assert lo < pooled < hi and lo < 0 < hi

@@ -157,7 +157,7 @@ def _per_resolution(rows: list[dict]) -> float:
     return sum(r["moves_resolved"] for r in rows) / resolved if resolved else math.nan
 
 
-def bootstrap(pairs: list[tuple[list[dict], list[dict]]], seed: int = 0) -> tuple[float, float]:
+def bootstrap(pairs: list[tuple[dict, dict]], seed: int = 0) -> tuple[float, float]:
     """95 % percentile interval of (viewpoints per resolution of the first) minus (of the second),
     resampling whole episodes — a (task, seed) with its row under each configuration — since the
     checks of one episode are not independent of each other."""
@@ -165,7 +165,7 @@ def bootstrap(pairs: list[tuple[list[dict], list[dict]]], seed: int = 0) -> tupl
     diffs = []
     for _ in range(BOOTSTRAP):
         pick = [pairs[rng.randrange(len(pairs))] for _ in pairs]
-        d = _per_resolution([r for a, _ in pick for r in a]) - _per_resolution([r for _, b in pick for r in b])
+        d = _per_resolution([a for a, _ in pick]) - _per_resolution([b for _, b in pick])
         if not math.isnan(d):
             diffs.append(d)
     diffs.sort()
@@ -188,7 +188,7 @@ def pooled(rows: list[dict]) -> dict:
             "vlm_wall_s": s("vlm_wall_s"), "wall_per_action": s("vlm_wall_s") / actions if actions else math.nan,
             "checks_wall_per_action": (s("vlm_wall_s") - s("survey_wall_s")) / actions if actions else math.nan,
             "uncertain": s("uncertain"), "resolved": s("resolved"), "agreed": s("agreed"),
-            "viewpoints_per_resolution": s("moves_resolved") / s("resolved") if s("resolved") else math.nan,
+            "viewpoints_per_resolution": _per_resolution(rows),
             "moves_per_resolution_all": s("moves_uncertain") / s("resolved") if s("resolved") else math.nan}
 
 
@@ -268,12 +268,13 @@ def summarise(all_rows: list[dict], args) -> dict:
     for r in rows:
         if not r["latency"] and r["config"] in ("paper", "greedy"):
             by_episode[(r["task"], r["seed"])][r["config"]] = r
-    pairs = [([e["paper"]], [e["greedy"]]) for e in by_episode.values() if len(e) == 2]
+    pairs = [(e["paper"], e["greedy"]) for e in by_episode.values() if len(e) == 2]
     ratio = lambda a, b: a / b if b else math.nan  # noqa: E731
     return {
         "plain": plain, "timed": timed, "latency_reruns_same": [same, len(reruns)],
         "in_process_same": [same_inproc, len(inproc)],
-        # VLM-guided minus greedy viewpoints per resolution, over the episodes both ran
+        # VLM-guided minus greedy viewpoints per resolution, and its interval over the episodes both ran
+        "viewpoints_difference": p["viewpoints_per_resolution"] - greedy["viewpoints_per_resolution"],
         "viewpoints_difference_95": [round(x, 3) for x in bootstrap(pairs)],
         "crashed": [f"{r['task']} seed {r['seed']} {r['config']}" for r in all_rows if "error" in r],
         "ratios": {"lean_nolp_round_trips": ratio(nolp["per_action"], p["per_action"]),
@@ -290,10 +291,6 @@ def summarise(all_rows: list[dict], args) -> dict:
             "vlm_viewpoints<=1.5": p["viewpoints_per_resolution"] <= 1.5,
             "vlm_viewpoints<greedy": p["viewpoints_per_resolution"] < greedy["viewpoints_per_resolution"]},
     }
-
-
-def p_minus_g(plain: dict) -> float:
-    return plain["paper"]["viewpoints_per_resolution"] - plain["greedy"]["viewpoints_per_resolution"]
 
 
 def print_summary(s: dict, args) -> None:
@@ -329,7 +326,7 @@ def print_summary(s: dict, args) -> None:
               f"{x['agreed']} decided by agreeing views with the budget spent; all moves / resolutions "
               f"{x['moves_per_resolution_all']:.2f})")
     lo, hi = s["viewpoints_difference_95"]
-    print(f"  VLM-guided minus greedy: {p_minus_g(plain):+.2f}, 95 % bootstrap interval over episodes {lo:+.2f} to {hi:+.2f}")
+    print(f"  VLM-guided minus greedy: {s['viewpoints_difference']:+.2f}, 95 % bootstrap interval over episodes {lo:+.2f} to {hi:+.2f}")
     if s["crashed"]:
         print(f"\ncrashed (left out above): {', '.join(s['crashed'])}")
     print("\ntargets: " + ", ".join(f"{k} {'met' if v else 'NOT met'}" for k, v in s["targets"].items()))
