@@ -150,9 +150,16 @@ def kitchen(furniture: dict[str, str], items: dict[str, str] | None = None) -> s
 
 
 def world_of(tmp_path, name: str, scene: str, situations=None, **kw):
-    """A pybullet world for a task file with ``scene`` (YAML under ``scene:``) and a trivial goal."""
+    """A pybullet world for a task file with ``scene`` (YAML under ``scene:``) and a trivial goal.
+
+    Its base is perfectly localised: the scripts put the hand where the truth says a thing is, in
+    the true frame, to test the drivers' physics (a robot's localisation error is the skills' to
+    cope with, and their tests keep it)."""
+    from vap_bt.sim.localization import LocalizationModel
     from vap_bt.sim.pybullet_world import PybulletWorld
     from vap_bt.taskfile import load
+
+    kw.setdefault("localization", LocalizationModel.perfect())
 
     domain = (Path(__file__).resolve().parents[1] / "domains" / "household.pddl").as_posix()
     path = tmp_path / f"{name}.yaml"

@@ -47,7 +47,8 @@ def test_frames_carry_images_masks_and_detections():
         obs = camera(world).capture(world.aim_at(("mug",)))  # the skills' camera service aims
         h, w = obs.rgb.shape[:2]
         assert obs.rgb.dtype == np.uint8 and obs.depth.shape == (h, w) and obs.masks.shape == (h, w)
-        assert 0.1 < float(obs.depth.min()) and float(obs.depth.max()) <= 5.0
+        valid = obs.depth[obs.depth > 0]  # 0: no return (a D435i-like camera has holes; the sky above the walls returns nothing)
+        assert valid.size > 0.5 * obs.depth.size and 0.17 < float(valid.min()) and float(valid.max()) <= 5.0
         seen = {d.name for d in obs.detections if (obs.masks == d.mask_id).sum() == d.pixels}
         assert {"mug", "bowl", "dining_table"} <= seen
         threshold = world.detector.pixel_threshold(w, h)

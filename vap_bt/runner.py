@@ -399,6 +399,16 @@ class Session:
         s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable)
         return {"reason": survey.reason, "build_s": round(survey.sweep.seconds, 4), "views": survey.sweep.frames, **s}
 
+    def _sensors(self) -> dict:
+        """The world's sensor models (printed next to the detector): the depth camera's noise and
+        the localiser's error, where the world has them."""
+        out = {}
+        for key, attr in (("depth_noise", "depth_noise"), ("localization", "localization_model")):
+            model = getattr(self.world, attr, None)
+            if model is not None:
+                out[key] = model.describe()
+        return out
+
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],
                 wall: float) -> dict:
         parse = self.goal_parse
@@ -417,7 +427,8 @@ class Session:
                      "belief": sorted(map(str, self.task.prior)) if self.task.spec.scene is not None else "problem init"},
             "config": asdict(cfg),
             "world": {"name": self.world.name, "injection": self.world_situations(),
-                      "detector": detector.describe() if detector is not None else None},
+                      "detector": detector.describe() if detector is not None else None,
+                      **self._sensors()},
             "goal_parsing": self._goal_parsing_report(),
             "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts),
                     "wall_s": round(vlm.wall_s, 4), "query_s": round(vlm.seconds, 4),

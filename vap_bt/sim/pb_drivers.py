@@ -28,6 +28,12 @@ and Table II injection), checks ``cancelled()`` and ``stop()`` before every step
 * :class:`PybulletBase` — ``follow`` drives through the poses one after the other, each leg a
   time-optimal jerk-limited rest-to-rest move (ruckig) at ``speed`` of the base's limits (a base
   controller's own profile, not a plan); ends ``blocked`` when the base falls ``BASE_TRACKING_LIMIT`` behind.
+
+Poses in the map frame — the base's ``pose()``, a path to follow, the tcp's pose, the base's
+joints in a whole-body trajectory — are in the frame the robot believes it is in
+(:mod:`~vap_bt.sim.localization`): reported through the localiser's error, and commanded through
+it, so a path lands the true base at the commanded pose less the error. When a motion of the base
+ends, the localiser may update (a new error once the base has moved far enough).
 * :class:`PybulletWristCamera` — ``capture`` is the frame of what the wrist camera sees now:
   detections from the segmentation above the detector's pixel threshold, masks, metric depth,
   intrinsics, the camera pose, and the capture record the simulated VLM answers from
@@ -54,6 +60,7 @@ from vap_bt.motion.limits import base_limits
 from vap_bt.motion.tracking import point_to_point
 from vap_bt.robot.drivers import Cancelled, GripperState, JointState, JointTrajectory, MotionResult
 from vap_bt.robot.frame import Frame
+from vap_bt.sim.localization import Localization
 from vap_bt.sim.pb_injection import Injection
 from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_scene import Hinge, Scene, Thing
@@ -90,6 +97,7 @@ class Simulation(Protocol):
     robot: Robot
     scene: Scene
     injection: Injection
+    localization: Localization
     dt: float
 
     def step(self) -> None:
@@ -176,7 +184,7 @@ class PybulletArm(_Stoppable):
 
     def tcp_pose(self) -> np.ndarray:
         with self.sim.lock:
-            return self.sim.robot.link_pose("tcp")
+            return self.sim.localization.believed_T(self.sim.robot.link_pose("tcp"))
 
     def _hold_now(self) -> None:
         _hold(self.sim.robot, base=False)
@@ -189,6 +197,8 @@ class PybulletArm(_Stoppable):
                 return MotionResult(False, f"refused: {checked}")
             times, q, qd = checked
             first = len(r.target) - q.shape[1]  # 3: the arm alone; 0: base and arm together
+            if first == 0:  # the base's joints are commanded in the believed map frame
+                q, qd = self._true_base(q, qd)
             self._stop.clear()
             dt = self.sim.dt
             steps = max(1, math.ceil(times[-1] / dt - 1e-9))
@@ -201,8 +211,20 @@ class PybulletArm(_Stoppable):
                     vel[first:] = [np.interp(t, times, qd[:, j]) for j in range(q.shape[1])]
                     yield body, vel
 
-            return self._track(setpoints(), cancelled, lambda body: float(np.max(np.abs(r.q()[3:] - body[3:]))),
-                               TRACKING_LIMIT, "the arm is {:.2f} rad behind its set-point")
+            out = self._track(setpoints(), cancelled, lambda body: float(np.max(np.abs(r.q()[3:] - body[3:]))),
+                              TRACKING_LIMIT, "the arm is {:.2f} rad behind its set-point")
+            if first == 0:
+                self.sim.localization.settle(r.base_pose)
+            return out
+
+    def _true_base(self, q: np.ndarray, qd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """A whole-body trajectory's base columns (believed frame) as the true base follows them."""
+        loc = self.sim.localization
+        q, qd = q.copy(), qd.copy()
+        q[:, :3] = [loc.true(row) for row in q[:, :3]]
+        c, s = math.cos(loc.offset[2]), math.sin(loc.offset[2])
+        qd[:, :2] = qd[:, :2] @ np.array([[c, -s], [s, c]])  # velocities turned back by the heading error
+        return q, qd
 
     def _check(self, tr: JointTrajectory, here: np.ndarray):
         """(times, positions, velocities) in the arm's joint order, or why the trajectory is refused."""
@@ -212,7 +234,9 @@ class PybulletArm(_Stoppable):
                     f"(with the base's: {list(self.body_joints)})")
         names, lower, upper = (self.body_joints, self.body_lower, self.body_upper) if whole else \
             (self.joints, self.lower, self.upper)
-        here = self.sim.robot.q() if whole else here
+        if whole:  # where the robot believes its base is
+            here = self.sim.robot.q()
+            here[:3] = self.sim.localization.believed(here[:3])
         order = [tr.joints.index(j) for j in names]
         times = np.asarray(tr.times, float)
         q = np.asarray(tr.positions, float)
@@ -355,8 +379,9 @@ class PybulletBase(_Stoppable):
     """The mobile base's path follower (holonomic: x, y, yaw)."""
 
     def pose(self) -> tuple[float, float, float]:
+        """The localiser's pose of the base (the believed map frame)."""
         with self.sim.lock:
-            return self.sim.robot.base_pose
+            return self.sim.localization.believed(self.sim.robot.base_pose)
 
     def _hold_now(self) -> None:
         _hold(self.sim.robot, arm=False)
@@ -372,7 +397,8 @@ class PybulletBase(_Stoppable):
             self._stop.clear()
             limits = base_limits().scaled(speed)
             legs, here = [], r.target[:3].copy()
-            for p in poses:
+            # the controller drives until the localiser says it is there
+            for p in (sim.localization.true(p) for p in poses):
                 leg = point_to_point(here, np.array(p), limits, dt=sim.dt, angular=(False, False, True))
                 legs.append(leg)
                 here = leg.q[-1]
@@ -389,8 +415,10 @@ class PybulletBase(_Stoppable):
                         covered += float(np.linalg.norm(leg.q[i, :2] - leg.q[i - 1, :2]))
                         sim.injection.base_progress(covered / length if length > 0 else 1.0, length)
 
-            return self._track(setpoints(), cancelled, lambda body: float(np.linalg.norm(r.q()[:2] - body[:2])),
-                               BASE_TRACKING_LIMIT, "the base is {:.2f} m behind its set-point")
+            out = self._track(setpoints(), cancelled, lambda body: float(np.linalg.norm(r.q()[:2] - body[:2])),
+                              BASE_TRACKING_LIMIT, "the base is {:.2f} m behind its set-point")
+            sim.localization.settle(r.base_pose)  # at rest: the localiser may update
+            return out
 
 
 class PybulletWristCamera:

@@ -47,7 +47,9 @@ from vap_bt.robot.state import RobotState, quat_xyzw
 from vap_bt.scene.layout import floor_of, layout_facts
 from vap_bt.perception.backends.image import rgb_sha1
 from vap_bt.sim.captures import CaptureLog, CaptureRecord
+from vap_bt.sim.depth_noise import DepthNoiseModel
 from vap_bt.sim.detector import DetectorModel
+from vap_bt.sim.localization import Localization, LocalizationModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, look_pose, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
@@ -82,7 +84,8 @@ class PybulletWorld:
 
     def __init__(self, task, seed: int = 0, gui: bool = False, injection: bool = True,
                  situations: SituationModel | None = None, disturbances: list[dict] | None = None,
-                 image_size: tuple[int, int] = (320, 240), detector: DetectorModel | None = None) -> None:
+                 image_size: tuple[int, int] = (320, 240), detector: DetectorModel | None = None,
+                 depth_noise: DepthNoiseModel | None = None, localization: LocalizationModel | None = None) -> None:
         self.task = task
         self.layout = task.spec.scene
         if self.layout is None:
@@ -93,6 +96,10 @@ class PybulletWorld:
         self.disturbances = list(disturbances or [])
         self.camera = _camera(image_size)
         self.detector = detector or DetectorModel()
+        #: what the wrist depth camera returns (:mod:`depth_noise`) and how well the base knows
+        #: where it is (:mod:`localization`): sensors of a real robot's kind, not perfect ones
+        self.depth_noise = depth_noise or DepthNoiseModel()
+        self.localization_model = localization or LocalizationModel()
         self.captures = CaptureLog()
         self.oracle = FunctionOracle(self._holds, self.injected)
         self._lock = threading.RLock()
@@ -124,6 +131,8 @@ class PybulletWorld:
             self.robot = Robot(self.cid)
             q0 = np.array([*self.plan.robot, *START_ARM])
             self.robot.reset(q0)
+            self.localization = Localization(self.localization_model, seed)
+            self.localization.reset(self.robot.base_pose)
             rigid = {a for a in layout_facts(self.layout) if a.predicate in ("clear", "openable", "fillable", "connects")}
             self.truth = Truth(self.scene, self.robot, self.catalog, rigid, self._visible_names)
             self._injected: list[InjectedSituation] = []
@@ -305,10 +314,14 @@ class PybulletWorld:
                 extents[name] = (edges, k / pixels)
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
+        sha = rgb_sha1(r.rgb)
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
-                                        masks=extents, image_sha1=rgb_sha1(r.rgb)))
-        return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
-                     intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
+                                        masks=extents, image_sha1=sha))
+        # the sensors' own errors: stereo depth, and the pose in the frame the robot believes it is in
+        depth = self.depth_noise.apply(r.depth, r.camera.fx, r.camera.far, (self.seed, int(sha[:15], 16)))
+        return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=depth, masks=masks,
+                     intrinsics=r.intrinsics, camera_pose=self.localization.believed_T(r.pose),
+                     aim=tuple(aim.names) if aim else ())
 
     def _doorways(self, r: Render) -> dict[str, tuple[int, float, tuple[str, ...]]]:
         """Each room door's doorway as the frame shows it (see :func:`doorway_pixels`)."""
@@ -363,9 +376,11 @@ class PybulletWorld:
     # ------------------------------------------------------------ robot interfaces: body and map
 
     def state(self) -> RobotState:
+        """The body's state as its drivers report it: poses in the map frame the robot believes
+        it is in (:mod:`localization`)."""
         with self._lock:
-            x, y, yaw = self.robot.base_pose
-            T = self.robot.link_pose("tcp")
+            x, y, yaw = self.localization.believed(self.robot.base_pose)
+            T = self.localization.believed_T(self.robot.link_pose("tcp"))
             return RobotState(self.ticks * DT, self.plan.room_at(x, y), (x, y, yaw),
                               tuple(float(v) for v in self.robot.q()[3:]),
                               (*map(float, T[:3, 3]), *quat_xyzw(T[:3, :3])),
