@@ -1,11 +1,16 @@
 """Ground truth: which household atoms hold, read off the physics state.
 
-Every predicate of ``domains/household.pddl`` is decided from geometry, joints, constraints or the
-visible state of an object — never from what the plan expected:
+Every predicate of ``domains/household.pddl`` is decided from physics — contacts, geometry,
+joints, constraints or the visible state of an object — never from what the plan expected, and
+never from a threshold the executive's perception also uses (its own are in
+:mod:`vap_bt.scene.relations`, chosen for what a camera can measure):
 
-* ``on(o, s)``: o rests on s's top (its bottom within a few cm of the top, its centre over it);
-  ``on(o, floor_r)``: o lies on the floor inside room r;
-* ``inside(o, c)``: o's centre lies in c's cavity (a drawer's cavity moves with its tray);
+* ``on(o, s)``: s supports o. Some body of o touches s — pybullet's closest points between them
+  within ``CONTACT_GAP`` (a resting body sits on its support within a millimetre, a lifted one is
+  clear by its lift) — with the contact normal pointing up from s (within 45° of vertical: o
+  presses down on s, it does not lean on its side), and o is not held; or o rests so on another
+  item that s supports (a bowl standing on a plate on the table is supported by the table).
+  ``on(o, floor_r)``: the same with room r's floor slab, o's centre inside the room's outline;
 * ``holding(o)``: the grasp constraint ties o to the hand; ``hand_empty``: no item is held;
 * ``open``/``closed``: the hinge or slide's fraction of its full travel against the catalogue's
   thresholds (a half-open door is neither); things without a door (a basket) are always open;
@@ -13,8 +18,12 @@ visible state of an object — never from what the plan expected:
   a door is in both of its rooms); ``robot_at(x)``: the base stands in x's room within
   ``AT_DISTANCE`` of x (floors: anywhere in the room; held items: always);
 * ``inview(x)``: x covers at least the camera's pixel threshold in the current wrist image;
-* ``blocking(b, o)``: b stands on o's support, in front of o (towards the side the robot works
-  from), overlapping it sideways; ``reachable(o)``: nothing blocks o;
+* ``blocking(b, o)``: b stands on o's support inside the volume the gripper sweeps reaching o
+  from the support's front (the side the robot works from; a floor's: the room's corridor): a
+  corridor as wide as the open gripper (the wider of its body and its open fingers, read off the
+  robot's collision shapes), from o's front face to the support's front edge (on a floor: the
+  gripper's length, flange to tcp, in front of o) — part of b's footprint lies in it, and b's
+  centre is in front of o's; ``reachable(o)``: nothing blocks o;
 * ``filled``, ``sliced``, ``heated``, ``turned_on``: the object's physical state;
 * ``clear``, ``openable``, ``fillable``, ``connects``: rigid facts of the layout.
 """
@@ -35,7 +44,12 @@ from vap_bt.sim.pb_scene import Scene, Thing
 
 AT_DISTANCE = 1.3  # m from the base centre to the thing's box
 RIGID = ("clear", "openable", "fillable", "connects")
-BLOCK_DEPTH = 0.25  # how far in front of an item a blocker may stand
+#: m between two bodies within which they touch: pybullet keeps resting bodies within a millimetre
+#: of each other (slightly interpenetrating); 5 mm absorbs the solver's jitter, and anything lifted
+#: off its support by more is not resting on it
+CONTACT_GAP = 0.005
+#: a contact supports o when its normal, from s towards o, is within 45 degrees of vertical
+SUPPORT_NORMAL = math.cos(math.radians(45.0))
 
 
 class Truth:
@@ -44,6 +58,8 @@ class Truth:
         self.scene, self.robot, self.catalog = scene, robot, catalog
         self.rigid = rigid
         self.visible_names = visible_names  # names above the pixel threshold in the wrist view
+        #: how wide the gripper sweeps reaching for something, and how long it is (m)
+        self.gripper_width, self.gripper_length = _gripper_size(robot)
 
     # ------------------------------------------------------------ geometry
 
@@ -173,20 +189,41 @@ class Truth:
         return t.hinge is not None and self.joint_fraction(t) <= self.catalog.closed_below
 
     def _on(self, o: str, s: str) -> bool:
-        if self.held() == o:
+        return self._supported(o, s, frozenset())
+
+    def _supported(self, o: str, s: str, via: frozenset[str]) -> bool:
+        """Does ``s`` support item ``o`` (directly, or through items in ``via``'s complement)?"""
+        held = self.held()
+        if held == o:
             return False
-        box = self.aabb(o)
-        c = self.center(o)
-        t = self.scene.things[s]
-        if t.room is not None:  # a floor
-            return box[2] < 0.05 and self.scene.plan.rooms[t.room].contains(c[0], c[1])
-        f = t.furniture
-        if f is None:
+        to, ts = self.scene.things[o], self.scene.things[s]
+        if to.item is None:
             return False
-        top = f.kind.size[2]
-        local = self._local(f, c)
-        w, d = f.kind.size[0] / 2, f.kind.size[1] / 2
-        return top - 0.03 <= box[2] <= top + 0.04 and abs(local[0]) <= w and abs(local[1]) <= d
+        if ts.room is not None:  # a floor: its slab, and o inside the room's outline
+            c = self.center(o)
+            if not (ts.bodies and self.scene.plan.rooms[ts.room].contains(c[0], c[1])):
+                return False
+        elif ts.furniture is None:
+            return False
+        if self._presses_on(to.bodies, ts.bodies):
+            return True
+        # through another item standing on s (not one already on the way: no cycles)
+        for t in self.scene.items():
+            if t.name in (o, held) or t.name in via:
+                continue
+            if self._presses_on(to.bodies, t.bodies) and self._supported(t.name, s, via | {o}):
+                return True
+        return False
+
+    def _presses_on(self, upper: list[int], lower: list[int]) -> bool:
+        """Do any of the ``upper`` bodies touch any of the ``lower`` ones from above?"""
+        cid = self.scene.client
+        for a in upper:
+            for b in lower:
+                # the normal on B points from B towards A: up, when B carries A
+                if any(p[7][2] >= SUPPORT_NORMAL for p in pb.getClosestPoints(a, b, CONTACT_GAP, physicsClientId=cid)):
+                    return True
+        return False
 
     def _inside(self, o: str, c: str) -> bool:
         if self.held() == o:
@@ -214,11 +251,21 @@ class Truth:
         if support is None or support != self._support(b):
             return False
         front, side = self._front_axes(support)
-        d = self.center(b) - self.center(o)
-        ahead = float(d[:2] @ front[:2])
-        lateral = abs(float(d[:2] @ side[:2]))
-        reach = (max(tb.kind.extent[:2]) + max(to.kind.extent[:2])) / 2 + 0.02
-        return 0.0 < ahead < BLOCK_DEPTH and lateral < reach
+        co = self.center(o)
+        if float((self.center(b) - co)[:2] @ front[:2]) <= 0.0:
+            return False  # behind o or beside it: not on the way in
+        # o's and b's footprints in the corridor's axes (ahead of o's centre, across)
+        po = np.concatenate(self.outline(o))[:, :2] - co[:2]
+        pb_ = np.concatenate(self.outline(b))[:, :2] - co[:2]
+        a_o = float((po @ front[:2]).max())  # o's front face
+        ahead, across = pb_ @ front[:2], pb_ @ side[:2]
+        t = self.scene.things[support]
+        if t.furniture is not None:  # as far as the support's front edge
+            end = float((np.asarray(t.furniture.to_world((0.0, t.furniture.kind.size[1] / 2, 0.0)))[:2] - co[:2]) @ front[:2])
+        else:  # on a floor: the gripper's own length in front of o
+            end = a_o + self.gripper_length
+        half = self.gripper_width / 2
+        return bool(ahead.max() > a_o and ahead.min() < end and across.max() > -half and across.min() < half)
 
     def _reachable(self, o: str) -> bool:
         if self.scene.things[o].item is None:
@@ -257,7 +304,7 @@ class Truth:
         """Unit vectors towards the side the robot works from, and along that side."""
         t = self.scene.things[support]
         if t.furniture is not None:
-            f = t.furniture.front
+            f = np.asarray(t.furniture.front, float)
         else:  # floor items are approached from the corridor
             f = np.array([0.0, 1.0, 0.0])
         return f, np.array([-f[1], f[0], 0.0])
@@ -271,3 +318,21 @@ class Truth:
                 if self._inside(o, t.name):
                     return t.name
         return None
+
+
+def _gripper_size(robot: Robot) -> tuple[float, float]:
+    """The gripper's width across its fingers, open (the wider of its body and its fingers at the
+    full stroke with their pads), and its length from the flange to the tcp — from the robot's own
+    collision shapes and configuration."""
+    g = robot.cfg.gripper
+    width = 0.0
+    for link in ("gripper_base_link", *(_finger_links(robot))):
+        for shape in pb.getCollisionShapeData(robot.id, robot.link[link], physicsClientId=robot.cid):
+            if shape[2] == pb.GEOM_BOX:
+                dims = shape[3]  # full extents; the fingers slide along the flange's y axis
+                width = max(width, dims[1] if link == "gripper_base_link" else g.stroke + 2 * dims[1])
+    return width, float(g.tcp_offset)
+
+
+def _finger_links(robot: Robot) -> list[str]:
+    return [n for n in robot.link if "finger" in n]
