@@ -176,3 +176,63 @@ def test_no_object_the_executive_holds_can_reach_the_oracle():
     assert not found, found
     # and the check itself can see an oracle where there is one
     assert any(isinstance(o, FunctionOracle) for o in reachable(session))
+
+
+# -- the executive's geometric thresholds are its own ---------------------------------------------
+
+
+def _relative_imports(path: Path) -> set[str]:
+    """Dotted names of the modules ``path`` imports relatively, resolved against its package."""
+    package = path.relative_to(ROOT).with_suffix("").parts[:-1]
+    out: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_text(), filename=str(path))):
+        if isinstance(node, ast.ImportFrom) and node.level > 0:
+            base = package[:len(package) - (node.level - 1)]
+            out.add(".".join((*base, *(node.module.split(".") if node.module else ()))))
+    return out
+
+
+def test_the_scene_graph_never_imports_the_simulator():
+    """vap_bt/scene (the RGB-D scene graph, its relations) imports nothing of vap_bt.sim, however
+    written (absolute or relative), nor pybullet."""
+    offenders = {str(p.relative_to(ROOT)): sorted(m for m in module_imports(p) | _relative_imports(p)
+                                                  if m == "vap_bt.sim" or m.startswith("vap_bt.sim.")
+                                                  or m.split(".")[0] == "pybullet")
+                 for p in files("vap_bt/scene")}
+    assert files("vap_bt/scene") and not {k: v for k, v in offenders.items() if v}
+
+
+def _module_constants(path: Path, module: str) -> dict[str, float]:
+    """The module-level numeric constants (UPPER_CASE names) of ``path``, importable as
+    ``module``, by name, with their values."""
+    import importlib
+
+    names = set()
+    for node in ast.parse(path.read_text(), filename=str(path)).body:
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target] if isinstance(node, ast.AnnAssign) else []
+        names |= {t.id for t in targets if isinstance(t, ast.Name) and t.id.isupper()}
+    mod = importlib.import_module(module)
+    values = {n: getattr(mod, n) for n in names}
+    return {n: float(v) for n, v in values.items() if isinstance(v, (int, float)) and not isinstance(v, bool)}
+
+
+def test_the_relation_thresholds_are_not_the_oracles():
+    """Every default of :class:`vap_bt.scene.relations.Thresholds` is a number written there (with
+    its reason), none is a name, none of the oracle's constant names appears anywhere in
+    vap_bt/scene, and no threshold equals one of the oracle's constants: the executive's
+    perception and the truth it is scored against share nothing by construction."""
+    relations = ROOT / "vap_bt/scene/relations.py"
+    cls = next(n for n in ast.walk(ast.parse(relations.read_text())) if isinstance(n, ast.ClassDef) and n.name == "Thresholds")
+    fields = [n for n in cls.body if isinstance(n, ast.AnnAssign)]
+    assert fields and all(isinstance(f.value, ast.Constant) and isinstance(f.value.value, float) for f in fields), \
+        "every threshold is a literal number"
+    values = {f.target.id: f.value.value for f in fields}
+    oracle = _module_constants(ROOT / "vap_bt/sim/pb_truth.py", "vap_bt.sim.pb_truth")
+    assert {"CONTACT_GAP", "SUPPORT_NORMAL"} <= set(oracle)  # the oracle's physical tolerances
+    used = {name for p in files("vap_bt/scene") for name, _ in identifiers(p)}
+    assert not used & set(oracle), f"oracle constants named in vap_bt/scene: {sorted(used & set(oracle))}"
+    shared = {k: v for k, v in values.items() if any(abs(v - c) < 1e-12 for c in oracle.values())}
+    assert not shared, f"thresholds equal to an oracle constant: {shared}"
+    from vap_bt.scene.relations import THRESHOLDS, Thresholds
+
+    assert THRESHOLDS == Thresholds() and {k: getattr(THRESHOLDS, k) for k in values} == values

@@ -53,30 +53,41 @@ from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
 
 @dataclass(frozen=True)
 class Thresholds:
-    """Every threshold of the geometric relations (metres), each with its reason."""
+    """Every threshold of the geometric relations (metres), each with its reason.
 
-    #: o's bottom may lie this far below s's top: depth noise and voxel averaging on both clouds
-    #: (about 1 cm each) plus a support seen only at its front edge, whose top is then a little low
-    on_below: float = 0.03
+    They are the executive's own, chosen for what its sensors return: a wrist stereo camera of
+    the RealSense D435 class, whose depth error grows with the square of the range (Intel's
+    formula: 8 mm RMS at 1.5 m, where the sweep sees most items; 14 mm at 2 m) and which loses
+    pixels at edges, and a base localised to a few centimetres, so that what one view measured
+    and the map's footprints disagree by that much. Nothing here comes from the simulator: its
+    oracle decides truth from contacts and the gripper's real size, never from these numbers."""
+
+    #: o's bottom may lie this far below s's top: o's bottom is the low quantile of its noisy
+    #: points (two RMS low: 1.6 cm), s's top the high quantile of its own (one RMS high: 0.8 cm),
+    #: and voxel averaging on both clouds blurs each by up to a centimetre
+    on_below: float = 0.035
     #: o's bottom may lie this far above s's top: the lowest point a camera sees of a round item
-    #: viewed from 60 degrees above is half its radius over the contact (1.6 cm for a lemon),
-    #: plus half a voxel and a centimetre of depth noise
-    on_above: float = 0.04
-    #: o's centroid may lie this far outside s's extent in x/y: voxel averaging pulls a cloud's
-    #: edge in by up to half a voxel (the centroid of anything resting on s is over s)
-    on_margin: float = 0.01
-    #: c's volume is grown by this on every side but the top for ``inside``: half a voxel of
-    #: averaging on c's edge and a voxel of noise on o's box
-    inside_margin: float = 0.02
+    #: viewed from 60 degrees above is half its radius over the contact (1.6 cm for a lemon), the
+    #: low quantile leaves out a few more millimetres, edge holes eat a pixel of the item's lower
+    #: outline (5 mm at 1.5 m), plus half a voxel and two RMS of depth noise (1.6 cm)
+    on_above: float = 0.05
+    #: o's centroid may lie this far outside s's extent in x/y: s's extent includes its map
+    #: footprint, and the view that measured o was taken from a base localised to a few
+    #: centimetres (AMCL-class: 2-5 cm), plus half a voxel of averaging on a cloud's edge
+    on_margin: float = 0.05
+    #: c's volume is grown by this on every side but the top for ``inside``: localisation between
+    #: the view and c's map footprint (a few centimetres) and two RMS of depth noise on o's box
+    inside_margin: float = 0.045
     #: centroids closer than this are ``near``: about a forearm, the distance within which people
     #: call two things on one table next to each other
     near: float = 0.3
-    #: b blocks o when its centroid is at most this far in front of o's: a hand's length; further
-    #: forward the gripper reaches o between them
-    block_depth: float = 0.25
+    #: b blocks o when its centroid is at most this far in front of o's: the hand (16 cm from the
+    #: flange to the fingertips) and the 14 cm it comes in along before it closes
+    block_depth: float = 0.3
     #: sideways, b blocks o when their extents across the approach overlap or come closer than
-    #: this: the gripper's fingers need about 2 cm either side
-    block_side_margin: float = 0.02
+    #: this: the gripper's fingers need about 2 cm either side, and the boxes' sides carry half a
+    #: centimetre of depth noise
+    block_side_margin: float = 0.025
 
 
 THRESHOLDS = Thresholds()
