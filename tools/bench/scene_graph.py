@@ -70,6 +70,19 @@ def main(argv: list[str] | None = None) -> int:
     builds = [x["build_s"] for x in rows]
     print(f"\npooled over {len(rows)} scenes: relations P {p:.3f} R {r:.3f}; seen by the camera P {ps:.3f} "
           f"R {rs:.3f}; worst scene P {worst_p:.3f} R {worst_r:.3f}")
+    for title, key in (("per predicate", "by_predicate"), ("per predicate, seen by the camera", "by_predicate_perceived"),
+                       ("affordances between items the camera saw (not in the headline)", "affordances_perceived")):
+        preds = sorted({p for x in rows for p in x.get(key, {})})
+        if not preds:
+            continue
+        cells = []
+        for pred in preds:
+            tp = sum(x[key][pred]["tp"] for x in rows if pred in x.get(key, {}))
+            fp = sum(x[key][pred]["fp"] for x in rows if pred in x.get(key, {}))
+            fn = sum(x[key][pred]["fn"] for x in rows if pred in x.get(key, {}))
+            cells.append(f"{pred} P {tp / (tp + fp) if tp + fp else 1.0:.3f} R {tp / (tp + fn) if tp + fn else 1.0:.3f} "
+                         f"({tp} tp, {fp} fp, {fn} fn)")
+        print(f"{title}: " + "; ".join(cells))
     print(f"build time per scene: median {statistics.median(builds):.2f} s, max {max(builds):.2f} s; "
           f"targets P >= 0.95 and R >= 0.90 per scene: {'met' if worst_p >= 0.95 and worst_r >= 0.90 else 'NOT met'}")
     if args.json:

@@ -10,7 +10,10 @@ the runner (which holds the oracle); the executive never sees the score.
   supplied is not counted as perception;
 * **detections** — the objects perception reported (items, furniture, doors) against the objects
   the scene has; recall says how much the sweep found (what is shut in a closed container cannot
-  be found); precision is 1 unless a detector reports a thing the scene does not have.
+  be found); precision is 1 unless a detector reports a thing the scene does not have;
+* **by predicate** — the same per relation, over all items and over the perceived ones, and
+  beside them the items' ``blocking``/``reachable`` (geometry too, though not location: they are
+  not in the headline figure, which stays comparable with earlier measurements).
 """
 
 from __future__ import annotations
@@ -22,6 +25,8 @@ from vap_bt.domain.task import PlanningTask
 from vap_bt.sim.oracle import Oracle
 
 RELATIONS = ("on", "inside", "in_room")
+#: relations between items the graph also derives by geometry, scored apart
+AFFORDANCES = ("blocking", "reachable")
 
 
 def _pr(believed: set[Atom], true: set[Atom]) -> dict:
@@ -31,12 +36,16 @@ def _pr(believed: set[Atom], true: set[Atom]) -> dict:
             "tp": tp, "fp": len(believed - true), "fn": len(true - believed)}
 
 
-def candidates(task: PlanningTask, items: list[str]) -> set[Atom]:
+def candidates(task: PlanningTask, items: list[str], predicates=RELATIONS) -> set[Atom]:
+    """Every typed atom of ``predicates`` (unary or binary) whose first argument is an item."""
     k = task.knowledge
     out = set()
-    for p in RELATIONS:
+    for p in predicates:
         sig = k.predicates.get(p)
-        if sig is None or len(sig) != 2:
+        if sig is None or len(sig) not in (1, 2):
+            continue
+        if len(sig) == 1:
+            out |= {Atom(p, (o,)) for o in items if k.is_subtype(task.objects[o], sig[0])}
             continue
         for o, x in product(items, task.objects):
             if k.is_subtype(task.objects[o], sig[0]) and k.is_subtype(task.objects[x], sig[1]) and o != x:
@@ -59,6 +68,17 @@ def score_graph(oracle: Oracle, task: PlanningTask, facts: frozenset[Atom], perc
            "detections": {**_pr(set(perceived), set(detectable)), "missed": sorted(set(detectable) - perceived)},
            "by_predicate": {p: _pr({a for a in believed if a.predicate == p}, {a for a in true if a.predicate == p})
                             for p in RELATIONS if any(a.predicate == p for a in cands)}}
+    out["by_predicate_perceived"] = {p: _pr({a for a in believed if a.predicate == p and a.args[0] in seen},
+                                            {a for a in true if a.predicate == p and a.args[0] in seen})
+                                     for p in out["by_predicate"]}
+    extra = candidates(task, items, AFFORDANCES)
+    if extra:
+        # blocking(b, o) is about two items: perceived when the camera saw both
+        both = {a for a in extra if set(a.args) <= seen}
+        true_x = set(oracle.true_atoms(both))
+        held = {a for a in facts if a in both}
+        out["affordances_perceived"] = {p: _pr({a for a in held if a.predicate == p}, {a for a in true_x if a.predicate == p})
+                                        for p in AFFORDANCES if any(a.predicate == p for a in both)}
     if believed - true:
         out["wrong"] = sorted(map(str, believed - true))
     if true - believed:
