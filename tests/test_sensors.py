@@ -37,11 +37,11 @@ def errors(z: float, frames: int = 12) -> np.ndarray:
 def test_depth_noise_grows_with_the_square_of_the_range():
     near, far = errors(1.0), errors(2.0)
     s1, s2 = float(near.std()), float(far.std())
-    # Intel's formula: 3.6 mm at 1 m, 14.3 mm at 2 m (see the model's docstring)
+    # Intel's formula times the household factor: 9.4 mm at 1 m, 37.7 mm at 2 m
     assert 0.75 * NOISE.sigma(1.0) < s1 < 1.25 * NOISE.sigma(1.0)
     assert 0.75 * NOISE.sigma(2.0) < s2 < 1.25 * NOISE.sigma(2.0)
     assert 3.0 < s2 / s1 < 5.0  # twice as far, four times the error
-    assert abs(float(near.mean())) < 0.002 and abs(float(far.mean())) < 0.006  # no bias
+    assert abs(float(near.mean())) < 0.004 and abs(float(far.mean())) < 0.015  # no bias
 
 
 def test_depth_noise_comes_in_patches():
@@ -76,7 +76,7 @@ def test_no_depth_outside_the_working_range():
     d = NOISE.apply(z, FX, 5.0, (0, 3))
     assert (d[:, :40] == 0).all() and (d[:, 120:] == 0).all()
     valid = d[d > 0]
-    assert valid.min() >= NOISE.min_range and 0.175 < NOISE.min_range < 0.2
+    assert valid.min() >= NOISE.min_range and 0.16 < NOISE.min_range < 0.18  # Intel: f·B/126 = 0.168 m
 
 
 def test_the_same_picture_gives_the_same_depth():
@@ -110,7 +110,7 @@ def test_localisation_error_stays_within_its_bounds():
     assert np.all(np.abs(e[:, :2]) <= m.max_xy + 1e-12) and np.all(np.abs(e[:, 2]) <= m.max_yaw + 1e-12)
     assert 0.8 * m.sigma_xy < e[:, 0].std() < 1.2 * m.sigma_xy
     assert 0.8 * m.sigma_yaw < e[:, 2].std() < 1.2 * m.sigma_yaw
-    assert m.max_xy == pytest.approx(0.09) and math.degrees(m.max_yaw) == pytest.approx(4.5)
+    assert m.max_xy == pytest.approx(0.125) and math.degrees(m.max_yaw) == pytest.approx(5.0)
 
 
 def test_localisation_maps_poses_both_ways():

@@ -8,10 +8,11 @@ parameter with its source; every report prints them in ``world.depth_noise``):
 1. **Axial error growing with the square of the range.** Depth is ``z = f·B / d`` for a
    disparity ``d`` measured to a fraction of a pixel, so an error of ``s`` pixels in ``d`` is an
    error of ``z² · s / (f·B)`` in ``z`` (Intel's RMS-error formula: *Tuning depth cameras for best
-   performance*, Grunnet-Jepsen et al., Intel 2019). ``f`` is the depth imager's own focal length
-   at its native resolution — not the simulated image's: the disparity is searched on the
-   imager's pixels, and the simulated frame's 320 px width is a rendering cost, which must not
-   change how noisy the sensor is.
+   performance*, Grunnet-Jepsen et al., Intel 2019), times a factor ``k`` for ordinary household
+   surfaces, on which measured noise runs several times Intel's floor. ``f`` is the depth
+   imager's own focal length at its native resolution — not the simulated image's: the disparity
+   is searched on the imager's pixels, and the simulated frame's 320 px width is a rendering
+   cost, which must not change how noisy the sensor is.
 2. **Spatially correlated.** Stereo matching aggregates costs over a window and smooths the
    disparity (semi-global matching), so errors come in patches a few native pixels across, not as
    per-pixel white noise: a flat wall looks gently wavy. The noise is a coarse grid of normal draws
@@ -50,25 +51,30 @@ import numpy as np
 class DepthNoiseModel:
     """A D435i-like wrist depth camera (metres, pixels of the native depth imager unless stated).
 
-    Sources: Intel RealSense D400 Series datasheet (baseline, depth field of view, range) and
-    Intel's white paper *Tuning depth cameras for best performance* (the RMS-error formula, the
-    subpixel accuracy, the recommended 848 × 480 depth resolution, the minimum range as the focal
-    length times the baseline over the disparity search range). The shares of correlated noise
-    and of holes are modelling choices sized to what D435 depth maps show, stated as such."""
+    Sources, as collected in /work/notes/perception_sources.md, section 7 and calibration (g)
+    (status there: FOUND, FOUND-2nd, judgment): Intel's white paper *Tuning depth cameras for best
+    performance* (Grunnet-Jepsen, Sweetser, Woodfill) for the RMS-error formula, its D435 curve's
+    parameters (848 px, 90° HFOV, 50 mm baseline, 0.08 px subpixel) and the minimum range
+    ``f·B/126``; Carfagni et al., Sensors 19(3):489, 2019 (a D415 on a plain wall: 3-5 times
+    Intel's floor) for the household factor. The shares of correlated noise and of holes are
+    modelling choices sized to what D435 depth maps show, stated as such."""
 
-    #: stereo baseline of the D435/D435i (datasheet: 50 mm)
+    #: stereo baseline of the D435/D435i (Intel's D435 RMS curve: 50 mm; FOUND-2nd)
     baseline: float = 0.050
-    #: horizontal field of view of the depth imagers (datasheet: 87° ± 3°)
-    hfov_deg: float = 87.0
+    #: horizontal field of view Intel uses for the D435's depth (90°; FOUND in Intel's *Subpixel
+    #: Linearity Improvement for D400*; the datasheet's 87° is within its ±3°)
+    hfov_deg: float = 90.0
     #: native depth width the disparity is computed at: 848 × 480 is Intel's recommended depth
-    #: resolution for the D435 (white paper), the one a robot streams
+    #: resolution for the D435 (white paper; FOUND), the one a robot streams
     native_width: int = 848
-    #: RMS subpixel error of the disparity (white paper: 0.08 px typical for a well-textured
-    #: scene with the projector on; 0.05-0.1 over their measurements)
+    #: RMS subpixel error of the disparity (white paper: 0.08 px in Intel's D435 curve; below 0.1
+    #: and approaching 0.05 on a well-textured target; FOUND-2nd)
     subpixel: float = 0.08
-    #: disparities the matcher searches (D400 ASIC default: 126); with ``f`` and ``baseline`` this
-    #: sets the minimum range, ``f·B/126`` = 0.18 m at 848 × 480 (the datasheet's ~0.28 m is at
-    #: 1280 × 720, where ``f`` is 1.5 times larger)
+    #: measured noise over Intel's floor on ordinary household surfaces (the note's calibration
+    #: (g): 2-3, judgment from a D415 measuring 3-5 times the floor on a plain wall; the middle)
+    household: float = 2.5
+    #: disparities the matcher searches (D400 default: 126); with ``f`` and ``baseline`` this sets
+    #: the minimum range, ``f·B/126`` = 0.168 m at 848 × 480 (Intel BKM; FOUND-2nd)
     disparities: int = 126
     #: beyond this no depth is returned (datasheet: ideal range to 3 m, returns to ~10 m); the
     #: renderer's far plane (5 m) cuts first: past it there is no surface to return
@@ -77,7 +83,7 @@ class DepthNoiseModel:
     #: noise on a flat target is mostly low-frequency waviness with little pixel-to-pixel grain)
     correlated_share: float = 0.8
     #: angular size of a correlated patch: about eight native pixels (0.1° each at 848 px over
-    #: 87°), the span of the matcher's aggregation window
+    #: 90°), the span of the matcher's aggregation window
     patch_deg: float = 0.8
     #: a neighbour this much nearer or further (share of the range, at least ``edge_min`` m) is
     #: across a depth discontinuity
@@ -101,7 +107,7 @@ class DepthNoiseModel:
 
     @property
     def focal_px(self) -> float:
-        """The depth imager's focal length in native pixels: 0.5·W / tan(HFOV / 2) (446.8 px)."""
+        """The depth imager's focal length in native pixels: 0.5·W / tan(HFOV / 2) (424 px)."""
         return 0.5 * self.native_width / math.tan(math.radians(self.hfov_deg) / 2)
 
     @property
@@ -110,8 +116,8 @@ class DepthNoiseModel:
         return self.focal_px * self.baseline / self.disparities
 
     def sigma(self, z) -> np.ndarray:
-        """RMS axial error (m) at range ``z`` (m): z² · subpixel / (f · B)."""
-        return np.square(z) * (self.subpixel / (self.focal_px * self.baseline))
+        """RMS axial error (m) at range ``z`` (m): k · z² · subpixel / (f · B) (9.4 mm at 1 m)."""
+        return np.square(z) * (self.household * self.subpixel / (self.focal_px * self.baseline))
 
     def describe(self) -> dict:
         return {**asdict(self), "focal_px": round(self.focal_px, 1), "min_range": round(self.min_range, 3),

@@ -9,7 +9,8 @@ reaches the commanded one, so the true base ends where the command is minus the 
 
 The error is a planar rigid transform ``M`` (believed ← true): believed pose = true pose offset
 by ``(dx, dy, dθ)``, the offset drawn from a zero-mean normal truncated at ``bound`` standard
-deviations per component. It is drawn when the base comes to rest after having moved at least
+deviations per component (beyond that a localiser has lost itself: a failure of another kind,
+not modelled). It is drawn when the base comes to rest after having moved at least
 ``update_distance`` or turned ``update_angle`` since the last draw — the thresholds at which AMCL
 updates its particle filter (ROS ``amcl`` defaults: 0.2 m, π/6) — and held while the base stands
 still or moves less (over a short move odometry is nearly exact, and the filter does not update).
@@ -38,16 +39,19 @@ import numpy as np
 class LocalizationModel:
     """Parameters of the simulated localiser (metres, radians).
 
-    ``sigma_xy`` and ``sigma_yaw``: the error of an AMCL-class localiser in an office or household
-    with a planar laser, as reported in evaluations of ROS's ``amcl`` (a few centimetres and about
-    a degree and a half, standard deviation per axis); ``update_distance`` / ``update_angle``:
-    ROS ``amcl``'s ``update_min_d`` / ``update_min_a`` defaults."""
+    Sources, as collected in /work/notes/perception_sources.md, section 8 and calibration (h):
+    ``sigma_xy`` = 5 cm and ``sigma_yaw`` = 2° per arrival is the note's point for plain AMCL with
+    a 2-D lidar in a home (judgment), bracketed by published figures — 6.7 cm mean for a ROS
+    floor-plan localiser with Kinects (Schmitt et al., IPIN 2012) above, under 1 cm / 1° for
+    scan-matching systems (Röwekämper et al., IROS 2012; Costa et al.) below;
+    ``update_distance`` / ``update_angle``: ROS 1 ``amcl``'s ``update_min_d`` / ``update_min_a``
+    defaults (FOUND in the ROS amcl wiki)."""
 
-    sigma_xy: float = 0.03
-    sigma_yaw: float = math.radians(1.5)
-    #: the error never exceeds this many standard deviations per component (a localiser that far
-    #: off has lost itself, a failure of another kind)
-    bound: float = 3.0
+    sigma_xy: float = 0.05
+    sigma_yaw: float = math.radians(2.0)
+    #: the error never exceeds this many standard deviations per component (12.5 cm, 5°: a
+    #: localiser further off has lost itself, a failure of another kind)
+    bound: float = 2.5
     update_distance: float = 0.2
     update_angle: float = math.pi / 6
 
