@@ -82,6 +82,9 @@ class Base(TimedPart):
     def pose(self):
         return self.at
 
+    def odometry(self):
+        return self.at
+
     def follow(self, path, speed, cancelled) -> MotionResult:
         r = self.run(0.2 * len(path), cancelled)
         if r.completed:

@@ -100,7 +100,14 @@ class Gripper(Protocol):
 class Base(Protocol):
     """A mobile base that follows a path of poses in the map frame."""
 
-    def pose(self) -> tuple[float, float, float]: ...
+    def pose(self) -> tuple[float, float, float]:
+        """Where the localiser puts the base in the map (x, y, yaw): good to a few centimetres,
+        and it jumps when the localiser updates."""
+
+    def odometry(self) -> tuple[float, float, float]:
+        """Where the wheels say the base is (x, y, yaw) in a frame fixed where it started: it
+        never jumps and is exact over a short way (odometry drifts over a long one), so the
+        motion between two readings is what the base did."""
 
     def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> MotionResult:
         """Drive through ``path`` (x, y, yaw) at ``speed`` (share of the base's limits)."""

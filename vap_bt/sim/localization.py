@@ -23,8 +23,11 @@ Consequences, all physical:
   handles, taps, switches, in the true frame) is off by the current error from what the camera
   shows. A robot that re-measures its target from where it stands before it acts is unaffected.
 
-Odometry drift while moving is not modelled (the error is held fixed during a motion); nor is any
-error in height, roll or pitch (a planar localiser has none to give).
+The base also reports its odometry — its motion in a frame fixed where it started — as a real
+base's wheel encoders do: it never jumps, so a skill can carry what it measured from one stance
+to the next by the motion between them. Odometry drift is not modelled (neither while moving nor
+over a long way), nor is any localisation error in height, roll or pitch (a planar localiser has
+none to give).
 """
 
 from __future__ import annotations
@@ -83,13 +86,23 @@ class Localization:
         self.seed = seed
         self.draws = 0
         self.offset = np.zeros(3)  # (dx, dy, dθ) of the believed base pose over the true one
+        self._start = np.zeros(3)  # the true pose the odometry frame is fixed at
         self._M = np.eye(3)  # believed <- true, planar homogeneous
         self._at: np.ndarray | None = None  # the true base pose at the last draw
 
     def reset(self, true_pose) -> None:
-        """A new episode: the robot starts at rest, localised with a fresh error."""
+        """A new episode: the robot starts at rest, localised with a fresh error; its odometry
+        starts at zero there."""
         self.draws = 0
+        self._start = np.asarray(true_pose, float).copy()
         self._draw(np.asarray(true_pose, float))
+
+    def odometry(self, true_pose) -> tuple[float, float, float]:
+        """A true base pose in the odometry frame: the start pose's frame (x forward, y left)."""
+        x0, y0, a0 = self._start
+        c, s = math.cos(a0), math.sin(a0)
+        dx, dy = true_pose[0] - x0, true_pose[1] - y0
+        return float(c * dx + s * dy), float(-s * dx + c * dy), float(true_pose[2] - a0)
 
     def settle(self, true_pose) -> bool:
         """The base has come to rest at ``true_pose``: a new error if it moved far enough since

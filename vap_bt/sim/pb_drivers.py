@@ -383,6 +383,12 @@ class PybulletBase(_Stoppable):
         with self.sim.lock:
             return self.sim.localization.believed(self.sim.robot.base_pose)
 
+    def odometry(self) -> tuple[float, float, float]:
+        """The wheels' pose of the base: its motion since the episode began, in a frame fixed at
+        where it began (drift-free: a simulated base's wheels do not slip)."""
+        with self.sim.lock:
+            return self.sim.localization.odometry(self.sim.robot.base_pose)
+
     def _hold_now(self) -> None:
         _hold(self.sim.robot, arm=False)
 

@@ -89,6 +89,7 @@ class DriverServer:
             "arm.tcp": lambda c: DriverReply({}, {"pose": np.asarray(self.drivers.arm.tcp_pose(), float)}),
             "gripper.state": lambda c: _gripper_reply(self.drivers.gripper.state()),
             "base.pose": lambda c: DriverReply({"pose": list(map(float, self.drivers.base.pose()))}),
+            "base.odometry": lambda c: DriverReply({"pose": list(map(float, self.drivers.base.odometry()))}),
             "camera.capture": lambda c: self.drivers.camera.capture(),
             "state": lambda c: self.body.state(),
             "map": lambda c: self.body.site_map(),
@@ -319,6 +320,9 @@ class RemoteBase:
 
     def pose(self) -> tuple[float, float, float]:
         return tuple(map(float, self.link.call("base.pose").values["pose"]))
+
+    def odometry(self) -> tuple[float, float, float]:
+        return tuple(map(float, self.link.call("base.odometry").values["pose"]))
 
     def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> MotionResult:
         here = np.array(self.pose()[:2])
