@@ -162,6 +162,10 @@ class Camera:
     far: float
     sim_width: int
     sim_height: int
+    #: m between a stereo depth camera's two imagers (0: not a stereo camera); the depth image is
+    #: the left imager's, and a near thing hides what lies up to f·B·(1/z_near - 1/z) pixels to
+    #: its left from the right imager: no depth there
+    baseline: float = 0.0
 
     @property
     def vertical_fov_deg(self) -> float:
@@ -184,6 +188,7 @@ class Camera:
             far=self.far,
             sim_width=self.sim_width,
             sim_height=self.sim_height,
+            baseline=self.baseline,
         )
 
     def for_sim(self) -> Camera:
@@ -206,6 +211,7 @@ class Camera:
             far=float(d["far"]),
             sim_width=int(d["sim_width"]),
             sim_height=int(d["sim_height"]),
+            baseline=float(d.get("baseline", 0.0)),
         )
 
 

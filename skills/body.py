@@ -87,6 +87,9 @@ class Body:
         #: why a drive should stop: what the hand took is no longer between the fingers (the kit's
         #: word: it knows what the hand took, and when it went); None while it is (:meth:`drive`)
         self.slipped: Callable[[], str | None] = lambda: None
+        #: told after every motion of the base (a drive, a whole-body trajectory): what was measured
+        #: of the map from the last stance may no longer hold (the kit's scene model decides)
+        self.base_moved: Callable[[], None] = lambda: None
         self._checker: CollisionChecker | None = None
         self._scene: SceneBoxes = SceneBoxes.empty()
         self._held: Attached | None = None
@@ -103,6 +106,20 @@ class Body:
     def base_T(self, q=None) -> np.ndarray:
         x, y, yaw = (self.q() if q is None else q)[:3]
         return se3.planar_pose(x, y, yaw)
+
+    def mark(self) -> tuple[np.ndarray, np.ndarray]:
+        """Where the base is now as the localiser and as the wheels have it (4x4 each): what a
+        measurement taken now needs to be carried across later motions (:meth:`since`)."""
+        return self.base_T(), se3.planar_pose(*self.base.odometry())
+
+    def since(self, mark: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+        """4x4 taking a point of the map frame as the robot had it at ``mark`` to the map frame as
+        it has it now. The localiser's frame jumps when it updates (a few centimetres, a degree
+        or two), the wheels' does not: a point is carried by the wheels' motion since, and set in
+        the localiser's frame as it is now — the identity while the localiser has not updated."""
+        B0, O0 = mark
+        B1, O1 = self.mark()
+        return B1 @ np.linalg.inv(O1) @ O0 @ np.linalg.inv(B0)
 
     def in_base(self, p) -> np.ndarray:
         return (self.base_T() @ np.array([*p, 1.0]))[:3]
@@ -283,7 +300,11 @@ class Body:
             traj = time_path(path, limits.scaled(speed), dt=1.0 / RATE_HZ)
         except TimingError:
             return False
-        self._follow(JointTrajectory(tuple(names), traj.t, traj.q, traj.qd))
+        try:
+            self._follow(JointTrajectory(tuple(names), traj.t, traj.q, traj.qd))
+        finally:
+            if whole:
+                self.base_moved()
         return True
 
     def _follow(self, traj: JointTrajectory) -> None:
@@ -346,8 +367,11 @@ class Body:
         stands. Raises :class:`Slipped` then."""
         if not poses:
             return
-        res = self.base.follow([tuple(map(float, p)) for p in poses], speed,
-                               lambda: self.cancelled() or self.slipped() is not None)
+        try:
+            res = self.base.follow([tuple(map(float, p)) for p in poses], speed,
+                                   lambda: self.cancelled() or self.slipped() is not None)
+        finally:
+            self.base_moved()
         if not res.completed:
             slipped = self.slipped()
             if slipped is not None and not self.cancelled():

@@ -8,6 +8,10 @@ A held item is rigid in the camera's view — wherever the camera is aimed, the 
 same part of the image. Looking at something past it therefore means turning the aim just
 enough that the point shows beside the item (:meth:`Eyes.aim_past_held`); the item's box comes
 from what the camera measured when the hand took it (:class:`Held`), never from the simulator.
+The wrist camera is a stereo pair, and a thing this near (a hand's length, under its minimum
+range) hides a wide band to its left from the right imager: the depth image has no returns
+there, ``B·(1/z_item - 1/z)`` wide in normalised image units (a held knife 12 cm away blanks
+everything left of it). The aim keeps the point out of that band too.
 
 What skills learn from a frame is a :class:`~skills.scene_model.Seen`: where the item is, how
 big, which way it lies — its masked depth fused into a point cloud.
@@ -29,9 +33,10 @@ from vap_bt.robot.frame import Frame
 
 #: where the camera looks from, in the base frame (above the base's front, the arm raised)
 CAMERA_EYE = (0.50, 0.0, 1.20)
-#: a camera aim turns off its point by one of these angles (rad) when the held item covers it; the
-#: point then shows this far (normalised image units, ~4 degrees) outside the item and the frame edge
-AIM_TURNS = (0.06, 0.1, 0.14, 0.18, 0.22, 0.26, 0.3)
+#: a camera aim turns off its point by one of these angles (rad) when the held item (or its stereo
+#: shadow) covers it, up to the frame's half width; the point then shows this far (normalised image
+#: units, ~4 degrees) outside the item and the frame edge
+AIM_TURNS = (0.06, 0.1, 0.14, 0.18, 0.22, 0.26, 0.3, 0.34, 0.38, 0.42)
 AIM_MARGIN = 0.07
 #: an aim still counts as the last one when the camera moved less than this (m, rad)
 STILL = (0.03, 0.05)
@@ -59,8 +64,10 @@ class Held:
     up: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))  # the item's up when taken, in the tcp frame
 
     @classmethod
-    def taken(cls, seen: Seen, tcp: np.ndarray) -> "Held":
-        inv = np.linalg.inv(tcp)
+    def taken(cls, seen: Seen, tcp: np.ndarray, moved: np.ndarray | None = None) -> "Held":
+        """The item as ``seen`` measured it, in the hand at ``tcp``; ``moved``: the 4x4 carrying
+        the look's map frame to the one ``tcp`` is in (the base moved since the look)."""
+        inv = np.linalg.inv(tcp) if moved is None else np.linalg.inv(tcp) @ moved
         pts = seen.corners() @ inv[:3, :3].T + inv[:3, 3]
         return cls(seen.name, pts, seen.extent, tcp[:3, :3].T @ np.array([0.0, 0.0, 1.0]))
 
@@ -132,20 +139,21 @@ class Eyes:
 
     # -- aiming --------------------------------------------------------------------------------
 
-    def look_at(self, point, lift: float = 0.0, allow_base: bool = False) -> bool:
+    def look_at(self, point, lift: float = 0.0, allow_base: bool = False, forward: float = CAMERA_EYE[0]) -> bool:
         """Aim the camera at ``point`` from above the base (``lift`` higher, or higher still when
         that pose would put the arm into the furniture; a point inside a front-opening hollow
-        from its own height first); with something in the hand the aim turns
-        off the point just enough that the item does not cover it. False when no aim is clear."""
+        from its own height first; ``forward`` of the base's centre); with something in the hand
+        the aim turns off the point just enough that the item does not cover it. False when no
+        aim is clear."""
         low = CAMERA_EYE[2] + lift
         over = max(low, float(point[2]) + LOOK_OVER)  # a high surface's top is seen from above it
         heights = (over, low, low + RAISE)
         if self.level_with(point):  # into a hollow through its front: from its height, first
             heights = (float(point[2]) + LEVEL_OVER + lift, *heights)
         for z in dict.fromkeys(heights):
-            eye = self.body.in_base((CAMERA_EYE[0], CAMERA_EYE[1], z))
+            eye = self.body.in_base((forward, CAMERA_EYE[1], z))
             T = se3.look_pose(eye, point)
-            for pose in (self.aim_past_held(T), T):
+            for pose in (self.aim_past_held(T, float(np.linalg.norm(np.asarray(point, float) - eye))), T):
                 if self.body.goto_pose(pose, 0.8, allow_base, "camera_optical"):
                     self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
                     return True
@@ -162,11 +170,13 @@ class Eyes:
                  and float(T[:3, 2] @ pose[:3, 2]) > math.cos(STILL[1]))
         return bool(still and np.linalg.norm(np.asarray(point, float) - target) <= tolerance)
 
-    def aim_past_held(self, T: np.ndarray) -> np.ndarray:
-        """``T`` (a camera pose looking along its z at a point) turned the least so that the point
-        shows clear of the held item, which is rigid with the camera: its box is projected once
-        (normalised image coordinates, from the camera pose now) and aims whose point falls outside
-        that outline by AIM_MARGIN, and inside the frame, are tried from small turns to large ones.
+    def aim_past_held(self, T: np.ndarray, distance: float = math.inf) -> np.ndarray:
+        """``T`` (a camera pose looking along its z at a point ``distance`` away) turned the least
+        so that the point shows clear of the held item, which is rigid with the camera, and of the
+        band left of it that the stereo pair cannot see past it: the item's box is projected once
+        (normalised image coordinates, from the camera pose now), widened to the left by its
+        stereo shadow at that distance, and aims whose point falls outside that outline by
+        AIM_MARGIN, and inside the frame, are tried from small turns to large ones.
         Returns ``T`` when the point is not covered or no turn clears it."""
         if self.held is None:
             return T
@@ -174,7 +184,12 @@ class Eyes:
         C = np.linalg.inv(self.body.pose("camera_optical"))
         pc = corners @ C[:3, :3].T + C[:3, 3]
         z = np.maximum(pc[:, 2], self.cam.near)
-        hull = cv2.convexHull((pc[:, :2] / z[:, None]).astype(np.float32))
+        uv = pc[:, :2] / z[:, None]
+        if self.cam.baseline > 0.0:  # the right imager's view of the point is blocked this far left of the item
+            shadow = uv.copy()
+            shadow[:, 0] -= self.cam.baseline * np.maximum(1.0 / z - 1.0 / max(distance, 1e-3), 0.0)
+            uv = np.vstack([uv, shadow])
+        hull = cv2.convexHull(uv.astype(np.float32))
         half = np.array([self.cam.width / 2 / self.cam.fx, self.cam.height / 2 / self.cam.fy]) - AIM_MARGIN
 
         def clear(uv) -> bool:

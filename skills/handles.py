@@ -69,6 +69,9 @@ LOOSE_GRIP = 0.05  # finger opening round a held handle bar: it may turn in the 
 RELEASE_GRIP = 0.075  # finger opening that lets the bar go (the fingers part along the leaf's face)
 GRIP_FORCE = 80.0
 FOLLOW_SPEED = 0.3  # share of the joint limits while the hand carries a handle
+#: m the grasp stance of a path planned again from it may lie off where the base stands before it
+#: drives there first (the arm's first joint-space move should not drag the base along)
+REPLAN_STEP = 0.02
 
 
 @dataclass
@@ -287,25 +290,41 @@ class Handles:
             self.hands.grasp(held.name, seen.centroid, Where(on=shelves[0].name), sideways=sideways)
         return out
 
-    def _open_close(self, name: str, opening: bool) -> Outcome:
+    def _plan(self, name: str, q0: float, opening: bool, here) -> tuple[HandlePath, float, float]:
+        """The whole-body path carrying ``name``'s handle from ``q0`` to open or shut, planned
+        from the base at ``here`` on the leaf as the scene model has it now; with the handle's
+        side (room doors: the face towards the robot) and the goal's joint value."""
         leaf = self.scene.leaves[name]
         art = leaf.art
-        start = self.body.base_pose()
-        q0 = self.joint_now(name, opening)
         side, goal_open = 1.0, art.opened
         if art.other_side is not None:  # a room door: the face towards the robot, pushed away from it
             p, n, _ = leaf.handle_at(q0)
-            side = 1.0 if (np.array([*start[:2], p[2]]) - p) @ n > 0 else -1.0
+            side = 1.0 if (np.array([*here[:2], p[2]]) - p) @ n > 0 else -1.0
             goal_open = abs(art.opened) * side
         goal = goal_open * OPEN_TO if opening else (0.0 if art.other_side is not None else art.opened * CLOSE_TO)
         p, n, bar = leaf.handle_at(q0, side)
         G = se3.frame_zx(-n, -bar if abs(bar[2]) > 0.5 else bar, p)
-        path = self.follower.plan(leaf, side, q0, goal, G, start, LOOSE_GRIP)
+        return self.follower.plan(leaf, side, q0, goal, G, here, LOOSE_GRIP), side, goal
+
+    def _open_close(self, name: str, opening: bool) -> Outcome:
+        start = self.body.base_pose()
+        q0 = self.joint_now(name, opening)
+        path, _, _ = self._plan(name, q0, opening, start)
         if not path.waypoints:
             return Outcome(False, f"{name}: handle out of reach")
         grasp = path.waypoints[0]
         self.hands.progress(0.05, "approaching the handle")
         self.nav.approach(tuple(grasp.q[:3]))
+        # the drive changed the localiser's error: from the grasp stance, a look at the leaf lays
+        # the map onto what the camera shows (the handle within a centimetre or two of where the
+        # fingers will close, however far the localiser is off) and the path is planned again
+        here = self.body.base_pose()
+        q0 = self.joint_now(name, opening)
+        again, _, _ = self._plan(name, q0, opening, here)
+        if again.waypoints:
+            path, grasp = again, again.waypoints[0]
+            if np.linalg.norm(np.subtract(grasp.q[:2], here[:2])) > REPLAN_STEP:
+                self.nav.approach(tuple(grasp.q[:3]))
         self.hands.progress(0.1, "reaching for the handle")
         self.body.fingers(LOOSE_GRIP)  # wide enough round the bar, narrow enough beside the leaf
         if not self.body.through([path.pre.q], 0.8):

@@ -37,7 +37,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from skills.body import Body, Stopped
-from skills.eyes import Eyes, Held
+from skills.eyes import CAMERA_EYE, Eyes, Held
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
@@ -69,9 +69,15 @@ FRONT_LEANS = (0.5, 0.8, 1.05)
 #: roll's axis (cosine): rolled about its length a log still lies, rolled about its width it stands
 LAY_LEVEL, LAY_ALONG = 0.5, 0.9
 GRASP_FORCE = 60.0
+#: m higher than a look's usual eye, and m in front of the base's centre, that a piece of furniture
+#: is regarded from at a work pose: from there, over the base rather than over the piece (a work
+#: pose stands a reach from it), the frame spans its top and edges
+REGARD_LIFT = 0.2
+REGARD_EYE = 0.15
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
 GRASP_STANDS = 3  # work poses a grasp tries before it gives up (the arm's reach is checked at each)
+PLACE_STANDS = 2  # work poses a place takes: the second for the spot where a look shows the piece
 #: a long item on the floor is taken off its middle when no hand reaches that (the middle of a
 #: knife that slid half under a table is under its top): this share of the way from its middle
 #: to where the pads would leave it, either way along it; an item shorter than the pads allow is
@@ -145,6 +151,26 @@ class Hands:
 
     # -- measuring ---------------------------------------------------------------------------
 
+    def regard(self, name: str, point) -> Furniture | None:
+        """Look at ``point`` on the mapped piece ``name`` from where the robot stands now, and
+        return the piece as it lies from here: the frame registers the map to what the camera
+        shows (:meth:`~skills.scene_model.SceneModel.relocalize`), so that a handle, a tap, a
+        switch or a cavity the map annotates is where the hand will find it, the localiser's error
+        notwithstanding. A fit needs the piece's outline, not a patch of one face: the look goes
+        to the piece's top from a raised eye first (from a work pose the piece is near, and a
+        look at the point itself — a tap right under the eye — sees a corner of it), then to the
+        point, then to the piece's front. The piece as the map has it when no look shows it."""
+        f = self.scene.furniture.get(name)
+        if f is None:
+            return None
+        top = f.top_point()
+        for p, lift, forward in ((top, REGARD_LIFT, REGARD_EYE), (top, 0.0, REGARD_EYE), (point, 0.0, CAMERA_EYE[0]),
+                                 (f.to_world((0.0, f.depth / 2, f.height / 2)), 0.0, CAMERA_EYE[0])):
+            if self.eyes.look_at(p, lift=lift, forward=forward):
+                self.eyes.frame()
+                break
+        return self.scene.furniture.get(name)
+
     def locate(self, name: str, point, where: Where) -> Seen | None:
         """Measure ``name`` where it is believed to be: from here if the camera can see it, else
         from its standoff."""
@@ -216,7 +242,9 @@ class Hands:
         if seen is None:
             return Outcome(False, f"{name} is not where it was believed to be: not seen")
         stood: list = []
-        looks = [seen]
+        # each look with the body's mark when it was taken: a later step of the base may come with
+        # a jump of the localiser, and what a look measured is carried across it by odometry
+        looks = [(seen, self.body.mark())]
         while True:
             stand = self.stand_to_grasp(seen, where, sideways, stood)
             if stand is None:  # nowhere else to stand that the arm would reach it from
@@ -224,12 +252,15 @@ class Hands:
             way, off, turned = stand
             stood.append(self.body.base_pose())
             closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
-            seen = closer or seen
-            looks.append(seen)
-            G, a = self.grasp_frame(seen, where, way, off=off, turned=turned)
+            if closer is not None:
+                seen = closer
+                looks.append((seen, self.body.mark()))
+            G, a = self.grasp_frame(self._carried(looks[-1]), where, way, off=off, turned=turned)
             self.progress(0.1, "pre-grasp")
             self.body.fingers(self.body.cfg.gripper.stroke)
-            if self.reach_pre(G, a, where.inside, APPROACH) is not None:
+            reached = self.reach_pre(G, a, where.inside, APPROACH)
+            if reached is not None:
+                G = reached[1]
                 break
             # what the second look measured can put the hand just out of reach from here
             self.body.home()
@@ -244,9 +275,9 @@ class Hands:
             # look from close by may see it cut by the frame's edge, or half hidden), and reaching
             # down to what it stands on: a camera above a flat thing (a knife on the floor) sees
             # its top face only, and a held box that thin or that short hides nothing it covers
-            most = max(looks, key=lambda s: float(np.prod(np.linalg.norm(s.corners()[[4, 2]] - s.corners()[0], axis=1))))
+            most, mark = max(looks, key=lambda sm: float(np.prod(np.linalg.norm(sm[0].corners()[[4, 2]] - sm[0].corners()[0], axis=1))))
             whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
-            self.eyes.held = Held.taken(whole, self.body.pose("tcp"))
+            self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
         back[2, 3] += LIFT[how(a)]
@@ -366,14 +397,30 @@ class Hands:
                 return pre, d * out
         return pre, np.zeros(3)
 
-    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float, pts=()) -> np.ndarray | None:
+    def _carried(self, look: tuple[Seen, tuple]) -> Seen:
+        """A look (with the body's mark when taken) as the map frame has it now: its geometry moved
+        by the base's motion since (the localiser may have jumped)."""
+        seen, mark = look
+        S = self.body.since(mark)
+        if np.allclose(S, np.eye(4), atol=1e-9):
+            return seen
+        pts = seen.corners() @ S[:3, :3].T + S[:3, 3]
+        outline = None if seen.outline is None else seen.outline @ S[:2, :2].T + S[:2, 3]
+        return replace(seen, centroid=S[:3, :3] @ seen.centroid + S[:3, 3], lo=pts.min(axis=0), hi=pts.max(axis=0),
+                       yaw=seen.yaw + math.atan2(S[1, 0], S[0, 0]), outline=outline)
+
+    def reach_pre(self, G: np.ndarray, a: np.ndarray, container: str | None, least: float,
+                  pts=()) -> tuple[np.ndarray, np.ndarray] | None:
         """Bring the hand to its pre-pose (:meth:`pre_pose`) so that the arm's joint-space move
         there cannot sweep through a wall. Out of a deep front-open cavity that is further than
         the arm reaches comfortably: the base steps back first, the arm goes to the pre-pose, and
         the base steps in again (carrying the arm unchanged) — the reverse of :meth:`withdraw`; with
         no room behind, the arm backs off further instead. Returns the pre-pose (the hand is
-        there), or None when the arm cannot get there."""
+        there) and ``G``, both as the map frame has them after the steps (the localiser may have
+        updated on the way: they are carried by the wheels' motion), or None when the arm cannot
+        get there."""
         pre, back = self.pre_pose(G, a, container, least, pts)
+        mark = self.body.mark()
         step = np.zeros(3)
         if back.any():
             out = float(np.linalg.norm(back))
@@ -385,12 +432,15 @@ class Hands:
                 pre[:3, 3] += back
         far = pre.copy()
         far[:3, 3] += step
-        if not self.body.goto_pose(far):
+        S = self.body.since(mark)
+        if not self.body.goto_pose(S @ far):
             return None
         if step.any():
             x, y, yaw = self.body.base_pose()
-            self.body.drive([(x - step[0], y - step[1], yaw)], 0.4)
-        return pre
+            back_in = S[:3, :3] @ step
+            self.body.drive([(x - back_in[0], y - back_in[1], yaw)], 0.4)
+        S = self.body.since(mark)
+        return S @ pre, S @ G
 
     def withdraw(self, container: str) -> None:
         """Bring the hand (and what it holds) out of a container's cavity the way it went in
@@ -555,7 +605,22 @@ class Hands:
             G, _, corners = targets(base, at)
             return self.pre_pose(G, a, where if inside else None, PRE_PLACE, list(corners))[0], G
 
-        self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach))
+        f = self.scene.furniture.get(where)
+        local = None if f is None else f.local(spot)  # the spot on the piece, wherever the map lies
+        for stand in range(PLACE_STANDS):
+            self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach))
+            if f is None:
+                break
+            # from here the piece lies where this look shows it (centimetres off the map's place)
+            f = self.regard(where, spot) or f
+            spot, a = self.cavity_spot(where) if inside else (f.to_world(local), a)
+            self.carry()  # the hand as it rides, whence the place poses were planned
+            here = self.body.base_pose()
+            if self.nav.reaches(here, reach(here), routed=True):
+                break
+            # the piece lies far enough off where the map put it that the arm does not reach the
+            # spot from this stand: stand again, for the spot where it is seen (a step away: the
+            # localiser does not update, and what the look measured still holds)
         if top_open and where not in self.scene.leaves:
             # seen from the work pose, from above: what lies in the cavity already
             here = self.body.base_pose()
@@ -565,10 +630,11 @@ class Hands:
             G, corners = next(((g, c) for lean in FRONT_LEANS for g, _, c in [targets(self.body.base_pose(), lean=lean)]
                                if self.straight_in(g, a, where, c)), (G, corners))
         self.progress(0.2, "pre-place")
-        pre = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))
-        if pre is None:
+        reached = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))
+        if reached is None:
             self.carry()
             return Outcome(False, f"{where}: no arm pose reaches it")
+        G = reached[1]
         self.progress(0.5, "placing")
         self.body.line(G, steps=4, speed=0.3)
         self.let_go()
@@ -612,6 +678,8 @@ class Hands:
             return Outcome(False, f"{appliance} has no switch")
         lp, n = np.array(f.info.switch), f.front
         self.nav.approach(self.nav.work_pose(lp, n, "front", appliance))
+        f = self.regard(appliance, lp)  # the switch where this look shows the appliance
+        lp, n = np.array(f.info.switch), f.front
         G = se3.frame_zx(-n, (0, 0, -1), lp + n * 0.012)
         pre = G.copy()
         pre[:3, 3] += n * 0.12
@@ -635,6 +703,8 @@ class Hands:
             return Outcome(False, f"{sink} has no tap")
         tap = np.array(f.info.tap)
         self.nav.approach(self.nav.work_pose(tap, f.front, "top", sink))
+        tap = np.array(self.regard(sink, tap).info.tap)  # the tap where this look shows the sink
+        self.carry()  # the vessel upright again, as it rides
         T = self.body.pose("tcp")
         corners = held.corners_at(T)
         top = corners.mean(axis=0)

@@ -23,7 +23,7 @@ from skills.eyes import Eyes, Held
 from skills.handles import Handles
 from skills.hands import Hands, Where
 from skills.navigator import Navigator
-from skills.scene_model import SceneModel, seen_from
+from skills.scene_model import SceneModel, seen_from, seen_in_hand
 from vap_bt.skill import Hint
 from vap_bt.world import GoalContext
 
@@ -70,7 +70,9 @@ class Kit:
         self._start()
 
     def _noticed(self, frame, held: str | None) -> None:
-        """What every frame the eyes take tells the scene model: items on the floor, leaves."""
+        """What every frame the eyes take tells the scene model: where the map lies from here (the
+        furniture it shows registered), items on the floor, leaves."""
+        self.scene.relocalize(frame)
         self.scene.note_items(frame, held)
         self.scene.note_leaves(frame)
 
@@ -81,6 +83,11 @@ class Kit:
         self.nav = Navigator(self.body, self.scene, self.eyes)
         self.hands = Hands(self.body, self.eyes, self.nav, self.scene)
         self.handles = Handles(self.body, self.eyes, self.nav, self.scene, self.hands)
+        # what was registered of the map is carried across the base's motions by its odometry
+        self.scene.mark, self.scene.since = self.body.mark, self.body.since
+        self.body.base_moved = self.scene.base_moved
+        # the arm's ways keep off the map as it lies from where the robot stands
+        self.scene.changed = lambda: self.body.set_scene(self.scene.solid_boxes())
         self.eyes.held = None
 
     def _refresh(self) -> None:
@@ -148,14 +155,16 @@ class Kit:
     def holding(self, name: str) -> bool:
         """Whether the hand holds ``name``, with its geometry known: a held item the kit did not
         take itself (it was in the hand when the episode began) is measured in a frame first —
-        it rides in the wrist camera's view."""
+        it rides in the wrist camera's view (from its mask, when it is too near for depth)."""
         if not self.body.holding():
             return False
         held = self.eyes.held
         if held is not None and held.name == name:
             return True
-        seen = seen_from(self.eyes.frame(), name)
+        frame, tcp = self.eyes.frame(), self.body.pose("tcp")
+        # in the hand it is nearer than the camera's minimum range: usually no depth at all
+        seen = seen_from(frame, name) or seen_in_hand(frame, name, tcp)
         if seen is None:
             return False
-        self.eyes.held = Held.taken(seen, self.body.pose("tcp"))
+        self.eyes.held = Held.taken(seen, tcp)
         return True

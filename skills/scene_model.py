@@ -12,7 +12,10 @@ Skills plan motions against two kinds of knowledge, neither of which is the simu
   the executive believes the item is (the goal's hint), takes a frame, and fuses the item's
   masked depth into a point cloud (:mod:`vap_bt.scene.pointcloud`); where a door or drawer stands
   now, fitted to the points of its piece of furniture (the map says how it moves; the frame says
-  how far it has).
+  how far it has); and where the map lies in the frame the robot believes it stands in: every
+  frame that shows mapped furniture registers the map to it (:mod:`skills.registration`), and the
+  map is used shifted by that correction, carried across the base's motions by its odometry (the
+  localiser's frame jumps when it updates, the wheels' does not), for a couple of metres.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skills.registration import Correction, RegistrationParams, corrected_map, register
 from vap_bt.motion import se3
 from vap_bt.motion.collision import SceneBoxes
 from vap_bt.motion.footprint import Obb, apart, footprint
@@ -60,6 +64,10 @@ FACE_THICKNESS = 0.02
 #: half size (m) of an appliance's switch (along the front, out of it, up): it stands proud of
 #: the front, where a forearm sweeping past a low hollow would catch it
 SWITCH = (0.03, 0.02, 0.022)
+#: m the base may move from where the map was last registered to a view before the correction is
+#: dropped: carried by odometry, it holds as well as odometry does (a wheeled base drifts by 1-2 %
+#: of the way: 2-4 cm over 2 m, about a registration's own error)
+ODOMETRY_HOLD = 2.0
 
 
 @dataclass(frozen=True)
@@ -114,6 +122,31 @@ def seen_from(frame: Frame, name: str) -> Seen | None:
     outline = np.array([mid + evecs @ np.array([u, v]) for u in (a0[0], a1[0]) for v in (a0[1], a1[1])])
     return Seen(name, pts.mean(axis=0), lo, hi, math.atan2(major[1], major[0]),
                 bool(evals[1] < 1.6 * max(evals[0], 1e-9)), frame, outline)
+
+
+def seen_in_hand(frame: Frame, name: str, tcp: np.ndarray) -> Seen | None:
+    """An item held in the hand as the frame shows it when its depth does not: a stereo camera
+    returns nothing for a thing under its minimum range, as an item between the fingers is. The
+    item's centre is at the tcp (the fingers close on it), so its mask's pixels, back-projected to
+    the tcp's depth, give its size across the image; along the optical axis it is taken as thick
+    as it is narrow across. None when the frame does not show it."""
+    d = frame.detection(name)
+    if d is None or frame.masks is None or frame.intrinsics is None or frame.camera_pose is None:
+        return None
+    rows, cols = np.nonzero(frame.masks == d.mask_id)
+    if len(rows) < 3:
+        return None
+    fx, fy, cx, cy = frame.intrinsics
+    inv = np.linalg.inv(frame.camera_pose)
+    z = float((inv[:3, :3] @ tcp[:3, 3] + inv[:3, 3])[2])
+    if z <= 0.0:
+        return None
+    pts = np.stack([(cols - cx) / fx * z, (rows - cy) / fy * z, np.full(len(rows), z)], axis=1)
+    thick = float(min(np.ptp(pts[:, 0]), np.ptp(pts[:, 1]))) / 2
+    pts = np.vstack([pts + (0.0, 0.0, dz) for dz in (-thick, thick)])
+    world = pts @ frame.camera_pose[:3, :3].T + frame.camera_pose[:3, 3]
+    lo, hi = world.min(axis=0), world.max(axis=0)
+    return Seen(name, (lo + hi) / 2, lo, hi, 0.0, False, frame)
 
 
 class Furniture:
@@ -214,11 +247,15 @@ class Furniture:
 
 
 class Leaf:
-    """A door leaf or drawer as the map describes its motion; ``q`` is its joint value."""
+    """A door leaf or drawer as the map describes its motion; ``q`` is its joint value. ``turn``:
+    the map's articulation has been turned by this much about the vertical (a correction of the
+    map, :mod:`skills.registration`), and the leaf's box with it (its half sizes stay along the
+    leaf's own axes)."""
 
-    def __init__(self, name: str, art: Articulation) -> None:
+    def __init__(self, name: str, art: Articulation, turn: float = 0.0) -> None:
         self.name, self.art = name, art
         self.origin, self.axis = np.array(art.origin), np.array(art.axis)
+        self.base = se3.axis_angle(np.array([0.0, 0.0, 1.0]), turn)
 
     def transform(self, q: float, q_from: float = 0.0):
         if self.art.prismatic:
@@ -229,7 +266,7 @@ class Leaf:
 
     def box(self, q: float) -> Obb:
         R, move = self.transform(q)
-        return Obb(move(np.array(self.art.leaf_center)), R, np.array(self.art.leaf_half))
+        return Obb(move(np.array(self.art.leaf_center)), R @ self.base, np.array(self.art.leaf_half))
 
     def panel(self, q: float) -> Obb:
         """The leaf (or drawer) without its handles at joint value ``q``: what a hand near the
@@ -252,12 +289,13 @@ class Leaf:
     def _slab(self, front: float, back: float, q: float) -> Obb:
         """The leaf's box at ``q`` cut to between ``front`` and ``back`` along its outward normal
         (as at q = 0)."""
-        normal, n = np.array(self.art.normal), np.abs(self.art.normal)
+        normal = np.array(self.art.normal)
+        n = np.abs(self.base.T @ normal)  # the normal along the leaf's own axes
         centre, half = np.array(self.art.leaf_center), np.array(self.art.leaf_half)
         c = centre + normal * ((front + back) / 2 - float(centre @ normal))
         h = half * (1 - n) + n * (front - back) / 2
         R, move = self.transform(q)
-        return Obb(move(c), R, h)
+        return Obb(move(c), R @ self.base, h)
 
     def fit(self, pts: np.ndarray, eye: np.ndarray | None, believed: float | None = None) -> float | None:
         """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
@@ -297,14 +335,77 @@ class SceneModel:
     """The map's geometry for planning, and perception's answers about where things are now."""
 
     def __init__(self, site: SiteMap) -> None:
-        self.site = site
-        self.furniture = {f.name: Furniture(f) for f in site.furniture if f.pose is not None and f.footprint}
-        self.leaves = {f.name: Leaf(f.name, f.articulation) for f in site.furniture if f.articulation}
-        self.leaves.update({d.name: Leaf(d.name, d.articulation) for d in site.doors if d.articulation})
+        self.raw = site  # the map as the localiser places it
+        #: how the map lies in the robot's frame from where it stands (none: as the localiser says)
+        self.correction = Correction.none()
+        self.registration = RegistrationParams()
+        #: the correction as registered, and the body's mark then (localiser and wheels)
+        self._registered: tuple[Correction, tuple[np.ndarray, np.ndarray]] | None = None
+        #: the body's mark now, and the 4x4 carrying a point from a mark to now (set by the kit;
+        #: without them a correction holds only until the base moves)
+        self.mark = None
+        self.since = None
+        #: told when the map's geometry changed (a correction taken or dropped)
+        self.changed = lambda: None
+        self._build(site)
         self.joint: dict[str, float] = {}  # where each leaf was last seen or left
         #: items last seen lying on the floor, as boxes: the base keeps off them (a drive into a
         #: dropped cup kicks it under the furniture, where no look finds it again)
         self.floor_items: dict[str, Obb] = {}
+
+    def _build(self, site: SiteMap) -> None:
+        self.site = site
+        turn = self.correction.dtheta
+        self.furniture = {f.name: Furniture(f) for f in site.furniture if f.pose is not None and f.footprint}
+        self.leaves = {f.name: Leaf(f.name, f.articulation, turn) for f in site.furniture if f.articulation}
+        self.leaves.update({d.name: Leaf(d.name, d.articulation) for d in site.doors if d.articulation})
+        self.changed()
+
+    # -- where the map lies from here ----------------------------------------------------------
+
+    def relocalize(self, frame: Frame) -> Correction | None:
+        """Register the map's furniture to the frame's points of it (:func:`register`); when the
+        fit holds, the map is used shifted by it from now on, carried across the base's motions
+        (:meth:`base_moved`). Returns the correction, or None (nothing changes)."""
+        raw = {f.name: Furniture(f) for f in self.raw.furniture if f.pose is not None and f.footprint}
+        leaves = {f.name: Leaf(f.name, f.articulation) for f in self.raw.furniture if f.articulation}
+        clouds, models = {}, {}
+        for d in frame.detections:
+            if d.name not in raw:
+                continue
+            cloud = instance_cloud(frame, d)
+            if cloud is None:
+                continue
+            clouds[d.name] = np.asarray(cloud.points)
+            models[d.name] = raw[d.name].solids() + ([leaves[d.name].box(self.joint.get(d.name, 0.0))]
+                                                     if d.name in leaves else [])
+        c = register(clouds, models, self.registration)
+        if c is None:
+            return None
+        self._registered = (c, self.mark()) if self.mark is not None else None
+        self.correction = c
+        self._build(corrected_map(self.raw, c))
+        return c
+
+    def base_moved(self) -> None:
+        """The base moved: the correction is carried along by the wheels' motion (the localiser's
+        frame may have jumped), and dropped once the base has gone :data:`ODOMETRY_HOLD` from
+        where it was registered; the map is then used as the localiser places it."""
+        if self.correction.is_identity():
+            return
+        if self._registered is None or self.since is None:
+            self.correction = Correction.none()
+            self._build(self.raw)
+            return
+        c, mark = self._registered
+        _, odom_then = mark
+        _, odom_now = self.mark()
+        if float(np.linalg.norm(odom_now[:2, 3] - odom_then[:2, 3])) > ODOMETRY_HOLD:
+            self.correction, self._registered = Correction.none(), None
+            self._build(self.raw)
+            return
+        self.correction = c.moved(self.since(mark))
+        self._build(corrected_map(self.raw, self.correction))
 
     # -- where things are, by the map --------------------------------------------------------
 
