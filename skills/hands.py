@@ -485,6 +485,11 @@ class Hands:
         """Centre of a free spot on a surface's top: far from the other items the camera shows on
         it, near the robot; with ``edge``, close to the front edge (where a hand can take it from
         the side again)."""
+        return self.free_spots(surface, item, edge)[0]
+
+    def free_spots(self, surface: str, item: str, edge: bool = False) -> list[np.ndarray]:
+        """:meth:`free_spot`'s best spot, then the best of the row nearest the front when that is
+        another (a tall item hanging under the hand may not reach the middle of a deep top)."""
         f = self.scene.furniture.get(surface)
         x, y, yaw = self.body.base_pose()
         if f is None:  # a floor: in front of the robot
@@ -511,7 +516,11 @@ class Hands:
             clear = min([np.linalg.norm(p[:2] - o[:2]) for o in others] + [1.0])
             return min(clear, 0.2) + min(inward(p), EDGE_CLEAR) - 0.05 * np.linalg.norm(p[:2] - base)
 
-        return max(cands, key=score)
+        best = max(cands, key=score)
+        if f is None or edge:
+            return [best]
+        near = max(cands[:len(cands) // len(rows)], key=score)  # the first row is the nearer one
+        return [best] if np.allclose(near, best) else [best, near]
 
     def items_near(self, point, exclude: set[str]) -> list[np.ndarray]:
         """Centroids of the items a look at ``point`` shows (furniture and doors are the map's)."""
@@ -577,8 +586,10 @@ class Hands:
             return Outcome(False, f"not holding {name}")
         if inside:
             spot, a = self.cavity_spot(where)
+            spots = [spot]
         else:
-            spot, a = self.free_spot(where, name, edge), np.array([0.0, 0.0, -1.0])
+            spots, a = self.free_spots(where, name, edge), np.array([0.0, 0.0, -1.0])
+            spot = spots[0]
 
         cav = self.scene.furniture[where].info.cavity if inside else None
         top_open = cav is not None and cav.open == "top"
@@ -605,10 +616,16 @@ class Hands:
             G, _, corners = targets(base, at)
             return self.pre_pose(G, a, where if inside else None, PRE_PLACE, list(corners))[0], G
 
+        front_open = cav is not None and cav.open == "front"  # checked, and leaned if need be, below
+        # the first spot the arm reaches from some stand (the best may be too deep for what it holds)
+        spot = next((s for s in spots[:-1] if self.nav.reaching_pose(
+            s, self.nav.toward_robot(s, where), how(a), where, lambda base, at=s: reach(base, at), routed=True,
+            straight=not front_open) is not None), spots[-1])
         f = self.scene.furniture.get(where)
         local = None if f is None else f.local(spot)  # the spot on the piece, wherever the map lies
         for stand in range(PLACE_STANDS):
-            self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach))
+            self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach,
+                                                 straight=not front_open))
             if f is None:
                 break
             # from here the piece lies where this look shows it (centimetres off the map's place)
@@ -616,7 +633,7 @@ class Hands:
             spot, a = self.cavity_spot(where) if inside else (f.to_world(local), a)
             self.carry()  # the hand as it rides, whence the place poses were planned
             here = self.body.base_pose()
-            if self.nav.reaches(here, reach(here), routed=True):
+            if self.nav.reaches(here, reach(here), routed=True, straight=not front_open):
                 break
             # the piece lies far enough off where the map put it that the arm does not reach the
             # spot from this stand: stand again, for the spot where it is seen (a step away: the
@@ -636,7 +653,10 @@ class Hands:
             return Outcome(False, f"{where}: no arm pose reaches it")
         G = reached[1]
         self.progress(0.5, "placing")
-        self.body.line(G, steps=4, speed=0.3)
+        # down onto a support, the line is solved clear of the scene where it can be: the first IK
+        # answer along it may swing the upper arm into the support's edge where another is clear
+        clear = not front_open and self.straight_in(G, a, where if inside else None, list(corners))
+        self.body.line(G, steps=4, speed=0.3, collide=clear)
         self.let_go()
         self.progress(0.8, "retreat")
         # out of the grasp along the hand's axis first (a hand holding from the side would lift
@@ -654,10 +674,11 @@ class Hands:
             return Outcome(True, f"{name} still in the gripper")
         return Outcome(True)
 
-    def straight_in(self, G: np.ndarray, a: np.ndarray, container: str, corners, steps: int = 4) -> bool:
+    def straight_in(self, G: np.ndarray, a: np.ndarray, container: str | None, corners, steps: int = 4) -> bool:
         """Whether the hand can go straight from its pre-place pose into ``G`` in ``container``
-        with the arm and the held item (at ``corners`` there) clear of the scene: the last
-        stretch is moved unchecked (:meth:`Body.line`), so it is checked here, without moving."""
+        (or onto a support: None) with the arm and the held item (at ``corners`` there) clear of
+        the scene: the last stretch is moved unchecked (:meth:`Body.line`), so it is checked
+        here, without moving."""
         pre = self.pre_pose(G, a, container, PRE_PLACE, list(corners))[0]
         q = self.body.solve(pre)
         return q is not None and len(self.body.line_way(pre, G, q, steps=steps, collide=True)) == steps

@@ -63,10 +63,13 @@ DOOR_STOP = 0.95  # base centre to a doorway when it stops in front of it on a t
 #: a door counts as open for the base to pass once it has swung this share of its travel
 DOOR_PASSABLE = 0.55
 DOOR_LOOK_HEIGHT = 0.8
+DOOR_LOOK_LIFT = 0.2  # m higher the eye goes when the usual look at a door is not clear
 DOORWAY_SPREAD = (-0.3, 0.0, 0.3)  # across the opening, in shares of the door's width
 DOORWAY_HEIGHTS = (0.5, 0.8, 1.1, 1.4)
 CORRIDOR_SPEED = 1.0
 APPROACH_SPEED = 0.6
+#: poses along a straight last stretch checked for collisions (:meth:`Navigator.reaches`)
+LINE_CHECK_STEPS = 4
 
 Pose = tuple[float, float, float]
 
@@ -231,37 +234,50 @@ class Navigator:
         p = np.asarray(point) + f * r
         return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
-    def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None) -> Pose:
+    def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None,
+                  straight: bool = False) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
         ``reach(base_pose)`` lists — IK clear of the scene, and the arm's joint way from how it is
-        now to the first of them (a pre-pose) clear too, checked from that base before it moves;
-        the first clear one when none does (the motion then finds out). A point on no piece of
-        furniture (the floor) is also tried from the other sides round it (:data:`AROUND`)."""
+        now to the first of them (a pre-pose) clear too, checked from that base before it moves
+        (``straight``: and the straight line from each to the next, the last stretch the hand is
+        moved unchecked); the first clear one when none does (the motion then finds out). A point
+        on no piece of furniture (the floor) is also tried from the other sides round it
+        (:data:`AROUND`)."""
         if reach is None:
             return next(self.work_poses(point, toward, how, clear_of))
-        return (self.reaching_pose(point, toward, how, clear_of, reach, routed=True)
+        return (self.reaching_pose(point, toward, how, clear_of, reach, routed=True, straight=straight)
                 or next(self.work_poses(point, toward, how, clear_of)))
 
     def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=(),
-                      routed: bool = False) -> Pose | None:
+                      routed: bool = False, straight: bool = False) -> Pose | None:
         """The work pose of :meth:`work_pose` from which the arm reaches ``reach(base_pose)``, not
         within ``AVOID_RADIUS`` of the poses in ``avoid`` (stood at already); None when there is
         none. ``routed``: the arm's joint way from how it is now to the first pose (a pre-pose:
-        the rest are reached by straight lines) must be clear too."""
+        the rest are reached by straight lines) must be clear too; ``straight``: those lines."""
         return next((p for p in self._candidates(point, toward, how, clear_of, True)
                      if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid)
-                     and self.reaches(p, reach(p), routed)), None)
+                     and self.reaches(p, reach(p), routed, straight)), None)
 
-    def reaches(self, pose: Pose, targets, routed: bool = False) -> bool:
+    def reaches(self, pose: Pose, targets, routed: bool = False, straight: bool = False) -> bool:
         """Whether the arm reaches every one of ``targets`` from the base at ``pose`` (``routed``:
         the first by a clear way from how the arm is now, on any branch of the arm; a hand lowered
-        from above, :meth:`~skills.body.Body.from_above`, is the motion's last resort, not counted)."""
+        from above, :meth:`~skills.body.Body.from_above`, is the motion's last resort, not counted;
+        ``straight``: each after the first along a straight line from the one before, the arm
+        clear of the scene all along: a place's last stretch down onto a counter swept the upper
+        arm into the counter's edge from a stand whose end poses were clear)."""
         seed = self.body.q()
         seed[:3] = pose
+        prev = None
         for k, T in enumerate(targets):
             q = self.body.reachable(T, seed=seed) if routed and k == 0 else self.body.solve(T, seed=seed)
             if q is None:
                 return False
+            if straight and prev is not None:
+                steps = LINE_CHECK_STEPS
+                if len(self.body.line_way(targets[k - 1], T, prev, steps=steps, collide=True)) < steps:
+                    return False
+            if straight:  # the line starts where the arm solved the pose before it
+                prev = seed = q
         return True
 
     def _candidates(self, point, toward, how: str, clear_of: str | None, around: bool) -> Iterator[Pose]:
@@ -377,8 +393,10 @@ class Navigator:
         if leaf is None:
             return True
         point = self.door_point(door)
-        if not self.eyes.look_at(point):
-            return False
+        if not (self.eyes.look_at(point) or self.eyes.look_at(point, lift=DOOR_LOOK_LIFT)):
+            # no look at it from here (the arm would strike something): what was last seen of it
+            q = self.scene.joint.get(door)
+            return q is not None and abs(q) >= DOOR_PASSABLE * abs(leaf.art.opened)
         frame = self.eyes.frame()
         q = self.scene.fit_leaf(door, frame)
         if q is not None:

@@ -45,6 +45,9 @@ WALL_HEIGHT = 2.0
 FLOOR_THICKNESS = 0.1
 #: a door's fitted opening is searched over this many joint values between closed and open
 DOOR_FIT_STEPS = 40
+#: the planar offsets (m, m, rad) a room door's points may lie off its leaf in the map by, each
+#: tried in a fit: about the localiser's error (5 cm, 2 degrees, each way)
+DOOR_SLACK = tuple((dx, dy, dth) for dx in (-0.06, 0.0, 0.06) for dy in (-0.06, 0.0, 0.06) for dth in (-0.04, 0.0, 0.04))
 #: points within this of a leaf's box count as the leaf's
 LEAF_MARGIN = 0.03
 #: points of a frame's cloud a new leaf fit must explain beyond the believed joint value before a
@@ -297,7 +300,8 @@ class Leaf:
         R, move = self.transform(q)
         return Obb(move(c), R @ self.base, h)
 
-    def fit(self, pts: np.ndarray, eye: np.ndarray | None, believed: float | None = None) -> float | None:
+    def fit(self, pts: np.ndarray, eye: np.ndarray | None, believed: float | None = None,
+            slack: tuple[tuple[float, float, float], ...] = ((0.0, 0.0, 0.0),)) -> float | None:
         """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
         None when no joint value puts the leaf on any of them. A joint value is supported by the
         points on its leaf's box and contradicted by the points the camera saw through the leaf's
@@ -306,15 +310,30 @@ class Leaf:
         inside of the cavity the camera sees. With ``believed`` (where the leaf is thought to
         stand), the best value must explain :data:`LEAF_REFIT_POINTS` more points than the belief
         does, else the belief stands: a frame that shows only a leaf's foot or edge explains a few
-        points either way, and the ties and near-ties between such values are not evidence."""
+        points either way, and the ties and near-ties between such values are not evidence.
+        ``slack``: planar offsets (dx, dy, dθ about the hinge) the points may lie off the map's
+        leaf by (a localisation error the map was not corrected for): each joint value scores its
+        best offset."""
         lo, hi = sorted((self.art.lower, self.art.upper))
         values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
-        on = np.array([int(self.box(q).contains(pts, LEAF_MARGIN).sum()) for q in values])
-        if on.max() == 0:
+        score = np.full(len(values), -np.inf)
+        anything = False
+        for dx, dy, dth in slack:
+            c, s = math.cos(-dth), math.sin(-dth)
+            p = np.asarray(pts, float).copy()
+            xy = p[:, :2] - self.origin[:2] - (dx, dy)
+            p[:, 0], p[:, 1] = c * xy[:, 0] - s * xy[:, 1] + self.origin[0], s * xy[:, 0] + c * xy[:, 1] + self.origin[1]
+            e = None if eye is None else np.array([*(np.array([[c, -s], [s, c]]) @ (np.asarray(eye)[:2] - self.origin[:2] - (dx, dy))
+                                                     + self.origin[:2]), eye[2]])
+            on = np.array([int(self.box(q).contains(p, LEAF_MARGIN).sum()) for q in values])
+            if on.max() == 0:
+                continue
+            anything = True
+            through = np.zeros_like(on) if e is None else np.array(
+                [int(seen_through(self.face(q), e, p, LEAF_MARGIN).sum()) for q in values])
+            score = np.maximum(score, on - through)
+        if not anything:
             return None
-        through = np.zeros_like(on) if eye is None else np.array(
-            [int(seen_through(self.face(q), eye, pts, LEAF_MARGIN).sum()) for q in values])
-        score = on - through
         best = int(np.argmax(score))
         if believed is not None:
             now = int(np.argmin(np.abs(values - believed)))
@@ -561,7 +580,10 @@ class SceneModel:
         if cloud is None:
             return hint
         eye = None if frame.camera_pose is None else np.asarray(frame.camera_pose)[:3, 3]
-        q = leaf.fit(np.asarray(cloud.points), eye, self.joint.get(name, 0.0) if gated else None)
+        # a room door is fitted allowing for the localiser's error: the map is registered to the
+        # furniture in view, and a door is often seen with none, or far from what is
+        slack = DOOR_SLACK if self.site.door(name) is not None else ((0.0, 0.0, 0.0),)
+        q = leaf.fit(np.asarray(cloud.points), eye, self.joint.get(name, 0.0) if gated else None, slack)
         if q is None:
             return hint
         self.joint[name] = q
