@@ -339,6 +339,11 @@ class Handles:
         self.hands.progress(0.3, "moving the handle")
         self.body.through([w.q for w in path.waypoints[1:]], FOLLOW_SPEED)
         reached = path.joint_values[-1]
+        if not self.body.holding():
+            # the handle slipped out of the hand on the way: the leaf is not where the path ended,
+            # and backing off as if it were would push it; the wrist camera, right at it, shows it
+            seen = self.scene.fit_leaf(name, self.eyes.frame())
+            reached = seen if seen is not None else q0
         self.scene.joint[name] = reached
         self.hands.progress(0.85, "letting go")
         self._retreat(name, reached, start)

@@ -41,7 +41,7 @@ from skills.eyes import CAMERA_EYE, Eyes, Held
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
-from vap_bt.scene.pointcloud import instance_cloud
+from vap_bt.scene.pointcloud import backproject, instance_cloud
 
 APPROACH = 0.14  # pre-grasp distance along the approach axis
 #: a side grasp keeps the hand level when the tcp can be this high above the item's bottom (the
@@ -77,7 +77,7 @@ REGARD_EYE = 0.15
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
 GRASP_STANDS = 3  # work poses a grasp tries before it gives up (the arm's reach is checked at each)
-PLACE_STANDS = 2  # work poses a place takes: the second for the spot where a look shows the piece
+PLACE_STANDS = 2  # work poses a place (a push) takes: the second for the spot (the item) where a look shows it
 #: a long item on the floor is taken off its middle when no hand reaches that (the middle of a
 #: knife that slid half under a table is under its top): this share of the way from its middle
 #: to where the pads would leave it, either way along it; an item shorter than the pads allow is
@@ -87,6 +87,12 @@ PAD_END = 0.025  # the pads stay this far in from the end of an item taken off i
 DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
+#: a sink's points this far above its top (m), within TAP_SEARCH of the map's tap, are its tap's
+#: (at least TAP_MIN_POINTS of them, from at most TAP_SEARCH_RANGE away)
+TAP_ABOVE, TAP_SEARCH, TAP_MIN_POINTS, TAP_SEARCH_RANGE = 0.03, 0.25, 15, 2.5
+#: an appliance's points within SWITCH_SEARCH (m) of the map's switch show its front; a front seen
+#: further than SWITCH_FRONT_SLACK from where the (registered) map has it is not believed
+SWITCH_SEARCH, SWITCH_FRONT_SLACK = 0.2, 0.06
 FILL_WAIT = 1.5  # s held still under the running tap (a cup fills in about one)
 
 
@@ -148,6 +154,7 @@ class Hands:
     def __init__(self, body: Body, eyes: Eyes, nav: Navigator, scene: SceneModel) -> None:
         self.body, self.eyes, self.nav, self.scene = body, eyes, nav, scene
         self.progress = lambda p, text: None
+        self.regarded = None  # the frame of the last :meth:`regard`
 
     # -- measuring ---------------------------------------------------------------------------
 
@@ -161,15 +168,58 @@ class Hands:
         look at the point itself — a tap right under the eye — sees a corner of it), then to the
         point, then to the piece's front. The piece as the map has it when no look shows it."""
         f = self.scene.furniture.get(name)
+        self.regarded = None
         if f is None:
             return None
         top = f.top_point()
         for p, lift, forward in ((top, REGARD_LIFT, REGARD_EYE), (top, 0.0, REGARD_EYE), (point, 0.0, CAMERA_EYE[0]),
                                  (f.to_world((0.0, f.depth / 2, f.height / 2)), 0.0, CAMERA_EYE[0])):
             if self.eyes.look_at(p, lift=lift, forward=forward):
-                self.eyes.frame()
+                self.regarded = self.eyes.frame()  # the frame the piece was registered from
                 break
         return self.scene.furniture.get(name)
+
+    def tap_seen(self, f: Furniture, tap: np.ndarray) -> np.ndarray:
+        """The tap as the last :meth:`regard` shows it: the registration fixes the sink's front and
+        turn well, its place along a long counter less so (the frame may show no side of it); the
+        tap's arm is what of the sink stands above its top near where the map puts the tap, and
+        its middle across gives the tap's place along the front. ``tap`` when it does not show."""
+        frame = self.regarded
+        d = None if frame is None else frame.detection(f.name)
+        if d is None or frame.depth is None or frame.masks is None:
+            return tap
+        pts = np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
+                                     TAP_SEARCH_RANGE).points)
+        if not len(pts):
+            return tap
+        up = pts[(pts[:, 2] > f.height + TAP_ABOVE) & (np.linalg.norm(pts[:, :2] - tap[:2], axis=1) < TAP_SEARCH)]
+        if len(up) < TAP_MIN_POINTS:
+            return tap
+        across = float(np.median((up - tap)[:, :2] @ f.along[:2]))
+        return tap + f.along * across
+
+    def switch_seen(self, f: Furniture, switch: np.ndarray) -> np.ndarray:
+        """The switch as the last :meth:`regard` shows the appliance's front: the registration
+        places a front to a centre-metre or two, and a fingertip that stops short of the switch
+        by that presses nothing. Of the appliance's points near where the map puts the switch,
+        most lie on its front (the median of their depth along its normal); the switch stands out
+        of the front as the map says, so it is moved along the normal to where the front is seen.
+        ``switch`` when the frame does not show it."""
+        frame = self.regarded
+        d = None if frame is None else frame.detection(f.name)
+        if d is None or frame.depth is None or frame.masks is None:
+            return switch
+        pts = np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
+                                     TAP_SEARCH_RANGE).points)
+        near = pts[np.linalg.norm(pts - switch, axis=1) < SWITCH_SEARCH] if len(pts) else pts
+        if len(near) < 2 * TAP_MIN_POINTS:
+            return switch
+        n = f.front
+        seen = float(np.median((near - switch) @ n))  # the front, as seen, from the switch's face
+        mapped = float((f.to_world((0.0, f.depth / 2, 0.0)) - switch)[:2] @ n[:2])  # as the map has it
+        if abs(seen - mapped) > SWITCH_FRONT_SLACK:
+            return switch  # not the front (something in front of it, or too few of its points)
+        return switch + n * (seen - mapped)
 
     def locate(self, name: str, point, where: Where) -> Seen | None:
         """Measure ``name`` where it is believed to be: from here if the camera can see it, else
@@ -698,12 +748,24 @@ class Hands:
         if f is None or f.info.switch is None:
             return Outcome(False, f"{appliance} has no switch")
         lp, n = np.array(f.info.switch), f.front
-        self.nav.approach(self.nav.work_pose(lp, n, "front", appliance))
-        f = self.regard(appliance, lp)  # the switch where this look shows the appliance
-        lp, n = np.array(f.info.switch), f.front
-        G = se3.frame_zx(-n, (0, 0, -1), lp + n * 0.012)
-        pre = G.copy()
-        pre[:3, 3] += n * 0.12
+
+        def poses(base=None) -> list[np.ndarray]:
+            """The pre-press pose in front of the switch and the press itself."""
+            G = se3.frame_zx(-n, (0, 0, -1), lp + n * 0.012)
+            pre = G.copy()
+            pre[:3, 3] += n * 0.12
+            return [pre, G]
+
+        for stand in range(PLACE_STANDS):
+            self.nav.approach(self.nav.work_pose(lp, n, "front", appliance, reach=poses))
+            f = self.regard(appliance, lp)  # the switch where this look shows it
+            lp, n = self.switch_seen(f, np.array(f.info.switch)), f.front
+            self.body.home()  # whence the arm's ways to the switch are planned
+            if self.nav.reaches(self.body.base_pose(), poses(), routed=True):
+                break
+            # the switch is seen far enough off the map's place that the arm does not reach it
+            # from this stand (a work pose is a reach from the switch): stand again for it
+        pre, G = poses()
         self.body.fingers(0.0)
         if not self.body.goto_pose(pre):
             self.body.home()
@@ -724,7 +786,8 @@ class Hands:
             return Outcome(False, f"{sink} has no tap")
         tap = np.array(f.info.tap)
         self.nav.approach(self.nav.work_pose(tap, f.front, "top", sink))
-        tap = np.array(self.regard(sink, tap).info.tap)  # the tap where this look shows the sink
+        f = self.regard(sink, tap)
+        tap = self.tap_seen(f, np.array(f.info.tap))  # the tap where this look shows it
         self.carry()  # the vessel upright again, as it rides
         T = self.body.pose("tcp")
         corners = held.corners_at(T)
@@ -786,15 +849,36 @@ class Hands:
             return Outcome(False, f"{blocker} is not where it was believed to be: not seen")
         o = self.eyes.measure(target, points[target])
         o_c = o.centroid if o is not None else np.asarray(points[target], float)
-        self.nav.approach(self.nav.work_pose(b.centroid, support.front, "top", support.name))
-        b = self.eyes.measure(blocker, b.centroid) or b
-        side = support.along
-        direction = side if (b.centroid - o_c)[:2] @ side[:2] >= 0 else -side  # away from what it blocks
-        r = max(b.extent[:2]) / 2
-        z = b.bottom + 0.6 * (b.top - b.bottom)
-        start = b.centroid - direction * (r + 0.05)
-        start[2] = z + 0.1
-        G = se3.frame_zx((0, 0, -1), direction, start)
+        mark = self.body.mark()  # what the looks measured, carried across the drive by odometry
+
+        def pose(bb: Seen, away_from) -> tuple[np.ndarray, np.ndarray, float]:
+            """The hand's start above ``bb``'s side (the fingers down), the way it pushes (along
+            the support, away from ``away_from``) and the height it pushes at."""
+            side = support.along
+            direction = side if (bb.centroid - away_from)[:2] @ side[:2] >= 0 else -side  # away from what it blocks
+            r = max(bb.extent[:2]) / 2
+            z = bb.bottom + 0.6 * (bb.top - bb.bottom)
+            start = bb.centroid - direction * (r + 0.05)
+            start[2] = z + 0.1
+            return se3.frame_zx((0, 0, -1), direction, start), direction, z
+
+        def reach(base) -> list[np.ndarray]:
+            G, _, z = pose(b, o_c)
+            down = G.copy()
+            down[2, 3] = z
+            return [G, down]
+
+        for stand in range(PLACE_STANDS):
+            self.nav.approach(self.nav.work_pose(b.centroid, support.front, "top", support.name, reach=reach))
+            S = self.body.since(mark)
+            o_c = S[:3, :3] @ o_c + S[:3, 3]
+            b = self._carried((b, mark))
+            b = self.eyes.measure(blocker, b.centroid) or b
+            mark = self.body.mark()
+            G, direction, z = pose(b, o_c)
+            if self.nav.reaches(self.body.base_pose(), reach(self.body.base_pose()), routed=True):
+                break
+            # the blocker as seen from here is further than the stand was chosen for: stand again
         self.body.fingers(0.0)
         if not self.body.goto_pose(G):
             self.body.home()

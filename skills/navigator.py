@@ -402,7 +402,12 @@ class Navigator:
         if q is not None:
             travel = abs(leaf.art.opened)
             return abs(q) >= DOOR_PASSABLE * travel
-        return bool(self.scene.sees_through(frame, self.doorway_points(door)))
+        through = bool(self.scene.sees_through(frame, self.doorway_points(door)))
+        if through and door not in self.scene.joint:
+            # no leaf where the map would have it, and the view goes through: wide open (which
+            # way it swung is not known; either way it stands against a wall, out of the way)
+            self.scene.joint[door] = leaf.art.opened
+        return through
 
     def base_path(self, pose: Pose, reach_over: bool = True) -> list[Pose] | None:
         """Poses to drive through to ``pose`` without the base or the arm above it running into a

@@ -57,6 +57,15 @@ class RegistrationParams:
     prior_shift: float = 0.05
     prior_turn: float = 0.035
     prior_points: float = 4.0
+    #: a direction of the correction (a shift, or a turn seen a metre away) is believed only if the
+    #: points pin it down as firmly as this many points on a face square to it would: along a long
+    #: counter, or in the turn a low hearth seen alone leaves open, the fit says nothing, and a
+    #: wrong turn carried across the room put a room door's leaf in its doorway (store_firewood).
+    #: One point's worth: the fits of the episodes looked at that were right had a few at least in
+    #: every direction (a box's edges pin a shift along its face), the wrong ones none
+    min_constraint: float = 1.0
+    #: metres at which a turn is weighed against a shift (a turn of 0.01 rad is a shift of 1 cm here)
+    lever: float = 1.0
 
 
 @dataclass(frozen=True)
@@ -160,10 +169,16 @@ def register(clouds: dict[str, np.ndarray], models: dict[str, list[Obb]],
 
     fit = least_squares(residuals, np.zeros(3), loss="soft_l1", f_scale=1.0, x_scale=(0.02, 0.02, 0.02),
                         diff_step=1e-3, max_nfev=40, ftol=1e-4, xtol=1e-4)
-    dx, dy, th = map(float, fit.x)
+    def cost(x) -> float:
+        """The points' robust cost (soft L1, as fitted), without the prior."""
+        z = np.square(residuals(x)[:len(pts)])
+        return float(np.sum(2.0 * (np.sqrt(1.0 + z) - 1.0)))
+
+    x = _constrained(fit.x, cost, params)
+    dx, dy, th = map(float, x)
     if math.hypot(dx, dy) > params.max_shift or abs(th) > params.max_turn:
         return None
-    d = residuals(fit.x)[:len(pts)] * params.scale
+    d = residuals(x)[:len(pts)] * params.scale
     share = float(np.mean(d < params.inlier))
     if share < params.min_inliers:
         return None
@@ -171,6 +186,37 @@ def register(clouds: dict[str, np.ndarray], models: dict[str, list[Obb]],
 
 
 # -- the map as it lies in the robot's frame ------------------------------------------------------
+
+
+def _constrained(x: np.ndarray, cost, params: RegistrationParams) -> np.ndarray:
+    """``x`` (dx, dy, dθ) with its component along every direction the points do not pin down
+    taken out (left where the localiser put it). The points' robust cost ``cost(x)`` is probed a
+    step either way (finite differences: a box's edge pins a shift along its face only over a
+    step, not in the gradient) for its curvature, in metres (a turn times
+    :attr:`RegistrationParams.lever`); a point on a face square to a direction curves it by
+    ``2/scale²``, so a direction curved less than ``min_constraint`` such points' worth is open."""
+    S = np.diag([1.0, 1.0, 1.0 / params.lever])  # metres -> parameters
+    h = PROBE
+    y0 = np.linalg.solve(S, x)
+    c0 = cost(x)
+    E = np.eye(3) * h
+    f1 = [cost(S @ (y0 + E[i])) for i in range(3)]
+    H = np.empty((3, 3))
+    for i in range(3):
+        for j in range(i, 3):
+            fij = cost(S @ (y0 + E[i] + E[j]))
+            H[i, j] = H[j, i] = (fij - f1[i] - f1[j] + c0) / (h * h)
+    w, V = np.linalg.eigh(H)
+    firm = 2.0 * params.min_constraint / params.scale ** 2
+    y = y0.copy()
+    for k in range(3):
+        if w[k] < firm:
+            y = y - (y @ V[:, k]) * V[:, k]
+    return S @ y
+
+
+#: m (a turn: m at the lever) the registration's cost is probed by for its curvature
+PROBE = 0.02
 
 
 def corrected_map(site: SiteMap, c: Correction) -> SiteMap:
@@ -206,6 +252,12 @@ def corrected_map(site: SiteMap, c: Correction) -> SiteMap:
 
 def _vec(v) -> tuple[float, float, float]:
     return (float(v[0]), float(v[1]), float(v[2]))
+
+
+def corrected_articulation(a: Articulation | None, c: Correction) -> Articulation | None:
+    """A door's or drawer's articulation moved by ``c`` (its leaf's box keeps its own axes: the
+    leaf turned by ``c.dtheta`` with it, see :class:`~skills.scene_model.Leaf`)."""
+    return _articulation(a, c)
 
 
 def _articulation(a: Articulation | None, c: Correction) -> Articulation | None:

@@ -25,13 +25,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skills.registration import Correction, RegistrationParams, corrected_map, register
+from skills.registration import Correction, RegistrationParams, corrected_articulation, corrected_map, register
 from vap_bt.motion import se3
 from vap_bt.motion.collision import SceneBoxes
 from vap_bt.motion.footprint import Obb, apart, footprint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import Articulation, FurnitureInfo, SiteMap
-from vap_bt.scene.pointcloud import instance_cloud
+from vap_bt.scene.pointcloud import backproject, instance_cloud
 
 #: an item whose points reach within this of the floor and stay below FLOOR_ITEM_TOP lies on the
 #: floor (m)
@@ -45,9 +45,21 @@ WALL_HEIGHT = 2.0
 FLOOR_THICKNESS = 0.1
 #: a door's fitted opening is searched over this many joint values between closed and open
 DOOR_FIT_STEPS = 40
+#: a door's handle is looked for among its points this near where the map puts it (m): the
+#: localiser's error two metres off, with room to spare
+HANDLE_SEARCH = 0.22
+HANDLE_SEARCH_RANGE = 3.0  # m: beyond this a bar 2.4 cm thick is a few noisy pixels
+#: m in front of the leaf's face the bar's points stand (the models' bar: its centre 4.5 cm out,
+#: 2.4 cm thick), and how near the face a point lies on it (the depth noise of a metre or two)
+BAR_STANDOUT = (0.025, 0.075)
+BAR_FACE_BAND = 0.02
+HANDLE_MIN_POINTS, HANDLE_MIN_BAR = 40, 8
+#: rad: a door's face seen turned up to this much from its fitted leaf is the leaf at another
+#: joint value (more is not the face)
+DOOR_TURN_FIX = 0.35
 #: the planar offsets (m, m, rad) a room door's points may lie off its leaf in the map by, each
-#: tried in a fit: about the localiser's error (5 cm, 2 degrees, each way)
-DOOR_SLACK = tuple((dx, dy, dth) for dx in (-0.06, 0.0, 0.06) for dy in (-0.06, 0.0, 0.06) for dth in (-0.04, 0.0, 0.04))
+#: tried in a fit: the localiser's error (σ 5 cm, 2 degrees) at a door a metre or two away
+DOOR_SLACK = tuple((dx, dy, dth) for dx in (-0.08, 0.0, 0.08) for dy in (-0.08, 0.0, 0.08) for dth in (-0.06, 0.0, 0.06))
 #: points within this of a leaf's box count as the leaf's
 LEAF_MARGIN = 0.03
 #: points of a frame's cloud a new leaf fit must explain beyond the believed joint value before a
@@ -259,6 +271,7 @@ class Leaf:
         self.name, self.art = name, art
         self.origin, self.axis = np.array(art.origin), np.array(art.axis)
         self.base = se3.axis_angle(np.array([0.0, 0.0, 1.0]), turn)
+        self.fitted_offset = (0.0, 0.0, 0.0)  # see :meth:`fit`
 
     def transform(self, q: float, q_from: float = 0.0):
         if self.art.prismatic:
@@ -317,6 +330,7 @@ class Leaf:
         lo, hi = sorted((self.art.lower, self.art.upper))
         values = np.linspace(lo, hi, DOOR_FIT_STEPS + 1)
         score = np.full(len(values), -np.inf)
+        which = [(0.0, 0.0, 0.0)] * len(values)
         anything = False
         for dx, dy, dth in slack:
             c, s = math.cos(-dth), math.sin(-dth)
@@ -331,10 +345,14 @@ class Leaf:
             anything = True
             through = np.zeros_like(on) if e is None else np.array(
                 [int(seen_through(self.face(q), e, p, LEAF_MARGIN).sum()) for q in values])
-            score = np.maximum(score, on - through)
+            better = (on - through) > score
+            which = [(dx, dy, dth) if b else w for b, w in zip(better, which)]
+            score = np.where(better, on - through, score)
         if not anything:
             return None
         best = int(np.argmax(score))
+        #: the offset the best joint value was found at (dx, dy, dθ about the hinge)
+        self.fitted_offset = which[best]
         if believed is not None:
             now = int(np.argmin(np.abs(values - believed)))
             if score[best] - score[now] < LEAF_REFIT_POINTS:
@@ -364,6 +382,9 @@ class SceneModel:
         #: without them a correction holds only until the base moves)
         self.mark = None
         self.since = None
+        #: room doors as a look from where the robot stands last showed them lying off the map
+        #: (no furniture registration reaches a door across the room): until the base moves
+        self.door_fixes: dict[str, Correction] = {}
         #: told when the map's geometry changed (a correction taken or dropped)
         self.changed = lambda: None
         self._build(site)
@@ -377,7 +398,11 @@ class SceneModel:
         turn = self.correction.dtheta
         self.furniture = {f.name: Furniture(f) for f in site.furniture if f.pose is not None and f.footprint}
         self.leaves = {f.name: Leaf(f.name, f.articulation, turn) for f in site.furniture if f.articulation}
-        self.leaves.update({d.name: Leaf(d.name, d.articulation) for d in site.doors if d.articulation})
+        for d in site.doors:
+            if d.articulation is not None:
+                fix = self.door_fixes.get(d.name)
+                self.leaves[d.name] = Leaf(d.name, d.articulation) if fix is None else \
+                    Leaf(d.name, corrected_articulation(d.articulation, fix), fix.dtheta)
         self.changed()
 
     # -- where the map lies from here ----------------------------------------------------------
@@ -409,7 +434,13 @@ class SceneModel:
     def base_moved(self) -> None:
         """The base moved: the correction is carried along by the wheels' motion (the localiser's
         frame may have jumped), and dropped once the base has gone :data:`ODOMETRY_HOLD` from
-        where it was registered; the map is then used as the localiser places it."""
+        where it was registered; the map is then used as the localiser places it. A door's fix
+        is dropped (a look from the next stance fits it again)."""
+        if self.door_fixes:
+            self.door_fixes = {}
+            if self.correction.is_identity():
+                self._build(self.raw)
+                return
         if self.correction.is_identity():
             return
         if self._registered is None or self.since is None:
@@ -582,12 +613,68 @@ class SceneModel:
         eye = None if frame.camera_pose is None else np.asarray(frame.camera_pose)[:3, 3]
         # a room door is fitted allowing for the localiser's error: the map is registered to the
         # furniture in view, and a door is often seen with none, or far from what is
-        slack = DOOR_SLACK if self.site.door(name) is not None else ((0.0, 0.0, 0.0),)
+        door = self.site.door(name) is not None
+        slack = DOOR_SLACK if door else ((0.0, 0.0, 0.0),)
         q = leaf.fit(np.asarray(cloud.points), eye, self.joint.get(name, 0.0) if gated else None, slack)
         if q is None:
             return hint
         self.joint[name] = q
+        if door and not gated:
+            self._fix_door(name, frame, leaf, q)
+            q = self.joint[name]  # the handle's face may have said the leaf stands a little further
         return q
+
+    def _fix_door(self, name: str, frame: Frame, leaf: "Leaf", q: float) -> None:
+        """Where the door's handle is, as the frame shows it: among the door's points near where
+        the map (as the fit placed the leaf) puts the handle, the leaf's face is the plane most of
+        them lie on, and the bar is what stands out of it by :data:`BAR_STANDOUT`; the door is
+        then shifted (and turned to the face's normal) so that its handle is the bar seen. A
+        robot's localiser is a few centimetres and a couple of degrees off, two metres away that
+        is up to 15 cm, and the fingers must close round a 2.4 cm bar; no furniture registration
+        reaches a door across the room."""
+        d = frame.detection(name)
+        if d is None or frame.depth is None or frame.masks is None:
+            return
+        pts = np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
+                                     HANDLE_SEARCH_RANGE).points)
+        eye = np.asarray(frame.camera_pose)[:3, 3]
+        for side in ((1.0, -1.0) if leaf.art.other_side is not None else (1.0,)):
+            p, n, bar = leaf.handle_at(q, side)
+            if (eye - p) @ n <= 0.0:
+                continue  # that face is turned away from the camera
+            near = pts[np.linalg.norm(pts - p, axis=1) < HANDLE_SEARCH]
+            if len(near) < HANDLE_MIN_POINTS:
+                return
+            out = (near - p) @ n
+            face = float(np.median(out))  # most of what is near the handle is the leaf's face
+            on_face = near[np.abs(out - face) < BAR_FACE_BAND]
+            stands = near[(out - face > BAR_STANDOUT[0]) & (out - face < BAR_STANDOUT[1])]
+            if len(stands) < HANDLE_MIN_BAR or len(on_face) < HANDLE_MIN_POINTS:
+                return
+            # the face's normal from its points (the least spread), turned the way the map's faces
+            xy = on_face[:, :2] - on_face[:, :2].mean(axis=0)
+            w, v = np.linalg.eigh(xy.T @ xy)
+            seen_n = v[:, 0] if v[:, 0] @ n[:2] > 0 else -v[:, 0]
+            turn = math.atan2(n[0] * seen_n[1] - n[1] * seen_n[0], float(n[:2] @ seen_n))
+            if not leaf.art.prismatic and abs(turn) <= DOOR_TURN_FIX:
+                # the leaf stands turned by that much more than the fit said: a joint value a few
+                # steps off (seen edge-on, an open leaf is hard to fit), which the localiser's
+                # degree or two would not explain
+                q = q + turn * float(np.sign(leaf.axis[2]) or 1.0)
+                self.joint[name] = q
+                p, n, bar = leaf.handle_at(q, side)
+            centre = stands.mean(axis=0)
+            shift = centre - p
+            shift[2] = 0.0
+            if math.hypot(shift[0], shift[1]) > self.registration.max_shift:
+                return
+            # carried onto the bar seen
+            fix = Correction(float(shift[0]), float(shift[1]), 0.0, (float(p[0]), float(p[1])), len(near), (name,), 1.0)
+            previous = self.door_fixes.get(name)
+            # the fit was of the leaf as already fixed: the new fix comes on top of the old
+            self.door_fixes[name] = fix if previous is None else previous.moved(fix.matrix())
+            self._build(corrected_map(self.raw, self.correction))
+            return
 
 
 def seen_through(box: Obb, eye: np.ndarray, pts: np.ndarray, short: float) -> np.ndarray:
