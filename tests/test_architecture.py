@@ -153,7 +153,7 @@ def test_no_object_the_executive_holds_can_reach_the_oracle():
 
     task = taskfile.load(ROOT / "trees" / "collect_cup.yaml")
     session = Session(task, RunConfig.from_task(task, world="symbolic", transport="zenoh", injection=False,
-                                                vlm_error=0.0))
+                                                vlm_noise=0.0))
     held: list[Executive] = []
     original = Executive.run
 

@@ -3,7 +3,7 @@ zenotravel, miconic) — and depots, whose on/2 and clear/1 share household name
 things — run end to end, and every predicate the profile sources from the VLM is verified.
 
 Each is the issue's command, ``vap-bt run --domain D --problem P --world symbolic --no-injection
---vlm-error 0`` (skills over Zenoh on loopback, the default), judged by the world: the report's
+--vlm-noise 0`` (skills over Zenoh on loopback, the default), judged by the world: the report's
 ``goal_satisfied``."""
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ def test_an_ipc_domain_runs_end_to_end_with_every_vlm_predicate_verified(cli, tm
     report = tmp_path / "report.json"
     code, out, err = cli("run", "--domain", DOMAINS / f"{domain}-domain.pddl", "--problem",
                          DOMAINS / f"{RUNS[domain]}.pddl", "--world", "symbolic", "--no-injection",
-                         "--vlm-error", "0", "--report", report, "-q", "--json")
+                         "--vlm-noise", "0", "--report", report, "-q", "--json")
     assert "Traceback" not in err
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]

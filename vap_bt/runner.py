@@ -66,7 +66,7 @@ class RunConfig:
     vlm: str = "sim"  # sim (world-side, offline) | sim-http | openai | gemini (see make_vlm)
     vlm_url: str | None = None  # openai/gemini: the API root (--vlm-url)
     vlm_model: str | None = None  # openai/gemini: the model name (--vlm-model)
-    vlm_error: float = 0.05
+    vlm_noise: float = 1.0
     vlm_latency: float = 0.0  # sim-http: seconds the endpoint adds to every answer (benchmarks)
     vlm_logprobs: bool = True  # HTTP backends: ask for token log-probabilities
     miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
@@ -75,6 +75,8 @@ class RunConfig:
     planner: str = "fast-downward"
     protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
     viewpoints: str = "vlm"  # where to look from next: vlm | greedy
+    #: a surprise or a goal value needs a second agreeing view (False: the paper's first settled view)
+    second_look: bool = True
     unseen: str = "look"  # an unsettled precondition: look | go_on | stop
     goal: str | None = None  # a goal in words (--goal), parsed by the VLM after the survey
     parse_instruction: bool = False  # parse the task file's instruction: even when it has goal: atoms
@@ -132,7 +134,7 @@ def sim_vlm(task: Task, world: World, cfg: RunConfig):
     from vap_bt.sim.sim_vlm import SimVLM
 
     rooms = frozenset(o for o, t in task.planning.objects.items() if t == "room")
-    return SimVLM(world.captures.get, cfg.vlm_error, seed=cfg.seed, rooms=rooms)
+    return SimVLM(world.captures.get, cfg.vlm_noise, seed=cfg.seed, rooms=rooms)
 
 
 def make_endpoint(task: Task, world: World, cfg: RunConfig):
@@ -317,7 +319,8 @@ class Session:
                                      vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
                                      max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
                                      tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
-                                     protocol=protocol, viewpoints=cfg.viewpoints, threads=remote)
+                                     protocol=protocol, viewpoints=cfg.viewpoints, threads=remote,
+                                     second_look=cfg.second_look)
         progress = self.progress
         if self.recorder is not None:  # progress lines go to the recording's log as well
             progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
@@ -328,6 +331,7 @@ class Session:
                               on_verification=self._score_verification,
                               goal_parser=self._goal_parser, profile=self.profile)
         self._verified: list[bool] = []
+        self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
         return executive, metered
 
     def build_graph(self, seed: int | None = None) -> dict:
@@ -386,10 +390,16 @@ class Session:
         raise ValueError(f"unknown transport {self.cfg.transport!r}")
 
     def _score_verification(self, v) -> None:
-        """Whether a settled value matched the world at that moment (nothing happens between a
-        check's last frame and its verdict, so the truth now is the truth the frame showed)."""
+        """The world's value of a check's atom when it settled (nothing happens between a check's
+        last frame and its verdict, so the truth now is the truth the frame showed), and when its
+        first view was captured (from that capture's record, for the first view's accuracy); and
+        whether a settled value matched the world."""
+        truth = self.world.oracle.holds(v.atom)
+        captures = getattr(self.world, "captures", None)  # a world in another process keeps its own
+        first = captures.get(v.rounds[0].view) if v.rounds and captures is not None else None
+        self._truths[id(v)] = {"truth": truth, "first_truth": first.holds(v.atom) if first is not None else truth}
         if v.outcome in ("confirmed", "contradicted", "felt", "reused"):
-            self._verified.append(self.world.oracle.holds(v.atom) == v.value)
+            self._verified.append(truth == v.value)
 
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
@@ -438,7 +448,7 @@ class Session:
             "surveys": len(out.surveys),
             "ticks": out.ticks,
             "vlm_queries": vlm.total,
-            "verifications": [v.to_json() for v in ctx.verifications],
+            "verifications": [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications],
             "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints},
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],

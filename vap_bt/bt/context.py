@@ -158,6 +158,11 @@ class ExecutionContext:
     hints: Callable[[SceneGraph, tuple[str, ...]], tuple] = lambda graph, names: ()
     protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
     viewpoints: ViewpointStrategy = field(default_factory=ViewpointStrategy)
+    #: a surprise or a goal value needs a second agreeing view from another picture (beyond the paper)
+    second_look: bool = True
+    #: preconditions the camera could not make out however often the robot looked again: it acts on
+    #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
+    on_belief: set[Atom] = field(default_factory=set)
     verified: Verified = field(default_factory=Verified)
     #: where work in flight runs (a thread pool against a remote model; inline in-process)
     executor: Executor = field(default_factory=InlineExecutor)

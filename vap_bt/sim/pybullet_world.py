@@ -58,6 +58,8 @@ from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_rules import Rules
 from vap_bt.sim.pb_scene import Hinge, build_scene, switch_face, tap_outlet
 from vap_bt.sim.pb_truth import Truth
+from vap_bt.sim.pb_views import object_views
+from vap_bt.sim.observability import PLAIN_SHARE
 from vap_bt.sim.situations import SituationModel
 from vap_bt.world import InjectedSituation
 
@@ -305,8 +307,13 @@ class PybulletWorld:
                 extents[name] = (edges, k / pixels)
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
+        seen = {n: 1.0 if extents.get(n, ((), 0.0))[1] >= PLAIN_SHARE else v for n, v in vis.items()}
+        views, fingers = object_views(r, self.scene, self.truth, self.robot, seen,
+                                      {n: e[1] for n, e in extents.items()}, counts)
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
-                                        masks=extents, image_sha1=rgb_sha1(r.rgb)))
+                                        masks=extents, image_sha1=rgb_sha1(r.rgb), views=views,
+                                        labels={n: self._label(n) for n in self.scene.things if self.scene.things[n].room is None},
+                                        fingers=fingers))
         return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=r.depth, masks=masks,
                      intrinsics=r.intrinsics, camera_pose=r.pose.copy(), aim=tuple(aim.names) if aim else ())
 

@@ -37,7 +37,7 @@ from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.scene.layout import floor_of
 from vap_bt.perception.backends.image import rgb_sha1
-from vap_bt.sim.captures import CaptureLog, CaptureRecord, frame_card
+from vap_bt.sim.captures import CaptureLog, CaptureRecord, ObjectView, frame_card
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.situations import SituationModel, SituationSpec
@@ -81,7 +81,7 @@ class SymbolicWorld:
         self._tick = 0  # bumps on every change of the world or the viewpoint
         self._frames = 0
         self._aim: tuple[str, ...] = ()
-        self._visibility: dict[tuple[str, bool], float] = {}
+        self._visibility: dict[tuple, float] = {}
         self._step = 0
         self._injected: list[InjectedSituation] = []
         self.captures.clear()
@@ -138,7 +138,9 @@ class SymbolicWorld:
         frame_id = f"sym-{self.seed}-{self._frames}"
         card = frame_card(frame_id) if self.frame_cards else None
         self.captures.add(CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick,
-                                        image_sha1=rgb_sha1(card) if card is not None else None))
+                                        image_sha1=rgb_sha1(card) if card is not None else None,
+                                        views={o: self._object_view(o) for o in vis}, fingers=self._fingers(),
+                                        picture=f"sym-view-{self._view}"))
         dets = tuple(self._detect(o) for o in sorted(vis) if self._detectable(o)
                      and self._detect_rng.random() >= self.detector.miss_rate)
         return Frame(frame_id, float(self._tick), dets, rgb=card, aim=self._aim)
@@ -236,6 +238,29 @@ class SymbolicWorld:
         if key not in self._visibility:
             seen = self._in_view(obj) or (targeted and self._in_room_with_robot(obj))
             self._visibility[key] = self._view_rng.uniform(VISIBILITY_LOW, 1.0) if seen else 0.0
+        return self._visibility[key]
+
+    def _object_view(self, obj: str) -> ObjectView:
+        """What the relations about ``obj`` need from this view, drawn like its visibility (once per
+        view): an item's contact with its support, a container's inside (nothing of it through a
+        shut door), a leaf, a surface's top."""
+        t = self.task.objects.get(obj, "")
+        k = self.knowledge
+        kind = lambda *types: any(k.is_subtype(t, x) for x in types if x in k.parents)  # noqa: E731
+        draw = lambda what: self._draw((obj, what))  # noqa: E731
+        closed = Atom("closed", (obj,)) in self.atoms
+        return ObjectView(contact=draw("contact") if kind("item") else None,
+                          interior=(0.0 if closed else draw("interior")) if kind("container", "sink") else None,
+                          leaf=draw("leaf") if Atom("openable", (obj,)) in self.atoms or kind("door") else None,
+                          top=draw("top") if kind("surface", "room") else None)
+
+    def _fingers(self) -> float:
+        return self._draw(("fingers",), low=0.6)
+
+    def _draw(self, key: tuple, low: float = VISIBILITY_LOW) -> float:
+        """A share drawn uniformly in [low, 1] once per view (as :meth:`_visibility_of`)."""
+        if key not in self._visibility:
+            self._visibility[key] = self._view_rng.uniform(low, 1.0)
         return self._visibility[key]
 
     def _in_room_with_robot(self, obj: str) -> bool:
