@@ -111,12 +111,13 @@ def test_the_papers_rule_believes_the_first_settled_view():
     assert status == Status.FAILURE and ctx.situation.observed is False
 
 
-def test_a_goal_is_confirmed_by_two_views():
-    """Success is claimed on the goal's checks: one picture is one draw of the model's errors."""
+def test_a_goal_is_confirmed_by_two_views_judged_sufficient():
+    """Success is claimed on the goal's checks: one picture is one draw of the model's errors, and
+    a view the model found insufficient is no second opinion on a success."""
     camera = Camera()
-    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("yyyyy", False)])
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("yyyyy", False), view("yyyyn", True)])
     status, node, ctx = run(child, camera, phase="goal")
-    assert status == Status.SUCCESS and child.runs == 2 and camera.asked == ["left"]
+    assert status == Status.SUCCESS and child.runs == 3 and camera.asked == ["left", "left"]
 
 
 def test_it_moves_where_the_vlm_says_until_a_view_settles():

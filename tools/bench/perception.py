@@ -10,6 +10,8 @@ injection on, the simulated model vlm-2 (docs/perception.md), in-process skills.
 * ``lean`` — the lean protocol with logprobs (one confident answer stands for the vote);
 * ``greedy`` — the paper's protocol with greedy viewpoints (predefined ones around the target),
   against ``paper``'s VLM-suggested ones (the paper's H2);
+* ``one-look`` — the paper's protocol believing the first settled view of a surprise or a goal,
+  as Alg. 2 does (the executive's default looks a second time from a new picture);
 
 and, for the first ``--wall-seeds`` seeds, ``paper`` and ``lean`` again with ``--latency`` seconds
 (0.3) added by the endpoint to every request: the VLM wall time per action (time with a query in
@@ -59,10 +61,11 @@ CONFIGS = {
     "lean-nolp": {"protocol": "lean", "vlm_logprobs": False},
     "lean": {"protocol": "lean"},
     "greedy": {"protocol": "paper", "viewpoints": "greedy"},
+    "one-look": {"protocol": "paper", "second_look": False},
 }
 TIMED = ("paper", "lean")  # rerun with the endpoint's latency
 LABELS = {"paper": "paper", "lean-nolp": "lean without logprobs", "lean": "lean with logprobs",
-          "greedy": "paper, greedy viewpoints"}
+          "greedy": "paper, greedy viewpoints", "one-look": "paper, one look (Alg. 2)"}
 
 
 @dataclass(frozen=True)

@@ -17,8 +17,8 @@ when no direction is left, or the check is about the hand or what it holds (the 
 moves with the hand: no base move shows it better), the views so far are all there are. Beyond
 the paper (``ctx.second_look``, on by default): a *surprise* — a value against the plan's
 expectation — and a *goal* value need a second view from a different picture that agrees (its
-answers consistent, sufficient or not) while the budget allows a move, since a model's errors are
-shared by every question about one picture. With
+answers consistent, sufficient or not; for a goal atom found to hold, two settled views) while the
+budget allows a move, since a model's errors are shared by every question about one picture. With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
 atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
 way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper
@@ -141,9 +141,12 @@ class ActivePerception(py_trees.decorators.Decorator):
         it), when the context asks for second looks. A model's errors belong to the picture — its
         five paraphrases can agree and be wrong — so only another view is a second opinion
         (docs/perception.md): one more view that showed the atom's objects and whose answers
-        agreed on the same value, sufficient or not."""
+        agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
+        success will be claimed, two views the model judged sufficient."""
         if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal"):
             return False
+        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient
+            return sum(r.settled and r.vote == value for r in self.rounds) < 2
         return sum(not r.unshown and r.consistent and r.vote == value for r in self.rounds) < 2
 
     def _chosen(self) -> Status:
