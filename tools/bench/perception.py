@@ -52,6 +52,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+from tools.bench.intervals import wilson  # noqa: E402
 from vap_bt.report import versions  # noqa: E402
 from vap_bt.sim.observability import RELATION_CLASS  # noqa: E402
 
@@ -197,14 +198,6 @@ def figures(rep: dict) -> dict:
 
 #: outcomes of a check that settled a value by looking (not reused from earlier, not felt)
 SETTLED = ("confirmed", "contradicted")
-
-
-def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
-    if n == 0:
-        return 0.0, 1.0
-    p = k / n
-    mid, half = (p + z * z / (2 * n)), z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
-    return (mid - half) / (1 + z * z / n), (mid + half) / (1 + z * z / n)
 
 
 #: resamples for the bootstrap intervals of the viewpoint figures (seeded: the bench is reproducible)
