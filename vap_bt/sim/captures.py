@@ -13,6 +13,15 @@ A record also stores the world's step counter at capture; a question about a fra
 world has stepped is answered from what was read before, or — if nothing was — from the truth
 now, and counted as ``late`` (reported, so that it could never go unnoticed).
 
+A record keeps, too, which world instance produced each of the frame's detections (by the
+detection's index; ``""`` for a false positive) — what the detector never tells the robot. With
+the executive's own association (which detection it took for which object: the names it filled
+in), :meth:`CaptureRecord.resolve` says which instance the robot really meant by a name: the
+simulated VLM answers about that instance (a set-of-marks prompt: the question's object is the
+one marked in the picture), and the runner scores a verification against it. A world that acts
+by name (the symbolic one: its actions take the executive's names) marks nothing
+(``marked=False``): there a name means the instance of that name.
+
 A record also names the pixels its frame carries (``image_sha1``, the hash the VLM backends'
 request records use, :func:`~vap_bt.perception.backends.image.rgb_sha1`), so that a model shown
 only the image — the simulated VLM behind its HTTP endpoint, :mod:`vap_bt.sim.vlm_endpoint` —
@@ -48,8 +57,27 @@ class CaptureRecord:
     masks: dict[str, tuple[tuple[str, ...], float]] = field(default_factory=dict)
     #: SHA-1 of the frame's rgb array (None: the frame carries no pixels)
     image_sha1: str | None = None
+    #: the world instance behind each detection of the frame, by index ("" for a false positive)
+    instances: tuple[str, ...] = ()
+    #: whether a name the executive gave a detection means that detection's instance (see the
+    #: module docstring); False where a name means the instance of that name
+    marked: bool = False
     _truth: dict[Atom, bool] = field(default_factory=dict)
     late: int = 0
+
+    def resolve(self, name: str, identified: dict[str, int]) -> str | None:
+        """The world instance the executive meant by ``name`` in this frame: the one behind the
+        detection it identified as ``name`` (None for a false positive: nothing), else — not
+        identified here, or a world that marks nothing — the instance of that name."""
+        k = identified.get(name)
+        if not self.marked or k is None or not 0 <= k < len(self.instances):
+            return name
+        return self.instances[k] or None
+
+    def resolve_atom(self, atom: Atom, identified: dict[str, int]) -> Atom | None:
+        """``atom`` with its objects resolved (:meth:`resolve`); None when one is a false positive."""
+        args = tuple(self.resolve(a, identified) for a in atom.args)
+        return None if None in args else Atom(atom.predicate, args)
 
     def holds(self, atom: Atom) -> bool:
         if atom not in self._truth:
