@@ -41,6 +41,7 @@ from skills.eyes import Eyes, Held
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
+from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN
 from vap_bt.scene.pointcloud import instance_cloud
 
 APPROACH = 0.14  # pre-grasp distance along the approach axis
@@ -126,10 +127,12 @@ class Outcome:
 
 @dataclass(frozen=True)
 class Where:
-    """What the executive believes about an item's place: its support or container and its room."""
+    """What the executive believes about an item's place: its support or container, and how far
+    from the point it gave the item may be (``radius``, m; None: it did not say)."""
 
     on: str | None = None
     inside: str | None = None
+    radius: float | None = None
 
     @property
     def place(self) -> str | None:
@@ -147,12 +150,23 @@ class Hands:
 
     def locate(self, name: str, point, where: Where) -> Seen | None:
         """Measure ``name`` where it is believed to be: from here if the camera can see it, else
-        from its standoff."""
-        seen = self.eyes.measure(name, point)
+        from its standoff. The detection taken for it is one of its class within the radius
+        belief gave (else: anywhere on the piece it is believed on or in, else near the point)."""
+        radius = self.belief_radius(where)
+        seen = self.eyes.measure(name, point, radius=radius)
         if seen is None:
             self.nav.approach(self.nav.standoff(name, point, where.place))
-            seen = self.eyes.measure(name, point)
+            seen = self.eyes.measure(name, point, radius=radius)
         return seen
+
+    def belief_radius(self, where: Where) -> float:
+        """How far from the point belief gave an item may be (see :meth:`locate`)."""
+        if where.radius is not None:
+            return where.radius
+        piece = self.scene.furniture.get(where.place or "")
+        if piece is not None:
+            return max(SEEN_RADIUS, math.hypot(piece.width, piece.depth) / 2 + SUPPORT_MARGIN)
+        return SEEN_RADIUS
 
     def bottom(self, seen: Seen, where: Where) -> float:
         """The item's bottom: what the camera saw, or the top of what it stands on when the seen
