@@ -222,6 +222,45 @@ def test_sim_vlm_sees_a_door_filling_half_the_image_whatever_fraction_the_record
         assert sum(got) > 0.9 * 200, purpose
 
 
+def test_sim_vlm_judges_the_instance_the_executive_marked():
+    """Two bottles the detector labels alike: the executive took detection 0 (the world's bottle2)
+    for bottle1. Asked whether bottle1 is on the counter about that frame, the model judges the
+    bottle so marked (a set-of-marks prompt), and the runner scores the answer against it; a
+    false positive taken for bottle1 is no bottle the picture shows, and nothing on the counter."""
+    from types import SimpleNamespace
+
+    from vap_bt.perception.verification import Round
+    from vap_bt.robot.frame import marked_frame
+    from vap_bt.runner import Session
+
+    truth = {Atom("on", ("bottle2", "counter")): True, Atom("on", ("bottle1", "counter")): False}
+    oracle = FunctionOracle(lambda a: truth.get(a, False), lambda: [])
+    vis = {"bottle1": 1.0, "bottle2": 1.0, "counter": 1.0}
+    records = {"f": CaptureRecord("f", 0, vis, oracle, lambda: 0, instances=("bottle2", "bottle1", "counter"), marked=True),
+               "g": CaptureRecord("g", 0, vis, oracle, lambda: 0, instances=("", "counter"), marked=True),
+               "s": CaptureRecord("s", 0, vis, oracle, lambda: 0, instances=("bottle2",))}  # a world acting by name
+    vlm = SimVLM(records.get, error_rate=0.0, seed=1)
+    on = Atom("on", ("bottle1", "counter"))
+    q = Query("Is bottle1 on the counter?", about=(on,), objects=("bottle1", "counter"))
+    assert vlm.ask(q, marked_frame("f", {"bottle1": 0, "counter": 2})).value is True  # the bottle it looked at
+    assert vlm.ask(q, Frame("f", 0.0)).value is False  # nothing marked: the name's own
+    # a false positive marked as bottle1: no bottle in the picture, and the model says so
+    suff = Query("Is the view sufficient?", purpose="sufficiency", about=(on,), objects=("bottle1", "counter"))
+    assert vlm.ask(suff, marked_frame("g", {"bottle1": 0, "counter": 1})).value is False
+    assert vlm.ask(suff, marked_frame("f", {"bottle1": 0, "counter": 2})).value is True
+    assert vlm.ask(q, marked_frame("s", {"bottle1": 0})).value is False  # marks mean nothing there
+    assert records["f"].resolve_atom(on, {"bottle1": 0}) == Atom("on", ("bottle2", "counter"))
+    assert records["g"].resolve_atom(on, {"bottle1": 0}) is None
+    # the runner scores a verdict against what the robot looked at
+    world = SimpleNamespace(captures=SimpleNamespace(get=records.get), oracle=oracle)
+    for view, value, right in (("f", True, True), ("f", False, False), ("g", False, True)):
+        runner = SimpleNamespace(world=world, _verified=[])
+        v = SimpleNamespace(outcome="confirmed", atom=on, value=value,
+                            rounds=[Round(view, identified={"bottle1": 0})])
+        Session._score_verification(runner, v)
+        assert runner._verified == [right], (view, value)
+
+
 def rnd(answers: str, sufficient: bool | None) -> Round:
     """A round from answers like "yyyyn" (y/n/? for yes/no/abstained), voted as the paper votes."""
     vals = [{"y": True, "n": False, "?": None}[c] for c in answers]
@@ -345,7 +384,7 @@ def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_pla
     masks = np.full((100, 100), -1, np.int32)
     masks[40:60, 40:60] = 1  # the cup, whole, 4 % of the image
     masks[70:100, 0:100] = 2  # the table, cut by the image's bottom and sides, 30 % of it
-    dets = (Detection("cup", "cup", 400, 1), Detection("table", "table", 3000, 2))
+    dets = (Detection("cup", 400, 1, name="cup"), Detection("table", 3000, 2, name="table"))  # identified
     frame = Frame("f", 0.0, detections=dets, masks=masks)
     assert shown_plainly(frame, Atom("holding", ("cup",)), frozenset(), 0.005)
     assert not shown_plainly(frame, Atom("on", ("cup", "table")), frozenset(), 0.005)  # the table is cut

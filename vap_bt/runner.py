@@ -21,6 +21,7 @@ from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.bt.repeats import MAX_REPLANS
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
@@ -387,16 +388,29 @@ class Session:
 
     def _score_verification(self, v) -> None:
         """Whether a settled value matched the world at that moment (nothing happens between a
-        check's last frame and its verdict, so the truth now is the truth the frame showed)."""
-        if v.outcome in ("confirmed", "contradicted", "felt", "reused"):
-            self._verified.append(self.world.oracle.holds(v.atom) == v.value)
+        check's last frame and its verdict, so the truth now is the truth the frame showed), about
+        the instances the robot looked at: its atom's objects resolved through the executive's
+        own association in each view (:meth:`CaptureRecord.resolve`: which detection it took for
+        which object), so that two bottles it named the other way round are scored as what it
+        really saw. An atom about a false positive it took for an object holds of nothing."""
+        if v.outcome not in ("confirmed", "contradicted", "felt", "reused"):
+            return
+        atom: Atom | None = v.atom
+        captures = getattr(self.world, "captures", None)  # a world in another process: names as names
+        for r in v.rounds if captures is not None else ():  # the latest view that identified them says
+            record = captures.get(r.view)
+            if record is not None and r.identified:
+                atom = record.resolve_atom(v.atom, r.identified)
+        self._verified.append((atom is not None and self.world.oracle.holds(atom)) == v.value)
 
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
         perceived = set(survey.sweep.detected)
         site = self.world.site_map()
         detectable = {o for o, t in self.task.planning.objects.items() if t != "room"} - set(site.floors())
-        s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable)
+        told = {x for a in self.task.prior for x in a.args}  # what the task file names, it tells apart
+        centroids = {n: o.centroid for n, o in graph.objects.items()}
+        s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable, told, centroids)
         return {"reason": survey.reason, "build_s": round(survey.sweep.seconds, 4), "views": survey.sweep.frames, **s}
 
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],

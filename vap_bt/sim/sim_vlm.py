@@ -50,6 +50,17 @@ it should be in". Nothing named in the picture → a uniform guess (nothing in i
 look). The reading is wrong (a uniform choice) at the same rate ``p(v)``, ``v`` being how well
 the frame shows what it is read off.
 
+**Which instance a name means.** The detector gives the executive class labels only, and the
+executive decides which detection is which object. A question comes with that association (the
+frame's ``identified``: a set-of-marks prompt, the question's object marked in the picture), and
+the model judges the instance so marked (:meth:`CaptureRecord.resolve
+<vap_bt.sim.captures.CaptureRecord.resolve>`): asked whether bottle1 is on the bench about the
+bottle the robot took for bottle1, it answers about that bottle, whatever the world calls it; a
+false positive so marked is nothing the question names (not in the picture; no atom about it
+holds). A name not marked in the frame, or a world that marks nothing, means the instance of that
+name. (Over HTTP, :mod:`vap_bt.sim.vlm_endpoint`, only the image and the prompt travel, so names
+are read as names there.)
+
 A frame the log does not know (too old, or from elsewhere) gets no answer. With
 ``error_rate = 0`` every answer about a visible object is right: "VLM noise off".
 """
@@ -58,6 +69,7 @@ from __future__ import annotations
 
 import math
 import random
+from dataclasses import replace
 from statistics import NormalDist
 from typing import Callable
 
@@ -107,18 +119,22 @@ class SimVLM:
         record = self.records(frame.frame_id)
         if record is None:
             return Answer("", None)
-        return self.answer(query, record)
+        return self.answer(query, record, frame.identified())
 
-    def answer(self, query: Query, record: CaptureRecord) -> Answer:
+    def answer(self, query: Query, record: CaptureRecord, identified: dict[str, int] | None = None) -> Answer:
         """The answer to ``query`` about the capture ``record`` describes (as :meth:`ask`, for a
-        caller that found the record itself: the HTTP endpoint, from the image it was shown)."""
-        v = self._visibility(query, record)
+        caller that found the record itself: the HTTP endpoint, from the image it was shown).
+        ``identified``: which of the frame's detections the executive took for which of the
+        question's objects — the model judges the instances so marked (:meth:`CaptureRecord.resolve`)."""
         rng = random.Random(f"{self.seed}|{record.frame_id}|{query.kind}|{query.prompt}")
+        query = _marked(query, record, identified or {})
+        v = self._visibility(query, record)
         if query.kind == "choice":
             choice = self._direction(query, record, v, rng)
             return Answer(choice, choice)
         sufficiency = query.purpose == "sufficiency"
-        true = (v >= SUFFICIENT_VISIBILITY) if sufficiency else all(map(record.holds, query.about))
+        # an atom about a false positive (a marked blob that is no such thing) does not hold
+        true = (v >= SUFFICIENT_VISIBILITY) if sufficiency else all(a is not None and record.holds(a) for a in query.about)
         # whether a view shows enough is judgeable even when it shows nothing: no coin flip there
         p = self._p_seen(v) if sufficiency else self._p_wrong(v)
         mu = _NORMAL.inv_cdf(1.0 - max(p, 1e-9)) if p < 0.5 else 0.0  # noise off: always right, and sure
@@ -184,3 +200,14 @@ class SimVLM:
 
     def _p_seen(self, v: float) -> float:
         return min(0.5, self.error_rate * (2.0 - v))
+
+
+def _marked(query: Query, record: CaptureRecord, identified: dict[str, int]) -> Query:
+    """``query`` about the instances the executive marked in the frame (a false positive is
+    marked as ``""``: nothing the frame shows is what the question names). Its ``about`` may then
+    hold None for an atom about a false positive."""
+    if not identified or not record.marked:
+        return query
+    about = tuple(record.resolve_atom(a, identified) for a in query.about)
+    objects = tuple(record.resolve(o, identified) or "" for o in query.objects)
+    return replace(query, about=about, objects=objects)
