@@ -42,7 +42,7 @@ believed object missing from a frame that should show it, and looks for it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Callable, Mapping
 
 import numpy as np
@@ -382,10 +382,8 @@ class IdentifyingCamera:
 
     camera: object
     identify: Callable[[Frame], Frame]
-    frames: int = field(default=0, repr=False)
 
     def capture(self, aim: Aim | None = None) -> Frame:
-        self.frames += 1
         return self.identify(self.camera.capture(aim))
 
     def goto_view(self, view: Viewpoint) -> bool:
