@@ -12,6 +12,9 @@ executive and the skills reason only about frames so named (:class:`Identifier`,
   door seen through its open doorway, with no points of its own, is the mapped door whose
   doorway the camera looks at). In a frame without pixels, the rooms the detection is reported
   in say which piece or door of its kind it is. A mapped thing is never anything else.
+* **a mapped surface is no item.** A detection whose points all lie in the plane of the floor or
+  of a piece's top (rising no more than ``surface_least`` above it) is that surface seen — a
+  false positive on a patch of it — and nobody takes it.
 * **the hand names what it holds.** When the gripper feels something and belief says what, the
   detection at the fingers (its points within ``hand_radius`` of the tool point; without pixels,
   the detection reported held) is that object, and no other detection is.
@@ -103,6 +106,9 @@ class IdentityParams:
     #: m: a door leaf's points have their median at least this high (a leaf stands from the
     #: floor to the lintel; a "door" whose points lie on the floor is a false positive)
     leaf_least: float = 0.15
+    #: m: a detection whose points rise no more than this above a mapped surface (the floor, a
+    #: piece's top) is that surface: the flattest item, a plate, stands 1.8 cm
+    surface_least: float = 0.01
     #: depth returns beyond this are not used (as :class:`vap_bt.scene.pointcloud.CloudParams`)
     max_range: float = 4.0
     #: most mask pixels back-projected per detection (a median needs few)
@@ -128,9 +134,13 @@ class Identifier:
         something; ``hand``: the tool point (map frame); ``room``: the room localization puts
         the robot in (a frame without pixels sees no other)."""
         dets = [replace(d, name="") for d in frame.detections]
-        points = [centroid_of(frame, d, self.p.max_range, self.p.max_points) for d in dets]
+        clouds = [points_of(frame, d, self.p.max_range, self.p.max_points) for d in dets]
+        points = [None if c is None else np.median(c, axis=0) for c in clouds]
         names: dict[int, str] = {}
         self._map_things(frame, dets, points, names, room)
+        # a detection whose points all lie in the plane of a mapped surface is that surface seen
+        # (a false positive on a patch of floor or table top), no item on it: nobody takes it
+        names.update({k: "" for k, c in enumerate(clouds) if k not in names and c is not None and self._flat(c)})
         if held is not None:
             k = self._in_hand(dets, points, names, held, hand)
             if k is not None:
@@ -142,6 +152,20 @@ class Identifier:
             self._match(dets, points, names, known, strict, [n for n in items if n not in known])
         self._first_sightings(dets, names, [n for n in items if n not in known])
         return replace(frame, detections=tuple(replace(d, name=names.get(k, "")) for k, d in enumerate(dets)))
+
+    def _flat(self, cloud: np.ndarray) -> bool:
+        """Whether ``cloud`` lies in a mapped surface's plane: its top (95th percentile of height)
+        within ``surface_least`` of the floor (z = 0) or of the top of the piece whose footprint
+        holds its median."""
+        top = float(np.percentile(cloud[:, 2], 95))
+        if top < self.p.surface_least:
+            return True
+        mid = np.median(cloud, axis=0)
+        for piece in self.site_map.furniture:
+            if piece.height is not None and abs(top - piece.height) < self.p.surface_least \
+                    and _in_footprint(piece, mid, 0.0):
+                return True
+        return False
 
     # -- the map's things -----------------------------------------------------------------------
 
@@ -296,6 +320,13 @@ def centroid_of(frame: Frame, d: Detection, max_range: float = 4.0, max_points: 
     """The median (map frame) of the points of ``d``'s mask with a depth return within
     ``max_range``; None when the frame has no pixels or the mask none with depth. The median, not
     the mean: a mask that bled onto the surface behind keeps its median on the object."""
+    pts = points_of(frame, d, max_range, max_points)
+    return None if pts is None else np.median(pts, axis=0)
+
+
+def points_of(frame: Frame, d: Detection, max_range: float = 4.0, max_points: int = 400) -> np.ndarray | None:
+    """Up to about ``max_points`` points (map frame) of ``d``'s mask with a depth return within
+    ``max_range``, evenly sampled; None when there are none (or no pixels)."""
     if frame.depth is None or frame.masks is None or frame.intrinsics is None or frame.camera_pose is None \
             or d.mask_id < 0:
         return None
@@ -310,8 +341,7 @@ def centroid_of(frame: Frame, d: Detection, max_range: float = 4.0, max_points: 
     fx, fy, cx, cy = frame.intrinsics
     cam = np.stack([(cols - cx) / fx * z, (rows - cy) / fy * z, z], axis=1)
     pose = np.asarray(frame.camera_pose, np.float64)
-    pts = cam @ pose[:3, :3].T + pose[:3, 3]
-    return np.median(pts, axis=0)
+    return cam @ pose[:3, :3].T + pose[:3, 3]
 
 
 def _project(frame: Frame, point: np.ndarray) -> np.ndarray | None:
@@ -326,6 +356,17 @@ def _project(frame: Frame, point: np.ndarray) -> np.ndarray | None:
     u, v = fx * x / z + cx, fy * y / z + cy
     h, w = frame.depth.shape
     return np.array([u, v, z]) if 0 <= u < w and 0 <= v < h else None
+
+
+def _in_footprint(piece: FurnitureInfo, point, margin: float) -> bool:
+    """Whether ``point`` (x, y) lies over ``piece``'s footprint grown by ``margin``."""
+    if piece.pose is None or not piece.footprint:
+        return False
+    x, y, yaw = piece.pose
+    front = np.array([math.cos(yaw), math.sin(yaw)])
+    rel = np.asarray(point[:2], float) - (x, y)
+    w, depth = piece.footprint
+    return abs(float(rel @ (front[1], -front[0]))) <= w / 2 + margin and abs(float(rel @ front)) <= depth / 2 + margin
 
 
 def _compatible(label: str, cls: str | None) -> bool:
