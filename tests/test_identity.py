@@ -145,6 +145,14 @@ def test_the_map_names_its_furniture_and_doors_by_where_their_points_lie():
     assert names(f) == ["", "table"]
 
 
+def test_a_first_sighting_takes_a_confused_label_only_of_a_class_the_task_has_no_object_of():
+    # "mug" is no class of this task: a mug seen where nothing is believed is the cup misread ...
+    assert names(ident().identify(pixel_frame(("mug", (0.2, 0.3, 0.1))), {})) == ["cup"]
+    # ... but a "cup" is the cup's, never a bottle's (cup and bottle look alike too)
+    f = ident().identify(pixel_frame(("cup", (0.2, 0.3, 0.1))), {"cup": Believed((-0.9, -0.5, 0.1))})
+    assert names(f) == [""]
+
+
 def test_first_sightings_follow_the_detector_order_and_skip_what_belief_holds():
     f = ident().identify(pixel_frame(("bottle", (0.5, 0.5, 0.1)), ("bottle", (-0.5, 0.5, 0.1)),
                                      ("bottle", (0.0, -0.5, 0.1))), {"bottle1": Believed((0.0, -0.5, 0.1))})

@@ -33,8 +33,9 @@ executive and the skills reason only about frames so named (:class:`Identifier`,
   another detection (``"#k"``) counts once that one is named.
 * **first sightings.** An object belief places nowhere takes a detection of its own class that
   no believed object took — objects in name order, detections in the order the detector lists
-  them: two bottles the user did not tell apart become bottle1 and bottle2 as first seen (a
-  confusable label is not enough here: nothing else vouches for it). The executive withholds belief about an
+  them: two bottles the user did not tell apart become bottle1 and bottle2 as first seen; then a
+  detection of a confusable class that no object of the task has (a "firewood" where the task
+  has only logs). The executive withholds belief about an
   object it is looking for (it was lost), so that it is taken wherever it is found.
 
 What matches nothing stays unnamed (``name == ""``): a false positive far from every belief, a
@@ -305,13 +306,20 @@ class Identifier:
         return None
 
     def _first_sightings(self, dets: list[Detection], names: dict[int, str], unknown: list[str]) -> None:
-        """Objects placed nowhere take the detections of their own class nobody took, in order
-        (a confusable label is not enough for a first sighting: nothing else vouches for it)."""
-        for n in unknown:
-            cls = self.vocabulary.get(n)
-            k = next((k for k, d in enumerate(dets) if k not in names and d.label == cls), None)
-            if k is not None:
-                names[k] = n
+        """Objects placed nowhere take the detections of their own class nobody took, in order;
+        then those of a class a detector confuses theirs with that no object of the task has (a
+        "firewood" where the task has only logs: a log misread; a "cup" where it has a cup too
+        is that cup's)."""
+        classes = set(self.vocabulary.values())
+        for exact in (True, False):
+            for n in unknown:
+                cls = self.vocabulary.get(n)
+                if n in names.values():
+                    continue
+                k = next((k for k, d in enumerate(dets) if k not in names and (
+                    d.label == cls if exact else d.label not in classes and _compatible(d.label, cls))), None)
+                if k is not None:
+                    names[k] = n
 
 
 # -- what a detection shows -----------------------------------------------------------------------
