@@ -15,7 +15,9 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.runner import RunConfig, Session
+from vap_bt.robot.labels import label_of
 from vap_bt.scene.builder import SceneGraphBuilder
+from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.taskfile import load
 
 from conftest import TREES
@@ -24,8 +26,14 @@ A = Atom.parse
 
 
 def reports_frame(frame_id: str, *detections: tuple[str, tuple[str, ...]]) -> Frame:
-    """A frame without pixels whose detections carry relation reports (as the symbolic world's)."""
-    return Frame(frame_id, 0.0, tuple(Detection(n, "cup", relations=tuple(map(A, rel))) for n, rel in detections))
+    """An identified frame without pixels whose detections carry relation reports as the symbolic
+    world's do (the detected thing itself named ``""``), each already named ``n`` by the robot."""
+    def report(n: str, a: str):
+        atom = A(a)
+        return Atom(atom.predicate, tuple("" if x == n else x for x in atom.args))
+
+    return Frame(frame_id, 0.0, tuple(Detection("cup", relations=tuple(report(n, a) for a in rel), name=n)
+                                      for n, rel in detections))
 
 
 def symbolic_builder() -> SceneGraphBuilder:
@@ -140,17 +148,23 @@ def test_the_sweep_finds_what_the_first_view_does_not_show():
     task = load(TREES / "collect_cup.yaml")
     world = PybulletWorld(task, seed=0, injection=False)
     try:
-        view = camera(world)
+        site, objects = world.site_map(), task.planning.objects
+        b = SceneGraphBuilder(task.planning.knowledge, objects, site, PointCloudGeometry)
+        # frames named against what the sweep has seen so far (the executive's own wiring)
+        ident = Identifier({n: label_of(n, site) for n in objects}, site)
+        view = IdentifyingCamera(camera(world), lambda f: ident.identify(
+            f, {n: Believed(c) for n in objects if (c := b.geometry.centroid(n)) is not None}))
         first = view.capture()
         assert "cup" not in first.detected()
-        b = SceneGraphBuilder(task.planning.knowledge, task.planning.objects, world.site_map(), PointCloudGeometry)
         b.integrate(first)
         record = b.sweep(view, sweep_order(world.site_map(), world.state().room))
         assert "cup" in record.detected and record.frames == record.reached > 5
         assert {A("on(cup, coffee_table)"), A("in_room(cup, living_room)")} <= b.observed("cup")
         assert world.oracle.holds(A("on(cup, coffee_table)"))  # the check, not the source
         c = np.array(b.geometry.centroid("cup"))
-        assert np.linalg.norm(c - world.truth.center("cup")) < 0.03
+        # a few cm: views of one side only (2.3 cm off with the renderer's exact masks), masks a
+        # pixel or two off the boundary, and the views the detector missed the cup in not fused
+        assert np.linalg.norm(c - world.truth.center("cup")) < 0.04
     finally:
         world.close()
 

@@ -215,3 +215,41 @@ def test_a_viewpoint_read_off_nothing_is_a_guess_and_readings_are_sometimes_wron
     misread = 1 - norm.cdf(0.9 * norm.ppf(VlmModel().viewpoint_accuracy))
     expected = 1 - misread + misread / 6
     assert abs(got.count("above") / len(got) - expected) < 0.06 and len(set(got)) == 6
+
+
+def test_judges_the_instance_the_executive_marked():
+    """Two bottles the detector labels alike: the executive took detection 0 (the world's bottle2)
+    for bottle1. Asked whether bottle1 is on the counter about that frame, the model judges the
+    bottle so marked (a set-of-marks prompt), and the runner scores the answer against it; a
+    false positive taken for bottle1 is no bottle the picture shows: the view is not enough."""
+    from types import SimpleNamespace
+
+    from vap_bt.perception.verification import Round
+    from vap_bt.robot.frame import marked_frame
+    from vap_bt.runner import Session
+
+    truth = {Atom("on", ("bottle2", "counter")): True, Atom("on", ("bottle1", "counter")): False}
+    oracle = FunctionOracle(lambda a: truth.get(a, False), lambda: [])
+    vis = {"bottle1": 1.0, "bottle2": 1.0, "counter": 1.0}
+    recs = {"f": CaptureRecord("f", 0, vis, oracle, lambda: 0, instances=("bottle2", "bottle1", "counter"), marked=True),
+            "g": CaptureRecord("g", 0, vis, oracle, lambda: 0, instances=("", "counter"), marked=True),
+            "s": CaptureRecord("s", 0, vis, oracle, lambda: 0, instances=("bottle2",))}  # a world acting by name
+    vlm = SimVLM(recs.get, noise=0.0, seed=1)
+    on = Atom("on", ("bottle1", "counter"))
+    q = Query("Is bottle1 on the counter?", about=(on,), objects=("bottle1", "counter"))
+    assert vlm.ask(q, marked_frame("f", {"bottle1": 0, "counter": 2})).value is True  # the bottle it looked at
+    assert vlm.ask(q, Frame("f", 0.0)).value is False  # nothing marked: the name's own
+    suff = Query("Is the view sufficient?", purpose="sufficiency", about=(on,), objects=("bottle1", "counter"))
+    assert vlm.ask(suff, marked_frame("g", {"bottle1": 0, "counter": 1})).value is False
+    assert vlm.ask(suff, marked_frame("f", {"bottle1": 0, "counter": 2})).value is True
+    assert vlm.ask(q, marked_frame("s", {"bottle1": 0})).value is False  # marks mean nothing there
+    assert recs["f"].resolve_atom(on, {"bottle1": 0}) == Atom("on", ("bottle2", "counter"))
+    assert recs["g"].resolve_atom(on, {"bottle1": 0}) is None
+    # the runner scores a verdict, and records the truth, against what the robot looked at
+    world = SimpleNamespace(captures=SimpleNamespace(get=recs.get), oracle=oracle)
+    for view, value, right in (("f", True, True), ("f", False, False), ("g", False, True)):
+        runner = SimpleNamespace(world=world, _verified=[], _truths={})
+        v = SimpleNamespace(outcome="confirmed", atom=on, value=value, rounds=[Round(view, identified={"bottle1": 0})])
+        Session._score_verification(runner, v)
+        assert runner._verified == [right], (view, value)
+        assert runner._truths[id(v)]["truth"] == (view == "f") == runner._truths[id(v)]["first_truth"]

@@ -210,7 +210,7 @@ def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_pla
     masks = np.full((100, 100), -1, np.int32)
     masks[40:60, 40:60] = 1  # the cup, whole, 4 % of the image
     masks[70:100, 0:100] = 2  # the table, cut by the image's bottom and sides, 30 % of it
-    dets = (Detection("cup", "cup", 400, 1), Detection("table", "table", 3000, 2))
+    dets = (Detection("cup", 400, 1, name="cup"), Detection("table", 3000, 2, name="table"))  # identified
     frame = Frame("f", 0.0, detections=dets, masks=masks)
     assert shown_plainly(frame, Atom("holding", ("cup",)), frozenset(), 0.005)
     assert not shown_plainly(frame, Atom("on", ("cup", "table")), frozenset(), 0.005)  # the table is cut

@@ -21,6 +21,7 @@ from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.bt.repeats import MAX_REPLANS
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
@@ -391,13 +392,27 @@ class Session:
 
     def _score_verification(self, v) -> None:
         """The world's value of a check's atom when it settled (nothing happens between a check's
-        last frame and its verdict, so the truth now is the truth the frame showed), and when its
-        first view was captured (from that capture's record, for the first view's accuracy); and
-        whether a settled value matched the world."""
-        truth = self.world.oracle.holds(v.atom)
-        captures = getattr(self.world, "captures", None)  # a world in another process keeps its own
-        first = captures.get(v.rounds[0].view) if v.rounds and captures is not None else None
-        self._truths[id(v)] = {"truth": truth, "first_truth": first.holds(v.atom) if first is not None else truth}
+        last frame and its verdict, so the truth now is the truth the frame showed) and when its
+        first view was captured (that capture's record, for the first view's accuracy), about the
+        instances the robot looked at: its atom's objects resolved through the executive's own
+        association in each view (:meth:`CaptureRecord.resolve`: which detection it took for which
+        object), so that two bottles it named the other way round are scored as what it really
+        saw; an atom about a false positive it took for an object holds of nothing. And whether a
+        settled value matched the world."""
+        captures = getattr(self.world, "captures", None)  # a world in another process: names as names
+        records = [(captures.get(r.view), r) for r in v.rounds] if captures is not None else []
+        atom: Atom | None = v.atom
+        for record, r in records:  # the latest view that identified them says
+            if record is not None and r.identified:
+                atom = record.resolve_atom(v.atom, r.identified)
+        truth = atom is not None and self.world.oracle.holds(atom)
+        first, r0 = records[0] if records else (None, None)
+        if first is not None:
+            at_first = first.resolve_atom(v.atom, r0.identified) if r0.identified else v.atom
+            first_truth = at_first is not None and first.holds(at_first)
+        else:
+            first_truth = truth
+        self._truths[id(v)] = {"truth": truth, "first_truth": first_truth}
         if v.outcome in ("confirmed", "contradicted", "felt", "reused"):
             self._verified.append(truth == v.value)
 
@@ -406,7 +421,9 @@ class Session:
         perceived = set(survey.sweep.detected)
         site = self.world.site_map()
         detectable = {o for o, t in self.task.planning.objects.items() if t != "room"} - set(site.floors())
-        s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable)
+        told = {x for a in self.task.prior for x in a.args}  # what the task file names, it tells apart
+        centroids = {n: o.centroid for n, o in graph.objects.items()}
+        s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable, told, centroids)
         return {"reason": survey.reason, "build_s": round(survey.sweep.seconds, 4), "views": survey.sweep.frames, **s}
 
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],

@@ -25,7 +25,11 @@ A goal given in words is read between the survey and the first plan (paper Alg. 
 
 The executive talks only to protocols — skills (:class:`~vap_bt.skill.SkillClient`), the camera
 service and the body (:mod:`vap_bt.robot.camera`), a VLM — and to the task file's words; it never
-sees a world or its truth. Every way an episode ends halts the tree (``root.stop``), so no goal
+sees a world or its truth. Its detector reports class labels, not which object each detection is:
+every frame it captures is identified first against current belief
+(:class:`~vap_bt.scene.identity.IdentifyingCamera`: the map names its furniture and doors, the
+gripper what it holds, belief's positions the items, and an object belief places nowhere — one
+it is looking for — is taken where it is first seen). Every way an episode ends halts the tree (``root.stop``), so no goal
 is left in flight.
 """
 
@@ -57,6 +61,9 @@ from vap_bt.robot.camera import Aim, Body, Camera
 from vap_bt.scene import belief
 from vap_bt.scene.builder import GEOMETRIC_PREDICATES, Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph
+from vap_bt.scene.identity import Identifier, IdentifyingCamera
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.labels import label_of
 from vap_bt.skill import SkillClient
 
 #: PDDL types whose objects are placed somewhere (and so can be lost track of)
@@ -131,8 +138,12 @@ class Executive:
                  on_verification: Callable[[Verification], None] | None = None,
                  goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None,
                  profile: PerceptionProfile | None = None) -> None:
-        self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
-            task, planner, skills, camera, body, vlm
+        self.task, self.planner, self.skills, self.body, self.vlm = task, planner, skills, body, vlm
+        #: every frame is identified against belief before anything reads it (see the module docstring)
+        self.camera = IdentifyingCamera(camera, self._identify)
+        self.graph: SceneGraph | None = None  # belief, once the first survey has built it
+        self._prior_graph = SceneGraph.of_facts(prior)  # what the task file says, until then
+        self._searching: set[str] = set()  # objects being looked for: placed nowhere
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
@@ -285,16 +296,24 @@ class Executive:
         k = self.task.knowledge
         site_map = self.body.site_map()
         self.builder = SceneGraphBuilder(k, self.task.objects, site_map, self.geometry)
+        self.identifier = Identifier({n: label_of(n, site_map) for n in self.task.objects}, site_map)
         start = self.body.state().room
         rooms = sweep_order(site_map, start)
         self.progress(f"survey: {len(rooms)} room(s) {', '.join(rooms) or '(no map rooms)'}")
         sweep = self.builder.sweep(self.camera, rooms)
         items = [o for o in self.task.objects if self._portable(o)]
-        unplaced = [o for o in items if not self.builder.placed(o) and not self._said_where(o)]
-        if unplaced:  # a detector misses things now and then: look round once more before giving up
-            self.progress(f"survey: {', '.join(unplaced)} not seen; looking again")
-            again = self.builder.sweep(self.camera, rooms)
-            sweep = again.after(sweep)
+        def unplaced() -> list[str]:
+            return [o for o in items if not self.builder.placed(o) and not self._said_where(o)]
+
+        if unplaced():  # a detector misses things now and then: look round once more before giving up
+            self.progress(f"survey: {', '.join(unplaced())} not seen; looking again")
+            sweep = self.builder.sweep(self.camera, rooms).after(sweep)
+        if unplaced() and any(self.builder.wall_views(r) for r in rooms):
+            # misses are systematic for a view, and a thing on the floor shows in few of the
+            # sweep's views: last, the floor along every wall, until it is found
+            self.progress(f"survey: {', '.join(unplaced())} still not seen; looking along the walls")
+            sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
+                                            until=lambda: not unplaced()).after(sweep)
         state = self.body.state()
         located, prior_only = belief.item_facts(self.builder, items, self.prior)
         facts = belief.map_facts(site_map) | belief.robot_facts(state, sweep, site_map) | belief.hand_facts(state, self.builder)
@@ -309,6 +328,7 @@ class Executive:
         for n, obj in graph.objects.items():
             if obj.centroid is not None:
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
+        self.graph = graph
         states = self._ask_states(graph)
         graph.facts |= belief.typed(belief.closed_world_defaults(graph.facts, site_map, self.task.objects, k),
                                     k, self.task.objects)
@@ -318,6 +338,28 @@ class Executive:
                       + (f"; placed by the task file only: {', '.join(sorted(prior_only))}" if prior_only else ""))
         self.on_survey(survey, graph)
         return graph, survey
+
+    def _identify(self, frame: Frame) -> Frame:
+        """Name the frame's detections (:mod:`vap_bt.scene.identity`) against belief now: the
+        scene graph (during the first sweep, what its frames showed so far, then the task file),
+        the gripper and what belief has in it, the tool point and the room localization gives.
+        What the robot is looking for is placed nowhere, so that it is taken where it is seen."""
+        graph = self.graph if self.graph is not None else self._prior_graph
+        state = self.body.state()
+        held = next((a.args[0] for a in sorted(graph.facts) if a.predicate == "holding" and a.args), None)
+        if state.gripper_holding is False:
+            held = None  # an empty gripper holds nothing, whatever belief says
+        belief = {}
+        for n in self.task.objects:
+            # a thing looked for is placed nowhere until this search has seen it, then where it did
+            searched = n in self._searching
+            if searched and not self.builder.detected(n):
+                continue
+            b = self.builder.believed(graph, n, seen_first=self.graph is None or searched)
+            if b is not None:
+                belief[n] = b
+        hand = tuple(state.tcp_pose[:3]) if state.tcp_pose is not None else None
+        return self.identifier.identify(frame, belief, held, hand, state.room)
 
     def _said_where(self, obj: str) -> bool:
         return any(a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj for a in self.prior)
@@ -445,6 +487,15 @@ class Executive:
         self.progress(f"    {why or 'lost track of ' + ', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
+        self._searching = set(lost)  # placed nowhere while looked for: taken wherever first seen
+        try:
+            return self._search(graph, lost, why, near, items)
+        finally:
+            self._searching = set()
+
+    def _search(self, graph: SceneGraph, lost: list[str], why: str | None, near: list[str], items: list[str]) -> Survey:
+        """The sweeps of a re-survey (:meth:`_resurvey`)."""
+        here = self.body.state().room
         # an item that slipped from the hand lies on the floor near the robot (or under its base,
         # if it drove on): look at the floor round where it stands first
         state = self.body.state()

@@ -32,6 +32,7 @@ from vap_bt.robot.camera import Aim, Camera, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph, SceneObject
+from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN, Believed, named_relations
 from vap_bt.skill import Hint
 
 #: frames kept per object (the best views of it), for questions asked after the sweep
@@ -278,15 +279,16 @@ class SceneGraphBuilder:
     # -- frames ------------------------------------------------------------------------------
 
     def integrate(self, frame: Frame) -> set[str]:
-        """Fold one frame into the evidence; returns the names detected in it."""
+        """Fold one identified frame (:mod:`vap_bt.scene.identity`) into the evidence; returns
+        the names detected in it."""
         names = set()
-        for d in frame.detections:
+        for k, d in enumerate(frame.detections):
             if d.name not in self.objects:
-                continue  # a detection outside the task's vocabulary: not an object of this plan
+                continue  # unnamed (nothing known), or outside the task's vocabulary: not of this plan
             ev = self.evidence.setdefault(d.name, Evidence(d.label))
             ev.frames += 1
             ev.last_frame = frame.frame_id
-            ev.reports.update(set(d.relations))
+            ev.reports.update(set(named_relations(frame, k)))
             ev.best = sorted([*ev.best, (d.pixels, ev.frames, frame)], key=lambda b: (-b[0], -b[1]))[:KEEP_FRAMES]
             names.add(d.name)
         if self.geometry is not None and frame.depth is not None:
@@ -388,14 +390,68 @@ class SceneGraphBuilder:
         return frozenset([*(r.name for r in self.site_map.rooms), *(r.floor for r in self.site_map.rooms)])
 
     def hints(self, graph: SceneGraph, names: tuple[str, ...]) -> tuple[Hint, ...]:
-        """What belief says about each of ``names``, for a goal: where it is and on or in what."""
+        """What belief says about each of ``names``, for a goal: where it is (and how far from
+        there belief allows it to be: a skill re-identifies it in its own frames) and on or in
+        what."""
         out = []
         for n in names:
             loc = sorted(a for a in graph.location(n) if _supports(a))
             on = next((a.args[1] for a in loc if a.predicate != "inside"), None)
             inside = next((a.args[1] for a in loc if a.predicate == "inside"), None)
-            out.append(Hint(n, self.point_of(graph, n), on, inside))
+            b = self.believed(graph, n)
+            point = self.point_of(graph, n)
+            out.append(Hint(n, point, on, inside, b.radius if b is not None and b.point is not None else None))
         return tuple(out)
+
+    def believed(self, graph: SceneGraph, name: str, seen_first: bool = False) -> Believed | None:
+        """Where belief puts ``name``, for re-identifying it in a frame (:mod:`vap_bt.scene.identity`):
+        a point (as :meth:`point_of`) with how far from it the object may be — a measured
+        centroid's :data:`SEEN_RADIUS`; the extent of the piece it is believed on or in; the
+        room's for one believed on a floor or only in a room — and its support and room (what
+        worlds without geometry match by). None for the map's things (the map names them), for
+        what belief has in the hand (the hand names it) and for what belief places nowhere.
+        ``seen_first``: during the first sweep, what the frames showed so far outranks what the
+        task file said."""
+        if name in self._static or Atom("holding", (name,)) in graph.facts:
+            return None
+        loc = graph.location(name)
+        if seen_first:
+            c = self.geometry.centroid(name) if self.geometry is not None else None
+            if c is not None:
+                return Believed(c, SEEN_RADIUS)
+            seen = self.observed(name)
+            if any(a.args and a.args[0] == name and a.predicate in LOCATION_PREDICATES for a in seen):
+                loc = {a for a in seen if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == name}
+        place = next((a for a in sorted(loc) if _supports(a)), None)
+        room = next((a.args[1] for a in sorted(loc) if a.predicate == "in_room" and len(a.args) == 2), None)
+        if place is None and room is None:
+            return None
+        support = place.args[1] if place is not None else None
+        obj = graph.objects.get(name)
+        if not seen_first and obj is not None and obj.centroid is not None and obj.located == frozenset(loc):
+            return Believed(obj.centroid, SEEN_RADIUS, support, room)
+        point, radius = self._extent(graph, place, room)
+        return Believed(point, radius, support, room)
+
+    def _extent(self, graph: SceneGraph, place: Atom | None, room: str | None) -> tuple[tuple[float, float, float] | None, float]:
+        """A point of where ``place`` (on or in something) or ``room`` puts a thing, and how far
+        from it the thing may be: anywhere on a piece's top or in its cavity, anywhere on a
+        floor, near an item it rests on."""
+        support = place.args[1] if place is not None else None
+        piece = self.site_map.piece(support) if support else None
+        if piece is not None and piece.pose is not None and piece.footprint:
+            w, d = piece.footprint
+            inside = place.predicate == "inside" and piece.cavity is not None
+            z = sum(piece.cavity.z) / 2 if inside else (piece.height or FURNITURE_AIM_HEIGHT)
+            return (piece.pose[0], piece.pose[1], z), math.hypot(w, d) / 2 + SUPPORT_MARGIN
+        if support is not None and support in self.objects and support not in self._static:
+            p = self.point_of(graph, support)  # on another item: near where that one is
+            return p, 2 * SEEN_RADIUS
+        info = self.site_map.room(self.site_map.floors().get(support) or room) if (support or room) else None
+        if info is not None and info.bounds is not None:
+            x0, y0, x1, y1 = info.bounds
+            return ((x0 + x1) / 2, (y0 + y1) / 2, 0.0), math.hypot(x1 - x0, y1 - y0) / 2
+        return None, SEEN_RADIUS
 
     def point_of(self, graph: SceneGraph, name: str, depth: int = 0) -> tuple[float, float, float] | None:
         """Where belief puts ``name``, in the map frame: its measured centroid while belief still

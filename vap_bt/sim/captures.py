@@ -19,6 +19,15 @@ leaf, the fingers), each object's class (a model reads "bottle1" as "the bottle"
 *picture* the frame is: the key under which the simulated VLM's persistent errors are drawn
 (the same picture gets the same answers; a genuinely new view draws anew).
 
+A record keeps, too, which world instance produced each of the frame's detections (by the
+detection's index; ``""`` for a false positive) — what the detector never tells the robot. With
+the executive's own association (which detection it took for which object: the names it filled
+in), :meth:`CaptureRecord.resolve` says which instance the robot really meant by a name: the
+simulated VLM answers about that instance (a set-of-marks prompt: the question's object is the
+one marked in the picture), and the runner scores a verification against it. A world that acts
+by name (the symbolic one: its actions take the executive's names) marks nothing
+(``marked=False``): there a name means the instance of that name.
+
 A record also names the pixels its frame carries (``image_sha1``, the hash the VLM backends'
 request records use, :func:`~vap_bt.perception.backends.image.rgb_sha1`), so that a model shown
 only the image — the simulated VLM behind its HTTP endpoint, :mod:`vap_bt.sim.vlm_endpoint` —
@@ -80,12 +89,31 @@ class CaptureRecord:
     #: the picture this frame is, for persistent model errors: the pixels' hash where the frame
     #: has pixels, else the world's view (pose) identity; "" means the frame id
     picture: str = ""
+    #: the world instance behind each detection of the frame, by index ("" for a false positive)
+    instances: tuple[str, ...] = ()
+    #: whether a name the executive gave a detection means that detection's instance (see the
+    #: module docstring); False where a name means the instance of that name
+    marked: bool = False
     _truth: dict[Atom, bool] = field(default_factory=dict)
     late: int = 0
 
     @property
     def picture_key(self) -> str:
         return self.picture or self.image_sha1 or self.frame_id
+
+    def resolve(self, name: str, identified: dict[str, int]) -> str | None:
+        """The world instance the executive meant by ``name`` in this frame: the one behind the
+        detection it identified as ``name`` (None for a false positive: nothing), else — not
+        identified here, or a world that marks nothing — the instance of that name."""
+        k = identified.get(name)
+        if not self.marked or k is None or not 0 <= k < len(self.instances):
+            return name
+        return self.instances[k] or None
+
+    def resolve_atom(self, atom: Atom, identified: dict[str, int]) -> Atom | None:
+        """``atom`` with its objects resolved (:meth:`resolve`); None when one is a false positive."""
+        args = tuple(self.resolve(a, identified) for a in atom.args)
+        return None if None in args else Atom(atom.predicate, args)
 
     def holds(self, atom: Atom) -> bool:
         if atom not in self._truth:

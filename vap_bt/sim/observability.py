@@ -66,6 +66,9 @@ PLAIN_SHARE = 0.1
 #: (docs/perception.md). The share, not the renderer's pixel count, so that the figure does not
 #: depend on the simulated image's size
 SIZE_LOW, SIZE_HIGH = 144 / (640 * 480), 9216 / (640 * 480)
+#: how much a marked false positive (a blob, a patch of floor) shows of the thing a question names:
+#: nothing — the thing is not in the picture, and the model cannot judge a relation of it
+FALSE_POSITIVE_OBSERVABILITY = 0.0
 #: which calibration class each predicate's questions fall in
 RELATION_CLASS = {"inview": "inview", "on": "on", "inside": "inside", "holding": "holding",
                   "hand_empty": "holding", "open": "open", "closed": "open", "filled": "state",
@@ -77,7 +80,7 @@ RELATION_CLASS = {"inview": "inview", "on": "on", "inside": "inside", "holding":
 class Evidence:
     """What one picture shows about one atom (see the module docstring)."""
 
-    atom: Atom  # the atom about the referents (the instances the picture shows)
+    atom: Atom | None  # the atom about the referents (the instances the picture shows); None: a false positive
     apparent: bool
     observability: float
     relation: str  # calibration class
@@ -111,7 +114,11 @@ class Observability:
     def __init__(self, record: CaptureRecord, rooms: frozenset[str] = frozenset()) -> None:
         self.record, self.rooms = record, rooms
 
-    def evidence(self, atom: Atom) -> Evidence:
+    def evidence(self, atom: Atom | None) -> Evidence:
+        """What the picture shows about ``atom``; None is an atom about a false positive the
+        executive marked (a blob that is no such thing): the thing it names is not in the picture."""
+        if atom is None:
+            return Evidence(None, False, FALSE_POSITIVE_OBSERVABILITY, "other", True)
         rec = self.record
         args = tuple(referent(a, rec, self.rooms) for a in atom.args)
         atom = Atom(atom.predicate, args)

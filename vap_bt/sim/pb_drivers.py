@@ -29,7 +29,7 @@ and Table II injection), checks ``cancelled()`` and ``stop()`` before every step
   time-optimal jerk-limited rest-to-rest move (ruckig) at ``speed`` of the base's limits (a base
   controller's own profile, not a plan); ends ``blocked`` when the base falls ``BASE_TRACKING_LIMIT`` behind.
 * :class:`PybulletWristCamera` — ``capture`` is the frame of what the wrist camera sees now:
-  detections from the segmentation above the detector's pixel threshold, masks, metric depth,
+  the detector model's class-labelled detections and masks (:mod:`vap_bt.sim.detector`), metric depth,
   intrinsics, the camera pose, and the capture record the simulated VLM answers from
   (:meth:`PybulletWorld.capture` without an aim).
 

@@ -57,6 +57,17 @@ way, else ``above``. Nothing named in the picture → a uniform guess. A reading
 choice) with probability ``noise * (1 - Phi(o' Phi^-1(A_view)))``, ``o'`` how well the picture
 shows what it is read off.
 
+**Which instance a name means.** The detector gives the executive class labels only, and the
+executive decides which detection is which object. A question comes with that association (the
+frame's ``identified``: a set-of-marks prompt, the question's object marked in the picture), and
+the model judges the instance so marked (:meth:`CaptureRecord.resolve
+<vap_bt.sim.captures.CaptureRecord.resolve>`): asked whether bottle1 is on the bench about the
+bottle the robot took for bottle1, it answers about that bottle, whatever the world calls it; a
+false positive so marked is nothing the question names (no atom about it holds: the picture shows
+no such thing). A name not marked in the frame — over HTTP (:mod:`vap_bt.sim.vlm_endpoint`) only
+the image and the prompt travel — is read as its class: the named instance if the picture shows
+it, else the most visible instance of its class (:func:`vap_bt.sim.observability.referent`).
+
 With ``noise`` = 0 the model is an ideal reader of the picture: it answers the apparent truth
 wherever the relation is observable at all (and "no" where it is not), judges sufficiency exactly
 by ``theta``, never misreads a viewpoint and never abstains ("VLM noise off"). A frame the log
@@ -67,7 +78,7 @@ from __future__ import annotations
 
 import math
 import random
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from statistics import NormalDist
 from typing import Callable
 
@@ -179,11 +190,14 @@ class SimVLM:
         record = self.records(frame.frame_id)
         if record is None:
             return Answer("", None)
-        return self.answer(query, record)
+        return self.answer(query, record, frame.identified())
 
-    def answer(self, query: Query, record: CaptureRecord) -> Answer:
+    def answer(self, query: Query, record: CaptureRecord, identified: dict[str, int] | None = None) -> Answer:
         """The answer to ``query`` about the capture ``record`` describes (as :meth:`ask`, for a
-        caller that found the record itself: the HTTP endpoint, from the image it was shown)."""
+        caller that found the record itself: the HTTP endpoint, from the image it was shown).
+        ``identified``: which of the frame's detections the executive took for which of the
+        question's objects — the model judges the instances so marked (:meth:`CaptureRecord.resolve`)."""
+        query = _marked(query, record, identified or {})
         seen = Observability(record, self.rooms)
         if query.kind == "choice":
             choice = self._direction(query, seen)
@@ -203,8 +217,8 @@ class SimVLM:
         # the conjunction is as strong as its weakest fact
         d = min((e.observability * _probit(m.accuracy.get(e.relation, m.accuracy["other"])) for e in evidence), default=0.0)
         relation = min(evidence, key=lambda e: e.observability).relation if evidence else "other"
-        atoms = tuple(sorted(str(e.atom) for e in evidence))
-        truth = all(record.holds(a) for a in query.about)
+        atoms = tuple(sorted(str(e.atom) for e in evidence))  # "None": about a false positive
+        truth = all(a is not None and record.holds(a) for a in query.about)
         if m.noise > 0 and o < m.abstain_below and self._uniform(picture, "abstain", atoms) < m.abstain_rate:
             self._note(query, relation, o, apparent, truth, None, None, picture, atoms)
             return Answer("I can't tell from this image.", None)
@@ -226,7 +240,7 @@ class SimVLM:
             m.overconfidence + self._normal(record.picture_key, "sufficiency", query.prompt))
         value = z > 0 if m.noise > 0 or o != m.sufficiency_threshold else True
         sure = 1.0 / (1.0 + math.exp(-m.confidence_slope * abs(z)))
-        atoms = tuple(sorted(str(e.atom) for e in evidence))
+        atoms = tuple(sorted(str(e.atom) for e in evidence))  # "None": about a false positive
         self._note(query, "sufficiency", o, o >= m.sufficiency_threshold, o >= m.sufficiency_threshold, value,
                    round(sure, 4), record.picture_key, atoms)
         return Answer("yes" if value else "no", value, confidence=round(sure, 4))
@@ -250,7 +264,7 @@ class SimVLM:
         if place is not None:
             want, clear = self._place_way(place, seen), seen.seen(place)
         elif target is not None and seen.seen(target) > 0.0:
-            atom = query.about[0] if query.about else None
+            atom = query.about[0] if query.about else None  # None: about a false positive
             want = (self._relation_way(atom, seen) if atom is not None else None) or self._target_way(target, seen)
             clear = seen.seen(target)
         else:
@@ -303,3 +317,13 @@ class SimVLM:
 
 def _probit(p: float) -> float:
     return _NORMAL.inv_cdf(min(max(p, 0.5), 1.0 - 1e-9))
+
+
+def _marked(query: Query, record: CaptureRecord, identified: dict[str, int]) -> Query:
+    """``query`` about the instances the executive marked in the frame. An atom about a false
+    positive (a marked blob that is no such thing) becomes None: nothing in the picture is it."""
+    if not identified or not record.marked:
+        return query
+    about = tuple(record.resolve_atom(a, identified) for a in query.about)
+    objects = tuple(record.resolve(o, identified) or "" for o in query.objects)
+    return replace(query, about=about, objects=objects)

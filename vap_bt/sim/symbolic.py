@@ -15,8 +15,12 @@ Its robot interfaces are the same as a pixel world's, without the pixels:
   domain without ``robot_in``/``robot_at`` the whole scene is in view.) Each object in view gets
   a visible fraction drawn in [0.3, 1] per view, redrawn whenever the viewpoint moves — that is
   what the simulated VLM's accuracy depends on. A frame's detections come from the
-  :class:`~vap_bt.sim.detector.DetectorModel`: objects in view, each missed at its miss rate, with
-  the location relations its relation detector reports (wrong support at its error rate);
+  :class:`~vap_bt.sim.detector.DetectorModel`: objects in view, each missed at its miss rate (one
+  draw per object and view), each with its class label and no name, with the location relations
+  its relation detector reports (wrong support at its error rate), naming the detected thing
+  ``""``, the frame's other detections ``"#k"`` and the map's things by name
+  (:mod:`vap_bt.robot.frame`); which object each detection is stays in the capture record. The
+  world's actions take names, and a name means the object of that name;
 * **viewpoints** — going to look at a thing moves the robot there (it stands at it and sees it),
   in any room the open doors lead to (a frame has no pixels, unless ``frame_cards`` is set: then
   each carries a tiny picture of its own id, :func:`~vap_bt.sim.captures.frame_card`, so that a
@@ -32,7 +36,8 @@ import random
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.task import PlanningTask
 from vap_bt.robot.camera import Aim, Viewpoint
-from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.frame import SELF, Detection, Frame, reference
+from vap_bt.robot.labels import class_of, label_of
 from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.scene.layout import floor_of
@@ -76,7 +81,6 @@ class SymbolicWorld:
         self.atoms: set[Atom] = set(self.task.init)
         self.situations.reseed(seed)
         self._view_rng = random.Random(seed ^ 0x5EED)
-        self._detect_rng = random.Random(seed ^ 0xD37EC7)
         self._view = 0
         self._tick = 0  # bumps on every change of the world or the viewpoint
         self._frames = 0
@@ -137,13 +141,14 @@ class SymbolicWorld:
         self._frames += 1
         frame_id = f"sym-{self.seed}-{self._frames}"
         card = frame_card(frame_id) if self.frame_cards else None
+        # a miss is drawn once per object and view: the same view gives the same detections
+        shown = [o for o in sorted(vis) if self._detectable(o) and not self.detector.missed(self._key(o))]
         self.captures.add(CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick,
                                         image_sha1=rgb_sha1(card) if card is not None else None,
-                                        views={o: self._object_view(o) for o in vis}, fingers=self._fingers(),
-                                        picture=f"sym-view-{self._view}"))
-        dets = tuple(self._detect(o) for o in sorted(vis) if self._detectable(o)
-                     and self._detect_rng.random() >= self.detector.miss_rate)
-        return Frame(frame_id, float(self._tick), dets, rgb=card, aim=self._aim)
+                                        instances=tuple(shown), views={o: self._object_view(o) for o in vis},
+                                        fingers=self._fingers(), picture=f"sym-view-{self._view}",
+                                        labels={o: class_of(o) for o in vis}))
+        return Frame(frame_id, float(self._tick), tuple(self._detect(o, shown) for o in shown), rgb=card, aim=self._aim)
 
     def goto_view(self, view: Viewpoint) -> bool:
         """Stand at the viewed thing (as ``find`` does), if the open doors lead to its room."""
@@ -169,10 +174,27 @@ class SymbolicWorld:
         # rooms and floors are the map's, not detections
         return self.task.objects.get(obj) != "room" and obj not in self._map.floors()
 
-    def _detect(self, obj: str) -> Detection:
-        t = self.task.objects[obj]
-        rel = self._report(obj) if self._map.piece(obj) is None and self.task.objects[obj] != "door" else ()
-        return Detection(obj, t, relations=rel)
+    def _key(self, obj: str) -> str:
+        """Seeds a detector draw about ``obj`` in the current view."""
+        return f"{self.seed}|{self._view}|{obj}"
+
+    def _detect(self, obj: str, shown: list[str]) -> Detection:
+        """``obj`` as a robot's detector reports it: its class (:mod:`vap_bt.robot.labels`) and
+        where it is — naming itself ``""``, the frame's other detections ``"#k"``, and the map's
+        things (rooms, floors, furniture, doors) by name; what it could name in no such way, it
+        does not report. Furniture and doors report the rooms the map has them in."""
+        piece, door = self._map.piece(obj), self._map.door(obj)
+        if piece is not None or door is not None:
+            rel = tuple(Atom("in_room", (obj, r)) for r in ((piece.room,) if piece else door.rooms))
+        else:
+            rel = self._report(obj)
+        mapped = self._map.static_names()
+        refs = {o: reference(k) for k, o in enumerate(shown)}
+        refs.update({o: o for o in mapped})
+        refs[obj] = SELF
+        return Detection(label_of(obj, self._map),
+                         relations=tuple(Atom(a.predicate, tuple(refs[x] for x in a.args)) for a in rel
+                                         if all(x in refs for x in a.args)))
 
     def _report(self, obj: str) -> tuple[Atom, ...]:
         """What the relation detector says of an item: its location, its support sometimes wrong."""
@@ -181,12 +203,12 @@ class SymbolicWorld:
             if a.predicate not in REPORTED or obj not in a.args or not self._holds(a):
                 continue
             if a.predicate in ("on", "inside") and len(a.args) == 2 and a.args[0] == obj \
-                    and self._detect_rng.random() < self.detector.relation_error:
-                a = Atom(a.predicate, (obj, self._wrong_support(a)))
+                    and (rng := self.detector.misreports(f"{self._key(obj)}|{a}")) is not None:
+                a = Atom(a.predicate, (obj, self._wrong_support(a, rng)))
             out.append(a)
         return tuple(out)
 
-    def _wrong_support(self, a: Atom) -> str:
+    def _wrong_support(self, a: Atom, rng: random.Random) -> str:
         true = a.args[1]
         want = self.knowledge.predicates[a.predicate][1]
         room = self._room_of(true) or self._robot_room()
@@ -194,7 +216,7 @@ class SymbolicWorld:
                   and self.knowledge.is_subtype(f.type, want)]
         if a.predicate == "on" and room is not None and floor_of(room) != true and floor_of(room) in self.task.objects:
             others.append(floor_of(room))
-        return self._detect_rng.choice(sorted(others)) if others else true
+        return rng.choice(sorted(others)) if others else true
 
     # -- robot interfaces: body and map ----------------------------------------------------------
 
@@ -336,7 +358,7 @@ def _site_map(task: PlanningTask) -> SiteMap:
         if len(joined) == 2:
             doors.append(DoorInfo(d, (joined[0], joined[1])))
     floors = {floor_of(r) for r in rooms}
-    furniture = tuple(FurnitureInfo(o, t, t, room_of[o]) for o, t in sorted(objs.items())
+    furniture = tuple(FurnitureInfo(o, class_of(o), t, room_of[o]) for o, t in sorted(objs.items())
                       if o not in floors and o in room_of and any(k.is_subtype(t, f) for f in FURNITURE_TYPES)
                       and "furniture" in k.parents)
     return SiteMap(rooms=tuple(RoomInfo(r, floor_of(r)) for r in rooms), doors=tuple(doors), furniture=furniture,

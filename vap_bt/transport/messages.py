@@ -160,10 +160,13 @@ class MapRequest:
 
 @dataclass(frozen=True)
 class VlmRequest:
-    """Ask the world-side VLM ``query`` about a frame that world's camera took."""
+    """Ask the world-side VLM ``query`` about a frame that world's camera took; ``identified``
+    is the executive's association of names to the frame's detections (which instance in the
+    picture the question's names mean: a set-of-marks prompt's marks)."""
 
     query: Query
     frame_id: str
+    identified: dict = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -309,8 +312,8 @@ def _pack_frame(f: Frame) -> tuple[dict[str, Any], Arrays]:
 
 
 def _unpack_frame(d: dict[str, Any], arrays: Arrays) -> Frame:
-    dets = tuple(Detection(x["name"], x["label"], int(x["pixels"]), int(x["mask_id"]), float(x["score"]),
-                           _atoms_in(x["relations"])) for x in d["detections"])
+    dets = tuple(Detection(x["label"], int(x["pixels"]), int(x["mask_id"]), float(x["score"]),
+                           _atoms_in(x["relations"]), name=x["name"]) for x in d["detections"])
     return Frame(d["frame_id"], float(d["stamp"]), dets, rgb=arrays.get("rgb"), depth=arrays.get("depth"),
                  masks=arrays.get("masks"), intrinsics=_tuple_or_none(d["intrinsics"]),
                  camera_pose=arrays.get("camera_pose"), aim=tuple(d["aim"]), extra=dict(d["extra"]))
@@ -370,12 +373,13 @@ def _driver_unpacker(cls: type) -> Unpacker:
 def _pack_vlm(m: VlmRequest) -> tuple[dict[str, Any], Arrays]:
     q = m.query
     return {"frame_id": m.frame_id, "prompt": q.prompt, "kind": q.kind, "purpose": q.purpose,
-            "about": _atoms_out(q.about), "objects": list(q.objects), "options": list(q.options)}, {}
+            "about": _atoms_out(q.about), "objects": list(q.objects), "options": list(q.options),
+            "identified": {str(k): int(v) for k, v in m.identified.items()}}, {}
 
 
 def _unpack_vlm(d: dict[str, Any], _: Arrays) -> VlmRequest:
     q = Query(d["prompt"], d["kind"], d["purpose"], _atoms_in(d["about"]), tuple(d["objects"]), tuple(d["options"]))
-    return VlmRequest(q, d["frame_id"])
+    return VlmRequest(q, d["frame_id"], {str(k): int(v) for k, v in d.get("identified", {}).items()})
 
 
 def _pack_oracle(m: OracleQuery) -> tuple[dict[str, Any], Arrays]:
