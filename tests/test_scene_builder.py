@@ -106,7 +106,7 @@ def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     so, and the belief says which source placed it."""
     task = load(TREES / "boil_water.yaml")
     s = Session(task, RunConfig.from_task(task, world="symbolic", injection=False, vlm_noise=0.0, miss_rate=0.0,
-                                              relation_error=0.0))
+                                              relation_noise=0.0))
     r = s.episode(0)
     initial = r["perception"]["surveys"][0]
     assert initial["prior_only"] == ["cup"] and "cup" not in initial["detected"]
@@ -121,7 +121,7 @@ def test_a_lost_object_is_searched_for_room_by_room():
     feels it gone, the camera does not show it where it was carried to, and the re-survey finds
     it in the other room."""
     task = load(TREES / "collect_cup.yaml")
-    s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_noise=0.0, miss_rate=0.0, relation_error=0.0,
+    s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_noise=0.0, miss_rate=0.0, relation_noise=0.0,
                                               planner="search"))
     r = next(r for r in map(s.episode, range(60))
              if any(i["kind"] == "held_object_drops_during_navigation" and i["action"] == "navigate"

@@ -71,7 +71,7 @@ class RunConfig:
     vlm_latency: float = 0.0  # sim-http: seconds the endpoint adds to every answer (benchmarks)
     vlm_logprobs: bool = True  # HTTP backends: ask for token log-probabilities
     miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
-    relation_error: float = _DETECTOR.relation_error  # symbolic relation detector
+    relation_noise: float = _DETECTOR.relation_noise  # symbolic relation reports (0: exact where shown)
     transport: str = "inproc"
     planner: str = "fast-downward"
     protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
@@ -90,7 +90,7 @@ class RunConfig:
         return cls(**{**asdict(base), **{k: v for k, v in overrides.items() if v is not None}})
 
     def detector(self) -> DetectorModel:
-        return DetectorModel(miss_rate=self.miss_rate, relation_error=self.relation_error)
+        return DetectorModel(miss_rate=self.miss_rate, relation_noise=self.relation_noise)
 
 
 def make_world(task: Task, cfg: RunConfig) -> World:

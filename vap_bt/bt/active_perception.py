@@ -17,8 +17,10 @@ when no direction is left, or the check is about the hand or what it holds (the 
 moves with the hand: no base move shows it better), the views so far are all there are. Beyond
 the paper (``ctx.second_look``, on by default): a *surprise* — a value against the plan's
 expectation — and a *goal* value need a second view from a different picture that agrees (its
-answers consistent, sufficient or not; for a goal atom found to hold, two settled views) while the
-budget allows a move, since a model's errors are shared by every question about one picture. With
+answers consistent, sufficient or not; for a goal atom found to hold, two settled views, or one
+and two more agreeing) while the
+budget allows a move, since a model's errors are shared by every question about one picture; a goal
+atom that the budget leaves with fewer settled views is unsettled (success is never claimed on one). With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
 atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
 way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper
@@ -47,7 +49,7 @@ from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.perception.verification import Round, choice, target_of, verdict
+from vap_bt.perception.verification import Round, Verdict, choice, target_of, verdict
 
 
 class ActivePerception(py_trees.decorators.Decorator):
@@ -114,8 +116,11 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     def _decide(self, exhausted: bool) -> Status:
         v = verdict(self.rounds, exhausted)
-        if v is not None and not exhausted and self._look_twice(v.value):
-            v = None  # one picture is one draw of the model's errors: another view before believing it
+        if v is not None and v.outcome != "unsettled" and self._look_twice(v.value):
+            if not exhausted:
+                v = None  # one picture is one draw of the model's errors: another view before believing it
+            elif self.phase == "goal" and v.value:
+                v = Verdict(v.value, "unsettled")  # success is never claimed on one view
         if v is None:
             r = self.rounds[-1]
             question = r.questions[0] if r.questions else self.ctx.profile.questions(self.atom, 1)[0]
@@ -142,12 +147,15 @@ class ActivePerception(py_trees.decorators.Decorator):
         five paraphrases can agree and be wrong — so only another view is a second opinion
         (docs/perception.md): one more view that showed the atom's objects and whose answers
         agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
-        success will be claimed, two views the model judged sufficient."""
+        success will be claimed, two views the model judged sufficient, or one and two more whose
+        answers agreed."""
         if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal"):
             return False
-        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient
-            return sum(r.settled and r.vote == value for r in self.rounds) < 2
-        return sum(not r.unshown and r.consistent and r.vote == value for r in self.rounds) < 2
+        agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in self.rounds)
+        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient,
+            settled = sum(r.settled and r.vote == value for r in self.rounds)  # or one and two more agreeing
+            return not (settled >= 2 or settled >= 1 and agreeing >= 3)
+        return agreeing < 2
 
     def _chosen(self) -> Status:
         if not self._job.done():

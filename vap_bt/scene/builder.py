@@ -153,7 +153,7 @@ class SceneGraphBuilder:
         if info is not None and info.bounds is not None:
             out += self.floor_views(room)
         elif info is not None and info.floor in self.objects:
-            out.append(Viewpoint(room, Aim((info.floor,)), None, f"{room} floor"))
+            out.append(Viewpoint(room, Aim((info.floor,), place=info.floor), None, f"{room} floor"))
         return out
 
     def floor_views(self, room: str) -> list[Viewpoint]:
@@ -166,7 +166,7 @@ class SceneGraphBuilder:
         out = []
         for h in FLOOR_LOOK_HEADINGS:
             point = (cx + FLOOR_LOOK_DISTANCE * math.cos(h), cy + FLOOR_LOOK_DISTANCE * math.sin(h), 0.0)
-            out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
+            out.append(Viewpoint(room, Aim((info.floor,), point, info.floor), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
         return out
 
     def wall_views(self, room: str) -> list[Viewpoint]:
@@ -187,7 +187,7 @@ class SceneGraphBuilder:
                 s = (k + 0.5) * length / n
                 px, py = ax + ux * s + nx * WALL_LOOK_INSET, ay + uy * s + ny * WALL_LOOK_INSET
                 stand = (px + nx * WALL_LOOK_DISTANCE, py + ny * WALL_LOOK_DISTANCE, math.atan2(-ny, -nx))
-                out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0)), stand,
+                out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0), info.floor), stand,
                                      f"{room} floor by the wall at ({px:.2f}, {py:.2f})"))
         return out
 
@@ -204,7 +204,7 @@ class SceneGraphBuilder:
             bx, by = sx + SPOT_LOOK_DISTANCE * math.cos(h), sy + SPOT_LOOK_DISTANCE * math.sin(h)
             if info.bounds is not None and not (info.bounds[0] < bx < info.bounds[2] and info.bounds[1] < by < info.bounds[3]):
                 continue  # through the wall: that floor is another room's, and the spot is not seen from it
-            out.append(Viewpoint(room, Aim((info.floor,), (sx, sy, 0.0)), (bx, by, _wrap(h + math.pi)),
+            out.append(Viewpoint(room, Aim((info.floor,), (sx, sy, 0.0), info.floor), (bx, by, _wrap(h + math.pi)),
                                  f"{room} floor round ({sx:.2f}, {sy:.2f}), from heading {h:+.2f}"))
         return out
 
@@ -215,7 +215,7 @@ class SceneGraphBuilder:
 
     def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front") -> Viewpoint:
         if f.pose is None:
-            return Viewpoint(f.room, Aim((f.name,)), None, f"{f.name}")
+            return Viewpoint(f.room, Aim((f.name,), place=f.name), None, f"{f.name}")
         x, y, yaw = f.pose
         depth = f.footprint[1] if f.footprint else 0.5
         box = self.geometry.box(f.name) if self.geometry else None
@@ -223,11 +223,11 @@ class SceneGraphBuilder:
         z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
         d = depth / 2 + standoff
         base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
-        return Viewpoint(f.room, Aim((f.name,), (x, y, z)), base, f"{f.name} {label}")
+        return Viewpoint(f.room, Aim((f.name,), (x, y, z), f.name), base, f"{f.name} {label}")
 
     def _door_view(self, d, room: str) -> Viewpoint:
         if d.pose is None or self.site_map.room(room).bounds is None:
-            return Viewpoint(room, Aim((d.name,)), None, f"{d.name}")
+            return Viewpoint(room, Aim((d.name,), place=d.name), None, f"{d.name}")
         x, y, _ = d.pose
         x0, y0, x1, y1 = self.site_map.room(room).bounds
         # stand inside this room on the line through the doorway's centre, facing it
@@ -235,7 +235,8 @@ class SceneGraphBuilder:
         ux, uy = cx - x, cy - y
         n = math.hypot(ux, uy) or 1.0
         bx, by = x + ux / n * DOOR_VIEW_DISTANCE, y + uy / n * DOOR_VIEW_DISTANCE
-        return Viewpoint(room, Aim((d.name,), (x, y, DOOR_AIM_HEIGHT)), (bx, by, math.atan2(y - by, x - bx)), f"{d.name} from {room}")
+        return Viewpoint(room, Aim((d.name,), (x, y, DOOR_AIM_HEIGHT), d.name), (bx, by, math.atan2(y - by, x - bx)),
+                         f"{d.name} from {room}")
 
     def sweep(self, camera: Camera, rooms: list[str], first: tuple[Viewpoint, ...] = ()) -> SweepRecord:
         """Go round ``rooms`` in order, looking from each of their views (after the ``first`` views,
@@ -378,12 +379,26 @@ class SceneGraphBuilder:
 
     def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
         """Aim at the first of ``names`` that belief can place (the object a question is about,
-        else what it rests on); no point when belief places none of them (or holds them)."""
+        else what it rests on): the point and the place where belief puts it; neither when belief
+        places none of them (or holds them)."""
         for n in names:
-            p = self.point_of(graph, n)
-            if p is not None:
-                return Aim(tuple(names), p)
-        return Aim(tuple(names), None)
+            p, place = self.point_of(graph, n), self.place_of(graph, n)
+            if p is not None or place is not None:
+                return Aim(tuple(names), p, place)
+        return Aim(tuple(names))
+
+    def place_of(self, graph: SceneGraph, name: str, depth: int = 0) -> str | None:
+        """The mapped thing where belief puts ``name``: a piece of furniture, a door, a floor or a
+        room is its own place; an item is at the place of what belief says it rests on or in. None
+        for what the hand holds and for an item belief places on or in nothing."""
+        if Atom("holding", (name,)) in graph.facts or depth > 3:
+            return None
+        if name in self._static:
+            return name
+        for a in sorted(graph.location(name)):
+            if _supports(a):
+                return self.place_of(graph, a.args[1], depth + 1)
+        return None
 
     def undetectable(self) -> frozenset[str]:
         """What no detector finds in a frame: the map's rooms and their floors."""
@@ -431,7 +446,8 @@ class SceneGraphBuilder:
         if not seen_first and obj is not None and obj.centroid is not None and obj.located == frozenset(loc):
             return Believed(obj.centroid, SEEN_RADIUS, support, room)
         point, radius = self._extent(graph, place, room)
-        return Believed(point, radius, support, room)
+        # never detected: only the task file's word places it, and the word may be wrong
+        return Believed(point, radius, support, room, told=name not in self.evidence)
 
     def _extent(self, graph: SceneGraph, place: Atom | None, room: str | None) -> tuple[tuple[float, float, float] | None, float]:
         """A point of where ``place`` (on or in something) or ``room`` puts a thing, and how far

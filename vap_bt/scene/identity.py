@@ -69,6 +69,9 @@ SEEN_RADIUS = 0.25
 SUPPORT_MARGIN = 0.15
 #: m: heights on a doorway's middle line, one of which a frame looking at the doorway shows
 DOORWAY_HEIGHTS = (0.2, 0.6, 1.0, 1.4, 1.8)
+#: m over which the cost of taking a detection beyond a told belief's radius grows by one: far
+#: beyond any house, so that such a match only ever comes after every one within a gate
+TOLD_SCALE = 1000.0
 #: gated assignments get this cost instead (never chosen over any real one)
 _GATED = 1e6
 
@@ -83,6 +86,10 @@ class Believed:
     radius: float = SEEN_RADIUS
     support: str | None = None
     room: str | None = None
+    #: only the user's word places it (the task file's belief; no frame has shown it yet): the
+    #: word may be wrong, so a detection of its class anywhere may be it, though one where the
+    #: word puts it is preferred (a wrong prior would otherwise hide the thing from the robot)
+    told: bool = False
 
 
 @dataclass(frozen=True)
@@ -288,7 +295,9 @@ class Identifier:
             if b.point is None:
                 return None
             dist = float(np.linalg.norm(np.subtract(point, b.point)))
-            return dist / b.radius + extra if dist <= b.radius else None
+            if dist <= b.radius:
+                return dist / b.radius + extra
+            return 1.0 + dist / TOLD_SCALE + extra if b.told else None
         if not d.relations or Atom("holding", (SELF,)) in d.relations:
             return None  # nothing to place it by (or it is in the hand, and not what belief holds)
         support, unresolved = _reported_support(d, names)
@@ -297,13 +306,14 @@ class Identifier:
         rooms = _reported_rooms(d)
         if b.support is not None and support == b.support:
             return extra
-        if b.room is not None and rooms:
-            return self.p.room_cost + extra if b.room in rooms else None
+        if b.room is not None and rooms and b.room in rooms:
+            return self.p.room_cost + extra
         if b.room is None and not rooms and (support is None or b.support is None):
             # nothing to place it by either way (a domain without rooms, a support not named
             # yet): the label alone, behind any match by place
             return 2 * self.p.room_cost + extra
-        return None
+        # elsewhere than belief puts it: only the task file's word can be that wrong
+        return 3 * self.p.room_cost + extra if b.told else None
 
     def _first_sightings(self, dets: list[Detection], names: dict[int, str], unknown: list[str]) -> None:
         """Objects placed nowhere take the detections of their own class nobody took, in order;

@@ -13,6 +13,7 @@ their sources in docs/perception.md, printed in every report, and never tuned to
 outcome: a change is a new version, and every figure is measured again.
 
 **Errors are structural, not coin flips.** A yes/no answer is ``yes`` iff its latent score
+(:mod:`vap_bt.sim.latent`, shared with the symbolic world's relation detector)
 
     z = s * d  +  noise * [ b_yes * (1 - o)  +  sqrt(r_rel) e_rel  +  sqrt(r_atom) e_atom  +  sqrt(1 - r_rel - r_atom) e_q ]
 
@@ -79,12 +80,12 @@ from __future__ import annotations
 import math
 import random
 from dataclasses import asdict, dataclass, field, replace
-from statistics import NormalDist
 from typing import Callable
 
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.frame import Frame
 from vap_bt.sim.captures import CaptureRecord
+from vap_bt.sim.latent import cdf, draw_normal, draw_uniform, probit, score, signal
 from vap_bt.sim.observability import Evidence, Observability
 
 #: the model's version: a change of any parameter or rule is a new version (docs/perception.md)
@@ -97,7 +98,6 @@ LARGE_IN_IMAGE = 0.5
 HIDDEN = 0.5
 #: a relation's own evidence (contact, inside, leaf) below this while the thing is plain: look at it
 POOR_EVIDENCE = 0.4
-_NORMAL = NormalDist()
 
 
 @dataclass(frozen=True)
@@ -215,7 +215,7 @@ class SimVLM:
         o = min((e.observability for e in evidence), default=1.0)
         apparent = all(e.apparent for e in evidence)
         # the conjunction is as strong as its weakest fact
-        d = min((e.observability * _probit(m.accuracy.get(e.relation, m.accuracy["other"])) for e in evidence), default=0.0)
+        d = min((signal(e.observability, m.accuracy.get(e.relation, m.accuracy["other"])) for e in evidence), default=0.0)
         relation = min(evidence, key=lambda e: e.observability).relation if evidence else "other"
         atoms = tuple(sorted(str(e.atom) for e in evidence))  # "None": about a false positive
         truth = all(a is not None and record.holds(a) for a in query.about)
@@ -225,7 +225,7 @@ class SimVLM:
         shared = (math.sqrt(m.relation_correlation) * self._normal(picture, "relation", relation)
                   + math.sqrt(m.atom_correlation) * self._normal(picture, "atom", *atoms)
                   + math.sqrt(max(0.0, 1.0 - m.paraphrase_correlation)) * self._normal(picture, "question", query.prompt))
-        z = (d if apparent else -d) + m.noise * (m.yes_bias * (1.0 - o) + shared)
+        z = score(apparent, d, o, m.noise, m.yes_bias, shared)
         value = z > 0
         sure = 1.0 / (1.0 + math.exp(-m.confidence_slope * abs(z)))
         keep = m.confidence_floor + (1.0 - m.confidence_floor) * min(1.0, o / m.confidence_aware)
@@ -270,7 +270,7 @@ class SimVLM:
         else:
             want, clear = None, 0.0
         m = self.model
-        misread = m.noise * (1.0 - _NORMAL.cdf(clear * _probit(m.viewpoint_accuracy)))
+        misread = m.noise * (1.0 - cdf(signal(clear, m.viewpoint_accuracy)))
         options = tuple(query.options)
         if want not in options or rng.random() < misread:
             return rng.choice(options)
@@ -309,14 +309,10 @@ class SimVLM:
     # -- seeded draws -----------------------------------------------------------------------
 
     def _normal(self, picture: str, *key: str) -> float:
-        return random.Random("|".join((str(self.seed), picture, *key))).gauss(0.0, 1.0)
+        return draw_normal(self.seed, picture, *key)
 
     def _uniform(self, picture: str, *key) -> float:
-        return random.Random("|".join((str(self.seed), picture, *map(str, key)))).random()
-
-
-def _probit(p: float) -> float:
-    return _NORMAL.inv_cdf(min(max(p, 0.5), 1.0 - 1e-9))
+        return draw_uniform(self.seed, picture, *key)
 
 
 def _marked(query: Query, record: CaptureRecord, identified: dict[str, int]) -> Query:

@@ -40,7 +40,8 @@ schema 3's observations and scene snapshots; 5 — goal requests carry the execu
 site map carries the furniture models (height, cavity, articulation, switch, tap; a door's
 articulation), the robot's drivers travel (driver calls and replies), and a simulated world has an
 action hook (``action_event``/``action_ack``) and, added later without a bump since nothing
-changed, an oracle for the runner's report (``oracle_query``/``oracle_reply``). A schema-1 frame is still recognised (its byte 8, the
+changed, an oracle for the runner's report (``oracle_query``/``oracle_reply``) and an aim's believed
+``place`` (a peer without it reads none and sends none). A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -268,11 +269,11 @@ def _tuple_or_none(v):
 
 
 def _aim_out(a: Aim | None) -> dict | None:
-    return None if a is None else {"names": list(a.names), "point": a.point}
+    return None if a is None else {"names": list(a.names), "point": a.point, "place": a.place}
 
 
 def _aim_in(d: dict | None) -> Aim | None:
-    return None if d is None else Aim(tuple(d["names"]), _tuple_or_none(d["point"]))
+    return None if d is None else Aim(tuple(d["names"]), _tuple_or_none(d["point"]), d.get("place"))
 
 
 def _pack_capture(m: CaptureRequest) -> tuple[dict[str, Any], Arrays]:
