@@ -307,8 +307,10 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         end = _shot(page, tmp_path / "end.png")
         green, orange = _ink(end, Status.SUCCESS), _ink(end, Status.RUNNING)
         # a drawn label is some tens of green pixels, none when the panel draws nothing; the last
-        # tree is the last plan's, shorter after a replan (985 px in one such run), so the bar is well under
-        assert green > 500, f"the finished tree's green labels are not drawn ({green} px)"
+        # tree is the last plan's, shorter after a replan (985 px in one such run), so the bar is
+        # well under; a last plan of no actions is its goal checks alone (295 px in one run)
+        bar = 500 if boil.report["plans"][-1]["actions"] else 150
+        assert green > bar, f"the finished tree's green labels are not drawn ({green} px)"
         assert orange < 30, f"nothing runs at the end, yet orange is drawn in the tree panel ({orange} px)"
 
         # a tick where a later action is spread out, its preconditions confirmed and its skill in

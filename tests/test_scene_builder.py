@@ -17,6 +17,7 @@ from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.runner import RunConfig, Session
 from vap_bt.robot.labels import label_of
 from vap_bt.scene.builder import SceneGraphBuilder
+from vap_bt.scene.graph import SceneGraph
 from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.taskfile import load
 
@@ -52,6 +53,17 @@ def test_reports_are_voted_across_the_views_that_saw_the_object():
     assert b.placed("cup") and b.evidence["cup"].frames == 3
     b.forget(["cup"])
     assert b.observed("cup") == set() and not b.placed("cup")
+
+
+def test_a_thing_once_seen_is_never_again_placed_by_the_users_word_alone():
+    """Only what no frame has shown may be anywhere (the task file's word can be wrong); a thing
+    forgotten to be looked for again was seen, and belief, not the word, places it."""
+    b = symbolic_builder()
+    graph = SceneGraph.of_facts({A("on(cup, counter)"), A("in_room(cup, kitchen)")})
+    assert b.believed(graph, "cup").told
+    b.saw(["cup"])  # a check's frame showed it (checks' frames are not integrated)
+    b.forget(["cup"])
+    assert not b.believed(graph, "cup").told
 
 
 def test_detections_outside_the_task_vocabulary_are_not_objects_of_the_plan():

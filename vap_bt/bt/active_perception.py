@@ -115,7 +115,7 @@ class ActivePerception(py_trees.decorators.Decorator):
         return not self.atom.args or Atom("holding", self.atom.args[:1]) in self.ctx.graph.facts
 
     def _decide(self, exhausted: bool) -> Status:
-        v = verdict(self.rounds, exhausted)
+        v = verdict(self._evidence(), exhausted)
         if v is not None and v.outcome != "unsettled" and self._look_twice(v.value):
             if not exhausted:
                 v = None  # one picture is one draw of the model's errors: another view before believing it
@@ -151,11 +151,20 @@ class ActivePerception(py_trees.decorators.Decorator):
         answers agreed."""
         if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal"):
             return False
-        agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in self.rounds)
-        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient,
-            settled = sum(r.settled and r.vote == value for r in self.rounds)  # or one and two more agreeing
+        rounds = self._evidence()
+        agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in rounds)
+        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
+            settled = sum(r.settled and r.vote == value for r in rounds)
             return not (settled >= 2 or settled >= 1 and agreeing >= 3)
         return agreeing < 2
+
+    def _evidence(self) -> list[Round]:
+        """The views this check weighs: its own; for a goal atom also those earlier checks judged
+        it on since the last action that could change it (a cup confirmed filled at the sink,
+        whose inside no view into the microwave shows, is still filled)."""
+        if self.phase != "goal":
+            return self.rounds
+        return [*(r for r in self.ctx.verified.views(self.atom) if not any(r is o for o in self.rounds)), *self.rounds]
 
     def _chosen(self) -> Status:
         if not self._job.done():
@@ -203,6 +212,7 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     def _settle(self, value: bool, outcome: str) -> Status:
         v = self.verify
+        self.ctx.verified.saw(v.atom, self.rounds)
         self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
                                                    v.atom, v.expected, value, outcome, list(self.rounds)))
         self.ctx.record(self.ctx.verifications[-1])

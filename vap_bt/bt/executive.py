@@ -350,16 +350,26 @@ class Executive:
         if state.gripper_holding is False:
             held = None  # an empty gripper holds nothing, whatever belief says
         belief = {}
+        # with depth, a sighting's centroid places the thing or not (a false positive of its class
+        # against a wall places it nowhere); without pixels, a detection's reports place it
+        unplaced = {n for n in self._searching if not self.builder.detected(n)
+                    or self.geometry is not None and not self.builder.placed(n)}
         for n in self.task.objects:
-            # a thing looked for is placed nowhere until this search has seen it, then where it did
+            # a thing looked for is placed nowhere until this search has seen it on or in
+            # something, then where it did (a sighting that placed it nowhere — a false positive
+            # against a wall — does not pin it there)
             searched = n in self._searching
-            if searched and not self.builder.detected(n):
+            if n in unplaced:
                 continue
             b = self.builder.believed(graph, n, seen_first=self.graph is None or searched)
             if b is not None:
                 belief[n] = b
         hand = tuple(state.tcp_pose[:3]) if state.tcp_pose is not None else None
-        return self.identifier.identify(frame, belief, held, hand, state.room)
+        named = self.identifier.identify(frame, belief, held, hand, state.room)
+        seen = {d.name for d in named.detections if d.name}
+        self.builder.forget(seen & unplaced)  # this sighting replaces one that placed it nowhere
+        self.builder.saw(seen)
+        return named
 
     def _said_where(self, obj: str) -> bool:
         return any(a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj for a in self.prior)
@@ -546,10 +556,14 @@ class Executive:
 
     @staticmethod
     def _expected_in_sight(graph: SceneGraph, obj: str) -> bool:
-        """Belief says the camera should see ``obj``: it is held, or it is in the robot's room."""
+        """Belief says the camera should see ``obj``: it is held, or it is in the robot's room and
+        not inside something (a container's interior shows only to a view into it, and a detector
+        misses most of what stands inside: a frame without the thing is no sign it moved)."""
         loc = graph.location(obj)
         if any(a.predicate == "holding" for a in loc):
             return True
+        if any(a.predicate == "inside" for a in loc):
+            return False
         rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"}
         return any(a.predicate == "in_room" and a.args[1] in rooms for a in loc)
 

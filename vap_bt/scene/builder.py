@@ -133,6 +133,10 @@ class SceneGraphBuilder:
         self.knowledge, self.objects, self.site_map = knowledge, objects, site_map
         self.geometry = geometry(knowledge, objects, site_map) if geometry is not None else None
         self.evidence: dict[str, Evidence] = {}
+        #: every name a frame has ever shown (integrated or not: a check's frames count, see
+        #: :meth:`saw`): :meth:`forget` drops what frames said of a thing, not that the robot has
+        #: seen it (only a never-seen thing is placed by the user's word)
+        self.sighted: set[str] = set()
         self._static = site_map.static_names()
 
     # -- the sweep ---------------------------------------------------------------------------
@@ -292,9 +296,14 @@ class SceneGraphBuilder:
             ev.reports.update(set(named_relations(frame, k)))
             ev.best = sorted([*ev.best, (d.pixels, ev.frames, frame)], key=lambda b: (-b[0], -b[1]))[:KEEP_FRAMES]
             names.add(d.name)
+        self.saw(names)
         if self.geometry is not None and frame.depth is not None:
             self.geometry.integrate(frame)
         return names
+
+    def saw(self, names) -> None:
+        """``names`` were identified in a frame (a survey's, a check's or a skill's)."""
+        self.sighted.update(n for n in names if n in self.objects)
 
     def forget(self, names) -> None:
         """Drop what earlier frames said of ``names`` (they may have moved since)."""
@@ -447,7 +456,7 @@ class SceneGraphBuilder:
             return Believed(obj.centroid, SEEN_RADIUS, support, room)
         point, radius = self._extent(graph, place, room)
         # never detected: only the task file's word places it, and the word may be wrong
-        return Believed(point, radius, support, room, told=name not in self.evidence)
+        return Believed(point, radius, support, room, told=name not in self.sighted)
 
     def _extent(self, graph: SceneGraph, place: Atom | None, room: str | None) -> tuple[tuple[float, float, float] | None, float]:
         """A point of where ``place`` (on or in something) or ``room`` puts a thing, and how far

@@ -36,7 +36,9 @@ executive and the skills reason only about frames so named (:class:`Identifier`,
   them: two bottles the user did not tell apart become bottle1 and bottle2 as first seen; then a
   detection of a confusable class that no object of the task has (a "firewood" where the task
   has only logs). The executive withholds belief about an
-  object it is looking for (it was lost), so that it is taken wherever it is found.
+  object it is looking for (it was lost), so that it is taken wherever it is found — until a
+  frame has placed it on or in something: a false positive of its class against a wall, which
+  places it nowhere, does not pin it there, and the next sighting replaces that one.
 
 What matches nothing stays unnamed (``name == ""``): a false positive far from every belief, a
 thing of a class the task does not name, an object belief puts elsewhere. The executive notices a
@@ -86,9 +88,10 @@ class Believed:
     radius: float = SEEN_RADIUS
     support: str | None = None
     room: str | None = None
-    #: only the user's word places it (the task file's belief; no frame has shown it yet): the
-    #: word may be wrong, so a detection of its class anywhere may be it, though one where the
-    #: word puts it is preferred (a wrong prior would otherwise hide the thing from the robot)
+    #: only the user's word places it (the task file's belief; no frame — a survey's, a check's —
+    #: has shown it yet): the word may be wrong, so a detection of its class anywhere may be it,
+    #: though one where the word puts it is preferred (a wrong prior would otherwise hide the
+    #: thing from the robot)
     told: bool = False
 
 

@@ -126,8 +126,10 @@ class SymbolicWorld:
             return ActionOutcome(False, "cancelled")
         truth = {a for a in self.atoms if self._holds(a)}
         starts = self._starts_from(ga)
-        if starts:  # a base drives from wherever it stands: the motion starts where the action says
+        if starts:  # a base drives from wherever it stands: the motion starts where the action says,
+            # and goes where belief (the goal's hints) puts its target, whatever room that truly is
             truth = (truth - {a for a in truth if a.predicate == "robot_at"}) | starts
+            truth |= {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "in_room"}
         if not ga.applicable(truth):
             self._new_view()
             return ActionOutcome(False, f"{ga}: nothing to act on")
@@ -152,11 +154,17 @@ class SymbolicWorld:
     def _starts_from(self, ga) -> set[Atom]:
         """The ``robot_at`` an action that moves the base (it deletes where the robot stands)
         starts from: a real base drives from wherever it is, so where belief thought the robot
-        stood does not make the motion fail; the world's own position is what changes. Empty for
-        every other action (a grasp needs the robot truly at the thing)."""
+        stood does not make the motion fail, nor does a target that is truly in another room than
+        belief says (the robot drives to the believed place, and perception finds the thing
+        missing); the world's own position is what changes. Empty for every other action (a grasp
+        needs the robot truly at the thing)."""
         pre = {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "robot_at"}
         moves = any(a.predicate == "robot_at" for a in ga.diff(frozenset(self.atoms | pre)).deleted)
-        return pre if moves and pre and self._robot_room() in {r for a in pre for r in self._rooms_of(a.args[0])} | {None} else set()
+        rooms = {r for a in pre for r in self._rooms_of(a.args[0]) | self._floor_room(a.args[0])}
+        return pre if moves and (not rooms or self._robot_room() in rooms) else set()
+
+    def _floor_room(self, obj: str) -> set[str]:
+        return {r.name for r in self._map.rooms if r.floor == obj}
 
     def _effects(self, ga, atoms: set[Atom], ctx: GoalContext) -> set[Atom]:
         """The world after ``ga`` from ``atoms``: its effects, except that a move to stand at a thing
