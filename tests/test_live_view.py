@@ -243,8 +243,9 @@ def _shot(page, path: Path) -> np.ndarray:
 
 
 def _skill_in_flight(rows: dict, first_step: int = 2) -> int:
-    """The middle tick of the first stretch where action ``first_step`` or a later one is open
-    with ``✓ pre`` and its ``execute`` node running: the moment docs/live-view.png shows."""
+    """The middle tick of the longest stretch where action ``first_step`` or a later one is open
+    with ``✓ pre`` and its ``execute`` node running: the moment docs/live-view.png shows (the
+    longest, so that a click on the time strip, a few ticks off, still lands in it)."""
     def shows(d: dict) -> bool:
         at = dict(zip(d["ids"], zip(d["labels"], d["statuses"])))
         return any(i.count(".") == 1 and int(i.split(".")[1]) >= first_step and
@@ -253,9 +254,15 @@ def _skill_in_flight(rows: dict, first_step: int = 2) -> int:
 
     ticks = [d["tick"] for d in tree_rows(rows)]
     flags = [shows(d) for d in tree_rows(rows)]
-    start = flags.index(True)
-    end = next((k for k in range(start, len(flags)) if not flags[k]), len(flags))
-    return (ticks[start] + ticks[end - 1]) // 2 if end - 1 > start else ticks[start]
+    stretches, start = [], None  # (first, last) drawing index of each stretch
+    for k, f in enumerate([*flags, False]):
+        if f and start is None:
+            start = k
+        elif not f and start is not None:
+            stretches.append((start, k - 1))
+            start = None
+    first, last = max(stretches, key=lambda st: ticks[st[1]] - ticks[st[0]])
+    return (ticks[first] + ticks[last]) // 2
 
 
 def _drawing_at(rows: dict, tick: int) -> dict:
