@@ -349,19 +349,17 @@ class Executive:
         held = next((a.args[0] for a in sorted(graph.facts) if a.predicate == "holding" and a.args), None)
         if state.gripper_holding is False:
             held = None  # an empty gripper holds nothing, whatever belief says
-        belief = {}
-        # with depth, a sighting's centroid places the thing or not (a false positive of its class
-        # against a wall places it nowhere); without pixels, a detection's reports place it
+        # a thing looked for is placed nowhere until this search has seen it — with depth, seen
+        # on or in something: a false positive of its class against a wall, whose centroid places
+        # it nowhere, does not pin it there (without pixels, a detection's reports place it) —
+        # and then where the search saw it
         unplaced = {n for n in self._searching if not self.builder.detected(n)
                     or self.geometry is not None and not self.builder.placed(n)}
+        belief = {}
         for n in self.task.objects:
-            # a thing looked for is placed nowhere until this search has seen it on or in
-            # something, then where it did (a sighting that placed it nowhere — a false positive
-            # against a wall — does not pin it there)
-            searched = n in self._searching
             if n in unplaced:
                 continue
-            b = self.builder.believed(graph, n, seen_first=self.graph is None or searched)
+            b = self.builder.believed(graph, n, seen_first=self.graph is None or n in self._searching)
             if b is not None:
                 belief[n] = b
         hand = tuple(state.tcp_pose[:3]) if state.tcp_pose is not None else None

@@ -160,11 +160,9 @@ class SymbolicWorld:
         needs the robot truly at the thing)."""
         pre = {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "robot_at"}
         moves = any(a.predicate == "robot_at" for a in ga.diff(frozenset(self.atoms | pre)).deleted)
-        rooms = {r for a in pre for r in self._rooms_of(a.args[0]) | self._floor_room(a.args[0])}
+        floors = self._map.floors()  # a floor is in its room, though no in_room says so
+        rooms = {r for a in pre for r in (*self._rooms_of(a.args[0]), floors.get(a.args[0])) if r is not None}
         return pre if moves and (not rooms or self._robot_room() in rooms) else set()
-
-    def _floor_room(self, obj: str) -> set[str]:
-        return {r.name for r in self._map.rooms if r.floor == obj}
 
     def _effects(self, ga, atoms: set[Atom], ctx: GoalContext) -> set[Atom]:
         """The world after ``ga`` from ``atoms``: its effects, except that a move to stand at a thing
