@@ -14,7 +14,11 @@ there, ``B·(1/z_item - 1/z)`` wide in normalised image units (a held knife 12 c
 everything left of it). The aim keeps the point out of that band too.
 
 What skills learn from a frame is a :class:`~skills.scene_model.Seen`: where the item is, how
-big, which way it lies — its masked depth fused into a point cloud.
+big, which way it lies — its masked depth fused into a point cloud. The camera's detector gives
+class labels only; every frame the eyes take is named first (``identify``: the kit's
+re-identification, :mod:`vap_bt.scene.identity`) — the map's furniture and doors by the map,
+the item in the hand by the fingers, and the item a look is for by where it is believed to be
+(:meth:`Eyes.measure`: the goal's hint).
 """
 
 from __future__ import annotations
@@ -25,17 +29,23 @@ from dataclasses import dataclass, field
 import cv2
 import numpy as np
 
+from typing import Callable, Mapping
+
 from skills.body import Body
 from skills.scene_model import Seen, seen_from
 from vap_bt.motion import se3
 from vap_bt.robot.drivers import WristCamera
 from vap_bt.robot.frame import Frame
+from vap_bt.scene.identity import SEEN_RADIUS, Believed
 
 #: where the camera looks from, in the base frame (above the base's front, the arm raised)
 CAMERA_EYE = (0.50, 0.0, 1.20)
 #: a camera aim turns off its point by one of these angles (rad) when the held item (or its stereo
-#: shadow) covers it, up to the frame's half width; the point then shows this far (normalised image
-#: units, ~4 degrees) outside the item and the frame edge
+#: shadow) covers it; the point then shows this far (normalised image units, ~4 degrees) outside
+#: the item and the frame edge. Up to where the point reaches the frame's side (0.42 rad: the image
+#: is 0.52 wide either way): a log held across the fingers fills the middle of the frame from top to
+#: bottom, and only a turn that far shows past it (store_firewood seed 1: the basket behind the log
+#: from every view, 4 % of it visible, which a detector does not find)
 AIM_TURNS = (0.06, 0.1, 0.14, 0.18, 0.22, 0.26, 0.3, 0.34, 0.38, 0.42)
 AIM_MARGIN = 0.07
 #: an aim still counts as the last one when the camera moved less than this (m, rad)
@@ -119,10 +129,14 @@ class Eyes:
     """Aim the wrist camera, take frames, and measure items in them."""
 
     def __init__(self, body: Body, camera: WristCamera, level_with=lambda point: False,
-                 noticed=lambda frame, held: None) -> None:
+                 noticed=lambda frame, held: None,
+                 identify: Callable[[Frame, Mapping[str, Believed], str | None], Frame] = lambda f, e, h: f) -> None:
         self.body, self.camera = body, camera
         self.level_with = level_with  # points seen only from their own height (inside a hollow)
         self.noticed = noticed  # told of every frame taken, and of the item in the hand
+        #: names a raw frame's detections (what a look is for where it is believed, the held item)
+        self.identify = identify
+        self.raw: Frame | None = None  # the last frame as the camera gave it (labels, no names)
         self._held: Held | None = None
         self.cam = body.cfg.camera
         self._aim: tuple[np.ndarray, np.ndarray] | None = None  # point, camera pose of the last aim
@@ -214,18 +228,22 @@ class Eyes:
 
     # -- seeing --------------------------------------------------------------------------------
 
-    def frame(self) -> Frame:
-        frame = self.camera.capture()
+    def frame(self, expect: Mapping[str, Believed] | None = None, holding: str | None = None) -> Frame:
+        """Take a frame and name its detections: ``expect`` says where the things a look is for
+        are believed to be; ``holding``: what the gripper holds, when the eyes have not measured
+        it yet (else the held item they measured)."""
+        self.raw = self.camera.capture()
+        frame = self.identify(self.raw, dict(expect or {}), holding)
         self.noticed(frame, None if self._held is None else self._held.name)
         return frame
 
-    def measure(self, name: str, point, allow_base: bool = False) -> Seen | None:
-        """Look at ``point`` (where ``name`` is believed to be) and measure ``name`` in the frame;
-        None when no look shows it."""
+    def measure(self, name: str, point, allow_base: bool = False, radius: float = SEEN_RADIUS) -> Seen | None:
+        """Look at ``point`` (where ``name`` is believed to be, within ``radius``) and measure
+        ``name`` in the frame: the detection of its class there; None when no look shows it."""
         for lift in LOOK_LIFTS:
             if not self.look_at(point, lift=lift, allow_base=allow_base):
                 continue
-            seen = seen_from(self.frame(), name)
+            seen = seen_from(self.frame({name: Believed(tuple(map(float, point)), radius)}), name)
             if seen is not None:
                 return seen
         return None

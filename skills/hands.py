@@ -41,6 +41,7 @@ from skills.eyes import CAMERA_EYE, Eyes, Held
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
+from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN
 from vap_bt.scene.pointcloud import backproject, instance_cloud
 
 APPROACH = 0.14  # pre-grasp distance along the approach axis
@@ -94,6 +95,11 @@ TAP_ABOVE, TAP_SEARCH, TAP_MIN_POINTS, TAP_SEARCH_RANGE = 0.03, 0.25, 15, 2.5
 #: further than SWITCH_FRONT_SLACK from where the (registered) map has it is not believed
 SWITCH_SEARCH, SWITCH_FRONT_SLACK = 0.2, 0.06
 FILL_WAIT = 1.5  # s held still under the running tap (a cup fills in about one)
+#: a push starts the fingers this far behind the blocker's side; of the two ways, when either
+#: frees the target, the one whose start is this far from any other item will do; an item whose
+#: centroid lies this near the target's point is the target (a plate under the bowl)
+PUSH_BACK, PUSH_ROOM, PUSH_TARGET = 0.05, 0.08, 0.08
+PUSH_TRAVEL = 0.22  # m the fingers push the blocker along
 
 
 def leaned(R: np.ndarray, a: np.ndarray, angle: float) -> np.ndarray:
@@ -138,10 +144,12 @@ class Outcome:
 
 @dataclass(frozen=True)
 class Where:
-    """What the executive believes about an item's place: its support or container and its room."""
+    """What the executive believes about an item's place: its support or container, and how far
+    from the point it gave the item may be (``radius``, m; None: it did not say)."""
 
     on: str | None = None
     inside: str | None = None
+    radius: float | None = None
 
     @property
     def place(self) -> str | None:
@@ -223,12 +231,23 @@ class Hands:
 
     def locate(self, name: str, point, where: Where) -> Seen | None:
         """Measure ``name`` where it is believed to be: from here if the camera can see it, else
-        from its standoff."""
-        seen = self.eyes.measure(name, point)
+        from its standoff. The detection taken for it is one of its class within the radius
+        belief gave (else: anywhere on the piece it is believed on or in, else near the point)."""
+        radius = self.belief_radius(where)
+        seen = self.eyes.measure(name, point, radius=radius)
         if seen is None:
             self.nav.approach(self.nav.standoff(name, point, where.place))
-            seen = self.eyes.measure(name, point)
+            seen = self.eyes.measure(name, point, radius=radius)
         return seen
+
+    def belief_radius(self, where: Where) -> float:
+        """How far from the point belief gave an item may be (see :meth:`locate`)."""
+        if where.radius is not None:
+            return where.radius
+        piece = self.scene.furniture.get(where.place or "")
+        if piece is not None:
+            return max(SEEN_RADIUS, math.hypot(piece.width, piece.depth) / 2 + SUPPORT_MARGIN)
+        return SEEN_RADIUS
 
     def bottom(self, seen: Seen, where: Where) -> float:
         """The item's bottom: what the camera saw, or the top of what it stands on when the seen
@@ -855,10 +874,17 @@ class Hands:
             """The hand's start above ``bb``'s side (the fingers down), the way it pushes (along
             the support, away from ``away_from``) and the height it pushes at."""
             side = support.along
-            direction = side if (bb.centroid - away_from)[:2] @ side[:2] >= 0 else -side  # away from what it blocks
-            r = max(bb.extent[:2]) / 2
+            away = side if (bb.centroid - away_from)[:2] @ side[:2] >= 0 else -side  # away from what it blocks
+            r = self._half_width(bb, blocker, side)
+            direction = away
+            if abs(float((bb.centroid - away_from)[:2] @ side[:2])) < r:
+                # it stands over what it blocks along the push: either way frees it. The fingers go
+                # down on the side they push from, where another item may stand (pick_plate: the mug
+                # beside the bowl, knocked onto the plate)
+                room = self._push_room(bb, blocker, away_from, r)
+                direction = max((away, -away), key=lambda d: (min(room(d), PUSH_ROOM), d @ away))
             z = bb.bottom + 0.6 * (bb.top - bb.bottom)
-            start = bb.centroid - direction * (r + 0.05)
+            start = bb.centroid - direction * (r + PUSH_BACK)
             start[2] = z + 0.1
             return se3.frame_zx((0, 0, -1), direction, start), direction, z
 
@@ -887,7 +913,7 @@ class Hands:
         down[2, 3] = z
         self.body.line(down, steps=3, speed=0.3)
         along = down.copy()
-        along[:3, 3] += direction * 0.22
+        along[:3, 3] += direction * PUSH_TRAVEL
         self.body.line(along, steps=5, speed=0.2)
         up = along.copy()
         up[2, 3] += 0.12
@@ -895,6 +921,48 @@ class Hands:
         self.body.fingers(self.body.cfg.gripper.stroke)
         self.body.home()
         return Outcome(True)
+
+
+    def _push_room(self, b: Seen, blocker: str, target, r: float):
+        """How far (m) the fingers' start for a push of ``b`` each way would be from the other
+        items its frame shows (not the blocker, not what it blocks)."""
+        mapped = self.scene.site.static_names()
+        others = []
+        for d in b.frame.detections:
+            if d.name == blocker or d.name in mapped:
+                continue
+            cloud = instance_cloud(b.frame, d)
+            if cloud is not None:
+                c = np.asarray(cloud.points).mean(axis=0)
+                if np.linalg.norm(c[:2] - np.asarray(target)[:2]) > PUSH_TARGET:
+                    others.append(c)
+
+        def room(direction) -> float:
+            # the way the fingers and the blocker sweep: from the fingers' start to where the
+            # blocker's far side ends up
+            a = b.centroid[:2] - direction[:2] * (r + PUSH_BACK)
+            e = b.centroid[:2] + direction[:2] * (PUSH_TRAVEL + r)
+            return min([_to_segment(c[:2], a, e) for c in others], default=math.inf)
+
+        return room
+
+    @staticmethod
+    def _half_width(b: Seen, blocker: str, axis) -> float:
+        """Half the blocker's width along ``axis``: of the middle 90 % of its points (a mask that
+        bled a pixel or two onto what is round it widens its box, not that)."""
+        d = b.frame.detection(blocker)
+        cloud = instance_cloud(b.frame, d) if d is not None else None
+        pts = np.asarray(cloud.points) if cloud is not None else b.corners()
+        along = pts[:, :2] @ np.asarray(axis, float)[:2]
+        lo, hi = np.percentile(along, (5, 95)) if len(along) > 8 else (along.min(), along.max())
+        return float(hi - lo) / 2
+
+
+def _to_segment(p: np.ndarray, a: np.ndarray, e: np.ndarray) -> float:
+    """Distance from ``p`` to the segment ``a``-``e`` (x, y)."""
+    d = e - a
+    t = float(np.clip((p - a) @ d / max(float(d @ d), 1e-12), 0.0, 1.0))
+    return float(np.linalg.norm(p - (a + t * d)))
 
 
 __all__ = ["Hands", "Outcome", "Where", "Stopped", "Furniture", "seen_from"]

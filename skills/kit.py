@@ -10,6 +10,11 @@ new episode: the site map changed, or the robot's clock went back) and forgets w
 :meth:`Kit.goal` wraps one goal: the goal's cancellation reaches every driver call (a cancelled
 goal stops the arm or base within one control cycle and raises :class:`~skills.body.Stopped`),
 progress goes to the goal's feedback, and the IK's scene is the map's.
+
+The kit also names what the wrist camera's detector finds (:meth:`Kit.identify`, over
+:mod:`vap_bt.scene.identity`): the map's furniture and doors by the map, the item in the hand by
+the fingers, the item a look is for by where the goal's hint believes it, and the items the kit
+saw lying on the floor by where it saw them. Skills never read a name a world gave.
 """
 
 from __future__ import annotations
@@ -23,7 +28,10 @@ from skills.eyes import Eyes, Held
 from skills.handles import Handles
 from skills.hands import Hands, Where
 from skills.navigator import Navigator
-from skills.scene_model import SceneModel, seen_from, seen_in_hand
+from skills.scene_model import ANONYMOUS, SceneModel, seen_from, seen_in_hand
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.labels import class_of
+from vap_bt.scene.identity import SEEN_RADIUS, Believed, Identifier, IdentityParams
 from vap_bt.skill import Hint
 from vap_bt.world import GoalContext
 
@@ -33,6 +41,9 @@ REQUIRED = ("arm", "gripper", "base", "camera")
 #: the time the item takes to fall from where it rides (0.95 m: 0.44 s). Stopped at once, the
 #: base would leave the falling item flying on the way the base moved — onto the base's top
 SLIP_FALL = 0.5
+
+#: how the kit re-identifies (only an item's own class: see :meth:`Kit.identify`)
+EXACT = IdentityParams(similar_cost=None)
 
 _kits: dict[int, "Kit"] = {}
 _lock = threading.Lock()
@@ -62,12 +73,29 @@ class Kit:
         d = robot.drivers
         self.body = Body(d.arm, d.gripper, d.base)
         self.eyes = Eyes(self.body, d.camera, level_with=lambda p: self.scene.in_front_cavity(p),
-                         noticed=self._noticed)
+                         noticed=self._noticed, identify=self.identify)
         self._map = None
         self._stamp = -1.0
         self.busy = threading.Lock()  # one goal moves the robot at a time
         self._slip_at: float | None = None  # when the gripper was first found to have lost its item
         self._start()
+
+    def identify(self, frame: Frame, expect: dict[str, Believed], holding: str | None = None) -> Frame:
+        """Name the frame's detections: ``expect`` (what a look is for, where believed), the
+        items last seen on the floor where they were, the held item (measured, or ``holding``)
+        at the fingers while the gripper feels it, the map's things by the map."""
+        held = self.eyes.held.name if self.eyes.held is not None else holding
+        if held is not None and not self.body.holding():
+            held = None
+        belief = {n: Believed(tuple(float(v) for v in box.center), SEEN_RADIUS)
+                  for n, box in self.scene.floor_items.items() if not n.startswith(ANONYMOUS)}
+        belief.update(expect)
+        vocabulary = {n: class_of(n) for n in (*belief, *([held] if held else []))}
+        x, y, _ = self.body.base_pose()
+        hand = tuple(float(v) for v in self.body.pose("tcp")[:3, 3])
+        # only an item's own class: the kit knows its goal's objects, not what else of a
+        # confusable class stands there (a bowl on the plate is not the plate)
+        return Identifier(vocabulary, self.scene.site, EXACT).identify(frame, belief, held, hand, self.scene.room_at(x, y))
 
     def _noticed(self, frame, held: str | None) -> None:
         """What every frame the eyes take tells the scene model: where the map lies from here (the
@@ -150,7 +178,7 @@ class Kit:
     @staticmethod
     def where(hints: dict[str, Hint], name: str) -> Where:
         h = hints.get(name)
-        return Where() if h is None else Where(on=h.on, inside=h.inside)
+        return Where() if h is None else Where(on=h.on, inside=h.inside, radius=h.radius)
 
     def holding(self, name: str) -> bool:
         """Whether the hand holds ``name``, with its geometry known: a held item the kit did not
@@ -161,7 +189,7 @@ class Kit:
         held = self.eyes.held
         if held is not None and held.name == name:
             return True
-        frame, tcp = self.eyes.frame(), self.body.pose("tcp")
+        frame, tcp = self.eyes.frame(holding=name), self.body.pose("tcp")
         # in the hand it is nearer than the camera's minimum range: usually no depth at all
         seen = seen_from(frame, name) or seen_in_hand(frame, name, tcp)
         if seen is None:

@@ -25,7 +25,7 @@ class Grasp(ArmSkill):
 
     def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
         o, s = args[:2]
-        return kit.hands.grasp(o, kit.point(hints, o), Where(on=s))
+        return kit.hands.grasp(o, kit.point(hints, o), Where(on=s, radius=kit.where(hints, o).radius))
 
 
 class TakeOut(ArmSkill):
@@ -35,7 +35,7 @@ class TakeOut(ArmSkill):
 
     def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
         o, c = args[:2]
-        return kit.hands.grasp(o, kit.point(hints, o), Where(inside=c))
+        return kit.hands.grasp(o, kit.point(hints, o), Where(inside=c, radius=kit.where(hints, o).radius))
 
 
 class PlaceIn(ArmSkill):

@@ -9,8 +9,9 @@ Skills plan motions against two kinds of knowledge, neither of which is the simu
   seen from above) and the solid boxes IK must keep the arm clear of — a container's box has its
   cavity carved out, so a hand can reach in;
 * **what the camera shows** — where an item is, how big, which way it lies: the skill looks where
-  the executive believes the item is (the goal's hint), takes a frame, and fuses the item's
-  masked depth into a point cloud (:mod:`vap_bt.scene.pointcloud`); where a door or drawer stands
+  the executive believes the item is (the goal's hint), takes a frame, takes the detection of
+  the item's class there for the item (:mod:`vap_bt.scene.identity`), and fuses its masked depth
+  into a point cloud (:mod:`vap_bt.scene.pointcloud`); where a door or drawer stands
   now, fitted to the points of its piece of furniture (the map says how it moves; the frame says
   how far it has); and where the map lies in the frame the robot believes it stands in: every
   frame that shows mapped furniture registers the map to it (:mod:`skills.registration`), and the
@@ -34,10 +35,15 @@ from vap_bt.robot.site_map import Articulation, FurnitureInfo, SiteMap
 from vap_bt.scene.pointcloud import backproject, instance_cloud
 
 #: an item whose points reach within this of the floor and stay below FLOOR_ITEM_TOP lies on the
-#: floor (m)
-FLOOR_TOUCH, FLOOR_ITEM_TOP = 0.06, 0.3
+#: floor (m) — if they rise FLOOR_ITEM_LEAST above it: a detection whose points are the floor
+#: itself (a false positive on a patch of it) is nothing the base could run into (the flattest
+#: item, a plate lying, stands 1.8 cm)
+FLOOR_TOUCH, FLOOR_ITEM_TOP, FLOOR_ITEM_LEAST = 0.06, 0.3, 0.012
 #: m the base already is from a floor item when it counts as touching it (see low_obstacles)
 LOW_MARGIN = 0.01
+#: what the keys of floor items nobody named start with; one seen again within this (m) of where
+#: it was is the same (:meth:`SceneModel.note_items`)
+ANONYMOUS, ANONYMOUS_NEAR = "?", 0.3
 #: walls are where the map's room outlines are, this thick and high (a SLAM map's walls)
 WALL_THICKNESS = 0.08
 WALL_HEIGHT = 2.0
@@ -121,7 +127,8 @@ class Seen:
 
 
 def seen_from(frame: Frame, name: str) -> Seen | None:
-    """An item's geometry from one frame, or None when the frame does not show it (enough)."""
+    """An item's geometry from one identified frame (the detection named ``name``), or None when
+    the frame does not show it (enough)."""
     d = frame.detection(name)
     cloud = instance_cloud(frame, d) if d is not None else None
     if cloud is None:
@@ -462,22 +469,36 @@ class SceneModel:
     def note_items(self, frame: Frame, held: str | None = None) -> None:
         """Remember where the frame shows items lying on the floor (their points reach down to
         it and stay low); an item the frame shows anywhere else — or the one in the hand — is no
-        longer on the floor."""
+        longer on the floor. The frame is an identified one: an item nobody named (a thing of a
+        class no goal was about, or a false positive) is remembered by class and place
+        (:func:`anonymous_key`), one seen again near where it was replacing the old entry."""
         if held is not None:
             self.floor_items.pop(held, None)
         mapped = self.site.static_names()
         for d in frame.detections:
-            if d.name in mapped or d.name == held:
+            if d.name in mapped or (d.name and d.name == held):
                 continue
             cloud = instance_cloud(frame, d)
             if cloud is None or not len(cloud.points):
                 continue
             pts = np.asarray(cloud.points)
             lo, hi = pts.min(axis=0), pts.max(axis=0)
-            if lo[2] < FLOOR_TOUCH and hi[2] < FLOOR_ITEM_TOP:
-                self.floor_items[d.name] = Obb.aabb((lo[0], lo[1], 0.0), (hi[0], hi[1], hi[2]))
+            key = d.name or self._anonymous_key(d.label, (lo + hi) / 2)
+            if lo[2] < FLOOR_TOUCH and FLOOR_ITEM_LEAST < hi[2] < FLOOR_ITEM_TOP:
+                self.floor_items[key] = Obb.aabb((lo[0], lo[1], 0.0), (hi[0], hi[1], hi[2]))
             else:
-                self.floor_items.pop(d.name, None)
+                self.floor_items.pop(key, None)
+
+    def _anonymous_key(self, label: str, centre: np.ndarray) -> str:
+        """The key of an unnamed item of class ``label`` at ``centre``: that of one remembered
+        within ``ANONYMOUS_NEAR`` of it, else a new one."""
+        for key, box in self.floor_items.items():
+            if key.startswith(f"{ANONYMOUS}{label}#") and np.linalg.norm(box.center[:2] - centre[:2]) < ANONYMOUS_NEAR:
+                return key
+        k = 0
+        while f"{ANONYMOUS}{label}#{k}" in self.floor_items:
+            k += 1
+        return f"{ANONYMOUS}{label}#{k}"
 
     def note_leaves(self, frame: Frame) -> None:
         """Fit the leaf of every piece of furniture the frame shows, against where it is believed

@@ -78,7 +78,8 @@ class ViewService:
 
     def capture(self, aim: Aim | None = None) -> Frame:
         """Aim at ``aim``'s point (:meth:`_point`; if given and not already aimed there) and
-        take a frame."""
+        take a frame — as the camera gave it: the executive names its detections itself (the
+        kit names them too, for what it remembers of the floor and the leaves)."""
         with self._looking() as kit:
             point = None if aim is None else self._point(aim)
             if point is not None and not kit.eyes.aimed_at(point):
@@ -86,7 +87,8 @@ class ViewService:
                     kit.eyes.look_at(point)
                 except Stopped:
                     pass  # the frame shows wherever the camera stopped
-            return kit.eyes.frame()
+            kit.eyes.frame()
+            return kit.eyes.raw
 
     def goto_view(self, view: Viewpoint) -> bool:
         """Drive to the viewpoint's base pose (through doors, stopping at a shut one) and aim."""

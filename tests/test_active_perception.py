@@ -11,12 +11,16 @@ import py_trees
 from py_trees.common import Status
 
 from vap_bt.bt.active_perception import ActivePerception
-from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.context import ExecutionContext, Verified
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception.verification import Round
 from vap_bt.perception.viewpoints import GREEDY_ORDER, ViewpointStrategy
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
+from vap_bt.scene.graph import SceneGraph
+from vap_bt.taskfile import load
+
+from conftest import TREES
 
 CUP_ON_TABLE = Atom("on", ("cup", "table"))
 HOLDING_CUP = Atom("holding", ("cup",))
@@ -71,13 +75,11 @@ class Suggests:
 
 
 def run(child: ScriptedCheck, camera: Camera, vlm=None, facts=(), budget: int = 3, felt=None,
-        strategy: str = "vlm") -> tuple[Status, ActivePerception, ExecutionContext]:
-    from vap_bt.scene.graph import SceneGraph
-
+        strategy: str = "vlm", second_look: bool = True, phase: str = "pre") -> tuple[Status, ActivePerception, ExecutionContext]:
     ctx = ExecutionContext(graph=SceneGraph.of_facts(set(facts)), vlm=vlm or Suggests("left"), camera=camera,
                            skills=None, budget=budget, felt=felt or (lambda graph, atom: None),
-                           viewpoints=ViewpointStrategy(strategy))
-    node = ActivePerception(ctx, child, "pre", None, 0)
+                           viewpoints=ViewpointStrategy(strategy), second_look=second_look)
+    node = ActivePerception(ctx, child, phase, None, 0)
     for _ in range(50):
         node.tick_once()
         if node.status != Status.RUNNING:
@@ -91,10 +93,33 @@ def test_a_settled_first_view_decides_without_moving():
     assert status == Status.SUCCESS and camera.asked == [] and ctx.verifications[-1].outcome == "confirmed"
 
 
-def test_a_view_that_settles_against_expectation_is_a_situation():
-    status, node, ctx = run(ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True)]), Camera())
-    assert status == Status.FAILURE
+def test_a_view_that_settles_against_expectation_is_a_situation_once_a_second_view_agrees():
+    """A surprise from one picture is looked at again from another before belief changes: a
+    model's five paraphrases about one picture can agree and be wrong together."""
+    camera = Camera()
+    status, node, ctx = run(ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True), view("nnnny", False)]), camera)
+    assert status == Status.FAILURE and camera.asked == ["left"]
     assert ctx.situation.kind == "precondition" and ctx.situation.observed is False
+
+
+def test_a_surprise_the_second_view_does_not_repeat_is_not_believed():
+    child = ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True), view("yyyyy", True), view("yyyyy", True)])
+    status, node, ctx = run(child, Camera())
+    assert status == Status.SUCCESS and child.runs == 3 and ctx.verifications[-1].outcome == "confirmed"
+
+
+def test_the_papers_rule_believes_the_first_settled_view():
+    status, node, ctx = run(ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True)]), Camera(), second_look=False)
+    assert status == Status.FAILURE and ctx.situation.observed is False
+
+
+def test_a_goal_is_confirmed_by_two_views_judged_sufficient():
+    """Success is claimed on the goal's checks: one picture is one draw of the model's errors, and
+    a view the model found insufficient is no second opinion on a success."""
+    camera = Camera()
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("yyyyy", False), view("yyyyn", True)])
+    status, node, ctx = run(child, camera, phase="goal")
+    assert status == Status.SUCCESS and child.runs == 3 and camera.asked == ["left", "left"]
 
 
 def test_it_moves_where_the_vlm_says_until_a_view_settles():
@@ -146,3 +171,31 @@ def test_the_greedy_round_skips_a_way_it_was_refused_before():
     status, node, ctx = run(child, camera, strategy="greedy")
     assert status == Status.SUCCESS
     assert camera.asked == ["left", "right", "behind"]  # after "left", "right" is refused: "behind" instead
+
+
+def test_a_goal_counts_the_views_an_earlier_check_judged_it_on():
+    """A cup confirmed filled at the sink is still filled in the microwave, whose inside no view
+    shows: the effect check's settled view and the goal's own are the two views success needs."""
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True)])
+    camera = Camera()
+    ctx = ExecutionContext(graph=SceneGraph.of_facts(set()), vlm=Suggests("left"), camera=camera, skills=None)
+    ctx.verified.saw(CUP_ON_TABLE, [view("yyyyy", True)])
+    node = ActivePerception(ctx, child, "goal", None, 0)
+    for _ in range(10):
+        node.tick_once()
+        if node.status != Status.RUNNING:
+            break
+    assert node.status == Status.SUCCESS and child.runs == 1 and camera.asked == []
+
+
+def test_the_views_of_an_atom_last_until_an_action_could_change_it():
+    task = load(TREES / "boil_water.yaml")
+    k = task.planning.knowledge
+    filled, heated = Atom("filled", ("cup",)), Atom("heated", ("cup",))
+    verified = Verified()  # views are kept whether or not the protocol reuses values
+    for atom in (filled, heated):
+        verified.saw(atom, [view("yyyyy", True)])
+    verified.executed(k.ground("placein", ("cup", "microwave", "kitchen")))
+    assert len(verified.views(filled)) == 1 and len(verified.views(heated)) == 1
+    verified.executed(k.ground("turnon", ("microwave", "cup")))
+    assert len(verified.views(filled)) == 1 and verified.views(heated) == []

@@ -13,16 +13,21 @@ from conftest import DOMAINS, HOUSEHOLD_TASKS, LITERATURE, TREES, load_json
 @pytest.mark.parametrize("domain,problem", LITERATURE)
 def test_literature_domains_run_end_to_end(cli, domain, problem, tmp_path):
     code, out, _ = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
-                       "--no-injection", "--vlm-error", "0", "--report", tmp_path / "r.json", "-q", "--json")
+                       "--no-injection", "--vlm-noise", "0", "--report", tmp_path / "r.json", "-q", "--json")
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"]
     full = load_json((tmp_path / "r.json").read_text())
     if domain.startswith("blocksworld"):  # on/clear/holding have paraphrases; gripper's predicates do not
         assert full["verifications"], "with verification on, checks must have been asked"
-    # nothing situated goes wrong here: every check confirms, by looking or — for what the hand
-    # holds, which no move of the base shows better than the first view — by the gripper's feel
-    assert all(v["outcome"] == "confirmed" or v["outcome"] == "felt" and v["predicate"].startswith("holding(")
+    # nothing situated goes wrong here and the model reads every picture perfectly: no check
+    # contradicts the plan. Every check confirms, by looking or — for what the hand holds, which no
+    # move of the base shows better than the first view — by the gripper's feel, except one whose
+    # every view showed too little of its relation (a view shows a thing partly: docs/perception.md),
+    # which stays unsettled; what it said is right
+    assert all(v["outcome"] in ("confirmed", "unsettled") or v["outcome"] == "felt" and v["predicate"].startswith("holding(")
                for v in full["verifications"])
+    assert all(v["value"] == v["truth"] for v in full["verifications"] if v["outcome"] == "confirmed")
+    assert sum(v["outcome"] == "unsettled" for v in full["verifications"]) <= 0.1 * len(full["verifications"])
     assert any(v["outcome"] == "confirmed" for v in full["verifications"]) or not full["verifications"]
 
 
@@ -33,7 +38,7 @@ def session(name: str, **cfg) -> Session:
 
 @pytest.mark.parametrize("name", HOUSEHOLD_TASKS)
 def test_household_task_succeeds_without_situations(name):
-    r = session(name, injection=False, vlm_error=0.0).episode(0)
+    r = session(name, injection=False, vlm_noise=0.0).episode(0)
     assert r["success"] and r["goal_satisfied"], r["reason"]
     assert r["situations"] == [] and r["replans"] == 0
 
@@ -56,7 +61,7 @@ def test_every_injected_situation_is_detected_and_recovered():
     not settle (a default belief about a door, say), caught as a precondition."""
     episodes = 0
     for name in HOUSEHOLD_TASKS:
-        s = session(name, vlm_error=0.0, max_replans=20, miss_rate=0.0, relation_error=0.0)
+        s = session(name, vlm_noise=0.0, max_replans=20, miss_rate=0.0, relation_noise=0.0)
         for seed in range(8):
             r = s.episode(seed)
             episodes += 1
@@ -76,7 +81,7 @@ def test_every_injected_situation_is_detected_and_recovered():
 
 def test_effect_failure_is_undone_then_corrected():
     # the first seed of boil_water that injects a failed turnon: heated(cup) is checked and found false
-    s = session("boil_water.yaml", vlm_error=0.0, miss_rate=0.0, relation_error=0.0)
+    s = session("boil_water.yaml", vlm_noise=0.0, miss_rate=0.0, relation_noise=0.0)
     r = next(r for r in map(s.episode, range(40)) if any(i["kind"] == "turnon_fails_object_off" for i in r["injected"]))
     kinds = [(s["kind"], s["predicate"]) for s in r["situations"]]
     assert ("effect", "heated(cup)") in kinds and r["success"] and r["goal_satisfied"]
@@ -89,7 +94,7 @@ def test_effect_failure_is_undone_then_corrected():
 
 
 def rate(name: str, verify: str, seeds=range(15)) -> float:
-    s = session(name, verify=verify, vlm_error=0.05)
+    s = session(name, verify=verify, vlm_noise=1.0)
     return sum(r["success"] and r["goal_satisfied"] for r in map(s.episode, seeds)) / len(seeds)
 
 
@@ -103,7 +108,7 @@ def test_verifying_both_recovers_far_more_often_than_none():
 
 
 def test_replanning_budget_bounds_the_episode():
-    s = session("cut_lemon.yaml", vlm_error=0.0, max_replans=0)
+    s = session("cut_lemon.yaml", vlm_noise=0.0, max_replans=0)
     r = next(r for r in map(s.episode, range(20)) if r["injected"])
     assert not r["success"] and "budget" in r["reason"] and r["replans"] == 0
 
@@ -115,7 +120,7 @@ def test_report_has_everything_to_rerun(tmp_path, cli):
     for key in ("success", "goal_satisfied", "seed", "plans", "actions_executed", "situations", "replans",
                 "vlm_queries", "wall_s", "versions", "config", "vlm", "world", "command", "injected"):
         assert key in r, key
-    assert r["seed"] == 3 and r["vlm"]["backend"] == "sim" and "error_rate" in r["vlm"]
+    assert r["seed"] == 3 and r["vlm"]["backend"] == "sim" and r["vlm"]["version"].startswith("vlm-2") and "noise" in r["vlm"]
     graph = r["perception"]["graph"]["initial"]
     assert graph["relations"]["precision"] <= 1.0 and graph["views"] > 0 and "build_s" in graph
     assert r["world"]["detector"]["miss_rate"] == r["config"]["miss_rate"]
@@ -162,7 +167,7 @@ def test_a_failure_that_comes_back_unchanged_is_looked_at_afresh_then_stops_the_
     monkeypatch.setattr(SymbolicWorld, "perform", no_grasp)
     lines = []
     task = load(TREES / "collect_cup.yaml")
-    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_error=0.0),
+    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0),
                 lines.append).episode(0)
     assert not r["success"] and r["reason"].startswith("stuck: execution of grasp(cup"), r["reason"]
     assert "no arm pose reaches it" in r["reason"] and r["replans"] == 2 < 10
@@ -213,8 +218,10 @@ def test_a_goal_the_camera_could_not_confirm_is_looked_at_again_before_success_i
     for times, success in ((1, True), (10, False)):
         monkeypatch.setattr(ActivePerception, "_settle", blind_to_goal(times))
         lines = []
-        r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_error=0.0),
-                    lines.append).episode(0)
+        # perception without noise, the detector's too: a missed cup sends the look afresh on to the
+        # other room, and where it ends changes the belief the loop breaker compares
+        r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
+                                              miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
         unseen = [s for s in r["situations"] if s["kind"] == "unseen"]
         assert unseen and unseen[0]["action"] is None and unseen[0]["predicate"] == goal
         assert "not confirmed by looking" in unseen[0]["detail"]

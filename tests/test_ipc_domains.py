@@ -3,7 +3,7 @@ zenotravel, miconic) — and depots, whose on/2 and clear/1 share household name
 things — run end to end, and every predicate the profile sources from the VLM is verified.
 
 Each is the issue's command, ``vap-bt run --domain D --problem P --world symbolic --no-injection
---vlm-error 0`` (skills over Zenoh on loopback, the default), judged by the world: the report's
+--vlm-noise 0`` (skills over Zenoh on loopback, the default), judged by the world: the report's
 ``goal_satisfied``."""
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ def test_an_ipc_domain_runs_end_to_end_with_every_vlm_predicate_verified(cli, tm
     report = tmp_path / "report.json"
     code, out, err = cli("run", "--domain", DOMAINS / f"{domain}-domain.pddl", "--problem",
                          DOMAINS / f"{RUNS[domain]}.pddl", "--world", "symbolic", "--no-injection",
-                         "--vlm-error", "0", "--report", report, "-q", "--json")
+                         "--vlm-noise", "0", "--report", report, "-q", "--json")
     assert "Traceback" not in err
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
@@ -35,7 +35,12 @@ def test_an_ipc_domain_runs_end_to_end_with_every_vlm_predicate_verified(cli, tm
     assert vlm, "a domain whose predicates some action changes has some to look at"
     verified = {f"{a.predicate}/{len(a.args)}" for a in (Atom.parse(v["predicate"]) for v in rep["verifications"])}
     assert vlm <= verified, f"never asked: {sorted(vlm - verified)}"
-    assert {v["outcome"] for v in rep["verifications"]} == {"confirmed"}  # no noise, no injection
+    # no noise, no injection: nothing contradicts the plan, and what a check settled on holds; a
+    # check whose every view showed too little of its relation (a view shows a thing partly,
+    # docs/perception.md) stays unsettled
+    outcomes = [v["outcome"] for v in rep["verifications"]]
+    assert set(outcomes) <= {"confirmed", "unsettled"} and outcomes.count("unsettled") <= 0.1 * len(outcomes)
+    assert all(v["value"] == v["truth"] for v in rep["verifications"] if v["outcome"] == "confirmed")
     # what is not asked is the map's (rigid facts), each said so in the report
     assert all("source map" in u["reason"] for u in rep["unchecked"])
     # no household text was asked: each question came from this domain's own profile

@@ -58,7 +58,7 @@ def _cancelled_before_close(seen: list[dict], within: float = 2.0) -> bool:
 def _session(**cfg) -> Session:
     task = load(TREES / "collect_cup.yaml")
     return Session(task, RunConfig.from_task(task, world="symbolic", transport="zenoh", injection=False,
-                                             vlm_error=0.0, **cfg))
+                                             vlm_noise=0.0, **cfg))
 
 
 def test_the_time_budget_halts_the_tree_and_cancels_the_goal_in_flight(endless):

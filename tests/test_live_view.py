@@ -243,8 +243,9 @@ def _shot(page, path: Path) -> np.ndarray:
 
 
 def _skill_in_flight(rows: dict, first_step: int = 2) -> int:
-    """The middle tick of the first stretch where action ``first_step`` or a later one is open
-    with ``✓ pre`` and its ``execute`` node running: the moment docs/live-view.png shows."""
+    """The middle tick of the longest stretch where action ``first_step`` or a later one is open
+    with ``✓ pre`` and its ``execute`` node running: the moment docs/live-view.png shows (the
+    longest, so that a click on the time strip, a few ticks off, still lands in it)."""
     def shows(d: dict) -> bool:
         at = dict(zip(d["ids"], zip(d["labels"], d["statuses"])))
         return any(i.count(".") == 1 and int(i.split(".")[1]) >= first_step and
@@ -253,9 +254,15 @@ def _skill_in_flight(rows: dict, first_step: int = 2) -> int:
 
     ticks = [d["tick"] for d in tree_rows(rows)]
     flags = [shows(d) for d in tree_rows(rows)]
-    start = flags.index(True)
-    end = next((k for k in range(start, len(flags)) if not flags[k]), len(flags))
-    return (ticks[start] + ticks[end - 1]) // 2 if end - 1 > start else ticks[start]
+    stretches, start = [], None  # (first, last) drawing index of each stretch
+    for k, f in enumerate([*flags, False]):
+        if f and start is None:
+            start = k
+        elif not f and start is not None:
+            stretches.append((start, k - 1))
+            start = None
+    first, last = max(stretches, key=lambda st: ticks[st[1]] - ticks[st[0]])
+    return (ticks[first] + ticks[last]) // 2
 
 
 def _drawing_at(rows: dict, tick: int) -> dict:
@@ -307,8 +314,10 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         end = _shot(page, tmp_path / "end.png")
         green, orange = _ink(end, Status.SUCCESS), _ink(end, Status.RUNNING)
         # a drawn label is some tens of green pixels, none when the panel draws nothing; the last
-        # tree is the last plan's, shorter after a replan (985 px in one such run), so the bar is well under
-        assert green > 500, f"the finished tree's green labels are not drawn ({green} px)"
+        # tree is the last plan's, shorter after a replan (985 px in one such run), so the bar is
+        # well under; a last plan of no actions is its goal checks alone (295 px in one run)
+        bar = 500 if boil.report["plans"][-1]["actions"] else 150
+        assert green > bar, f"the finished tree's green labels are not drawn ({green} px)"
         assert orange < 30, f"nothing runs at the end, yet orange is drawn in the tree panel ({orange} px)"
 
         # a tick where a later action is spread out, its preconditions confirmed and its skill in

@@ -230,11 +230,13 @@ def test_the_wrist_camera_frame_is_what_it_sees_now(counter):
     c = counter.truth.center("cup")
     assert stand_before(d, c, (0, -1, 0), 0.85).completed
     frame_ = d.camera.capture()
-    assert "cup" in frame_.detected() and "counter" in frame_.detected()
+    shown = counter.captures.get(frame_.frame_id).visibility  # the world's record: the detector says "cup", not which
+    assert shown.get("cup", 0.0) > 0.0 and shown.get("counter", 0.0) > 0.0
+    assert all(not x.name for x in frame_.detections) and {x.label for x in frame_.detections} <= {"cup", "counter", "door"}
     assert frame_.rgb.shape == (120, 160, 3) and frame_.depth.shape == (120, 160) and frame_.masks is not None
     assert frame_.intrinsics is not None and np.allclose(frame_.camera_pose, counter.robot.link_pose("camera_optical"))
     assert counter.captures.get(frame_.frame_id) is not None  # the simulated VLM answers about it
     # the frame is the camera's view now: turn the camera away and the cup is gone
     assert d.arm.follow(wave(d, np.array([1.5, 0, 0, 0, 0, 0])), never).completed
-    assert "cup" not in d.camera.capture().detected()
+    assert counter.captures.get(d.camera.capture().frame_id).visibility.get("cup", 0.0) == 0.0
     assert d.arm.follow(wave(d, np.array([-1.5, 0, 0, 0, 0, 0])), never).completed

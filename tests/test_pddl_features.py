@@ -89,7 +89,7 @@ def step_named(root, action: str):
 def test_each_feature_runs_end_to_end_through_the_cli(cli, feature, tmp_path):
     domain, problem = FEATURES[feature]
     code, out, err = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
-                         "--no-injection", "--vlm-error", "0", "--report", tmp_path / "r.json", "--json")
+                         "--no-injection", "--vlm-noise", "0", "--report", tmp_path / "r.json", "--json")
     summary = load_json(out)
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
     assert "Traceback" not in err
@@ -97,7 +97,14 @@ def test_each_feature_runs_end_to_end_through_the_cli(cli, feature, tmp_path):
     assert len(full["plans"]) == 1 and full["replans"] == 0
     verdict = up_verdict(domain, problem, full["plans"][0]["actions"])
     assert verdict.status == ValidationResultStatus.VALID
-    assert all(v["outcome"] == "confirmed" for v in full["verifications"])
+    # the model reads every picture perfectly (noise 0): no check contradicts the plan, and what a
+    # check settled on is what holds; a check whose every view showed too little of its relation
+    # stays unsettled (a view shows a thing partly: docs/perception.md), or — about what the hand
+    # holds — is settled by the gripper's feel
+    assert all(v["outcome"] in ("confirmed", "unsettled") or v["outcome"] == "felt" and v["predicate"].startswith("holding(")
+               for v in full["verifications"])
+    assert all(v["value"] == v["truth"] for v in full["verifications"] if v["outcome"] == "confirmed")
+    assert sum(v["outcome"] == "unsettled" for v in full["verifications"]) <= 0.1 * len(full["verifications"])
 
 
 def test_conditional_effect_checks_depend_on_the_state():
@@ -264,7 +271,7 @@ def test_a_domain_without_a_profile_verifies_what_actions_change(cli, feature, t
     generated paraphrases; the rigid ones are map knowledge, reported unchecked with the reason."""
     domain, problem = FEATURES[feature]
     code, out, err = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
-                         "--no-injection", "--vlm-error", "0", "--transport", "inproc", "--report", tmp_path / "r.json",
+                         "--no-injection", "--vlm-noise", "0", "--transport", "inproc", "--report", tmp_path / "r.json",
                          "-q", "--json")
     summary = load_json(out)
     assert code == 0 and summary["goal_satisfied"] and err == ""
@@ -292,7 +299,7 @@ def test_either_in_a_predicate_declaration_is_widened_to_the_common_ancestor():
 def test_unsupported_requirements_are_one_clear_error(cli, domain, requirement, line):
     problem = domain.replace("-domain", "-p1")
     code, out, err = cli("run", "--domain", DOMAINS / domain, "--problem", DOMAINS / problem, "--world", "symbolic",
-                         "--no-injection", "--vlm-error", "0")
+                         "--no-injection", "--vlm-noise", "0")
     assert code == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     assert f"{domain}:{line}:" in err and requirement in err
@@ -341,7 +348,7 @@ def test_a_failed_conditional_effect_is_undone_whole_and_recovered():
     spec = taskfile.TaskFile(name="microwave", domain=str(DOMAINS / "microwave-domain.pddl"),
                              problem=str(DOMAINS / "microwave-p1.pddl"))
     task = taskfile.from_spec(spec, base=DOMAINS, where="microwave")
-    session = Session(task, RunConfig.from_task(task, planner="search", vlm_error=0.0, transport="inproc"))
+    session = Session(task, RunConfig.from_task(task, planner="search", vlm_noise=0.0, transport="inproc"))
     r = session.episode(6)  # seed 6 draws turnon_fails_object_off (Table II) for the first turnon
     assert [i["kind"] for i in r["injected"]] == ["turnon_fails_object_off"]
     assert [(s["kind"], s["predicate"]) for s in r["situations"]] == [("effect", "heated(pie)")]

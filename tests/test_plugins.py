@@ -147,7 +147,7 @@ def test_inprocess_robot_forwards_the_robot_interfaces_and_nothing_else():
     world = FactWorld()
     robot = InProcessRobot(world)
     frame = robot.capture(Aim(("cup",)))
-    assert frame.detected() == {"cup"} and frame.aim == ("cup",) and world.view == 1
+    assert [(x.label, x.name) for x in frame.detections] == [("cup", "")] and frame.aim == ("cup",) and world.view == 1
     assert robot.move_view(Aim(("cup",)), "above") and world.view == 2
     assert robot.state().room == "kitchen" and robot.state().gripper_holding is False
     assert {r.name for r in robot.site_map().rooms} == {"kitchen", "hall"}

@@ -216,7 +216,7 @@ def test_a_backend_writes_the_missing_paraphrases_and_bad_writing_falls_back_to_
 def test_the_report_records_the_profile_and_each_generated_paraphrase():
     task = taskfile.from_spec(taskfile.TaskFile(name="ferry", domain=str(FERRY[0]), problem=str(FERRY[1])),
                               base=DOMAINS, where=FERRY[1])
-    session = Session(task, RunConfig(world="symbolic", injection=False, vlm_error=0.0))
+    session = Session(task, RunConfig(world="symbolic", injection=False, vlm_noise=0.0))
     try:
         rep = session.episode()
     finally:
@@ -236,7 +236,7 @@ def test_the_report_records_the_profile_and_each_generated_paraphrase():
 def test_the_survey_asks_open_only_where_the_profile_sources_it_from_the_vlm(tmp_path):
     spec = (HOUSEHOLD.with_suffix(".perception.yaml")).read_text()
     base = taskfile.load(TREES / "heat_pie.yaml")
-    session = Session(base, RunConfig(world="symbolic", injection=False, vlm_error=0.0))
+    session = Session(base, RunConfig(world="symbolic", injection=False, vlm_noise=0.0))
     try:
         asked = session.episode()
     finally:
@@ -246,7 +246,7 @@ def test_the_survey_asks_open_only_where_the_profile_sources_it_from_the_vlm(tmp
     task = tmp_path / "heat_pie.yaml"
     task.write_text((TREES / "heat_pie.yaml").read_text().replace("../domains/household.pddl", str(HOUSEHOLD))
                     + f"perception: {mine.name}\n")
-    session = Session(taskfile.load(task), RunConfig(world="symbolic", injection=False, vlm_error=0.0))
+    session = Session(taskfile.load(task), RunConfig(world="symbolic", injection=False, vlm_noise=0.0))
     try:
         rep = session.episode()
     finally:

@@ -7,6 +7,7 @@ import pytest
 from skill_runs import camera
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.robot.labels import label_of, similar
 from vap_bt.scene.layout import layout_facts
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pybullet_world import PybulletWorld
@@ -49,8 +50,14 @@ def test_frames_carry_images_masks_and_detections():
         assert obs.rgb.dtype == np.uint8 and obs.depth.shape == (h, w) and obs.masks.shape == (h, w)
         valid = obs.depth[obs.depth > 0]  # 0: no return (a D435i-like camera has holes; the sky above the walls returns nothing)
         assert valid.size > 0.5 * obs.depth.size and 0.17 < float(valid.min()) and float(valid.max()) <= 5.0
-        seen = {d.name for d in obs.detections if (obs.masks == d.mask_id).sum() == d.pixels}
-        assert {"mug", "bowl", "dining_table"} <= seen
+        # class labels and masks; which instance each is, only the world's record says
+        record = world.captures.get(obs.frame_id)
+        assert all(not d.name for d in obs.detections) and len(record.instances) == len(obs.detections)
+        assert all((obs.masks == d.mask_id).sum() == d.pixels for d in obs.detections)
+        assert {"mug", "dining_table"} <= set(record.instances)
+        # each its class, or now and then one a detector confuses it with
+        assert all(d.label == label_of(x, world.site_map()) or similar(d.label, label_of(x, world.site_map()))
+                   for d, x in zip(obs.detections, record.instances) if x)
         threshold = world.detector.pixel_threshold(w, h)
         assert all(d.pixels >= threshold for d in obs.detections) and not any(d.relations for d in obs.detections)
         assert world.captures.get(obs.frame_id).visibility["mug"] > 0.3
@@ -69,10 +76,10 @@ def test_capture_renders_where_the_camera_is_and_never_moves_the_arm():
         q, base, ticks = d.arm.joint_state().positions, d.base.pose(), world.ticks
         aim = world.aim_at(("cup",))
         frame = world.capture(aim)
-        assert frame.aim == ("cup",) and "cup" not in frame.detected()  # it is behind the robot's view
+        assert frame.aim == ("cup",) and "cup" not in world.captures.get(frame.frame_id).instances  # out of view
         assert d.arm.joint_state().positions == q and tuple(d.base.pose()) == tuple(base) and world.ticks == ticks
         looked = camera(world).capture(aim)
-        assert "cup" in looked.detected() and world.ticks > ticks
+        assert world.captures.get(looked.frame_id).visibility.get("cup", 0.0) > 0.3 and world.ticks > ticks
         assert np.abs(np.subtract(d.arm.joint_state().positions, q)).max() > 0.05
     finally:
         world.close()
@@ -95,7 +102,6 @@ def test_a_knife_lying_askew_in_plain_view_counts_as_seen_whole():
         pb.resetBasePositionAndOrientation(knife.body, spot, pb.getQuaternionFromEuler((0, 0, yaw + 0.8)),
                                            physicsClientId=world.scene.client)
         obs = camera(world).capture(world.aim_at(("knife",)))
-        assert "knife" in obs.detected()
         assert world.captures.get(obs.frame_id).visibility["knife"] > 0.6
     finally:
         world.close()

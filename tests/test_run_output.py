@@ -69,9 +69,10 @@ def test_a_run_ends_with_a_table_that_agrees_with_the_report(cli, tmp_path):
 
 
 def test_a_success_the_world_denies_is_printed_as_a_failure(cli):
-    """cut_lemon, seed 0, no verification (the closed-world baseline): the executive believes the
-    lemon cut and claims success; the world says it is not, and so do the table and the exit code."""
-    code, out, _ = cli("run", TREES / "cut_lemon.yaml", "--world", "symbolic", "--verify", "none", "--seed", "0",
+    """cut_lemon, seed 1, no verification (the closed-world baseline): the executive believes the
+    lemon cut and claims success; the world says it is not, and so do the table and the exit code.
+    (Seed 0 before the vlm-2 model: the survey's questions draw differently now.)"""
+    code, out, _ = cli("run", TREES / "cut_lemon.yaml", "--world", "symbolic", "--verify", "none", "--seed", "1",
                        "--transport", "inproc", "-q")
     assert code == EXIT_GOAL_NOT_REACHED
     assert table(out)["success"] == "NO: the executive claimed success but the world denies the goal"

@@ -15,7 +15,10 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.runner import RunConfig, Session
+from vap_bt.robot.labels import label_of
 from vap_bt.scene.builder import SceneGraphBuilder
+from vap_bt.scene.graph import SceneGraph
+from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.taskfile import load
 
 from conftest import TREES
@@ -24,8 +27,14 @@ A = Atom.parse
 
 
 def reports_frame(frame_id: str, *detections: tuple[str, tuple[str, ...]]) -> Frame:
-    """A frame without pixels whose detections carry relation reports (as the symbolic world's)."""
-    return Frame(frame_id, 0.0, tuple(Detection(n, "cup", relations=tuple(map(A, rel))) for n, rel in detections))
+    """An identified frame without pixels whose detections carry relation reports as the symbolic
+    world's do (the detected thing itself named ``""``), each already named ``n`` by the robot."""
+    def report(n: str, a: str):
+        atom = A(a)
+        return Atom(atom.predicate, tuple("" if x == n else x for x in atom.args))
+
+    return Frame(frame_id, 0.0, tuple(Detection("cup", relations=tuple(report(n, a) for a in rel), name=n)
+                                      for n, rel in detections))
 
 
 def symbolic_builder() -> SceneGraphBuilder:
@@ -44,6 +53,17 @@ def test_reports_are_voted_across_the_views_that_saw_the_object():
     assert b.placed("cup") and b.evidence["cup"].frames == 3
     b.forget(["cup"])
     assert b.observed("cup") == set() and not b.placed("cup")
+
+
+def test_a_thing_once_seen_is_never_again_placed_by_the_users_word_alone():
+    """Only what no frame has shown may be anywhere (the task file's word can be wrong); a thing
+    forgotten to be looked for again was seen, and belief, not the word, places it."""
+    b = symbolic_builder()
+    graph = SceneGraph.of_facts({A("on(cup, counter)"), A("in_room(cup, kitchen)")})
+    assert b.believed(graph, "cup").told
+    b.saw(["cup"])  # a check's frame showed it (checks' frames are not integrated)
+    b.forget(["cup"])
+    assert not b.believed(graph, "cup").told
 
 
 def test_detections_outside_the_task_vocabulary_are_not_objects_of_the_plan():
@@ -97,8 +117,8 @@ def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     """boil_water: the cup is in the closed cabinet, which no view shows into; the task file says
     so, and the belief says which source placed it."""
     task = load(TREES / "boil_water.yaml")
-    s = Session(task, RunConfig.from_task(task, world="symbolic", injection=False, vlm_error=0.0, miss_rate=0.0,
-                                              relation_error=0.0))
+    s = Session(task, RunConfig.from_task(task, world="symbolic", injection=False, vlm_noise=0.0, miss_rate=0.0,
+                                              relation_noise=0.0))
     r = s.episode(0)
     initial = r["perception"]["surveys"][0]
     assert initial["prior_only"] == ["cup"] and "cup" not in initial["detected"]
@@ -113,7 +133,7 @@ def test_a_lost_object_is_searched_for_room_by_room():
     feels it gone, the camera does not show it where it was carried to, and the re-survey finds
     it in the other room."""
     task = load(TREES / "collect_cup.yaml")
-    s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_error=0.0, miss_rate=0.0, relation_error=0.0,
+    s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_noise=0.0, miss_rate=0.0, relation_noise=0.0,
                                               planner="search"))
     r = next(r for r in map(s.episode, range(60))
              if any(i["kind"] == "held_object_drops_during_navigation" and i["action"] == "navigate"
@@ -143,17 +163,23 @@ def test_the_sweep_finds_what_the_first_view_does_not_show():
     task = load(TREES / "collect_cup.yaml")
     world = PybulletWorld(task, seed=0, injection=False, localization=LocalizationModel.perfect())
     try:
-        view = camera(world)
+        site, objects = world.site_map(), task.planning.objects
+        b = SceneGraphBuilder(task.planning.knowledge, objects, site, PointCloudGeometry)
+        # frames named against what the sweep has seen so far (the executive's own wiring)
+        ident = Identifier({n: label_of(n, site) for n in objects}, site)
+        view = IdentifyingCamera(camera(world), lambda f: ident.identify(
+            f, {n: Believed(c) for n in objects if (c := b.geometry.centroid(n)) is not None}))
         first = view.capture()
         assert "cup" not in first.detected()
-        b = SceneGraphBuilder(task.planning.knowledge, task.planning.objects, world.site_map(), PointCloudGeometry)
         b.integrate(first)
         record = b.sweep(view, sweep_order(world.site_map(), world.state().room))
         assert "cup" in record.detected and record.frames == record.reached > 5
         assert {A("on(cup, coffee_table)"), A("in_room(cup, living_room)")} <= b.observed("cup")
         assert world.oracle.holds(A("on(cup, coffee_table)"))  # the check, not the source
         c = np.array(b.geometry.centroid("cup"))
-        assert np.linalg.norm(c - world.truth.center("cup")) < 0.03
+        # a few cm: views of one side only (2.3 cm off with the renderer's exact masks), masks a
+        # pixel or two off the boundary, and the views the detector missed the cup in not fused
+        assert np.linalg.norm(c - world.truth.center("cup")) < 0.04
     finally:
         world.close()
 
@@ -164,7 +190,7 @@ def test_an_object_moved_by_a_person_is_noticed_and_relocated_from_the_frame():
     check no longer finds it, and the cup is re-located from what the camera shows — the oracle
     is only asked afterwards, to check."""
     task = load(TREES / "collect_cup.yaml")
-    s = Session(task, RunConfig.from_task(task, world="pybullet", injection=False, vlm_error=0.0))
+    s = Session(task, RunConfig.from_task(task, world="pybullet", injection=False, vlm_noise=0.0))
     try:
         s.world.disturbances = [{"after": 0, "move": "cup", "to": "floor_living_room"}]
         r = s.episode(0)

@@ -170,7 +170,7 @@ def test_dbscan_drops_a_stray_cluster_that_bled_into_a_mask():
     masks = np.full((H, W), -1)
     masks[on_box] = 3
     masks[20:28, 20:28] = 3  # the mask spills onto a patch of floor far from the box
-    frame = frame_of(depth, masks, pose, Detection("box", "box", mask_id=3))
+    frame = frame_of(depth, masks, pose, Detection("box", mask_id=3, name="box"))
     pts = np.asarray(instance_cloud(frame, frame.detections[0]).points)
     assert abs(pts[:, 2] - 0.2).max() < 1e-3  # only the box's top is left
     assert np.all(np.abs(pts[:, :2]) < 0.15 + 1e-3)
@@ -188,11 +188,11 @@ def test_a_detection_without_a_mask_or_depth_gives_no_cloud():
     depth, _ = ray_depths(pose, 0.0)
     masks = np.full((H, W), -1)
     masks[100:140, 100:140] = 0
-    frame = frame_of(depth, masks, pose, Detection("a", "cup", mask_id=0), Detection("b", "cup", mask_id=-1),
-                     Detection("c", "cup", mask_id=7))
+    frame = frame_of(depth, masks, pose, Detection("cup", mask_id=0, name="a"), Detection("cup", mask_id=-1, name="b"),
+                     Detection("cup", mask_id=7, name="c"))
     tracks = Tracks()
     assert tracks.integrate(frame) == ["a"]
-    assert tracks.integrate(Frame("symbolic", 0.0, (Detection("a", "cup"),))) == []  # a frame without pixels
+    assert tracks.integrate(Frame("symbolic", 0.0, (Detection("cup", name="a"),))) == []  # a frame without pixels
 
 
 # ---------------------------------------------------------------- fusion
@@ -499,7 +499,7 @@ def lab_frame(lab, eye, target, fid: str, renderer=render_own) -> Frame:
     depth, ids, pose, intrinsics = renderer(pb, cid, eye, target)
     names = {b: n for n, b in bodies.items() if n != "floor"}  # the detector finds objects, not the floor
     masks = np.where(np.isin(ids, list(names)), ids, -1).astype(np.int32)
-    dets = tuple(Detection(n, n, int((masks == b).sum()), mask_id=b) for b, n in names.items() if (masks == b).any())
+    dets = tuple(Detection(n, int((masks == b).sum()), mask_id=b, name=n) for b, n in names.items() if (masks == b).any())
     return Frame(fid, 0.0, dets, depth=depth.astype(np.float32), masks=masks, intrinsics=intrinsics, camera_pose=pose)
 
 

@@ -59,3 +59,30 @@ def test_relocate_believes_what_the_frames_show_in_the_way_and_leaves_reachabili
     assert g.holds(A("reachable(mug)")) == mug  # only the plate's place and what stands in its way
     g.relocate("plate", where)  # a later frame shows nothing in its way
     assert not g.holds(A("blocking(bowl, plate)")) and not g.holds(A("reachable(plate)"))
+
+
+def test_same_class_items_the_task_does_not_tell_apart_are_scored_under_the_best_matching():
+    """retrieve_bottles: the robot named the bench's bottle bottle2 and the floor's bottle1 (the
+    task file tells them apart nowhere). Scored under the matching of its graph's centroids to the
+    bottles' true centres, its belief is right, and the swap is reported; a task that names them
+    (``told``) gets no such matching."""
+    from vap_bt.sim.graph_score import score_graph
+    from vap_bt.sim.oracle import FunctionOracle
+
+    task = load(TREES / "retrieve_bottles.yaml").planning
+    truth = {A("on(bottle1, garden_bench)"), A("on(bottle2, floor_garden)"), A("in_room(bottle1, garden)"),
+             A("in_room(bottle2, garden)")}
+    where = {"bottle1": (7.0, 4.1, 0.5), "bottle2": (7.5, 1.0, 0.1)}
+    oracle = FunctionOracle(lambda a: a in truth, lambda: [], where.get)
+    believed = frozenset({A("on(bottle2, garden_bench)"), A("on(bottle1, floor_garden)"), A("in_room(bottle1, garden)"),
+                          A("in_room(bottle2, garden)")})
+    centroids = {"bottle2": (7.02, 4.08, 0.52), "bottle1": (7.48, 1.03, 0.09)}
+    s = score_graph(oracle, task, believed, {"bottle1", "bottle2"}, {"bottle1", "bottle2"}, set(), centroids)
+    assert s["relations"]["precision"] == 1.0 and s["relations"]["recall"] == 1.0
+    assert s["swaps"] == {"bottle1": "bottle2", "bottle2": "bottle1"}
+    told = score_graph(oracle, task, believed, {"bottle1", "bottle2"}, {"bottle1", "bottle2"}, {"bottle1"}, centroids)
+    assert "swaps" not in told and told["relations"]["precision"] == 0.5
+    # without geometry, the matching that makes the most believed relations true
+    blind = FunctionOracle(lambda a: a in truth, lambda: [])
+    s = score_graph(blind, task, believed, {"bottle1", "bottle2"}, {"bottle1", "bottle2"}, set(), {})
+    assert s["relations"]["precision"] == 1.0 and s["swaps"] == {"bottle1": "bottle2", "bottle2": "bottle1"}

@@ -236,7 +236,7 @@ def test_an_item_seen_on_the_floor_is_kept_off_by_the_base_not_the_arm():
     masks[100:111, 75:86] = 0
     pose = _frame(depth).camera_pose.copy()
     pose[2, 3] = 0.5
-    frame = Frame("f", 0.0, detections=(Detection("bottle", "bottle", 121, 0),), depth=depth.astype(np.float32),
+    frame = Frame("f", 0.0, detections=(Detection("bottle", 121, 0, name="bottle"),), depth=depth.astype(np.float32),
                   masks=masks, intrinsics=(F, F, W / 2, H / 2), camera_pose=pose)
     scene.note_items(frame)
     assert set(scene.floor_items) == {"bottle"}

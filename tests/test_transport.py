@@ -140,12 +140,13 @@ def test_robot_interfaces_over_zenoh(net):
     robot = ZenohRobot(s_cli, "ur5e", timeout=3)
     frame = robot.capture(Aim(("cup", "ghost"), (1.0, 2.0, 0.5)))
     local = world.capture(Aim(("cup", "ghost")))
-    assert frame.detected() == {"cup"} and frame.aim == ("cup", "ghost") and frame.frame_id != local.frame_id
+    assert [(d.label, d.name) for d in frame.detections] == [("cup", "")]  # a class, never which cup
+    assert frame.aim == ("cup", "ghost") and frame.frame_id != local.frame_id
     for name, dtype in (("rgb", np.uint8), ("depth", np.float32), ("masks", np.int32)):
         assert getattr(frame, name).dtype == dtype
         np.testing.assert_array_equal(getattr(frame, name), getattr(local, name))
     assert frame.intrinsics == (500.0, 500.0, 3.0, 2.0) and frame.camera_pose.shape == (4, 4)
-    assert frame.mask("cup").sum() == 4
+    assert (frame.masks == frame.detections[0].mask_id).sum() == 4
     assert robot.state().room == "kitchen" and robot.state().gripper_holding is False
     assert [r.name for r in robot.site_map().rooms] == ["kitchen", "hall"]
     assert robot.goto_view(Viewpoint("kitchen", Aim(("table",)))) is True

@@ -51,7 +51,7 @@ def test_messages_round_trip():
                    frozenset({Atom("clear", ("t",))}))
     state = RobotState(1.5, "kitchen", (1.0, 2.0, 0.3), (0.1,) * 6, (1.0,) * 7, 0.08, False)
     view = ViewRequest(Viewpoint("kitchen", Aim(("t",), (1.0, 3.0, 0.7)), (1.0, 1.5, 1.57), "t from the front"))
-    ask = VlmRequest(Query("Is the cup on the t?", about=(Atom("on", ("cup", "t")),), objects=("cup", "t")), "f-1")
+    ask = VlmRequest(Query("Is the cup on the t?", about=(Atom("on", ("cup", "t")),), objects=("cup", "t")), "f-1", {"cup": 0})
     for msg in (site, state, view, ask, CaptureRequest(None), CaptureRequest(Aim(("cup",))), Answer("yes", True),
                 ActionEvent("begin", "grasp", ("cup", "table")), ActionEvent("end", "grasp"), ActionAck(True),
                 ActionAck(False, "no action open")):
@@ -60,7 +60,7 @@ def test_messages_round_trip():
 
 def test_images_travel_as_raw_bytes_not_json():
     rgb = np.zeros((480, 640, 3), np.uint8)
-    obs = Frame("f", 0.0, (Detection("cup", "cup", 10, 3, relations=(Atom("on", ("cup", "t")),)),), rgb=rgb,
+    obs = Frame("f", 0.0, (Detection("cup", 10, 3, relations=(Atom("on", ("", "t")),), name="cup"),), rgb=rgb,
                 depth=np.ones((480, 640), np.float64), masks=np.zeros((480, 640), np.int64), camera_pose=np.eye(4))
     frame = encode(obs)
     assert len(frame) < rgb.nbytes + 480 * 640 * 8 + 128 + 1024  # pixels plus a small header

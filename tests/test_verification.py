@@ -1,4 +1,4 @@
-"""Predicate verification: prompts verbatim from the paper, voting, and the simulated VLM."""
+"""Predicate verification: prompts verbatim from the paper, voting, verdicts (the simulated VLM: test_sim_vlm.py)."""
 
 from __future__ import annotations
 
@@ -11,9 +11,6 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
 from vap_bt.perception.verification import Round, Verdict, VoteSettings, verdict, vote_round
 from vap_bt.perception.vlm import Answer, Query, parse_choice, parse_yes_no
-from vap_bt.sim.captures import CaptureRecord
-from vap_bt.sim.oracle import FunctionOracle
-from vap_bt.sim.sim_vlm import SimVLM
 from vap_bt.robot.frame import Frame
 
 from conftest import PAPER, household_profile
@@ -148,80 +145,6 @@ def test_a_confident_logprob_answer_stands_for_the_vote_only_when_it_confirms_th
     assert unsure.answers == [True] * 3 and unsure.consistent  # then two more, agreeing: three
 
 
-def sim_vlm(truth, visibility: dict[str, float], error_rate: float, seed: int, frames: int = 1) -> SimVLM:
-    """The simulated VLM over capture records f-0, f-1, ... with the given visibility and truth."""
-    oracle = FunctionOracle(truth, lambda: [])
-    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, visibility, oracle, lambda: 0) for i in range(frames)}
-    return SimVLM(records.get, error_rate=error_rate, seed=seed)
-
-
-def test_sim_vlm_error_rate_matches_its_parameter():
-    truth = {CUP: True}
-    n, wrong = 4000, 0
-    vlm = sim_vlm(lambda a: truth[a], {"cup": 1.0, "table": 1.0}, error_rate=0.2, seed=7, frames=n)
-    for i in range(n):  # one question about each of n frames: independent draws
-        a = vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0))
-        wrong += a.value is not True
-    assert abs(wrong / n - 0.2) < 0.025  # ~4 standard errors
-
-
-def test_sim_vlm_answers_do_not_depend_on_the_order_questions_arrive_in():
-    vlm = sim_vlm(lambda a: True, {"cup": 0.6, "table": 1.0}, error_rate=0.3, seed=3, frames=50)
-    qs = [(Query(f"q{j}", about=(CUP,), objects=("cup",)), Frame(f"f-{i}", 0.0)) for i in range(50) for j in range(3)]
-    forward = [vlm.ask(q, f).value for q, f in qs]
-    backward = [vlm.ask(q, f).value for q, f in reversed(qs)][::-1]
-    assert forward == backward and 0 < sum(forward) < len(forward)
-
-
-def test_sim_vlm_does_not_answer_about_a_frame_it_has_no_record_of():
-    vlm = sim_vlm(lambda a: True, {"cup": 1.0}, error_rate=0.0, seed=1)
-    assert vlm.ask(Query("q", about=(CUP,), objects=("cup",)), Frame("from-elsewhere", 0.0)).value is None
-
-
-def test_sim_vlm_guesses_about_what_it_cannot_see_and_knows_it():
-    vlm = sim_vlm(lambda a: True, {"cup": 0.0, "table": 1.0}, error_rate=0.0, seed=1, frames=400)
-    answers = [vlm.ask(Query("q", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
-               for i in range(400)]
-    assert 0.35 < sum(answers) / len(answers) < 0.65
-    suff = [vlm.ask(Query("q", purpose="sufficiency", about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
-            for i in range(50)]
-    assert not any(suff), "with no noise it must say the view is insufficient every time"
-
-
-def test_sim_vlm_sees_a_large_thing_the_frame_cuts_as_plainly_as_a_whole_one():
-    """A table top filling a third of the image, cut by three of its edges (a fifth of the table
-    in the frame), is plainly in the picture: the view is sufficient and the answers as good as
-    for a wholly visible table. The same fifth of a table covering 2 % of the image is not."""
-    oracle = FunctionOracle(lambda a: True, lambda: [])
-
-    def asked(share: float, purpose: str = "predicate") -> list[bool | None]:
-        masks = {"cup": ((), 0.02), "table": (("bottom", "left", "right"), share)}
-        records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {"cup": 1.0, "table": 0.2}, oracle, lambda: 0, masks=masks)
-                   for i in range(400)}
-        vlm = SimVLM(records.get, error_rate=0.05, seed=3)
-        return [vlm.ask(Query("q", purpose=purpose, about=(CUP,), objects=("cup", "table")), Frame(f"f-{i}", 0.0)).value
-                for i in range(400)]
-
-    assert sum(asked(0.33, "sufficiency")) > 0.9 * 400
-    assert sum(asked(0.33)) > 0.9 * 400  # wrong at about the base rate, 5 %
-    assert sum(asked(0.02, "sufficiency")) < 0.2 * 400
-
-
-def test_sim_vlm_sees_a_door_filling_half_the_image_whatever_fraction_the_record_computed():
-    """store_firewood seed 0: the camera in a doorway, the door covering half the image, its
-    computed visible fraction 0 (the door's box reached behind the camera, so its projection
-    was unbounded). The mask decides: the view is sufficient and the answers right."""
-    oracle = FunctionOracle(lambda a: True, lambda: [])
-    masks = {"door": (("left", "right", "top"), 0.53)}
-    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {"door": 0.0}, oracle, lambda: 0, masks=masks) for i in range(200)}
-    vlm = SimVLM(records.get, error_rate=0.05, seed=3)
-    door = Atom("open", ("door",))
-    for purpose in ("predicate", "sufficiency"):
-        got = [vlm.ask(Query("q", purpose=purpose, about=(door,), objects=("door",)), Frame(f"f-{i}", 0.0)).value
-               for i in range(200)]
-        assert sum(got) > 0.9 * 200, purpose
-
-
 def rnd(answers: str, sufficient: bool | None) -> Round:
     """A round from answers like "yyyyn" (y/n/? for yes/no/abstained), voted as the paper votes."""
     vals = [{"y": True, "n": False, "?": None}[c] for c in answers]
@@ -280,64 +203,6 @@ def test_with_the_budget_spent_only_views_that_all_agreed_stand():
     assert verdict(views, exhausted=True) == Verdict(True, "agreed")
 
 
-def test_sim_vlm_probabilities_say_something_about_being_right_but_overstate_it():
-    """Its stated probabilities are higher when it is right than when it is wrong (errors come
-    from scores near the boundary) and, on average, higher than its accuracy (overconfident)."""
-    n = 4000
-    vlm = sim_vlm(lambda a: True, {"cup": 0.6}, error_rate=0.1, seed=11, frames=n)
-    answers = [vlm.ask(Query("q", about=(CUP,), objects=("cup",)), Frame(f"f-{i}", 0.0)) for i in range(n)]
-    right = [a.confidence for a in answers if a.value is True]
-    wrong = [a.confidence for a in answers if a.value is False]
-    accuracy = len(right) / n
-    assert abs(accuracy - (1 - 0.1 * (2 - 0.6))) < 0.02
-    assert sum(right) / len(right) > sum(wrong) / len(wrong) + 0.1
-    assert sum(a.confidence for a in answers) / n > accuracy + 0.02
-
-
-def test_sim_vlm_reads_where_to_look_off_the_frame():
-    """Cut by the image's right edge: move right; tiny: come closer; mostly hidden: look from
-    above; whole and in plain view: closer; cut by the top: step back; never in the picture: a
-    guess among the options."""
-    oracle = FunctionOracle(lambda a: True, lambda: [])
-    shows = [("right", {"cup": 0.7}, {"cup": (("right",), 0.05)}), ("closer", {"cup": 0.9}, {"cup": ((), 0.002)}),
-             ("above", {"cup": 0.3}, {"cup": ((), 0.05)}), ("closer", {"cup": 1.0}, {"cup": ((), 0.05)}),
-             ("front", {"cup": 0.6}, {"cup": (("top",), 0.3)})]
-    for want, vis, masks in shows:
-        records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, vis, oracle, lambda: 0, masks=masks) for i in range(40)}
-        vlm = SimVLM(records.get, error_rate=0.0, seed=5)
-        got = {vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(40)}
-        assert got == {want}, (want, got)
-    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {}, oracle, lambda: 0) for i in range(200)}
-    vlm = SimVLM(records.get, error_rate=0.0, seed=5)
-    assert len({vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(200)}) == 6
-
-
-def test_sim_vlm_reads_where_to_look_for_an_unseen_target_off_its_place():
-    """The cup out of the picture, the table it should stand on in it: look over the table, or
-    turn the way the table leaves the image; neither in the picture: a guess."""
-    oracle = FunctionOracle(lambda a: True, lambda: [])
-    shows = [("above", {"table": 0.9}, {"table": ((), 0.2)}),
-             ("left", {"table": 0.6}, {"table": (("left",), 0.2)}),
-             ("above", {"table": 1.0}, {"table": (("left", "bottom"), 0.6)})]
-    for want, vis, masks in shows:
-        records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, vis, oracle, lambda: 0, masks=masks) for i in range(40)}
-        vlm = SimVLM(records.get, error_rate=0.0, seed=5)
-        got = {vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(40)}
-        assert got == {want}, (want, got)
-    # at the model's error rate the reading is wrong now and then: a uniform choice
-    records = {f"f-{i}": CaptureRecord(f"f-{i}", 0, {"table": 0.9}, oracle, lambda: 0, masks={"table": ((), 0.2)})
-               for i in range(400)}
-    vlm = SimVLM(records.get, error_rate=0.2, seed=5)
-    got = [vlm.ask(prompts_viewpoint_query(), Frame(f"f-{i}", 0.0)).value for i in range(400)]
-    assert 0.6 < got.count("above") / len(got) < 0.95 and len(set(got)) == 6
-
-
-def prompts_viewpoint_query() -> Query:
-    from vap_bt.perception.verification import viewpoint_query
-
-    return viewpoint_query(CUP, "Is the cup on the table?", "cup")
-
-
 def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_plainly():
     from vap_bt.perception.verification import shown_plainly
     from vap_bt.robot.frame import Detection
@@ -345,7 +210,7 @@ def test_the_detector_judges_a_view_sufficient_only_when_it_shows_everything_pla
     masks = np.full((100, 100), -1, np.int32)
     masks[40:60, 40:60] = 1  # the cup, whole, 4 % of the image
     masks[70:100, 0:100] = 2  # the table, cut by the image's bottom and sides, 30 % of it
-    dets = (Detection("cup", "cup", 400, 1), Detection("table", "table", 3000, 2))
+    dets = (Detection("cup", 400, 1, name="cup"), Detection("table", 3000, 2, name="table"))  # identified
     frame = Frame("f", 0.0, detections=dets, masks=masks)
     assert shown_plainly(frame, Atom("holding", ("cup",)), frozenset(), 0.005)
     assert not shown_plainly(frame, Atom("on", ("cup", "table")), frozenset(), 0.005)  # the table is cut

@@ -25,7 +25,7 @@ from vap_bt.viz import SinkSpec, TreeRecorder, ViewerError  # noqa: E402
 from vap_bt.viz.tree_graph import STATUS_COLOURS  # noqa: E402
 
 RERUN = Path(sys.executable).parent / "rerun"
-#: a symbolic collect-cup episode with an effect situation and one replan (vlm_error 0)
+#: a symbolic collect-cup episode with an effect situation and one replan (vlm_noise 0)
 SEED_WITH_REPLAN = 8
 
 
@@ -34,7 +34,7 @@ def session(world: str = "symbolic"):
     from vap_bt.runner import RunConfig, Session
 
     task = taskfile.load(TREES / "collect_cup.yaml")
-    return Session(task, RunConfig.from_task(task, world=world, transport="inproc", vlm_error=0.0))
+    return Session(task, RunConfig.from_task(task, world=world, transport="inproc", vlm_noise=0.0))
 
 
 def run(sess, seed: int, recorder: TreeRecorder):

@@ -111,10 +111,11 @@ def _run(args, stdout) -> int:
 
     task = _load_run_task(args)
     cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
-                              vlm_error=args.vlm_error, injection=False if args.no_injection else None,
+                              vlm_noise=args.vlm_noise, injection=False if args.no_injection else None,
                               max_replans=args.max_replans, planner=args.planner, transport=args.transport,
                               early_stop=args.early_stop or None, protocol=args.protocol,
                               viewpoints=args.viewpoints, vlm=args.vlm, vlm_url=args.vlm_url,
+                              second_look=False if args.one_look else None,
                               vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction,
                               vlm_latency=args.vlm_latency, vlm_logprobs=False if args.no_logprobs else None)
     check_config(task, cfg)  # bad options in one line, before the first progress line
@@ -294,7 +295,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="HTTP backends: do not ask for token log-probabilities (the lean protocol then votes)")
     sr.add_argument("--vlm-url", help="API root of the openai/gemini backend, e.g. http://127.0.0.1:8000/v1")
     sr.add_argument("--vlm-model", help="model name for the openai/gemini backend (openai: the served model)")
-    sr.add_argument("--vlm-error", type=float, help="symbolic VLM per-query error rate (default 0.05)")
+    sr.add_argument("--vlm-noise", type=float, help="scale of the simulated VLM's imperfections: 1 the calibrated model (default), 0 an ideal reader of the picture")
     sr.add_argument("--goal", metavar="WORDS",
                     help="the goal in words, parsed by the VLM after the survey (needs --vlm openai|gemini); "
                          "without it the task file's goal: atoms run")
@@ -310,6 +311,9 @@ def build_parser() -> argparse.ArgumentParser:
                          "shows enough; a surprise always gets the paper's full vote)")
     sr.add_argument("--viewpoints", choices=["vlm", "greedy"],
                     help="where to look from next: the VLM's suggestion (default) or a fixed round (paper H2)")
+    sr.add_argument("--one-look", action="store_true",
+                    help="believe the first settled view of a surprise or a goal, as the paper's Alg. 2 does "
+                         "(default: a second view from a new picture first)")
     sr.add_argument("--max-replans", type=int, help=f"replans an episode may make (default {MAX_REPLANS})")
     sr.add_argument("--planner", choices=["fast-downward", "search"], help="engine of the first plan")
     sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",

@@ -21,6 +21,7 @@ from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.bt.repeats import MAX_REPLANS
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
@@ -66,15 +67,17 @@ class RunConfig:
     vlm: str = "sim"  # sim (world-side, offline) | sim-http | openai | gemini (see make_vlm)
     vlm_url: str | None = None  # openai/gemini: the API root (--vlm-url)
     vlm_model: str | None = None  # openai/gemini: the model name (--vlm-model)
-    vlm_error: float = 0.05
+    vlm_noise: float = 1.0
     vlm_latency: float = 0.0  # sim-http: seconds the endpoint adds to every answer (benchmarks)
     vlm_logprobs: bool = True  # HTTP backends: ask for token log-probabilities
     miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
-    relation_error: float = _DETECTOR.relation_error  # symbolic relation detector
+    relation_noise: float = _DETECTOR.relation_noise  # symbolic relation reports (0: exact where shown)
     transport: str = "inproc"
     planner: str = "fast-downward"
     protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
     viewpoints: str = "vlm"  # where to look from next: vlm | greedy
+    #: a surprise or a goal value needs a second agreeing view (False: the paper's first settled view)
+    second_look: bool = True
     unseen: str = "look"  # an unsettled precondition: look | go_on | stop
     goal: str | None = None  # a goal in words (--goal), parsed by the VLM after the survey
     parse_instruction: bool = False  # parse the task file's instruction: even when it has goal: atoms
@@ -87,7 +90,7 @@ class RunConfig:
         return cls(**{**asdict(base), **{k: v for k, v in overrides.items() if v is not None}})
 
     def detector(self) -> DetectorModel:
-        return DetectorModel(miss_rate=self.miss_rate, relation_error=self.relation_error)
+        return DetectorModel(miss_rate=self.miss_rate, relation_noise=self.relation_noise)
 
 
 def make_world(task: Task, cfg: RunConfig) -> World:
@@ -132,7 +135,7 @@ def sim_vlm(task: Task, world: World, cfg: RunConfig):
     from vap_bt.sim.sim_vlm import SimVLM
 
     rooms = frozenset(o for o, t in task.planning.objects.items() if t == "room")
-    return SimVLM(world.captures.get, cfg.vlm_error, seed=cfg.seed, rooms=rooms)
+    return SimVLM(world.captures.get, cfg.vlm_noise, seed=cfg.seed, rooms=rooms)
 
 
 def make_endpoint(task: Task, world: World, cfg: RunConfig):
@@ -317,7 +320,8 @@ class Session:
                                      vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
                                      max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
                                      tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
-                                     protocol=protocol, viewpoints=cfg.viewpoints, threads=remote)
+                                     protocol=protocol, viewpoints=cfg.viewpoints, threads=remote,
+                                     second_look=cfg.second_look)
         progress = self.progress
         if self.recorder is not None:  # progress lines go to the recording's log as well
             progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
@@ -328,6 +332,7 @@ class Session:
                               on_verification=self._score_verification,
                               goal_parser=self._goal_parser, profile=self.profile)
         self._verified: list[bool] = []
+        self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
         return executive, metered
 
     def build_graph(self, seed: int | None = None) -> dict:
@@ -386,17 +391,39 @@ class Session:
         raise ValueError(f"unknown transport {self.cfg.transport!r}")
 
     def _score_verification(self, v) -> None:
-        """Whether a settled value matched the world at that moment (nothing happens between a
-        check's last frame and its verdict, so the truth now is the truth the frame showed)."""
+        """The world's value of a check's atom when it settled (nothing happens between a check's
+        last frame and its verdict, so the truth now is the truth the frame showed) and when its
+        first view was captured (that capture's record, for the first view's accuracy), about the
+        instances the robot looked at: its atom's objects resolved through the executive's own
+        association in each view (:meth:`CaptureRecord.resolve`: which detection it took for which
+        object), so that two bottles it named the other way round are scored as what it really
+        saw; an atom about a false positive it took for an object holds of nothing. And whether a
+        settled value matched the world."""
+        captures = getattr(self.world, "captures", None)  # a world in another process: names as names
+        records = [(captures.get(r.view), r) for r in v.rounds] if captures is not None else []
+        atom: Atom | None = v.atom
+        for record, r in records:  # the latest view that identified them says
+            if record is not None and r.identified:
+                atom = record.resolve_atom(v.atom, r.identified)
+        truth = atom is not None and self.world.oracle.holds(atom)
+        first, r0 = records[0] if records else (None, None)
+        if first is not None:
+            at_first = first.resolve_atom(v.atom, r0.identified) if r0.identified else v.atom
+            first_truth = at_first is not None and first.holds(at_first)
+        else:
+            first_truth = truth
+        self._truths[id(v)] = {"truth": truth, "first_truth": first_truth}
         if v.outcome in ("confirmed", "contradicted", "felt", "reused"):
-            self._verified.append(self.world.oracle.holds(v.atom) == v.value)
+            self._verified.append(truth == v.value)
 
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
         perceived = set(survey.sweep.detected)
         site = self.world.site_map()
         detectable = {o for o, t in self.task.planning.objects.items() if t != "room"} - set(site.floors())
-        s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable)
+        told = {x for a in self.task.prior for x in a.args}  # what the task file names, it tells apart
+        centroids = {n: o.centroid for n, o in graph.objects.items()}
+        s = score_graph(self.world.oracle, self.task.planning, survey.facts, perceived, detectable, told, centroids)
         return {"reason": survey.reason, "build_s": round(survey.sweep.seconds, 4), "views": survey.sweep.frames, **s}
 
     def _sensors(self) -> dict:
@@ -449,7 +476,7 @@ class Session:
             "surveys": len(out.surveys),
             "ticks": out.ticks,
             "vlm_queries": vlm.total,
-            "verifications": [v.to_json() for v in ctx.verifications],
+            "verifications": [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications],
             "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints},
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],

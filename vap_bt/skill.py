@@ -52,14 +52,21 @@ class Hint:
     position: tuple[float, float, float] | None = None
     on: str | None = None
     inside: str | None = None
+    #: m: how far from ``position`` belief allows the object to be (a measured centroid: a few
+    #: cm; believed on a table: anywhere on its top); the skill names the object in its own
+    #: frames within it (:mod:`vap_bt.scene.identity`)
+    radius: float | None = None
 
     def to_json(self) -> dict:
-        return {"name": self.name, "position": self.position, "on": self.on, "inside": self.inside}
+        return {"name": self.name, "position": self.position, "on": self.on, "inside": self.inside,
+                "radius": self.radius}
 
     @classmethod
     def from_json(cls, d: dict) -> "Hint":
         p = d.get("position")
-        return cls(d["name"], None if p is None else tuple(map(float, p)), d.get("on"), d.get("inside"))
+        r = d.get("radius")
+        return cls(d["name"], None if p is None else tuple(map(float, p)), d.get("on"), d.get("inside"),
+                   None if r is None else float(r))
 
 
 @dataclass

@@ -82,7 +82,7 @@ class FactWorld:
         self.view += 1
         return Frame(
             frame_id=f"facts-{self.view}", stamp=float(self.view),
-            detections=(Detection("cup", "cup", pixels=4, mask_id=7),),
+            detections=(Detection("cup", pixels=4, mask_id=7),),
             rgb=np.arange(h * w * 3, dtype=np.uint8).reshape(h, w, 3),
             depth=np.linspace(0.5, 2.0, h * w, dtype=np.float32).reshape(h, w),
             masks=masks, intrinsics=(500.0, 500.0, 3.0, 2.0), camera_pose=np.eye(4),

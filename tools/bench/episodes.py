@@ -31,7 +31,7 @@ def main() -> int:
     args = ap.parse_args()
     tasks = [taskfile.load(f) for f in sorted((ROOT / "trees").glob("*.yaml"))]
     t0 = time.perf_counter()
-    sessions = [Session(t, RunConfig.from_task(t, world="symbolic", vlm_error=0.05, verify=args.verify)) for t in tasks]
+    sessions = [Session(t, RunConfig.from_task(t, world="symbolic", vlm_noise=1.0, verify=args.verify)) for t in tasks]
     for s in sessions:  # one cold episode per task: the Fast Downward call and grounding
         s.episode(10_000)
     cold = time.perf_counter() - t0

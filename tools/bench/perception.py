@@ -2,7 +2,7 @@
 
 Every episode runs with the simulated VLM behind its local OpenAI-compatible endpoint
 (``--vlm sim-http``: the openai client end to end, the same answers as in-process), Table II
-injection on, VLM error 0.05, in-process skills. Per task and seed, one run each of
+injection on, the simulated model vlm-2 (docs/perception.md), in-process skills. Per task and seed, one run each of
 
 * ``paper`` — the paper's Alg. 2 (every paraphrase, one after the other, then sufficiency);
 * ``lean-nolp`` — the lean protocol against a backend that returns no logprobs (the client does
@@ -10,6 +10,8 @@ injection on, VLM error 0.05, in-process skills. Per task and seed, one run each
 * ``lean`` — the lean protocol with logprobs (one confident answer stands for the vote);
 * ``greedy`` — the paper's protocol with greedy viewpoints (predefined ones around the target),
   against ``paper``'s VLM-suggested ones (the paper's H2);
+* ``one-look`` — the paper's protocol believing the first settled view of a surprise or a goal,
+  as Alg. 2 does (the executive's default looks a second time from a new picture);
 
 and, for the first ``--wall-seeds`` seeds, ``paper`` and ``lean`` again with ``--latency`` seconds
 (0.3) added by the endpoint to every request: the VLM wall time per action (time with a query in
@@ -50,7 +52,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+from tools.bench.intervals import wilson  # noqa: E402
 from vap_bt.report import versions  # noqa: E402
+from vap_bt.sim.observability import RELATION_CLASS  # noqa: E402
 
 #: name -> RunConfig overrides (besides world, seed, vlm="sim-http", transport="inproc")
 CONFIGS = {
@@ -58,10 +62,11 @@ CONFIGS = {
     "lean-nolp": {"protocol": "lean", "vlm_logprobs": False},
     "lean": {"protocol": "lean"},
     "greedy": {"protocol": "paper", "viewpoints": "greedy"},
+    "one-look": {"protocol": "paper", "second_look": False},
 }
 TIMED = ("paper", "lean")  # rerun with the endpoint's latency
 LABELS = {"paper": "paper", "lean-nolp": "lean without logprobs", "lean": "lean with logprobs",
-          "greedy": "paper, greedy viewpoints"}
+          "greedy": "paper, greedy viewpoints", "one-look": "paper, one look (Alg. 2)"}
 
 
 @dataclass(frozen=True)
@@ -100,16 +105,56 @@ def _run(unit: Unit) -> dict:
     from vap_bt.runner import RunConfig, Session
 
     task = taskfile.load(ROOT / "trees" / f"{unit.task}.yaml")
-    cfg = RunConfig.from_task(task, world=unit.world, vlm=unit.vlm, transport="inproc", vlm_error=0.05,
+    cfg = RunConfig.from_task(task, world=unit.world, vlm=unit.vlm, transport="inproc", vlm_noise=1.0,
                               vlm_latency=unit.latency, **CONFIGS[unit.config])
     t0 = time.perf_counter()
     session = Session(task, cfg)
     try:
         rep = session.episode(unit.seed)
+        model = session.endpoint.vlm if session.endpoint is not None else session.vlm
+        judged = judgements(model.ledger)
     finally:
         session.close()
     return {"task": unit.task, "seed": unit.seed, "config": unit.config, "latency": unit.latency, "vlm": unit.vlm,
-            "run_s": round(time.perf_counter() - t0, 2), **figures(rep)}
+            "run_s": round(time.perf_counter() - t0, 2), **figures(rep), "judged": judged}
+
+
+#: observability bands of the single-view accuracy table (docs/perception.md)
+BANDS = (0.0, 0.25, 0.5, 0.75, 1.01)
+#: stated-probability bins of the calibration curve
+BINS = tuple(0.5 + 0.05 * k for k in range(11))
+
+
+def band(o: float) -> str:
+    k = next(i for i in range(len(BANDS) - 1) if o < BANDS[i + 1])
+    return f"{BANDS[k]:.2f}-{min(BANDS[k + 1], 1.0):.2f}"
+
+
+def judgements(ledger) -> dict:
+    """The simulated model's yes/no answers of one episode against the truth at capture (world
+    side: every answer the model gave, measured, not assumed): per relation class and
+    observability band [right, answered, abstained]; the calibration bins [answers, stated sum,
+    right]; the sufficiency answers by [said yes when sufficient, sufficient, said yes when not, not]."""
+    table, calib, suff = defaultdict(lambda: [0, 0, 0]), defaultdict(lambda: [0, 0.0, 0]), [0, 0, 0, 0]
+    for j in ledger:
+        if j.purpose == "sufficiency":
+            i = 0 if j.truth else 2
+            suff[i] += bool(j.answer)
+            suff[i + 1] += 1
+            continue
+        cell = table[f"{j.relation}|{band(j.observability)}"]
+        if j.answer is None:
+            cell[2] += 1
+            continue
+        right = j.answer == j.truth
+        cell[0] += right
+        cell[1] += 1
+        if j.confidence is not None:
+            b = calib[min(int((j.confidence - 0.5) / 0.05), 9)]
+            b[0] += 1
+            b[1] += j.confidence
+            b[2] += right
+    return {"table": dict(table), "calibration": {str(k): v for k, v in calib.items()}, "sufficiency": suff}
 
 
 def figures(rep: dict) -> dict:
@@ -124,7 +169,18 @@ def figures(rep: dict) -> dict:
     decided = [v for v in uncertain if v["outcome"] in ("confirmed", "contradicted")]
     resolved = [v for v in decided if v["rounds"][-1]["consistent"] and v["rounds"][-1]["sufficient"]]
     pv = rep["perception"]["verifications"]
+    first, settled = defaultdict(lambda: [0, 0]), defaultdict(lambda: [0, 0])
+    for v in rep["verifications"]:
+        relation = RELATION_CLASS.get(v["predicate"].split("(")[0], "other")
+        vote = v["rounds"][0]["vote"] if v["rounds"] else None
+        if vote is not None and "first_truth" in v:  # the first view's majority vote, against its capture
+            first[relation][0] += vote == v["first_truth"]
+            first[relation][1] += 1
+        if v["outcome"] in SETTLED and "truth" in v:  # the value the check settled on, when it settled
+            settled[relation][0] += v["value"] == v["truth"]
+            settled[relation][1] += 1
     return {
+        "first_view": dict(first), "settled": dict(settled),
         "success": bool(rep["success"] and rep["goal_satisfied"]), "claimed": bool(rep["success"]),
         "goal_satisfied": bool(rep["goal_satisfied"]), "reason": rep["reason"],
         "actions": len(rep["actions_executed"]), "queries": rep["vlm_queries"],
@@ -140,12 +196,8 @@ def figures(rep: dict) -> dict:
     }
 
 
-def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
-    if n == 0:
-        return 0.0, 1.0
-    p = k / n
-    mid, half = (p + z * z / (2 * n)), z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
-    return (mid - half) / (1 + z * z / n), (mid + half) / (1 + z * z / n)
+#: outcomes of a check that settled a value by looking (not reused from earlier, not felt)
+SETTLED = ("confirmed", "contradicted")
 
 
 #: resamples for the bootstrap intervals of the viewpoint figures (seeded: the bench is reproducible)
@@ -174,6 +226,48 @@ def bootstrap(pairs: list[tuple[dict, dict]], seed: int = 0) -> tuple[float, flo
     return diffs[int(0.025 * len(diffs))], diffs[min(len(diffs) - 1, int(0.975 * len(diffs)))]
 
 
+def _merged(rows: list[dict], key: str) -> dict[str, list]:
+    """Per-relation counts of ``key`` summed over rows."""
+    out: dict[str, list] = defaultdict(lambda: [0, 0])
+    for r in rows:
+        for rel, (k, n) in r[key].items():
+            out[rel][0] += k
+            out[rel][1] += n
+    return out
+
+
+def _accuracy(counts: dict[str, list]) -> dict:
+    """Per relation and over all: [right, n, accuracy, Wilson 95 % interval]."""
+    total = [sum(c[0] for c in counts.values()), sum(c[1] for c in counts.values())]
+    return {rel: [k, n, round(k / n, 4) if n else None, [round(x, 4) for x in wilson(k, n)]]
+            for rel, (k, n) in sorted({**counts, "all": total}.items())}
+
+
+def model_figures(rows: list[dict]) -> dict:
+    """The simulated model measured over every answer of ``rows``' episodes: single-view accuracy
+    per relation and observability band, the calibration curve and its expected calibration
+    error, and how its sufficiency answers split."""
+    table, calib, suff = defaultdict(lambda: [0, 0, 0]), defaultdict(lambda: [0, 0.0, 0]), [0, 0, 0, 0]
+    for r in rows:
+        for cell, counts in r["judged"]["table"].items():
+            table[cell] = [a + b for a, b in zip(table[cell], counts)]
+        for b, counts in r["judged"]["calibration"].items():
+            calib[b] = [a + x for a, x in zip(calib[b], counts)]
+        suff = [a + b for a, b in zip(suff, r["judged"]["sufficiency"])]
+    answered = sum(c[0] for c in calib.values())
+    ece = sum(abs(c[1] / c[0] - c[2] / c[0]) * c[0] / answered for c in calib.values() if c[0]) if answered else math.nan
+    return {"single_view": {cell: [k, n, a, round(k / n, 4) if n else None, [round(x, 4) for x in wilson(k, n)]]
+                            for cell, (k, n, a) in sorted(table.items())},
+            "calibration": {f"{0.5 + 0.05 * int(b):.2f}": {"answers": c[0], "stated": round(c[1] / c[0], 4),
+                                                           "accuracy": round(c[2] / c[0], 4)}
+                            for b, c in sorted(calib.items(), key=lambda x: int(x[0])) if c[0]},
+            "ece": round(ece, 4),
+            "sufficiency": {"said_sufficient_when_sufficient": round(suff[0] / suff[1], 4) if suff[1] else None,
+                            "sufficient": suff[1],
+                            "said_sufficient_when_not": round(suff[2] / suff[3], 4) if suff[3] else None,
+                            "insufficient": suff[3]}}
+
+
 def pooled(rows: list[dict]) -> dict:
     s = lambda key: sum(r[key] for r in rows)  # noqa: E731
     actions = s("actions")
@@ -187,6 +281,7 @@ def pooled(rows: list[dict]) -> dict:
             "unanswered": s("unanswered"),
             "vlm_wall_s": s("vlm_wall_s"), "wall_per_action": s("vlm_wall_s") / actions if actions else math.nan,
             "checks_wall_per_action": (s("vlm_wall_s") - s("survey_wall_s")) / actions if actions else math.nan,
+            "first_view": _accuracy(_merged(rows, "first_view")), "settled": _accuracy(_merged(rows, "settled")),
             "uncertain": s("uncertain"), "resolved": s("resolved"), "agreed": s("agreed"),
             "viewpoints_per_resolution": _per_resolution(rows),
             "moves_per_resolution_all": s("moves_uncertain") / s("resolved") if s("resolved") else math.nan}
@@ -271,6 +366,7 @@ def summarise(all_rows: list[dict], args) -> dict:
     pairs = [(e["paper"], e["greedy"]) for e in by_episode.values() if len(e) == 2]
     ratio = lambda a, b: a / b if b else math.nan  # noqa: E731
     return {
+        "model": model_figures([r for r in rows if not r["latency"]]),
         "plain": plain, "timed": timed, "latency_reruns_same": [same, len(reruns)],
         "in_process_same": [same_inproc, len(inproc)],
         # VLM-guided minus greedy viewpoints per resolution, and its interval over the episodes both ran
@@ -283,6 +379,8 @@ def summarise(all_rows: list[dict], args) -> dict:
                    "lean_checks_wall": ratio(timed["lean"]["checks_wall_per_action"],
                                              timed["paper"]["checks_wall_per_action"])},
         "targets": {
+            "first_view_accuracy<0.97": p["first_view"]["all"][3][1] < 0.97,
+            "settled_above_first_view": p["settled"]["all"][3][0] > p["first_view"]["all"][3][1],
             "lean_nolp_round_trips<=1/2": ratio(nolp["per_action"], p["per_action"]) <= 0.5,
             "lean_round_trips<=1/4": ratio(lean["per_action"], p["per_action"]) <= 0.25,
             "lean_nolp_accuracy>=paper": nolp["accuracy"] >= p["accuracy"],
@@ -291,6 +389,10 @@ def summarise(all_rows: list[dict], args) -> dict:
             "vlm_viewpoints<=1.5": p["viewpoints_per_resolution"] <= 1.5,
             "vlm_viewpoints<greedy": p["viewpoints_per_resolution"] < greedy["viewpoints_per_resolution"]},
     }
+
+
+def _pct(x) -> str:
+    return "   -  " if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:6.3f}"
 
 
 def print_summary(s: dict, args) -> None:
@@ -307,6 +409,24 @@ def print_summary(s: dict, args) -> None:
     r = s["ratios"]
     print(f"round trips per action vs paper: lean without logprobs {r['lean_nolp_round_trips']:.3f}, "
           f"with logprobs {r['lean_round_trips']:.3f}")
+    print("\naccuracy per relation: the first view's vote (against the truth at its capture) and the value a "
+          "check settled on by looking (confirmed or contradicted), Wilson 95 % intervals")
+    for c, label in LABELS.items():
+        x = plain[c]
+        for rel in sorted(set(x["first_view"]) | set(x["settled"])):
+            f, t = x["first_view"].get(rel, [0, 0, None, [0, 1]]), x["settled"].get(rel, [0, 0, None, [0, 1]])
+            print(f"  {label:26s} {rel:8s} first view {f[0]:5d}/{f[1]:<5d} {_pct(f[2])} [{f[3][0]:.3f}-{f[3][1]:.3f}]"
+                  f"   settled {t[0]:5d}/{t[1]:<5d} {_pct(t[2])} [{t[3][0]:.3f}-{t[3][1]:.3f}]")
+    m = s["model"]
+    print(f"\nthe simulated model over every answer ({sum(v[1] for v in m['single_view'].values())} answered): "
+          f"single-view accuracy per relation and observability band")
+    for cell, (k, n, a, acc, ci) in m["single_view"].items():
+        rel, b = cell.split("|")
+        print(f"  {rel:8s} o {b}  {k:5d}/{n:<5d} {_pct(acc)} [{ci[0]:.3f}-{ci[1]:.3f}]  abstained {a}")
+    print(f"  calibration (stated -> accuracy): " + ", ".join(f"{v['stated']:.2f}->{v['accuracy']:.2f} ({v['answers']})"
+                                                           for v in m["calibration"].values()))
+    print(f"  expected calibration error {m['ece']:.3f}; sufficiency said 'yes' for {_pct(m['sufficiency']['said_sufficient_when_sufficient'])} "
+          f"of sufficient views and {_pct(m['sufficiency']['said_sufficient_when_not'])} of insufficient ones")
     print(f"\nVLM wall time per action at {args.latency * 1000:.0f} ms/request "
           f"(checks only: without the survey's sequential questions):")
     for c in TIMED:

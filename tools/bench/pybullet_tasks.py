@@ -18,6 +18,9 @@ as of the other.
 
 Targets (issue: skills that move the robot): over 20 seeds per task, without injection >= 95 %
 on every task; with injection >= 80 % on average; 0 false successes; median episode <= 30 s.
+Issue "Perception that can fail" (the simulated VLM vlm-2, the detector and sensors that err):
+without injection >= 95 %, with injection >= 75 %, claimed successes the world denies with their
+rate and Wilson 95 % interval (target 0; printed below the table).
 """
 
 from __future__ import annotations
@@ -33,6 +36,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
+
+from tools.bench.intervals import wilson  # noqa: E402
 
 
 def episode(job: tuple[str, bool, int, str]) -> dict:
@@ -54,11 +59,16 @@ def episode(job: tuple[str, bool, int, str]) -> dict:
         return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol,
                 "world_success": False, "claimed": False,
                 "wall_s": time.perf_counter() - t0, "reason": f"crashed: {type(exc).__name__}: {exc}",
-                "actions": 0, "replans": 0, "injected": 0}
+                "actions": 0, "replans": 0, "injected": 0, "looked": 0, "looked_right": 0, "graph": None}
     return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol,
             "world_success": bool(rep["goal_satisfied"]),
             "claimed": bool(rep["success"]), "wall_s": rep["wall_s"], "reason": rep["reason"],
-            "actions": len(rep["actions_executed"]), "replans": rep["replans"], "injected": len(rep["injected"])}
+            "actions": len(rep["actions_executed"]), "replans": rep["replans"], "injected": len(rep["injected"]),
+            # how well the robot perceived, against the oracle: checks settled by looking that matched
+            "looked": sum(v["outcome"] in ("confirmed", "contradicted") for v in rep["verifications"]),
+            "looked_right": sum(v["outcome"] in ("confirmed", "contradicted") and v["value"] == v.get("truth")
+                                for v in rep["verifications"]),
+            "graph": (rep["perception"]["graph"]["initial"] or {}).get("relations_perceived")}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -127,6 +137,17 @@ def table(rows: list[dict]) -> None:
             t = [r for r in sub if r["task"] == task]
             rates.append(_row(task, inj, t))
         _row("all", inj, sub, statistics.mean(rates))
+        claimed = [r for r in sub if r["claimed"]]
+        false = sum(not r["world_success"] for r in claimed)
+        lo, hi = wilson(false, len(claimed))
+        lo_all, hi_all = wilson(false, len(sub))
+        looked, right = sum(r["looked"] for r in sub), sum(r["looked_right"] for r in sub)
+        lo_v, hi_v = wilson(right, looked)
+        print(f"  injection {'on' if inj else 'off'}: checks settled by looking that matched the world {right} of "
+              f"{looked} ({right / looked if looked else 0:.3f}, 95 % interval {lo_v:.3f}-{hi_v:.3f})")
+        print(f"  injection {'on' if inj else 'off'}: claimed successes the world denies {false} of {len(claimed)} claimed "
+              f"({false / len(claimed) if claimed else 0:.1%}, 95 % interval {lo:.1%}-{hi:.1%}); of all episodes "
+              f"{false} of {len(sub)} ({lo_all:.1%}-{hi_all:.1%})")
 
 
 def _row(name: str, inj: bool, t: list[dict], rate: float | None = None) -> float:

@@ -65,7 +65,7 @@ def main() -> int:
     progress = Progress(len(paths) * args.seeds, "episodes")
     for f in paths:
         task = taskfile.load(f)
-        s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_error=0.05))
+        s = Session(task, RunConfig.from_task(task, world="symbolic", vlm_noise=1.0))
         s.planner = RecordingPlanner(task.planning)
         for seed in range(args.seeds):
             r = s.episode(seed)

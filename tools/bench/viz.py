@@ -49,7 +49,7 @@ class TimedRecorder:
 
 
 def episodes(tasks, n: int, recorder=None) -> float:
-    sessions = [Session(t, RunConfig.from_task(t, world="symbolic", vlm_error=0.05, transport="inproc"),
+    sessions = [Session(t, RunConfig.from_task(t, world="symbolic", vlm_noise=1.0, transport="inproc"),
                         recorder=recorder) for t in tasks]
     for s in sessions:  # warm the planner caches outside the timing, both ways alike
         s.episode(10_000)

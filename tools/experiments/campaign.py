@@ -7,7 +7,7 @@ Per task: success (the executive claims it and the world agrees), false successe
 world denies), situations detected, replans, re-surveys, VLM queries per executed action, and the
 episode rate. Only the runner's report reads the world's truth; the executive perceives.
 
-    python tools/experiments/campaign.py [--seeds 50] [--vlm-error 0.05] [--out docs/figures/campaign.json]
+    python tools/experiments/campaign.py [--seeds 50] [--vlm-noise 1] [--out docs/figures/campaign.json]
 
 ``--code DIR`` runs another checkout's code with this script (the campaign uses only the task
 files, ``RunConfig.from_task``, ``Session.episode`` and report keys that every version has), so a
@@ -32,7 +32,7 @@ from tools.progress import Progress  # noqa: E402
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=50)
-    ap.add_argument("--vlm-error", type=float, default=0.05)
+    ap.add_argument("--vlm-noise", type=float, default=1.0)
     ap.add_argument("--verify", default="both")
     ap.add_argument("--code", default=str(Path(__file__).resolve().parents[2]), help="checkout whose code runs")
     ap.add_argument("--out", help="write per-episode rows and the summary here (JSON)")
@@ -49,7 +49,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"{'task':18s} {'success':>8s} {'false':>5s} {'situations':>10s} {'replans':>7s} {'q/action':>8s}")
     for path in paths:
         task = taskfile.load(path)
-        session = Session(task, RunConfig.from_task(task, world="symbolic", vlm_error=args.vlm_error,
+        session = Session(task, RunConfig.from_task(task, world="symbolic", vlm_noise=args.vlm_noise,
                                                     verify=args.verify))
         mine = []
         for seed in range(args.seeds):
@@ -70,7 +70,7 @@ def main(argv: list[str] | None = None) -> int:
     summary = {"episodes": len(rows), "success": sum(r["success"] for r in rows) / len(rows),
                "false_successes": sum(r["false_success"] for r in rows),
                "episodes_per_min": len(rows) / wall * 60, "wall_s": wall, "code": str(root),
-               "command": " ".join(["python", *sys.argv]), "seeds": args.seeds, "vlm_error": args.vlm_error,
+               "command": " ".join(["python", *sys.argv]), "seeds": args.seeds, "vlm_noise": args.vlm_noise,
                "verify": args.verify}
     print(f"\n{len(rows)} episodes: success {summary['success']:.1%}, false successes "
           f"{summary['false_successes']}, {summary['episodes_per_min']:.0f} episodes/min (incl. every task's "

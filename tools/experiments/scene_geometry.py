@@ -76,7 +76,7 @@ def capture(world: PybulletWorld, eye, target, frame_id: str) -> Frame:
     for body, name in world.scene.by_body().items():
         if world.types.get(name) != "room" and not name.startswith("floor_"):
             masks[r.bodies == body] = ids[name]
-    dets = tuple(Detection(n, n, int(c), mask_id=i) for n, i in ids.items()
+    dets = tuple(Detection(n, int(c), mask_id=i, name=n) for n, i in ids.items()
                  if (c := np.count_nonzero(masks == i)) >= r.pixel_threshold())
     return Frame(frame_id, 0.0, dets, depth=r.depth, masks=masks, intrinsics=r.intrinsics, camera_pose=r.pose)
 

@@ -5,7 +5,7 @@ Writes a CSV with every episode, a JSON with the parameters needed to rerun, and
 Success counts only when the world agrees (``success and goal_satisfied``). Progress (episodes
 done, rate, time left) goes to stderr.
 
-    python tools/experiments/verification_ablation.py --seeds 50 --vlm-error 0.05 --out docs/figures
+    python tools/experiments/verification_ablation.py --seeds 50 --vlm-noise 1 --out docs/figures
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ LABELS = {"both": "both (full)", "eff": "effects only", "pre": "preconditions on
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--seeds", type=int, default=50)
-    ap.add_argument("--vlm-error", type=float, default=0.05)
+    ap.add_argument("--vlm-noise", type=float, default=1.0)
     ap.add_argument("--out", default="docs/figures")
     args = ap.parse_args()
     out = Path(args.out)
@@ -47,7 +47,7 @@ def main() -> int:
     progress = Progress(len(tasks) * len(MODES) * args.seeds, "episodes")
     for task in tasks:
         for mode in MODES:
-            s = Session(task, RunConfig.from_task(task, world="symbolic", verify=mode, vlm_error=args.vlm_error,
+            s = Session(task, RunConfig.from_task(task, world="symbolic", verify=mode, vlm_noise=args.vlm_noise,
                                                   planner="search"))
             for seed in range(args.seeds):
                 r = s.episode(seed)
@@ -63,7 +63,7 @@ def main() -> int:
     rate = {(t.name, m): np.mean([r["success"] for r in rows if r["task"] == t.name and r["mode"] == m])
             for t in tasks for m in MODES}
     meta = {"command": " ".join(["python", *sys.argv]), "seeds": args.seeds, "vlm": "symbolic",
-            "vlm_error": args.vlm_error, "injection": "Table II", "world": "symbolic", "versions": versions(),
+            "vlm_noise": args.vlm_noise, "injection": "Table II", "world": "symbolic", "versions": versions(),
             "success_rate": {m: round(float(np.mean([rate[(t.name, m)] for t in tasks])), 4) for m in MODES}}
     (out / "verification_ablation.json").write_text(json.dumps(meta, indent=2) + "\n")
     _plot(tasks, rate, meta, out / "verification_ablation.png")
@@ -82,7 +82,7 @@ def _plot(tasks, rate, meta, path: Path) -> None:
     ax.set_xticks(x, names, fontsize=8)
     ax.set_ylabel("success (world's truth), %")
     ax.set_ylim(0, 105)
-    ax.set_title(f"Verification ablation, symbolic world, Table II injection, VLM error {meta['vlm_error']}, "
+    ax.set_title(f"Verification ablation, symbolic world, Table II injection, VLM noise {meta['vlm_noise']}, "
                  f"{meta['seeds']} seeds per bar", fontsize=10)
     ax.legend(ncol=4, fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.2), frameon=False)
     ax.grid(axis="y", alpha=0.3)

@@ -14,7 +14,13 @@ VLM's suggestion about the last frame, or the next of the greedy round), and the
 flight like any other; the child is not ticked meanwhile. A direction the robot cannot move to
 is replaced at once by another (a frame from the same spot would show the same picture), and
 when no direction is left, or the check is about the hand or what it holds (the wrist camera
-moves with the hand: no base move shows it better), the views so far are all there are. With
+moves with the hand: no base move shows it better), the views so far are all there are. Beyond
+the paper (``ctx.second_look``, on by default): a *surprise* — a value against the plan's
+expectation — and a *goal* value need a second view from a different picture that agrees (its
+answers consistent, sufficient or not; for a goal atom found to hold, two settled views, or one
+and two more agreeing) while the
+budget allows a move, since a model's errors are shared by every question about one picture; a goal
+atom that the budget leaves with fewer settled views is unsettled (success is never claimed on one). With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
 atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
 way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper
@@ -25,7 +31,8 @@ An unsettled *goal* atom withholds the executive's claim of success (the executi
 it and checks the goal again: :func:`~vap_bt.bt.executive.unconfirmed_goal`); an unsettled effect lets the
 plan go on (the next action's preconditions are checked before it acts); an unsettled
 *precondition* first asks the body (``ctx.felt``: the gripper knows whether it holds
-something), then follows the context's ``unseen`` policy — by default it is a situation of kind
+something; where it is sure — the hand empty or not, an empty hand holding nothing — it also
+overrules a camera that settled otherwise), then follows the context's ``unseen`` policy — by default it is a situation of kind
 ``unseen``: the action does not run, the executive looks for what the check was about and
 replans. Under the lean protocol an atom verified earlier, that no action since could have
 changed, is not asked again (``ctx.verified``).
@@ -42,7 +49,7 @@ from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.perception.verification import Round, choice, target_of, verdict
+from vap_bt.perception.verification import Round, Verdict, choice, target_of, verdict
 
 
 class ActivePerception(py_trees.decorators.Decorator):
@@ -108,7 +115,12 @@ class ActivePerception(py_trees.decorators.Decorator):
         return not self.atom.args or Atom("holding", self.atom.args[:1]) in self.ctx.graph.facts
 
     def _decide(self, exhausted: bool) -> Status:
-        v = verdict(self.rounds, exhausted)
+        v = verdict(self._evidence(), exhausted)
+        if v is not None and v.outcome != "unsettled" and self._look_twice(v.value):
+            if not exhausted:
+                v = None  # one picture is one draw of the model's errors: another view before believing it
+            elif self.phase == "goal" and v.value:
+                v = Verdict(v.value, "unsettled")  # success is never claimed on one view
         if v is None:
             r = self.rounds[-1]
             question = r.questions[0] if r.questions else self.ctx.profile.questions(self.atom, 1)[0]
@@ -117,12 +129,42 @@ class ActivePerception(py_trees.decorators.Decorator):
                 return self._move(nxt)
             self._job, self._stage = self.ctx.submit(self.ctx.vlm.ask, nxt, self.verify.observation), "choose"
             return Status.RUNNING
+        felt = self.ctx.felt(self.ctx.graph, self.atom)
         if v.outcome == "unsettled":
-            felt = self.ctx.felt(self.ctx.graph, self.atom)
             if felt is not None:  # the camera could not tell; the gripper can
                 return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted")
             return self._settle(self.verify.expected, "unsettled")
+        if felt is not None and felt != v.value and (felt is False or not self.atom.args):
+            # the gripper is surer than a camera where it can be: fingers that closed on nothing
+            # hold nothing, and whether the hand is empty at all is theirs to say
+            return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted")
         return self._settle(v.value, "confirmed" if v.value == self.verify.expected else "contradicted")
+
+    def _look_twice(self, value: bool) -> bool:
+        """Whether a value one view gave needs a second view from a new picture first: a surprise
+        (it would correct belief and make the robot replan) or a goal (success would be claimed on
+        it), when the context asks for second looks. A model's errors belong to the picture — its
+        five paraphrases can agree and be wrong — so only another view is a second opinion
+        (docs/perception.md): one more view that showed the atom's objects and whose answers
+        agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
+        success will be claimed, two views the model judged sufficient, or one and two more whose
+        answers agreed."""
+        if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal"):
+            return False
+        rounds = self._evidence()
+        agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in rounds)
+        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
+            settled = sum(r.settled and r.vote == value for r in rounds)
+            return not (settled >= 2 or settled >= 1 and agreeing >= 3)
+        return agreeing < 2
+
+    def _evidence(self) -> list[Round]:
+        """The views this check weighs: its own; for a goal atom also those earlier checks judged
+        it on since the last action that could change it (a cup confirmed filled at the sink,
+        whose inside no view into the microwave shows, is still filled)."""
+        if self.phase != "goal":
+            return self.rounds
+        return [*(r for r in self.ctx.verified.views(self.atom) if not any(r is o for o in self.rounds)), *self.rounds]
 
     def _chosen(self) -> Status:
         if not self._job.done():
@@ -170,6 +212,7 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     def _settle(self, value: bool, outcome: str) -> Status:
         v = self.verify
+        self.ctx.verified.saw(v.atom, self.rounds)
         self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
                                                    v.atom, v.expected, value, outcome, list(self.rounds)))
         self.ctx.record(self.ctx.verifications[-1])
@@ -177,7 +220,8 @@ class ActivePerception(py_trees.decorators.Decorator):
             self.ctx.verified.remember(v.atom, value)
         if self.phase == "goal" and outcome == "unsettled":
             self.ctx.unconfirmed_goal.append(v.atom)
-        if outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on":
+        if outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on" \
+                and v.atom not in self.ctx.on_belief:
             self.ctx.situation = Situation("unseen", self.action, self.step, v.atom, v.expected, None,
                                            detail=f"could not see whether {v.atom} holds")
             self.ctx.progress(f"    situation: could not see {'' if v.expected else 'not '}{v.atom}")

@@ -108,13 +108,20 @@ class Verified:
     include one of the atom's objects, or one of whose effects (conditional ones included) could
     add or delete that atom; the hand's atoms (no arguments, or ``holding``) go after every
     action, as the hand can lose things on any move. Disabled (always empty) unless the protocol
-    reuses."""
+    reuses.
+
+    It also keeps the views each atom was judged on (:meth:`saw`), for the goal's second opinion
+    (:class:`~vap_bt.bt.active_perception.ActivePerception`): those live, whatever the protocol,
+    until an executed action's effects could change the atom (the planner's own frame assumption;
+    the hand's atoms after every action) — a cup confirmed filled at the sink is still filled in
+    the microwave, where no view shows its inside."""
 
     HAND = frozenset({"holding", "hand_empty"})
 
     def __init__(self, enabled: bool = False) -> None:
         self.enabled = enabled
         self._values: dict[Atom, bool] = {}
+        self._rounds: dict[Atom, list[Round]] = {}
 
     def get(self, atom: Atom) -> bool | None:
         return self._values.get(atom) if self.enabled else None
@@ -123,11 +130,24 @@ class Verified:
         if self.enabled:
             self._values[atom] = value
 
+    def saw(self, atom: Atom, rounds) -> None:
+        """``atom`` was judged on ``rounds`` (one per frame) by one check."""
+        known = self._rounds.setdefault(atom, [])
+        known += [r for r in rounds if not any(r is k for k in known)]
+
+    def views(self, atom: Atom) -> list[Round]:
+        """The rounds ``atom`` was judged on since the last action that could have changed it."""
+        return list(self._rounds.get(atom, ()))
+
     def executed(self, action: GroundAction) -> None:
         """``action`` ran (or tried to): forget what it could have changed."""
         args, changed = set(action.args), action.may_add | action.may_delete
-        self._values = {a: v for a, v in self._values.items()
-                        if not (args & set(a.args) or a in changed or a.predicate in self.HAND or not a.args)}
+
+        def changeable(a: Atom) -> bool:
+            return a in changed or a.predicate in self.HAND or not a.args
+
+        self._values = {a: v for a, v in self._values.items() if not (args & set(a.args) or changeable(a))}
+        self._rounds = {a: r for a, r in self._rounds.items() if not changeable(a)}
 
 
 @dataclass
@@ -158,6 +178,11 @@ class ExecutionContext:
     hints: Callable[[SceneGraph, tuple[str, ...]], tuple] = lambda graph, names: ()
     protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
     viewpoints: ViewpointStrategy = field(default_factory=ViewpointStrategy)
+    #: a surprise or a goal value needs a second agreeing view from another picture (beyond the paper)
+    second_look: bool = True
+    #: preconditions the camera could not make out however often the robot looked again: it acts on
+    #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
+    on_belief: set[Atom] = field(default_factory=set)
     verified: Verified = field(default_factory=Verified)
     #: where work in flight runs (a thread pool against a remote model; inline in-process)
     executor: Executor = field(default_factory=InlineExecutor)

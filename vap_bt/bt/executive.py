@@ -25,13 +25,18 @@ A goal given in words is read between the survey and the first plan (paper Alg. 
 
 The executive talks only to protocols — skills (:class:`~vap_bt.skill.SkillClient`), the camera
 service and the body (:mod:`vap_bt.robot.camera`), a VLM — and to the task file's words; it never
-sees a world or its truth. Every way an episode ends halts the tree (``root.stop``), so no goal
+sees a world or its truth. Its detector reports class labels, not which object each detection is:
+every frame it captures is identified first against current belief
+(:class:`~vap_bt.scene.identity.IdentifyingCamera`: the map names its furniture and doors, the
+gripper what it holds, belief's positions the items, and an object belief places nowhere — one
+it is looking for — is taken where it is first seen). Every way an episode ends halts the tree (``root.stop``), so no goal
 is left in flight.
 """
 
 from __future__ import annotations
 
 import time
+from collections import Counter
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -56,10 +61,16 @@ from vap_bt.robot.camera import Aim, Body, Camera
 from vap_bt.scene import belief
 from vap_bt.scene.builder import GEOMETRIC_PREDICATES, Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph
+from vap_bt.scene.identity import Identifier, IdentifyingCamera
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.labels import label_of
 from vap_bt.skill import SkillClient
 
 #: PDDL types whose objects are placed somewhere (and so can be lost track of)
 PORTABLE_TYPES = ("item",)
+#: times an observation that leaves no plan is doubted and looked at again before it stands: a
+#: settled check errs now and then (docs/perception.md), two more from new pictures seldom all do
+MAX_DOUBTS = 2
 #: the perception predicate that says the robot is placed to act on a thing; a skill that failed
 #: to act from where the robot stands makes these beliefs stale, so the new plan re-approaches
 VIEW_PREDICATE = "inview"
@@ -78,6 +89,9 @@ class ExecutiveSettings:
     unseen: str = "look"  # what an unsettled precondition does (see vap_bt.bt.context.UnseenPolicy)
     protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
     viewpoints: str = "vlm"  # where to look from next: the VLM's suggestion, or the greedy round
+    #: a surprise or a goal value needs a second settled view from a new picture (beyond the
+    #: paper's Alg. 2, which takes the first: see vap_bt.bt.active_perception)
+    second_look: bool = True
     #: work in flight on a thread pool (a remote model or robot); False: done at once, in-process
     threads: bool = False
 
@@ -124,8 +138,12 @@ class Executive:
                  on_verification: Callable[[Verification], None] | None = None,
                  goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None,
                  profile: PerceptionProfile | None = None) -> None:
-        self.task, self.planner, self.skills, self.camera, self.body, self.vlm = \
-            task, planner, skills, camera, body, vlm
+        self.task, self.planner, self.skills, self.body, self.vlm = task, planner, skills, body, vlm
+        #: every frame is identified against belief before anything reads it (see the module docstring)
+        self.camera = IdentifyingCamera(camera, self._identify)
+        self.graph: SceneGraph | None = None  # belief, once the first survey has built it
+        self._prior_graph = SceneGraph.of_facts(prior)  # what the task file says, until then
+        self._searching: set[str] = set()  # objects being looked for: placed nowhere
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
@@ -154,6 +172,7 @@ class Executive:
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
+                               second_look=self.s.second_look,
                                verified=Verified(self.s.protocol.reuse), executor=executor,
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
@@ -179,6 +198,7 @@ class Executive:
         try:
             graph = out.graph
             repeats = RepeatWatch()
+            doubted: Counter[Atom] = Counter()  # observations doubted because they left no plan
             deadline = time.monotonic() + self.s.max_seconds
             while time.monotonic() < deadline:
                 tree.tick()
@@ -205,7 +225,13 @@ class Executive:
                     out.reason = f"stopped: {situation.detail}"
                     return out
                 times = repeats.count(situation, graph.state())
-                if stuck(situation, times):
+                if stuck(situation, times) and situation.kind == "unseen" and situation.action is not None \
+                        and situation.atom not in ctx.on_belief:
+                    # looked again and again, and no view shows it well enough: act on belief
+                    # (the action's effects are checked) rather than give the episode up
+                    ctx.on_belief.add(situation.atom)
+                    self.progress(f"    could not see {situation.atom} after {times} looks: acting on belief")
+                elif stuck(situation, times):
                     out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
                                   "(looking afresh changed nothing)")
                     return out
@@ -219,7 +245,7 @@ class Executive:
                 if survey is not None:
                     out.surveys.append(survey)
                 try:
-                    plan = self.planner.replan(graph.state(), plan.actions[situation.step:], self.task.goal)
+                    plan = self._replan(graph, situation, plan, doubted)
                 except UnsolvableError as exc:
                     out.reason = f"no plan after {situation.kind} situation: {exc}"
                     return out
@@ -234,6 +260,25 @@ class Executive:
             return out
         finally:
             self.halt(tree)
+
+    def _replan(self, graph: SceneGraph, s: Situation, plan: Plan, doubted: Counter) -> Plan:
+        """A plan from the corrected belief. When the correction leaves none, the observation
+        behind it is doubted: a camera that errs (as every real one does, and the more so about a
+        relation it saw poorly) can report a fact that shuts every way to the goal — the cup "not
+        reachable" with nothing in front of it. Belief goes back to what it held, the robot
+        re-approaches what the atom is about (a new picture, not the one that misled it: a model
+        answers one picture the same way every time), and the next plan checks the atom again. An
+        observation is doubted at most :data:`MAX_DOUBTS` times; the next contradiction stands."""
+        try:
+            return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
+        except UnsolvableError:
+            if s.atom is None or s.observed is None or doubted[s.atom] >= MAX_DOUBTS:
+                raise
+        doubted[s.atom] += 1
+        graph.correct(s.atom, not s.observed, self.task.knowledge.complements.get(s.atom.predicate), cause="doubt")
+        self.progress(f"    {s.atom} = {s.observed} leaves no plan: doubting it, looking again")
+        self._look_at(graph, s.atom.args)
+        return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
 
     @staticmethod
     def halt(tree: py_trees.trees.BehaviourTree) -> None:
@@ -251,16 +296,24 @@ class Executive:
         k = self.task.knowledge
         site_map = self.body.site_map()
         self.builder = SceneGraphBuilder(k, self.task.objects, site_map, self.geometry)
+        self.identifier = Identifier({n: label_of(n, site_map) for n in self.task.objects}, site_map)
         start = self.body.state().room
         rooms = sweep_order(site_map, start)
         self.progress(f"survey: {len(rooms)} room(s) {', '.join(rooms) or '(no map rooms)'}")
         sweep = self.builder.sweep(self.camera, rooms)
         items = [o for o in self.task.objects if self._portable(o)]
-        unplaced = [o for o in items if not self.builder.placed(o) and not self._said_where(o)]
-        if unplaced:  # a detector misses things now and then: look round once more before giving up
-            self.progress(f"survey: {', '.join(unplaced)} not seen; looking again")
-            again = self.builder.sweep(self.camera, rooms)
-            sweep = again.after(sweep)
+        def unplaced() -> list[str]:
+            return [o for o in items if not self.builder.placed(o) and not self._said_where(o)]
+
+        if unplaced():  # a detector misses things now and then: look round once more before giving up
+            self.progress(f"survey: {', '.join(unplaced())} not seen; looking again")
+            sweep = self.builder.sweep(self.camera, rooms).after(sweep)
+        if unplaced() and any(self.builder.wall_views(r) for r in rooms):
+            # misses are systematic for a view, and a thing on the floor shows in few of the
+            # sweep's views: last, the floor along every wall, until it is found
+            self.progress(f"survey: {', '.join(unplaced())} still not seen; looking along the walls")
+            sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
+                                            until=lambda: not unplaced()).after(sweep)
         state = self.body.state()
         located, prior_only = belief.item_facts(self.builder, items, self.prior)
         facts = belief.map_facts(site_map) | belief.robot_facts(state, sweep, site_map) | belief.hand_facts(state, self.builder)
@@ -275,6 +328,7 @@ class Executive:
         for n, obj in graph.objects.items():
             if obj.centroid is not None:
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
+        self.graph = graph
         states = self._ask_states(graph)
         graph.facts |= belief.typed(belief.closed_world_defaults(graph.facts, site_map, self.task.objects, k),
                                     k, self.task.objects)
@@ -284,6 +338,36 @@ class Executive:
                       + (f"; placed by the task file only: {', '.join(sorted(prior_only))}" if prior_only else ""))
         self.on_survey(survey, graph)
         return graph, survey
+
+    def _identify(self, frame: Frame) -> Frame:
+        """Name the frame's detections (:mod:`vap_bt.scene.identity`) against belief now: the
+        scene graph (during the first sweep, what its frames showed so far, then the task file),
+        the gripper and what belief has in it, the tool point and the room localization gives.
+        What the robot is looking for is placed nowhere, so that it is taken where it is seen."""
+        graph = self.graph if self.graph is not None else self._prior_graph
+        state = self.body.state()
+        held = next((a.args[0] for a in sorted(graph.facts) if a.predicate == "holding" and a.args), None)
+        if state.gripper_holding is False:
+            held = None  # an empty gripper holds nothing, whatever belief says
+        # a thing looked for is placed nowhere until this search has seen it — with depth, seen
+        # on or in something: a false positive of its class against a wall, whose centroid places
+        # it nowhere, does not pin it there (without pixels, a detection's reports place it) —
+        # and then where the search saw it
+        unplaced = {n for n in self._searching if not self.builder.detected(n)
+                    or self.geometry is not None and not self.builder.placed(n)}
+        belief = {}
+        for n in self.task.objects:
+            if n in unplaced:
+                continue
+            b = self.builder.believed(graph, n, seen_first=self.graph is None or n in self._searching)
+            if b is not None:
+                belief[n] = b
+        hand = tuple(state.tcp_pose[:3]) if state.tcp_pose is not None else None
+        named = self.identifier.identify(frame, belief, held, hand, state.room)
+        seen = {d.name for d in named.detections if d.name}
+        self.builder.forget(seen & unplaced)  # this sighting replaces one that placed it nowhere
+        self.builder.saw(seen)
+        return named
 
     def _said_where(self, obj: str) -> bool:
         return any(a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj for a in self.prior)
@@ -411,6 +495,15 @@ class Executive:
         self.progress(f"    {why or 'lost track of ' + ', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
+        self._searching = set(lost)  # placed nowhere while looked for: taken wherever first seen
+        try:
+            return self._search(graph, lost, why, near, items)
+        finally:
+            self._searching = set()
+
+    def _search(self, graph: SceneGraph, lost: list[str], why: str | None, near: list[str], items: list[str]) -> Survey:
+        """The sweeps of a re-survey (:meth:`_resurvey`)."""
+        here = self.body.state().room
         # an item that slipped from the hand lies on the floor near the robot (or under its base,
         # if it drove on): look at the floor round where it stands first
         state = self.body.state()
@@ -461,10 +554,14 @@ class Executive:
 
     @staticmethod
     def _expected_in_sight(graph: SceneGraph, obj: str) -> bool:
-        """Belief says the camera should see ``obj``: it is held, or it is in the robot's room."""
+        """Belief says the camera should see ``obj``: it is held, or it is in the robot's room and
+        not inside something (a container's interior shows only to a view into it, and a detector
+        misses most of what stands inside: a frame without the thing is no sign it moved)."""
         loc = graph.location(obj)
         if any(a.predicate == "holding" for a in loc):
             return True
+        if any(a.predicate == "inside" for a in loc):
+            return False
         rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"}
         return any(a.predicate == "in_room" and a.args[1] in rooms for a in loc)
 

@@ -8,8 +8,11 @@ help. :class:`RepeatWatch` counts such recurrences. On the first (:data:`LOOK_AF
 executive looks afresh; a skill that then fails the same way once more (:data:`STUCK`) stops the
 episode with the reason, instead of spending the replanning budget on the same motion: a motion
 planned from the same measurements fails the same way. A precondition the camera could not make
-out (``unseen``) that comes back the same after looking afresh stops too: the same plan brings the
-robot to the same views (an item under furniture that its find pose never shows). A check that
+out (``unseen``) that comes back the same after looking afresh makes the robot act on belief there
+(the action's effects are still checked): the same plan brings the robot to the same views (an
+item under furniture that its find pose never shows, a relation a model reads poorly), and more
+looks from them will not settle it. A goal atom that stays unseen stops the episode: success is
+never claimed on belief. A check that
 came back with a value is not cause to stop — an injected slip may well go the other way the next
 time.
 

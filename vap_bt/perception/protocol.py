@@ -15,8 +15,10 @@ then the view-sufficiency question, for every check. ``lean`` changes only how m
   states for a guess, 0.87 on average) and confirms what the plan expects; otherwise more
   paraphrases are asked and voted as usual;
 * **unanimous** — a round settles once ``unanimous`` (3) paraphrases all agree on what the plan
-  expects, without asking the other two: three independent wrong answers at the base error rate
-  (5 %) come once in 8000 rounds. A surprise — a value against the plan, which would correct
+  expects, without asking the other two. Paraphrases about one picture are not independent (a
+  real model's errors belong to the picture: docs/perception.md), so three agreeing answers are
+  less evidence than three independent ones; what this costs in accuracy is measured
+  (tools/bench/perception.py), not assumed. A surprise — a value against the plan, which would correct
   belief and make the robot replan — is always put to the paper's full vote (4 of 5 agreeing),
   with or without logprobs, so that asking less never buys a wrong correction;
 * **detector** — the view-sufficiency question is not asked when the frame's detector already

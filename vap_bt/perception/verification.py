@@ -48,6 +48,9 @@ class Round:
     #: who judged the view: "model" (the sufficiency question was asked) or "detector" (it found an
     #: object missing, or — where the protocol lets it — everything whole); None when not judged
     sufficient_by: str | None = None
+    #: which of the frame's detections the robot took for each of the atom's objects (its own
+    #: re-identification: name -> the detection's index), so a report can say what it looked at
+    identified: dict[str, int] = field(default_factory=dict)
 
     @property
     def settled(self) -> bool:
@@ -58,7 +61,8 @@ class Round:
                 "vote": self.vote, "consistent": self.consistent, "sufficient": self.sufficient,
                 "direction": self.direction, "moved": self.moved, **({"refused": list(self.refused)} if self.refused else {}),
                 **({"unshown": list(self.unshown)} if self.unshown else {}),
-                **({"sufficient_by": self.sufficient_by} if self.sufficient_by == "detector" else {})}
+                **({"sufficient_by": self.sufficient_by} if self.sufficient_by == "detector" else {}),
+                "identified": dict(self.identified)}
 
 
 def objects_of(atom: Atom) -> tuple[str, ...]:
@@ -68,8 +72,10 @@ def objects_of(atom: Atom) -> tuple[str, ...]:
 def unshown(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()) -> tuple[str, ...]:
     """The objects ``atom`` names that the frame's detector did not find (rooms and floors, the
     map's, are never detected and never missing). A view that shows none of a thing cannot
-    settle a question about it, whatever a model says: the detector vetoes sufficiency."""
-    found = {d.name for d in frame.detections}
+    settle a question about it, whatever a model says: the detector vetoes sufficiency. The
+    frame is an identified one (:mod:`vap_bt.scene.identity`): a detection of the thing's class
+    the robot did not take for it does not show it."""
+    found = frame.detected()
     return tuple(o for o in objects_of(atom) if o not in found and o not in undetectable)
 
 
@@ -204,7 +210,8 @@ class RoundAsker:
     def finish(self) -> Round:
         """The round as asked: its questions, answers, vote v_p = 1[mean(y) > 0.5] over the usable
         answers (none usable: no vote) and whether they agree enough to be consistent."""
-        r = Round(view=self.frame.frame_id)
+        r = Round(view=self.frame.frame_id,
+                  identified={n: k for n, k in self.frame.identified().items() if n in objects_of(self.atom)})
         for i in sorted(self.answers):
             r.questions.append(self.questions[i])
             r.answers.append(self.answers[i])

@@ -1,11 +1,14 @@
 """The camera service: aim the wrist camera, go to a viewpoint, capture a frame.
 
 The executive never names a pose it does not believe: an :class:`Aim` carries the point in the
-map frame where belief puts what it wants to see (from the scene graph or the map) and, for
-records and for worlds without geometry, the names of those things. A pybullet camera aims at
-the point and ignores the names; the symbolic camera, which has no points, turns toward the
-named things. A :class:`Viewpoint` is a base pose plus an aim: where to stand and look from
-during an exploration sweep (:mod:`vap_bt.scene.builder` chooses them from the map).
+map frame where belief puts what it wants to see (from the scene graph or the map), the *place*
+belief puts it at — the piece of furniture, door or floor it is believed on or in, or that it is
+— and, for records, the names of those things. A pybullet camera aims at the point and ignores
+the rest; the symbolic camera, which has no points, turns to the place. Neither is ever told
+where a thing truly is: a thing that is not where belief puts it is not in the picture. A
+:class:`Viewpoint` is a base pose plus an aim: where to stand and look from during an
+exploration sweep (:mod:`vap_bt.scene.builder` chooses them from the map); a camera without
+base poses stands at the aim's place.
 """
 
 from __future__ import annotations
@@ -23,10 +26,13 @@ VIEW_DIRECTIONS: tuple[str, ...] = ("left", "right", "front", "behind", "above",
 
 @dataclass(frozen=True)
 class Aim:
-    """Look at ``point`` (map frame, metres), where belief puts ``names``."""
+    """Look at ``point`` (map frame, metres), where belief puts ``names``; ``place`` is the mapped
+    thing belief puts the first of them it can place at (None: belief places none of them, or
+    they are in the hand)."""
 
     names: tuple[str, ...] = ()
     point: tuple[float, float, float] | None = None
+    place: str | None = None
 
 
 @dataclass(frozen=True)

@@ -7,9 +7,19 @@ symbolic one) returns frames without images; its detections then carry the locat
 its relation detector reports (``Detection.relations``), each wrong at a documented rate, so
 the same scene-graph builder consumes both.
 
-A detection names its instance (``name``): the detector's track identity, which here is the
-object's name, standing for detection plus re-identification. It never says anything about an
-object's state; that is for geometry and the VLM to establish.
+A world's detection carries a class label (``label``: "bottle", "cabinet", "door"; the rule is
+:mod:`vap_bt.robot.labels`), never which instance it is: its ``name`` is empty. Which known object
+a detection is — bottle1 or bottle2, or none (a false positive) — is the robot's to work out:
+:mod:`vap_bt.scene.identity` fills ``name`` in on a copy of the frame, from the map, belief and
+the gripper (its association, name -> the detection's index in :attr:`Frame.detections`, is
+:meth:`Frame.identified`). Every frame the executive or a skill reasons about has been
+through it; :meth:`Frame.detection`, :meth:`Frame.detected` and :meth:`Frame.mask` read those
+names. A detection never says anything about an object's state; that is for geometry and the
+VLM to establish.
+
+In worlds without pixels the relation reports name things only as a robot could: ``""`` is the
+detected thing itself, ``"#k"`` the frame's k-th detection, and the site map's things (rooms,
+floors, furniture, doors) by their map names (:func:`reference`, :func:`detection_index`).
 """
 
 from __future__ import annotations
@@ -21,18 +31,39 @@ import numpy as np
 from vap_bt.domain.atoms import Atom
 
 
+#: how a relation report names the detected thing itself
+SELF = ""
+
+
+def reference(index: int) -> str:
+    """How a relation report names the frame's ``index``-th detection (``"#2"``)."""
+    return f"#{index}"
+
+
+def detection_index(arg: str) -> int | None:
+    """The detection a relation argument refers to (``"#2"`` -> 2), or None (a map name, or the
+    thing itself)."""
+    if arg.startswith("#") and arg[1:].isdigit():
+        return int(arg[1:])
+    return None
+
+
 @dataclass(frozen=True)
 class Detection:
-    """One object instance found in a frame."""
+    """One object instance found in a frame: its class, its mask, and — once the robot has
+    re-identified it — which known object it is (``name``; empty as a world reports it, and
+    for a detection the robot could not assign)."""
 
-    name: str  # instance identity (track id); the object's name in this project's worlds
-    label: str  # class label, e.g. "cup", "cabinet"
+    label: str  # class label, e.g. "cup", "cabinet", "door"
     pixels: int = 0  # area of the instance mask (0 in frames without images)
     mask_id: int = -1  # value of this instance in :attr:`Frame.masks`
-    score: float = 1.0
-    #: worlds without geometry only: location atoms (on, inside, in_room, holding) about this
-    #: instance as that world's relation detector reports them (possibly wrong)
+    score: float = 1.0  # the detector's confidence
+    #: worlds without geometry only: location atoms (on, inside, in_room, holding, blocking) about
+    #: this instance as that world's relation detector reports them (possibly wrong), naming
+    #: things as the module docstring says
     relations: tuple[Atom, ...] = ()
+    #: which known object this is, filled in by re-identification (:mod:`vap_bt.scene.identity`)
+    name: str = ""
 
 
 @dataclass
@@ -52,10 +83,21 @@ class Frame:
     extra: dict = field(default_factory=dict)
 
     def detection(self, name: str) -> Detection | None:
+        """The detection identified as ``name`` (None: none was, or the frame is unidentified)."""
+        if not name:
+            return None
         return next((d for d in self.detections if d.name == name), None)
 
     def detected(self) -> frozenset[str]:
-        return frozenset(d.name for d in self.detections)
+        """The names of the identified detections."""
+        return frozenset(d.name for d in self.detections if d.name)
+
+    def identified(self) -> dict[str, int]:
+        """Re-identification's association: object name -> index of its detection (for a frame
+        known by id only, :func:`marked_frame`, the association it was sent with)."""
+        if not self.detections and "identified" in self.extra:
+            return dict(self.extra["identified"])
+        return {d.name: k for k, d in enumerate(self.detections) if d.name}
 
     def mask(self, name: str) -> np.ndarray | None:
         """Boolean mask of one detected instance, or None (not detected, or no images)."""
@@ -63,3 +105,10 @@ class Frame:
         if d is None or self.masks is None or d.mask_id < 0:
             return None
         return self.masks == d.mask_id
+
+
+def marked_frame(frame_id: str, identified: dict[str, int]) -> Frame:
+    """A frame known by its id only — its pixels stay with the world that took it — with the
+    executive's association of names to its detections: what a world-side VLM is handed when a
+    question crosses the transport."""
+    return Frame(frame_id, 0.0, extra={"identified": dict(identified)})

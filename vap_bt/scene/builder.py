@@ -32,6 +32,7 @@ from vap_bt.robot.camera import Aim, Camera, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph, SceneObject
+from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN, Believed, named_relations
 from vap_bt.skill import Hint
 
 #: frames kept per object (the best views of it), for questions asked after the sweep
@@ -132,6 +133,10 @@ class SceneGraphBuilder:
         self.knowledge, self.objects, self.site_map = knowledge, objects, site_map
         self.geometry = geometry(knowledge, objects, site_map) if geometry is not None else None
         self.evidence: dict[str, Evidence] = {}
+        #: every name a frame has ever shown (integrated or not: a check's frames count, see
+        #: :meth:`saw`): :meth:`forget` drops what frames said of a thing, not that the robot has
+        #: seen it (only a never-seen thing is placed by the user's word)
+        self.sighted: set[str] = set()
         self._static = site_map.static_names()
 
     # -- the sweep ---------------------------------------------------------------------------
@@ -152,7 +157,7 @@ class SceneGraphBuilder:
         if info is not None and info.bounds is not None:
             out += self.floor_views(room)
         elif info is not None and info.floor in self.objects:
-            out.append(Viewpoint(room, Aim((info.floor,)), None, f"{room} floor"))
+            out.append(Viewpoint(room, Aim((info.floor,), place=info.floor), None, f"{room} floor"))
         return out
 
     def floor_views(self, room: str) -> list[Viewpoint]:
@@ -165,7 +170,7 @@ class SceneGraphBuilder:
         out = []
         for h in FLOOR_LOOK_HEADINGS:
             point = (cx + FLOOR_LOOK_DISTANCE * math.cos(h), cy + FLOOR_LOOK_DISTANCE * math.sin(h), 0.0)
-            out.append(Viewpoint(room, Aim((info.floor,), point), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
+            out.append(Viewpoint(room, Aim((info.floor,), point, info.floor), (cx, cy, h), f"{room} floor, heading {h:+.2f}"))
         return out
 
     def wall_views(self, room: str) -> list[Viewpoint]:
@@ -186,7 +191,7 @@ class SceneGraphBuilder:
                 s = (k + 0.5) * length / n
                 px, py = ax + ux * s + nx * WALL_LOOK_INSET, ay + uy * s + ny * WALL_LOOK_INSET
                 stand = (px + nx * WALL_LOOK_DISTANCE, py + ny * WALL_LOOK_DISTANCE, math.atan2(-ny, -nx))
-                out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0)), stand,
+                out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0), info.floor), stand,
                                      f"{room} floor by the wall at ({px:.2f}, {py:.2f})"))
         return out
 
@@ -203,7 +208,7 @@ class SceneGraphBuilder:
             bx, by = sx + SPOT_LOOK_DISTANCE * math.cos(h), sy + SPOT_LOOK_DISTANCE * math.sin(h)
             if info.bounds is not None and not (info.bounds[0] < bx < info.bounds[2] and info.bounds[1] < by < info.bounds[3]):
                 continue  # through the wall: that floor is another room's, and the spot is not seen from it
-            out.append(Viewpoint(room, Aim((info.floor,), (sx, sy, 0.0)), (bx, by, _wrap(h + math.pi)),
+            out.append(Viewpoint(room, Aim((info.floor,), (sx, sy, 0.0), info.floor), (bx, by, _wrap(h + math.pi)),
                                  f"{room} floor round ({sx:.2f}, {sy:.2f}), from heading {h:+.2f}"))
         return out
 
@@ -214,7 +219,7 @@ class SceneGraphBuilder:
 
     def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front") -> Viewpoint:
         if f.pose is None:
-            return Viewpoint(f.room, Aim((f.name,)), None, f"{f.name}")
+            return Viewpoint(f.room, Aim((f.name,), place=f.name), None, f"{f.name}")
         x, y, yaw = f.pose
         depth = f.footprint[1] if f.footprint else 0.5
         box = self.geometry.box(f.name) if self.geometry else None
@@ -222,11 +227,11 @@ class SceneGraphBuilder:
         z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
         d = depth / 2 + standoff
         base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
-        return Viewpoint(f.room, Aim((f.name,), (x, y, z)), base, f"{f.name} {label}")
+        return Viewpoint(f.room, Aim((f.name,), (x, y, z), f.name), base, f"{f.name} {label}")
 
     def _door_view(self, d, room: str) -> Viewpoint:
         if d.pose is None or self.site_map.room(room).bounds is None:
-            return Viewpoint(room, Aim((d.name,)), None, f"{d.name}")
+            return Viewpoint(room, Aim((d.name,), place=d.name), None, f"{d.name}")
         x, y, _ = d.pose
         x0, y0, x1, y1 = self.site_map.room(room).bounds
         # stand inside this room on the line through the doorway's centre, facing it
@@ -234,7 +239,8 @@ class SceneGraphBuilder:
         ux, uy = cx - x, cy - y
         n = math.hypot(ux, uy) or 1.0
         bx, by = x + ux / n * DOOR_VIEW_DISTANCE, y + uy / n * DOOR_VIEW_DISTANCE
-        return Viewpoint(room, Aim((d.name,), (x, y, DOOR_AIM_HEIGHT)), (bx, by, math.atan2(y - by, x - bx)), f"{d.name} from {room}")
+        return Viewpoint(room, Aim((d.name,), (x, y, DOOR_AIM_HEIGHT), d.name), (bx, by, math.atan2(y - by, x - bx)),
+                         f"{d.name} from {room}")
 
     def sweep(self, camera: Camera, rooms: list[str], first: tuple[Viewpoint, ...] = ()) -> SweepRecord:
         """Go round ``rooms`` in order, looking from each of their views (after the ``first`` views,
@@ -278,20 +284,26 @@ class SceneGraphBuilder:
     # -- frames ------------------------------------------------------------------------------
 
     def integrate(self, frame: Frame) -> set[str]:
-        """Fold one frame into the evidence; returns the names detected in it."""
+        """Fold one identified frame (:mod:`vap_bt.scene.identity`) into the evidence; returns
+        the names detected in it."""
         names = set()
-        for d in frame.detections:
+        for k, d in enumerate(frame.detections):
             if d.name not in self.objects:
-                continue  # a detection outside the task's vocabulary: not an object of this plan
+                continue  # unnamed (nothing known), or outside the task's vocabulary: not of this plan
             ev = self.evidence.setdefault(d.name, Evidence(d.label))
             ev.frames += 1
             ev.last_frame = frame.frame_id
-            ev.reports.update(set(d.relations))
+            ev.reports.update(set(named_relations(frame, k)))
             ev.best = sorted([*ev.best, (d.pixels, ev.frames, frame)], key=lambda b: (-b[0], -b[1]))[:KEEP_FRAMES]
             names.add(d.name)
+        self.saw(names)
         if self.geometry is not None and frame.depth is not None:
             self.geometry.integrate(frame)
         return names
+
+    def saw(self, names) -> None:
+        """``names`` were identified in a frame (a survey's, a check's or a skill's)."""
+        self.sighted.update(n for n in names if n in self.objects)
 
     def forget(self, names) -> None:
         """Drop what earlier frames said of ``names`` (they may have moved since)."""
@@ -376,26 +388,95 @@ class SceneGraphBuilder:
 
     def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
         """Aim at the first of ``names`` that belief can place (the object a question is about,
-        else what it rests on); no point when belief places none of them (or holds them)."""
+        else what it rests on): the point and the place where belief puts it; neither when belief
+        places none of them (or holds them)."""
         for n in names:
-            p = self.point_of(graph, n)
-            if p is not None:
-                return Aim(tuple(names), p)
-        return Aim(tuple(names), None)
+            p, place = self.point_of(graph, n), self.place_of(graph, n)
+            if p is not None or place is not None:
+                return Aim(tuple(names), p, place)
+        return Aim(tuple(names))
+
+    def place_of(self, graph: SceneGraph, name: str, depth: int = 0) -> str | None:
+        """The mapped thing where belief puts ``name``: a piece of furniture, a door, a floor or a
+        room is its own place; an item is at the place of what belief says it rests on or in. None
+        for what the hand holds and for an item belief places on or in nothing."""
+        if Atom("holding", (name,)) in graph.facts or depth > 3:
+            return None
+        if name in self._static:
+            return name
+        for a in sorted(graph.location(name)):
+            if _supports(a):
+                return self.place_of(graph, a.args[1], depth + 1)
+        return None
 
     def undetectable(self) -> frozenset[str]:
         """What no detector finds in a frame: the map's rooms and their floors."""
         return frozenset([*(r.name for r in self.site_map.rooms), *(r.floor for r in self.site_map.rooms)])
 
     def hints(self, graph: SceneGraph, names: tuple[str, ...]) -> tuple[Hint, ...]:
-        """What belief says about each of ``names``, for a goal: where it is and on or in what."""
+        """What belief says about each of ``names``, for a goal: where it is (and how far from
+        there belief allows it to be: a skill re-identifies it in its own frames) and on or in
+        what."""
         out = []
         for n in names:
             loc = sorted(a for a in graph.location(n) if _supports(a))
             on = next((a.args[1] for a in loc if a.predicate != "inside"), None)
             inside = next((a.args[1] for a in loc if a.predicate == "inside"), None)
-            out.append(Hint(n, self.point_of(graph, n), on, inside))
+            b = self.believed(graph, n)
+            point = self.point_of(graph, n)
+            out.append(Hint(n, point, on, inside, b.radius if b is not None and b.point is not None else None))
         return tuple(out)
+
+    def believed(self, graph: SceneGraph, name: str, seen_first: bool = False) -> Believed | None:
+        """Where belief puts ``name``, for re-identifying it in a frame (:mod:`vap_bt.scene.identity`):
+        a point (as :meth:`point_of`) with how far from it the object may be — a measured
+        centroid's :data:`SEEN_RADIUS`; the extent of the piece it is believed on or in; the
+        room's for one believed on a floor or only in a room — and its support and room (what
+        worlds without geometry match by). None for the map's things (the map names them), for
+        what belief has in the hand (the hand names it) and for what belief places nowhere.
+        ``seen_first``: during the first sweep, what the frames showed so far outranks what the
+        task file said."""
+        if name in self._static or Atom("holding", (name,)) in graph.facts:
+            return None
+        loc = graph.location(name)
+        if seen_first:
+            c = self.geometry.centroid(name) if self.geometry is not None else None
+            if c is not None:
+                return Believed(c, SEEN_RADIUS)
+            seen = self.observed(name)
+            if any(a.args and a.args[0] == name and a.predicate in LOCATION_PREDICATES for a in seen):
+                loc = {a for a in seen if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == name}
+        place = next((a for a in sorted(loc) if _supports(a)), None)
+        room = next((a.args[1] for a in sorted(loc) if a.predicate == "in_room" and len(a.args) == 2), None)
+        if place is None and room is None:
+            return None
+        support = place.args[1] if place is not None else None
+        obj = graph.objects.get(name)
+        if not seen_first and obj is not None and obj.centroid is not None and obj.located == frozenset(loc):
+            return Believed(obj.centroid, SEEN_RADIUS, support, room)
+        point, radius = self._extent(graph, place, room)
+        # never detected: only the task file's word places it, and the word may be wrong
+        return Believed(point, radius, support, room, told=name not in self.sighted)
+
+    def _extent(self, graph: SceneGraph, place: Atom | None, room: str | None) -> tuple[tuple[float, float, float] | None, float]:
+        """A point of where ``place`` (on or in something) or ``room`` puts a thing, and how far
+        from it the thing may be: anywhere on a piece's top or in its cavity, anywhere on a
+        floor, near an item it rests on."""
+        support = place.args[1] if place is not None else None
+        piece = self.site_map.piece(support) if support else None
+        if piece is not None and piece.pose is not None and piece.footprint:
+            w, d = piece.footprint
+            inside = place.predicate == "inside" and piece.cavity is not None
+            z = sum(piece.cavity.z) / 2 if inside else (piece.height or FURNITURE_AIM_HEIGHT)
+            return (piece.pose[0], piece.pose[1], z), math.hypot(w, d) / 2 + SUPPORT_MARGIN
+        if support is not None and support in self.objects and support not in self._static:
+            p = self.point_of(graph, support)  # on another item: near where that one is
+            return p, 2 * SEEN_RADIUS
+        info = self.site_map.room(self.site_map.floors().get(support) or room) if (support or room) else None
+        if info is not None and info.bounds is not None:
+            x0, y0, x1, y1 = info.bounds
+            return ((x0 + x1) / 2, (y0 + y1) / 2, 0.0), math.hypot(x1 - x0, y1 - y0) / 2
+        return None, SEEN_RADIUS
 
     def point_of(self, graph: SceneGraph, name: str, depth: int = 0) -> tuple[float, float, float] | None:
         """Where belief puts ``name``, in the map frame: its measured centroid while belief still

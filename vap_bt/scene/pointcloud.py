@@ -164,9 +164,12 @@ def instance_cloud(frame: Frame, detection: Detection, params: CloudParams = Clo
 
 
 def frame_clouds(frame: Frame, params: CloudParams = CloudParams()) -> dict[str, o3d.geometry.PointCloud]:
-    """Cleaned clouds of every detection in ``frame`` that yields one, by instance name."""
+    """Cleaned clouds of every identified detection in ``frame`` that yields one, by the name
+    re-identification gave it (an unnamed detection is no known object's)."""
     out: dict[str, o3d.geometry.PointCloud] = {}
     for d in frame.detections:
+        if not d.name:
+            continue
         cloud = instance_cloud(frame, d, params)
         if cloud is not None:
             out[d.name] = cloud

@@ -21,7 +21,10 @@ From these:
 
 A furniture piece's extent is the hull of its observed box and its map footprint: the map knows
 how deep a cabinet is when the camera has seen only its front, and an open drawer's tray, which
-slides beyond the footprint, is in the observed box. An open door leaf swings out of the
+slides beyond the footprint, is in the observed box. Its top is the map's height where the map
+has one: a detector's mask of a table bleeds a pixel or two onto the cup standing on it (and the
+points it bled onto join the table's cloud), which would lift an observed top to the cup's rim,
+while a table seen only at its front edge would have it low; the furniture model knows. An open door leaf swings out of the
 footprint too, and sweeps the floor in front of the piece, so the hull alone would put a cup that
 fell in front of an open microwave inside it: a thing lying on the floor outside a piece's
 footprint is never inside that piece (a drawer's tray, beyond the footprint, is far above the
@@ -154,6 +157,8 @@ def object_extent(obj: Located, site_map: SiteMap) -> Extent:
         hi[:2] = np.maximum(hi[:2], corners.max(axis=0))
         lo[2] = min(lo[2], 0.0)  # mapped furniture stands on the floor
         footprint = (*map(float, corners.min(axis=0)), *map(float, corners.max(axis=0)))
+    if piece.height is not None:
+        hi[2] = piece.height  # the model's top, not a mask's (see the module docstring)
     return Extent(obj.name, lo, hi, piece.front, footprint)
 
 

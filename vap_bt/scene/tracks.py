@@ -2,7 +2,7 @@
 
 A single view shows one side of an object, so its cloud's centroid is pulled towards the camera
 and its box is too shallow. An :class:`ObjectTrack` accumulates every view of an object (the
-detector's instance name is the track's identity): the new view's cleaned cloud is merged with the
+name re-identification gave the detection, :mod:`vap_bt.scene.identity`, is the track's identity): the new view's cleaned cloud is merged with the
 old and voxel-downsampled again, which keeps the density even however often a side was seen.
 
 Merging is right only while the object stays put. Things the site map places (furniture, doors)
@@ -171,7 +171,7 @@ class Tracks:
     def integrate(self, frame: Frame) -> list[str]:
         """Fuse every detection of ``frame`` that has a mask and enough depth into its track;
         returns the names of the tracks started or updated, in detection order."""
-        labels = {d.name: d.label for d in frame.detections}
+        labels = {d.name: d.label for d in frame.detections if d.name}
         clouds = frame_clouds(frame, self.cloud_params)
         for name, cloud in clouds.items():
             self.add_view(name, labels[name], cloud, frame.frame_id)

@@ -13,6 +13,21 @@ A record also stores the world's step counter at capture; a question about a fra
 world has stepped is answered from what was read before, or — if nothing was — from the truth
 now, and counted as ``late`` (reported, so that it could never go unnoticed).
 
+Beyond how much of each object a frame shows, a record says how well it shows what a *relation*
+needs (:class:`ObjectView`: the contact between an item and its support, a container's inside, a
+leaf, the fingers), each object's class (a model reads "bottle1" as "the bottle"), and the
+*picture* the frame is: the key under which the simulated VLM's persistent errors are drawn
+(the same picture gets the same answers; a genuinely new view draws anew).
+
+A record keeps, too, which world instance produced each of the frame's detections (by the
+detection's index; ``""`` for a false positive) — what the detector never tells the robot. With
+the executive's own association (which detection it took for which object: the names it filled
+in), :meth:`CaptureRecord.resolve` says which instance the robot really meant by a name: the
+simulated VLM answers about that instance (a set-of-marks prompt: the question's object is the
+one marked in the picture), and the runner scores a verification against it. A world that acts
+by name (the symbolic one: its actions take the executive's names) marks nothing
+(``marked=False``): there a name means the instance of that name.
+
 A record also names the pixels its frame carries (``image_sha1``, the hash the VLM backends'
 request records use, :func:`~vap_bt.perception.backends.image.rgb_sha1`), so that a model shown
 only the image — the simulated VLM behind its HTTP endpoint, :mod:`vap_bt.sim.vlm_endpoint` —
@@ -34,6 +49,23 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.sim.oracle import Oracle
 
 
+@dataclass(frozen=True)
+class ObjectView:
+    """How one frame shows what a relation about one object needs (each a fraction in [0, 1],
+    None where it does not apply to the object); see :mod:`vap_bt.sim.observability`."""
+
+    pixels: int = 0  # visible pixels of the object (0 in worlds without pixels)
+    #: items: the share of their bottom band (where they meet their support) the frame shows
+    contact: float | None = None
+    #: containers: the share of their cavity's opening through which the frame sees inside
+    #: (0 when shut: a closed door hides the inside whatever the view)
+    interior: float | None = None
+    #: articulated furniture and doors: the share of the leaf (door, drawer front) shown
+    leaf: float | None = None
+    #: surfaces and floors: how much of the top (where things would stand) the frame covers
+    top: float | None = None
+
+
 @dataclass
 class CaptureRecord:
     """The world's side of one frame."""
@@ -48,8 +80,40 @@ class CaptureRecord:
     masks: dict[str, tuple[tuple[str, ...], float]] = field(default_factory=dict)
     #: SHA-1 of the frame's rgb array (None: the frame carries no pixels)
     image_sha1: str | None = None
+    #: object -> what the relations about it need from this frame (see :class:`ObjectView`)
+    views: dict[str, ObjectView] = field(default_factory=dict)
+    #: object -> its class as a detector or a model names it ("bottle" for bottle1)
+    labels: dict[str, str] = field(default_factory=dict)
+    #: the share of the gripper's fingers the frame shows (None: the world has no hand in view)
+    fingers: float | None = None
+    #: the picture this frame is, for persistent model errors: the pixels' hash where the frame
+    #: has pixels, else the world's view (pose) identity; "" means the frame id
+    picture: str = ""
+    #: the world instance behind each detection of the frame, by index ("" for a false positive)
+    instances: tuple[str, ...] = ()
+    #: whether a name the executive gave a detection means that detection's instance (see the
+    #: module docstring); False where a name means the instance of that name
+    marked: bool = False
     _truth: dict[Atom, bool] = field(default_factory=dict)
     late: int = 0
+
+    @property
+    def picture_key(self) -> str:
+        return self.picture or self.image_sha1 or self.frame_id
+
+    def resolve(self, name: str, identified: dict[str, int]) -> str | None:
+        """The world instance the executive meant by ``name`` in this frame: the one behind the
+        detection it identified as ``name`` (None for a false positive: nothing), else — not
+        identified here, or a world that marks nothing — the instance of that name."""
+        k = identified.get(name)
+        if not self.marked or k is None or not 0 <= k < len(self.instances):
+            return name
+        return self.instances[k] or None
+
+    def resolve_atom(self, atom: Atom, identified: dict[str, int]) -> Atom | None:
+        """``atom`` with its objects resolved (:meth:`resolve`); None when one is a false positive."""
+        args = tuple(self.resolve(a, identified) for a in atom.args)
+        return None if None in args else Atom(atom.predicate, args)
 
     def holds(self, atom: Atom) -> bool:
         if atom not in self._truth:

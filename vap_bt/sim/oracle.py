@@ -27,12 +27,20 @@ class Oracle(Protocol):
     def injected(self) -> list[InjectedSituation]:
         """Situations the world caused on purpose (Table II) or by script, in order."""
 
+    def position(self, name: str) -> tuple[float, float, float] | None:
+        """Where ``name``'s centre truly is (map frame), or None (a world without geometry)."""
+
 
 class FunctionOracle:
-    """An :class:`Oracle` over a truth function and an injection log (both worlds use it)."""
+    """An :class:`Oracle` over a truth function, an injection log and, in a world with geometry,
+    where things are (both worlds use it)."""
 
-    def __init__(self, holds: Callable[[Atom], bool], injected: Callable[[], list[InjectedSituation]]) -> None:
-        self._holds, self._injected = holds, injected
+    def __init__(self, holds: Callable[[Atom], bool], injected: Callable[[], list[InjectedSituation]],
+                 position: Callable[[str], tuple[float, float, float] | None] | None = None) -> None:
+        self._holds, self._injected, self._position = holds, injected, position
+
+    def position(self, name: str) -> tuple[float, float, float] | None:
+        return self._position(name) if self._position is not None else None
 
     def holds(self, atom: Atom) -> bool:
         return self._holds(atom)

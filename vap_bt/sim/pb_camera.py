@@ -41,6 +41,7 @@ class Render:
     bodies: np.ndarray  # (H, W) int32 body id, -1 background
     pose: np.ndarray  # 4x4 optical frame (z forward, x right, y down)
     camera: Camera
+    links: np.ndarray | None = None  # (H, W) int32 link index within the body (-1: its base), -2 background
 
     @property
     def intrinsics(self) -> tuple[float, float, float, float]:
@@ -69,7 +70,8 @@ def render(cid: int, pose: np.ndarray, camera: Camera, shadows: bool = False) ->
     metric = camera.far * camera.near / (camera.far - (camera.far - camera.near) * d)
     seg = np.asarray(seg, np.int64).reshape(h, w)
     bodies = np.where(seg >= 0, seg & 0xFFFFFF, -1).astype(np.int32)
-    return Render(rgb, metric.astype(np.float32), bodies, pose, camera)
+    links = np.where(seg >= 0, (seg >> 24) - 1, -2).astype(np.int32)
+    return Render(rgb, metric.astype(np.float32), bodies, pose, camera, links)
 
 
 def look_pose(eye, target) -> np.ndarray:
@@ -97,6 +99,17 @@ def box_corners(box: tuple[float, ...]) -> np.ndarray:
     """The eight corners (8, 3) of an axis-aligned box (x0, y0, z0, x1, y1, z1)."""
     lo, hi = np.array(box[:3]), np.array(box[3:])
     return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+
+
+def world_points(r: Render) -> np.ndarray:
+    """(H, W, 3) map-frame point of every pixel from the render's exact depth (world side only:
+    the oracle's geometry of the picture, never a sensor's)."""
+    c = r.camera
+    h, w = r.depth.shape
+    v, u = np.mgrid[0:h, 0:w]
+    z = r.depth.astype(float)
+    cam = np.stack([(u - c.cx) / c.fx * z, (v - c.cy) / c.fy * z, z], axis=-1)
+    return cam @ r.pose[:3, :3].T + r.pose[:3, 3]
 
 
 def _projected(r: Render, corners: np.ndarray) -> np.ndarray | None:

@@ -35,7 +35,7 @@ joints in a whole-body trajectory — are in the frame the robot believes it is 
 it, so a path lands the true base at the commanded pose less the error. When a motion of the base
 ends, the localiser may update (a new error once the base has moved far enough).
 * :class:`PybulletWristCamera` — ``capture`` is the frame of what the wrist camera sees now:
-  detections from the segmentation above the detector's pixel threshold, masks, metric depth,
+  the detector model's class-labelled detections and masks (:mod:`vap_bt.sim.detector`), metric depth,
   intrinsics, the camera pose, and the capture record the simulated VLM answers from
   (:meth:`PybulletWorld.capture` without an aim).
 

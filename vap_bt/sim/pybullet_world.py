@@ -16,9 +16,10 @@ object, a door left half open) apply before the action they name.
 
 Its robot interfaces are what a real robot's drivers would give: the wrist camera
 (:mod:`pb_camera`) renders RGB-D from wherever the arm and the base have put it, and the
-segmentation stands for an instance detector (:class:`~vap_bt.sim.detector.DetectorModel`:
-instances below a pixel threshold are missed); aiming it is the skills' camera service's
-(:class:`skills.views.ViewService`), not the world's; the robot starts with its arm at
+segmentation is what an instance detector errs on (:class:`~vap_bt.sim.detector.DetectorModel`:
+class labels only, misses that grow as things shrink and hide, false positives, confused labels,
+rough masks; which instance produced each detection stays in the capture record); aiming it is
+the skills' camera service's (:class:`skills.views.ViewService`), not the world's; the robot starts with its arm at
 :data:`START_ARM`, looking ahead; the body reports the base pose, the room localization puts
 it in, the arm's joints, the TCP pose and whether the gripper holds something; the site map
 has the rooms' outlines, the doors and the furniture's footprints, nothing that moves.
@@ -41,7 +42,8 @@ import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.camera import Aim
-from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.labels import DOOR, class_of
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState, quat_xyzw
 from vap_bt.scene.layout import floor_of, layout_facts
@@ -60,6 +62,8 @@ from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_rules import Rules
 from vap_bt.sim.pb_scene import Hinge, build_scene, switch_face, tap_outlet
 from vap_bt.sim.pb_truth import Truth
+from vap_bt.sim.pb_views import object_views
+from vap_bt.sim.observability import PLAIN_SHARE
 from vap_bt.sim.situations import SituationModel
 from vap_bt.world import InjectedSituation
 
@@ -101,7 +105,7 @@ class PybulletWorld:
         self.depth_noise = depth_noise or DepthNoiseModel()
         self.localization_model = localization or LocalizationModel()
         self.captures = CaptureLog()
-        self.oracle = FunctionOracle(self._holds, self.injected)
+        self.oracle = FunctionOracle(self._holds, self.injected, self._position)
         self._lock = threading.RLock()
         self.cid = -1
         self.reset(seed)
@@ -270,6 +274,10 @@ class PybulletWorld:
         with self._lock:
             return self.truth.holds(atom)
 
+    def _position(self, name: str) -> tuple[float, float, float] | None:
+        with self._lock:
+            return _point(self.truth.center(name)) if name in self.scene.things else None
+
     def wrist_view(self) -> Render:
         """The wrist camera's current image (cached until the simulation steps)."""
         if self._view is None or self._view_tick != self.ticks:
@@ -298,11 +306,6 @@ class PybulletWorld:
         doorways = self._doorways(r)
         for name, (n, _, _) in doorways.items():  # a detector finds a doorway, open or shut
             counts[name] = max(counts.get(name, 0), n)
-        threshold = self.detector.pixel_threshold(r.camera.width, r.camera.height)
-        seen = sorted(n for n, c in counts.items() if c >= threshold and self._detectable(n))
-        ids = {n: i for i, n in enumerate(seen)}
-        masks = name_image(r, {b: n for b, n in names.items() if n in ids}, ids)
-        dets = tuple(Detection(n, self._label(n), int(counts[n]), ids[n]) for n in seen)
         # the simulated VLM's record: how much of each object this frame shows (world side only)
         boxes = {n: self.truth.outline(n) for n in counts if n in self.scene.things}
         vis = visibility(r, counts, boxes, {n: self._fill(n) for n in boxes})
@@ -312,16 +315,31 @@ class PybulletWorld:
         for name, (k, _, edges) in doorways.items():  # the doorway is how a door shows: its extent
             if k and k / pixels > extents.get(name, ((), 0.0))[1]:
                 extents[name] = (edges, k / pixels)
+        sha = rgb_sha1(r.rgb)
+        found = self._detect(r, names, counts, vis, sha)
         self.view_index += 1
         frame_id = f"pb-{self.seed}-{self.view_index}"
-        sha = rgb_sha1(r.rgb)
+        seen = {n: 1.0 if extents.get(n, ((), 0.0))[1] >= PLAIN_SHARE else v for n, v in vis.items()}
+        views, fingers = object_views(r, self.scene, self.truth, self.robot, seen,
+                                      {n: e[1] for n, e in extents.items()}, counts)
         self.captures.add(CaptureRecord(frame_id, self.ticks, vis, self.oracle, lambda: self.ticks,
-                                        masks=extents, image_sha1=sha))
+                                        masks=extents, image_sha1=sha, instances=found.instances, marked=True,
+                                        views=views, fingers=fingers,
+                                        labels={n: self._label(n) for n, x in self.scene.things.items() if x.room is None}))
         # the sensors' own errors: stereo depth, and the pose in the frame the robot believes it is in
         depth = self.depth_noise.apply(r.depth, r.camera.fx, r.camera.far, (self.seed, int(sha[:15], 16)))
-        return Frame(frame_id, self.ticks * DT, dets, rgb=r.rgb, depth=depth, masks=masks,
+        return Frame(frame_id, self.ticks * DT, found.detections, rgb=r.rgb, depth=depth, masks=found.masks,
                      intrinsics=r.intrinsics, camera_pose=self.localization.believed_T(r.pose),
                      aim=tuple(aim.names) if aim else ())
+
+    def _detect(self, r: Render, names: dict[int, str], counts: dict[str, int], vis: dict[str, float], sha: str):
+        """What the detector (:mod:`vap_bt.sim.detector`) reports of the rendered picture: class
+        labels, misses, false positives, rough masks, each draw seeded by the seed and the picture."""
+        shown = sorted(n for n in counts if self._detectable(n))
+        ids = {n: i for i, n in enumerate(shown)}
+        return self.detector.detect(name_image(r, {b: n for b, n in names.items() if n in ids}, ids), shown,
+                                    [counts[n] for n in shown], [vis.get(n, 0.0) for n in shown],
+                                    [self._label(n) for n in shown], r.depth, self._classes, f"{self.seed}|{sha}")
 
     def _doorways(self, r: Render) -> dict[str, tuple[int, float, tuple[str, ...]]]:
         """Each room door's doorway as the frame shows it (see :func:`doorway_pixels`)."""
@@ -337,10 +355,19 @@ class PybulletWorld:
         return t is not None and t.room is None  # rooms and floors are the map's
 
     def _label(self, name: str) -> str:
+        """The class a detector reports (:mod:`vap_bt.robot.labels`): a door, a piece of
+        furniture's kind (the map's), an item's class."""
         t = self.scene.things[name]
         if t.door is not None:
-            return "door"
-        return t.kind.name if t.kind is not None else t.pddl_type
+            return DOOR
+        if t.item is None and t.kind is not None:
+            return t.kind.name
+        return class_of(name)
+
+    @property
+    def _classes(self) -> list[str]:
+        """Every class the scene holds (a false positive takes one)."""
+        return sorted({self._label(n) for n in self.scene.things if self._detectable(n)})
 
     def _fill(self, name: str) -> float:
         t = self.scene.things[name]

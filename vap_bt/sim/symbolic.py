@@ -10,17 +10,36 @@ domain runs; Table II's rows apply to the household's action names.
 Its robot interfaces are the same as a pixel world's, without the pixels:
 
 * **camera** — which objects a view shows: what is near where the robot stands (the thing it is
-  at, what is on or in it, what shares its support, what lies on the floor of its room), plus
-  what it was aimed at in its room; other rooms and closed containers are never seen into. (In a
-  domain without ``robot_in``/``robot_at`` the whole scene is in view.) Each object in view gets
-  a visible fraction drawn in [0.3, 1] per view, redrawn whenever the viewpoint moves — that is
-  what the simulated VLM's accuracy depends on. A frame's detections come from the
-  :class:`~vap_bt.sim.detector.DetectorModel`: objects in view, each missed at its miss rate, with
-  the location relations its relation detector reports (wrong support at its error rate);
-* **viewpoints** — going to look at a thing moves the robot there (it stands at it and sees it),
-  in any room the open doors lead to (a frame has no pixels, unless ``frame_cards`` is set: then
-  each carries a tiny picture of its own id, :func:`~vap_bt.sim.captures.frame_card`, so that a
-  model served over HTTP, which is shown only images, can tell the frames apart);
+  at, what is on or in it, what shares its support, what lies on the floor of its room), and the
+  same near the *place* the camera is turned to, if that is in the robot's room. The camera turns
+  to the place an :class:`~vap_bt.robot.camera.Aim` names — where the executive's belief puts
+  what it wants to see (the support or container it believes a thing on or in; a piece of
+  furniture, door or floor is its own place) — never to where the thing truly is: a thing that
+  is not where belief puts it is not in the picture, unless it happens to be near the robot.
+  Other rooms and closed containers are never seen into. (In a domain without
+  ``robot_in``/``robot_at`` the whole scene is in view.) Each object in view gets a visible
+  fraction, and what its relations need (:class:`~vap_bt.sim.captures.ObjectView`: contact,
+  inside, leaf, top; the fingers) a share, drawn in [0.3, 1] per view — a view is a pose and a
+  place looked at, and moving either makes a new one; that is what the simulated VLM's accuracy
+  depends on. A frame's detections come from the :class:`~vap_bt.sim.detector.DetectorModel`:
+  objects in view, each missed at its miss rate (one draw per object and view), each with its
+  class label and no name, with the relations (:mod:`vap_bt.sim.relation_reports`) where it rests,
+  what blocks it and whether it can be reached, each wrong by model vlm-2's rule over how this
+  view shows it, the same for the same view — naming the detected thing ``""``, the frame's other
+  detections ``"#k"`` and the map's things by name (:mod:`vap_bt.robot.frame`); which object each
+  detection is stays in the capture record. The world's actions take names, and a name means the
+  object of that name;
+* **viewpoints** — going to a viewpoint stands the robot at its aim's place (it stands at it and
+  sees it; the pybullet camera drives to the view's base pose), in any room the open doors lead
+  to; a view whose aim belief places nowhere cannot be reached (a frame has no pixels, unless
+  ``frame_cards`` is set: then each carries a tiny picture of its own id,
+  :func:`~vap_bt.sim.captures.frame_card`, so that a model served over HTTP, which is shown only
+  images, can tell the frames apart);
+* **actions** — ``find`` goes where the goal's hints (the executive's belief, as the pybullet
+  ``find`` skill is given them) put its target: a thing believed on or in a place that it is not
+  on or in leaves the robot standing at that place, not at the thing (and a thing believed on or
+  in nothing, at the floor of its room); other actions, and ``find`` without hints, act on the
+  world as it is: an executed action is the world acting, not the camera;
 * **body** — the room the robot is in and whether the gripper holds something;
 * **site map** — rooms, floors, doors, furniture and the rigid facts of the task.
 """
@@ -32,22 +51,23 @@ import random
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.task import PlanningTask
 from vap_bt.robot.camera import Aim, Viewpoint
-from vap_bt.robot.frame import Detection, Frame
+from vap_bt.robot.frame import SELF, Detection, Frame, reference
+from vap_bt.robot.labels import class_of, label_of
 from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.scene.layout import floor_of
 from vap_bt.perception.backends.image import rgb_sha1
-from vap_bt.sim.captures import CaptureLog, CaptureRecord, frame_card
+from vap_bt.sim.captures import CaptureLog, CaptureRecord, ObjectView, frame_card
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.oracle import FunctionOracle
+from vap_bt.sim.relation_reports import RelationDetector
 from vap_bt.sim.situations import SituationModel, SituationSpec
 from vap_bt.world import ActionOutcome, GoalContext, InjectedSituation
 
 #: visibility of an object in view is drawn uniformly from [VISIBILITY_LOW, 1]
 VISIBILITY_LOW = 0.3
-#: where objects are: the relations the symbolic relation detector reports about an item in view
+#: where objects are (what a drop takes away)
 LOCATIONS = frozenset({"on", "inside", "in_room", "holding"})
-REPORTED = LOCATIONS | {"blocking", "reachable"}
 FURNITURE_TYPES = ("surface", "container", "sink")
 
 
@@ -63,6 +83,7 @@ class SymbolicWorld:
         self._situated = {"robot_in", "robot_at"} <= set(task.knowledge.predicates)
         self.situations = situations or SituationModel(enabled=False)
         self.detector = detector or DetectorModel()
+        self.relation_detector = RelationDetector(self.detector, task.knowledge, task.objects, seed)
         self.captures = CaptureLog()
         self.frame_cards = False  # frames carry a picture of their id (for the sim VLM served over HTTP)
         self.oracle = FunctionOracle(self._holds, self.injected)
@@ -73,15 +94,17 @@ class SymbolicWorld:
 
     def reset(self, seed: int) -> None:
         self.seed = seed
+        self.relation_detector.seed = seed
         self.atoms: set[Atom] = set(self.task.init)
         self.situations.reseed(seed)
         self._view_rng = random.Random(seed ^ 0x5EED)
-        self._detect_rng = random.Random(seed ^ 0xD37EC7)
         self._view = 0
         self._tick = 0  # bumps on every change of the world or the viewpoint
         self._frames = 0
         self._aim: tuple[str, ...] = ()
-        self._visibility: dict[tuple[str, bool], float] = {}
+        self._look: str | None = None  # the place the camera is turned to (None: what the robot stands at)
+        self._record: CaptureRecord | None = None  # the frame being taken
+        self._visibility: dict[tuple, float] = {}
         self._step = 0
         self._injected: list[InjectedSituation] = []
         self.captures.clear()
@@ -102,23 +125,72 @@ class SymbolicWorld:
         if ctx.cancelled():
             return ActionOutcome(False, "cancelled")
         truth = {a for a in self.atoms if self._holds(a)}
+        starts = self._starts_from(ga)
+        if starts:  # a base drives from wherever it stands: the motion starts where the action says,
+            # and goes where belief (the goal's hints) puts its target, whatever room that truly is
+            truth = (truth - {a for a in truth if a.predicate == "robot_at"}) | starts
+            truth |= {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "in_room"}
         if not ga.applicable(truth):
             self._new_view()
             return ActionOutcome(False, f"{ga}: nothing to act on")
-        intended = set(ga.apply(frozenset(self.atoms)))
-        if spec is not None and self._inject(spec, ga):
+        if starts:
+            self.atoms = (self.atoms - {a for a in self.atoms if a.predicate == "robot_at"}) | starts
+        intended = self._effects(ga, self.atoms, ctx)
+        if spec is not None and self._inject(spec, ga, ctx):
             # a failure that leaves the world as success would (an open door "fails to open") is
             # no situation: there is nothing to detect, so the oracle does not count it
             if self.atoms != intended:
                 self._injected.append(InjectedSituation(action, tuple(args), spec.kind, self._step))
         else:
             self.atoms = intended
+        self._look = None  # the skill moved the arm: the camera looks at what the robot stands at
         self._new_view()
         ctx.feedback(1.0, f"{ga} done")
         return ActionOutcome(True)
 
     def injected(self) -> list[InjectedSituation]:
         return list(self._injected)
+
+    def _starts_from(self, ga) -> set[Atom]:
+        """The ``robot_at`` an action that moves the base (it deletes where the robot stands)
+        starts from: a real base drives from wherever it is, so where belief thought the robot
+        stood does not make the motion fail, nor does a target that is truly in another room than
+        belief says (the robot drives to the believed place, and perception finds the thing
+        missing); the world's own position is what changes. Empty for every other action (a grasp
+        needs the robot truly at the thing)."""
+        pre = {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "robot_at"}
+        moves = any(a.predicate == "robot_at" for a in ga.diff(frozenset(self.atoms | pre)).deleted)
+        floors = self._map.floors()  # a floor is in its room, though no in_room says so
+        rooms = {r for a in pre for r in (*self._rooms_of(a.args[0]), floors.get(a.args[0])) if r is not None}
+        return pre if moves and (not rooms or self._robot_room() in rooms) else set()
+
+    def _effects(self, ga, atoms: set[Atom], ctx: GoalContext) -> set[Atom]:
+        """The world after ``ga`` from ``atoms``: its effects, except that a move to stand at a thing
+        goes where the goal's hints believe it (see the module docstring)."""
+        after = set(ga.apply(frozenset(atoms)))
+        hints = getattr(ctx, "hints", None) or {}
+        if not self._situated:
+            return after
+        for a in sorted(after - atoms):
+            thing = a.args[0] if a.predicate == "robot_at" else None
+            if thing is None or thing not in hints or thing in self._map.static_names() \
+                    or Atom("holding", (thing,)) in after:
+                continue  # the map's things do not move, and what the hand holds goes with the robot
+            place = self._believed_place(hints[thing], after)
+            rests = {b.args[1] for b in after if b.predicate in ("on", "inside") and b.args[0] == thing}
+            if place is not None and place not in rests:
+                after -= {a, Atom("inview", (thing,))}
+                after |= {Atom("robot_at", (place,)), Atom("inview", (place,))}
+        return after
+
+    def _believed_place(self, hint, after: set[Atom]) -> str | None:
+        """Where a hint puts its thing: what it is believed in or on, else the floor of the room the
+        robot stands in (where a look round begins)."""
+        place = hint.inside or hint.on
+        if place in self.task.objects:
+            return place
+        room = next((a.args[0] for a in after if a.predicate == "robot_in"), None)
+        return floor_of(room) if room is not None and floor_of(room) in self.task.objects else None
 
     # -- the truth (through self.oracle only) ------------------------------------------------
 
@@ -130,69 +202,93 @@ class SymbolicWorld:
     # -- robot interfaces: camera ------------------------------------------------------------
 
     def capture(self, aim: Aim | None = None) -> Frame:
-        if aim is not None and aim.names != self._aim:
-            self._aim = tuple(aim.names)
-        targets = set(self._aim)
-        vis = {o: v for o in self.task.objects if (v := self._visibility_of(o, o in targets)) > 0.0}
+        if aim is not None:
+            self._turn_to(aim)
+        vis = {o: v for o in self.task.objects if (v := self._visibility_of(o)) > 0.0}
         self._frames += 1
         frame_id = f"sym-{self.seed}-{self._frames}"
         card = frame_card(frame_id) if self.frame_cards else None
-        self.captures.add(CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick,
-                                        image_sha1=rgb_sha1(card) if card is not None else None))
-        dets = tuple(self._detect(o) for o in sorted(vis) if self._detectable(o)
-                     and self._detect_rng.random() >= self.detector.miss_rate)
-        return Frame(frame_id, float(self._tick), dets, rgb=card, aim=self._aim)
+        # a miss is drawn once per object and view: the same view gives the same detections
+        shown = [o for o in sorted(vis) if self._detectable(o) and not self.detector.missed(self._key(o))]
+        self._record = CaptureRecord(frame_id, self._tick, vis, self.oracle, lambda: self._tick,
+                                     image_sha1=rgb_sha1(card) if card is not None else None,
+                                     instances=tuple(shown), views={o: self._object_view(o) for o in vis},
+                                     fingers=self._fingers(), picture=f"sym-view-{self._view}",
+                                     labels={o: class_of(o) for o in vis})
+        self.captures.add(self._record)
+        return Frame(frame_id, float(self._tick), tuple(self._detect(o, shown) for o in shown), rgb=card, aim=self._aim)
 
     def goto_view(self, view: Viewpoint) -> bool:
-        """Stand at the viewed thing (as ``find`` does), if the open doors lead to its room."""
-        target = view.aim.names[0] if view.aim.names else None
-        if not self._situated or target is None or target not in self.task.objects:
+        """Stand at the view's place — what its aim names, where belief puts it — if the open doors
+        lead to its room; never at a thing's true place (see the module docstring)."""
+        place = self._place(view.aim)
+        if not self._situated:
             self._new_view()
-            return target is not None
+            return bool(view.aim.names)
         room = self._robot_room()
-        if view.room != room and view.room not in self._reachable_rooms(room):
+        if place is None or view.room not in self._rooms_of(place) \
+                or view.room != room and view.room not in self._reachable_rooms(room):
             return False
         self.atoms -= {a for a in self.atoms if a.predicate in ("robot_at", "inview", "robot_in")}
-        self.atoms |= {Atom("robot_in", (view.room,)), Atom("robot_at", (target,)), Atom("inview", (target,))}
-        self._aim = (target,)
+        self.atoms |= {Atom("robot_in", (view.room,)), Atom("robot_at", (place,)), Atom("inview", (place,))}
+        self._aim, self._look = tuple(view.aim.names), place
         self._new_view()
         return True
 
     def move_view(self, aim: Aim, direction: str) -> bool:
-        self._aim = tuple(aim.names)
+        self._aim, self._look = tuple(aim.names), self._place(aim) or self._look
         self._new_view()
         return True
+
+    def _turn_to(self, aim: Aim) -> None:
+        """Turn the camera to ``aim``'s place (a new view when that is another place); an aim
+        belief places nowhere leaves the camera as it is."""
+        self._aim = tuple(aim.names)
+        place = self._place(aim)
+        if place is not None and place != self._look:
+            self._look = place
+            self._new_view()
+
+    def _place(self, aim: Aim) -> str | None:
+        """The place ``aim`` turns the camera to: the believed place it carries, else the first
+        thing it names that the map fixes (furniture, a door, a floor); a room is its floor."""
+        static = self._map.static_names()
+        place = aim.place if aim.place in self.task.objects else next((n for n in aim.names if n in static), None)
+        if place is not None and self.task.objects.get(place) == "room":
+            floor = floor_of(place)
+            return floor if floor in self.task.objects else None
+        return place
 
     def _detectable(self, obj: str) -> bool:
         # rooms and floors are the map's, not detections
         return self.task.objects.get(obj) != "room" and obj not in self._map.floors()
 
-    def _detect(self, obj: str) -> Detection:
-        t = self.task.objects[obj]
-        rel = self._report(obj) if self._map.piece(obj) is None and self.task.objects[obj] != "door" else ()
-        return Detection(obj, t, relations=rel)
+    def _key(self, obj: str) -> str:
+        """Seeds a detector draw about ``obj`` in the current view."""
+        return f"{self.seed}|{self._view}|{obj}"
+
+    def _detect(self, obj: str, shown: list[str]) -> Detection:
+        """``obj`` as a robot's detector reports it: its class (:mod:`vap_bt.robot.labels`) and
+        where it is — naming itself ``""``, the frame's other detections ``"#k"``, and the map's
+        things (rooms, floors, furniture, doors) by name; what it could name in no such way, it
+        does not report. Furniture and doors report the rooms the map has them in."""
+        piece, door = self._map.piece(obj), self._map.door(obj)
+        if piece is not None or door is not None:
+            rel = tuple(Atom("in_room", (obj, r)) for r in ((piece.room,) if piece else door.rooms))
+        else:
+            rel = self._report(obj)
+        mapped = self._map.static_names()
+        refs = {o: reference(k) for k, o in enumerate(shown)}
+        refs.update({o: o for o in mapped})
+        refs[obj] = SELF
+        return Detection(label_of(obj, self._map),
+                         relations=tuple(Atom(a.predicate, tuple(refs[x] for x in a.args)) for a in rel
+                                         if all(x in refs for x in a.args)))
 
     def _report(self, obj: str) -> tuple[Atom, ...]:
-        """What the relation detector says of an item: its location, its support sometimes wrong."""
-        out = []
-        for a in sorted(self.atoms):
-            if a.predicate not in REPORTED or obj not in a.args or not self._holds(a):
-                continue
-            if a.predicate in ("on", "inside") and len(a.args) == 2 and a.args[0] == obj \
-                    and self._detect_rng.random() < self.detector.relation_error:
-                a = Atom(a.predicate, (obj, self._wrong_support(a)))
-            out.append(a)
-        return tuple(out)
-
-    def _wrong_support(self, a: Atom) -> str:
-        true = a.args[1]
-        want = self.knowledge.predicates[a.predicate][1]
-        room = self._room_of(true) or self._robot_room()
-        others = [f.name for f in self._map.furniture if f.room == room and f.name != true
-                  and self.knowledge.is_subtype(f.type, want)]
-        if a.predicate == "on" and room is not None and floor_of(room) != true and floor_of(room) in self.task.objects:
-            others.append(floor_of(room))
-        return self._detect_rng.choice(sorted(others)) if others else true
+        """What the relation detector says of an item in the frame being taken (its errors:
+        :mod:`vap_bt.sim.relation_reports`)."""
+        return self.relation_detector.report(self._record, obj, frozenset(self.atoms), self._robot_room())
 
     # -- robot interfaces: body and map ----------------------------------------------------------
 
@@ -204,7 +300,7 @@ class SymbolicWorld:
 
     # -- situations -------------------------------------------------------------------------
 
-    def _inject(self, spec: SituationSpec, ga) -> bool:
+    def _inject(self, spec: SituationSpec, ga, ctx: GoalContext) -> bool:
         """Make ``spec`` so; False when it cannot apply here (nothing held to drop)."""
         room = self._robot_room()
         obj = self._held() if spec.drops == "held" else (ga.args[spec.drops] if spec.drops is not None else None)
@@ -213,7 +309,7 @@ class SymbolicWorld:
         if spec.drops is not None:
             self._drop(obj, room)
         if spec.effect:
-            self.atoms = set(ga.apply(frozenset(self.atoms)))
+            self.atoms = self._effects(ga, self.atoms, ctx)
         return True
 
     def _drop(self, obj: str, room: str) -> None:
@@ -231,16 +327,34 @@ class SymbolicWorld:
         self._tick += 1
         self._visibility.clear()
 
-    def _visibility_of(self, obj: str, targeted: bool) -> float:
-        key = (obj, targeted)
+    def _visibility_of(self, obj: str) -> float:
+        key = (obj,)
         if key not in self._visibility:
-            seen = self._in_view(obj) or (targeted and self._in_room_with_robot(obj))
-            self._visibility[key] = self._view_rng.uniform(VISIBILITY_LOW, 1.0) if seen else 0.0
+            self._visibility[key] = self._view_rng.uniform(VISIBILITY_LOW, 1.0) if self._in_view(obj) else 0.0
         return self._visibility[key]
 
-    def _in_room_with_robot(self, obj: str) -> bool:
-        # the camera turns toward what it is asked about: anything in the robot's room, not shut away
-        return not self._enclosed(obj) and self._robot_room() in self._rooms_of(obj)
+    def _object_view(self, obj: str) -> ObjectView:
+        """What the relations about ``obj`` need from this view, drawn like its visibility (once per
+        view): an item's contact with its support, a container's inside (nothing of it through a
+        shut door), a leaf, a surface's top."""
+        t = self.task.objects.get(obj, "")
+        k = self.knowledge
+        kind = lambda *types: any(k.is_subtype(t, x) for x in types if x in k.parents)  # noqa: E731
+        draw = lambda what: self._draw((obj, what))  # noqa: E731
+        closed = Atom("closed", (obj,)) in self.atoms
+        return ObjectView(contact=draw("contact") if kind("item") else None,
+                          interior=(0.0 if closed else draw("interior")) if kind("container", "sink") else None,
+                          leaf=draw("leaf") if Atom("openable", (obj,)) in self.atoms or kind("door") else None,
+                          top=draw("top") if kind("surface", "room") else None)
+
+    def _fingers(self) -> float:
+        return self._draw(("fingers",), low=0.6)
+
+    def _draw(self, key: tuple, low: float = VISIBILITY_LOW) -> float:
+        """A share drawn uniformly in [low, 1] once per view (as :meth:`_visibility_of`)."""
+        if key not in self._visibility:
+            self._visibility[key] = self._view_rng.uniform(low, 1.0)
+        return self._visibility[key]
 
     def _in_view(self, obj: str) -> bool:
         if not self._situated:
@@ -249,15 +363,18 @@ class SymbolicWorld:
             return obj == self._robot_room()
         if Atom("holding", (obj,)) in self.atoms:
             return True
-        if self._enclosed(obj) or self._robot_room() not in self._rooms_of(obj):
+        room = self._robot_room()
+        if self._enclosed(obj) or room not in self._rooms_of(obj):
             return False
         focus = self._focus()
         if focus is None:
             return False
-        near = {focus} | self._supports(focus) | self._supported_by(focus)
-        for s in self._supports(focus):
-            near |= self._supported_by(s)  # things beside the focus on the same furniture
-        near |= self._supported_by(floor_of(self._robot_room()))  # things lying about nearby
+        looked_at = [focus, *([self._look] if self._look is not None and room in self._rooms_of(self._look) else [])]
+        near = self._supported_by(floor_of(room))  # things lying about nearby
+        for thing in looked_at:
+            near |= {thing} | self._supports(thing) | self._supported_by(thing)
+            for s in self._supports(thing):
+                near |= self._supported_by(s)  # things beside it on the same furniture
         return obj in near
 
     def _focus(self) -> str | None:
@@ -292,10 +409,6 @@ class SymbolicWorld:
     def _rooms_of(self, obj: str) -> set[str]:
         return {a.args[1] for a in self.atoms if a.predicate == "in_room" and a.args[0] == obj}
 
-    def _room_of(self, obj: str) -> str | None:
-        rooms = sorted(self._rooms_of(obj))
-        return rooms[0] if rooms else None
-
     def _held(self) -> str | None:
         return next((a.args[0] for a in self.atoms if a.predicate == "holding"), None)
 
@@ -311,7 +424,7 @@ def _site_map(task: PlanningTask) -> SiteMap:
         if len(joined) == 2:
             doors.append(DoorInfo(d, (joined[0], joined[1])))
     floors = {floor_of(r) for r in rooms}
-    furniture = tuple(FurnitureInfo(o, t, t, room_of[o]) for o, t in sorted(objs.items())
+    furniture = tuple(FurnitureInfo(o, class_of(o), t, room_of[o]) for o, t in sorted(objs.items())
                       if o not in floors and o in room_of and any(k.is_subtype(t, f) for f in FURNITURE_TYPES)
                       and "furniture" in k.parents)
     return SiteMap(rooms=tuple(RoomInfo(r, floor_of(r)) for r in rooms), doors=tuple(doors), furniture=furniture,

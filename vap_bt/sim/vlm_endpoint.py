@@ -32,7 +32,9 @@ still holds, a lossy copy, a URL to fetch, several images) or an **unread prompt
 appendix prompt over the profile's wording: an action-level question, a typo) gets what a model
 might say to a picture or a question it cannot make sense of: constrained to choices, a seeded
 uniform guess among them with equal logprobs for every choice (a guess stated as one); otherwise
-a hedge, "I can't tell from this image.", which the client reads as no answer. A text-only request
+a hedge, "I can't tell from this image.", which the client reads as no answer. The same goes for
+a question the simulated model abstains on (it cannot see the relation at all): constrained to
+choices it guesses among them with equal logprobs, unconstrained it hedges. A text-only request
 (goal parsing, writing paraphrases) gets "I can only answer questions about an image.": the
 simulated model neither parses goals nor writes paraphrases, so a profile's missing paraphrases
 come from its templates, as with ``--vlm sim``. Every such case is counted (``describe()["counts"]``,
@@ -164,8 +166,8 @@ class SimVLMEndpoint:
         text = answer.raw
         if req.choices is not None:  # constrained decoding: the reply is one of the choices
             fitting = [c for c in req.choices if c.lower() == text.lower()]
-            if not fitting:
-                self._count("constraint_without_answer")
+            if not fitting:  # an abstention, forced by the constraint into a guess stated as one
+                self._count("abstention_forced" if answer.value is None else "constraint_without_answer")
                 return self._unidentified(req)
             text, options = fitting[0], req.choices
         if answer.confidence is None or len(options) != 2:

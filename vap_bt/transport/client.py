@@ -392,7 +392,7 @@ class ZenohVLM:
 
     def ask(self, query: Query, frame: Frame) -> Answer:
         try:
-            return self._q.ask("ask", VlmRequest(query, frame.frame_id), Answer)
+            return self._q.ask("ask", VlmRequest(query, frame.frame_id, frame.identified()), Answer)
         except TransportError as exc:
             return Answer(f"transport: {exc}", None)
 

@@ -40,7 +40,8 @@ schema 3's observations and scene snapshots; 5 — goal requests carry the execu
 site map carries the furniture models (height, cavity, articulation, switch, tap; a door's
 articulation), the robot's drivers travel (driver calls and replies), and a simulated world has an
 action hook (``action_event``/``action_ack``) and, added later without a bump since nothing
-changed, an oracle for the runner's report (``oracle_query``/``oracle_reply``). A schema-1 frame is still recognised (its byte 8, the
+changed, an oracle for the runner's report (``oracle_query``/``oracle_reply``) and an aim's believed
+``place`` (a peer without it reads none and sends none). A schema-1 frame is still recognised (its byte 8, the
 start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
 versions, not garbage.
 
@@ -160,10 +161,13 @@ class MapRequest:
 
 @dataclass(frozen=True)
 class VlmRequest:
-    """Ask the world-side VLM ``query`` about a frame that world's camera took."""
+    """Ask the world-side VLM ``query`` about a frame that world's camera took; ``identified``
+    is the executive's association of names to the frame's detections (which instance in the
+    picture the question's names mean: a set-of-marks prompt's marks)."""
 
     query: Query
     frame_id: str
+    identified: dict = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -265,11 +269,11 @@ def _tuple_or_none(v):
 
 
 def _aim_out(a: Aim | None) -> dict | None:
-    return None if a is None else {"names": list(a.names), "point": a.point}
+    return None if a is None else {"names": list(a.names), "point": a.point, "place": a.place}
 
 
 def _aim_in(d: dict | None) -> Aim | None:
-    return None if d is None else Aim(tuple(d["names"]), _tuple_or_none(d["point"]))
+    return None if d is None else Aim(tuple(d["names"]), _tuple_or_none(d["point"]), d.get("place"))
 
 
 def _pack_capture(m: CaptureRequest) -> tuple[dict[str, Any], Arrays]:
@@ -309,8 +313,8 @@ def _pack_frame(f: Frame) -> tuple[dict[str, Any], Arrays]:
 
 
 def _unpack_frame(d: dict[str, Any], arrays: Arrays) -> Frame:
-    dets = tuple(Detection(x["name"], x["label"], int(x["pixels"]), int(x["mask_id"]), float(x["score"]),
-                           _atoms_in(x["relations"])) for x in d["detections"])
+    dets = tuple(Detection(x["label"], int(x["pixels"]), int(x["mask_id"]), float(x["score"]),
+                           _atoms_in(x["relations"]), name=x["name"]) for x in d["detections"])
     return Frame(d["frame_id"], float(d["stamp"]), dets, rgb=arrays.get("rgb"), depth=arrays.get("depth"),
                  masks=arrays.get("masks"), intrinsics=_tuple_or_none(d["intrinsics"]),
                  camera_pose=arrays.get("camera_pose"), aim=tuple(d["aim"]), extra=dict(d["extra"]))
@@ -370,12 +374,13 @@ def _driver_unpacker(cls: type) -> Unpacker:
 def _pack_vlm(m: VlmRequest) -> tuple[dict[str, Any], Arrays]:
     q = m.query
     return {"frame_id": m.frame_id, "prompt": q.prompt, "kind": q.kind, "purpose": q.purpose,
-            "about": _atoms_out(q.about), "objects": list(q.objects), "options": list(q.options)}, {}
+            "about": _atoms_out(q.about), "objects": list(q.objects), "options": list(q.options),
+            "identified": {str(k): int(v) for k, v in m.identified.items()}}, {}
 
 
 def _unpack_vlm(d: dict[str, Any], _: Arrays) -> VlmRequest:
     q = Query(d["prompt"], d["kind"], d["purpose"], _atoms_in(d["about"]), tuple(d["objects"]), tuple(d["options"]))
-    return VlmRequest(q, d["frame_id"])
+    return VlmRequest(q, d["frame_id"], {str(k): int(v) for k, v in d.get("identified", {}).items()})
 
 
 def _pack_oracle(m: OracleQuery) -> tuple[dict[str, Any], Arrays]:

@@ -51,7 +51,7 @@ from vap_bt.transport.messages import (
     decode,
     encode,
 )
-from vap_bt.robot.frame import Frame
+from vap_bt.robot.frame import marked_frame
 
 log = logging.getLogger(__name__)
 
@@ -244,7 +244,7 @@ class SkillServer:
     def _ask(self, payload: bytes) -> Any:
         req = decode(payload, VlmRequest)
         # the world-side VLM knows its camera's frames by id: the pixels need not travel back
-        return self.vlm.ask(req.query, Frame(req.frame_id, 0.0))
+        return self.vlm.ask(req.query, marked_frame(req.frame_id, req.identified))
 
 
 def _network_callback(fn: Callable[[Any], None]) -> zenoh.handlers.Callback:

@@ -43,7 +43,7 @@ def add_sim_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("task", help="task file whose household to build (trees/*.yaml)")
     p.add_argument("--seed", type=int, default=0, help="the world's first seed (a run resets it to its own)")
     p.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
-    p.add_argument("--vlm-error", type=float, help="the simulated VLM's per-query error rate (default 0.05)")
+    p.add_argument("--vlm-noise", type=float, help="scale of the simulated VLM's imperfections: 1 the calibrated model (default), 0 an ideal reader of the picture")
     add_transport_arguments(p, default_listen=True, default_endpoint=SIM_ENDPOINT)
 
 
@@ -74,7 +74,7 @@ def run_sim(args: argparse.Namespace) -> int:
     task = taskfile.load(args.task)
     if task.spec.scene is None:
         raise InputError(args.task, "vap-bt sim builds a household from a task file's scene:; this task has none")
-    cfg = runner.RunConfig.from_task(task, world="pybullet", seed=args.seed, vlm_error=args.vlm_error,
+    cfg = runner.RunConfig.from_task(task, world="pybullet", seed=args.seed, vlm_noise=args.vlm_noise,
                                      injection=False if args.no_injection else None)
     robots = tuple(sorted({e.robot for e in plugins.skill_table(plugins.discover_skills()).values()}))
     settings = settings_from_args(args, default_listen=True, default_endpoint=SIM_ENDPOINT, mode="router")

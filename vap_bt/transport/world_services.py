@@ -30,7 +30,7 @@ import zenoh
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.errors import TransportError
-from vap_bt.robot.frame import Frame
+from vap_bt.robot.frame import marked_frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.transport import keys
 from vap_bt.transport.client import first_reply
@@ -72,7 +72,7 @@ class VlmServer:
 
     def _ask(self, payload: bytes) -> Any:
         req = decode(payload, VlmRequest)
-        return self.vlm.ask(req.query, Frame(req.frame_id, 0.0))
+        return self.vlm.ask(req.query, marked_frame(req.frame_id, req.identified))
 
     def close(self) -> None:
         self._declared.undeclare()

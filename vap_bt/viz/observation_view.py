@@ -58,8 +58,9 @@ def camera_entities(obs: Frame) -> list[tuple[str, object]]:
 
 
 def segment_classes(obs: Frame) -> rr.AnnotationContext | None:
-    """Names for the mask classes (mask id + 1; 0 is background)."""
-    named = sorted((d.mask_id, d.name) for d in obs.detections if d.mask_id >= 0)
+    """Names for the mask classes (mask id + 1; 0 is background): what the robot took each
+    detection for, or its class in brackets where it took it for nothing it knows."""
+    named = sorted((d.mask_id, d.name or f"({d.label})") for d in obs.detections if d.mask_id >= 0)
     if obs.masks is None or not named:
         return None
     return rr.AnnotationContext([(0, "background")] + [(i + 1, name) for i, name in named])

@@ -247,7 +247,7 @@ class TreeRecorder:
             view_no = self.views
             self.stream.set_time(L.VIEW, sequence=self.views)
             classes = segment_classes(obs)
-            names = {d.mask_id: d.name for d in obs.detections if d.mask_id >= 0}
+            names = {d.mask_id: d.name or f"({d.label})" for d in obs.detections if d.mask_id >= 0}
             if classes is not None and names != self._classes:
                 self._classes = names
                 self.stream.log(f"{L.WORLD}/camera/segmentation", classes, static=True)
