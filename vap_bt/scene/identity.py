@@ -94,9 +94,10 @@ class Believed:
     #: thing from the robot)
     told: bool = False
     #: belief has it inside a container it believes closed: no camera sees it there, so no
-    #: detection is taken for it (a detector's false positive on the closed door, of its class,
-    #: would otherwise pin it to the door's face, and the real thing, once the door is open, would
-    #: lie beyond the radius of that "sighting")
+    #: detection with depth is taken for it (a detector's false positive on the closed door, of
+    #: its class, would otherwise pin it to the door's face, and the real thing, once the door is
+    #: open, would lie beyond the radius of that "sighting"). Without pixels a world's reports
+    #: say what its view shows, and the reported support decides
     hidden: bool = False
     #: belief has it inside ``support`` (not on it): see :attr:`IdentityParams.behind_front`
     inside: bool = False
@@ -317,11 +318,11 @@ class Identifier:
               strict: bool) -> float | None:
         """The cost of taking ``d`` for an object believed at ``b`` of class ``cls`` (None: it
         cannot be)."""
-        if b.hidden or (d.label != cls and (self.p.similar_cost is None or not _compatible(d.label, cls))):
+        if d.label != cls and (self.p.similar_cost is None or not _compatible(d.label, cls)):
             return None
         extra = 0.0 if d.label == cls else self.p.similar_cost
         if point is not None:
-            if b.point is None or b.inside and not self._behind_front(b.support, point):
+            if b.point is None or b.hidden or b.inside and not self._behind_front(b.support, point):
                 return None
             dist = float(np.linalg.norm(np.subtract(point, b.point)))
             if dist <= b.radius:
