@@ -326,7 +326,7 @@ class Executive:
                            belief.typed(facts, k, self.task.objects),
                            tracks_hand={"holding", "hand_empty"} <= set(k.predicates))
         for n, obj in graph.objects.items():
-            if obj.centroid is not None:
+            if obj.centroid is not None and n not in prior_only:  # the prior's place is not where it was seen
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
         self.graph = graph
         states = self._ask_states(graph)
@@ -355,6 +355,13 @@ class Executive:
         # and then where the search saw it
         unplaced = {n for n in self._searching if not self.builder.detected(n)
                     or self.geometry is not None and not self.builder.placed(n)}
+        # so is any item whose sightings place it nowhere (with depth): a false positive of its
+        # class 0.9 m up in the wrong room, taken at a first sighting, would otherwise pin it
+        # there, and the real one, on the floor next door, would never be taken
+        if self.geometry is not None:
+            in_hand = (held,) if held else ()
+            unplaced |= {n for n in self.task.objects if self._portable(n) and n not in in_hand
+                         and self.builder.detected(n) and not self.builder.placed(n, in_hand)}
         belief = {}
         for n in self.task.objects:
             if n in unplaced:
