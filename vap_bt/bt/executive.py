@@ -349,15 +349,12 @@ class Executive:
         held = next((a.args[0] for a in sorted(graph.facts) if a.predicate == "holding" and a.args), None)
         if state.gripper_holding is False:
             held = None  # an empty gripper holds nothing, whatever belief says
-        # a thing looked for is placed nowhere until this search has seen it — with depth, seen
-        # on or in something: a false positive of its class against a wall, whose centroid places
-        # it nowhere, does not pin it there (without pixels, a detection's reports place it) —
-        # and then where the search saw it
-        unplaced = {n for n in self._searching if not self.builder.detected(n)
-                    or self.geometry is not None and not self.builder.placed(n)}
-        # so is any item whose sightings place it nowhere (with depth): a false positive of its
-        # class 0.9 m up in the wrong room, taken at a first sighting, would otherwise pin it
-        # there, and the real one, on the floor next door, would never be taken
+        # a thing looked for is placed nowhere until this search has seen it, and then where it
+        # did; so is, with depth, any item whose sightings place it on or in nothing: a false
+        # positive of its class against a wall or 0.9 m up in the wrong room, taken for it, would
+        # otherwise pin it there, and the real one would never be taken (without pixels, a
+        # detection's reports place it)
+        unplaced = {n for n in self._searching if not self.builder.detected(n)}
         if self.geometry is not None:
             in_hand = (held,) if held else ()
             unplaced |= {n for n in self.task.objects if self._portable(n) and n not in in_hand

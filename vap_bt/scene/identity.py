@@ -200,10 +200,8 @@ class Identifier:
         if piece is None or piece.pose is None or not piece.footprint or piece.cavity is None \
                 or piece.cavity.open != "front":
             return True
-        x, y, yaw = piece.pose
-        depth = piece.footprint[1]
-        out = float(np.subtract(point[:2], (x, y)) @ (math.cos(yaw), math.sin(yaw)))  # along the front's normal
-        return depth / 2 - out >= self.p.behind_front
+        out = float(np.subtract(point[:2], piece.pose[:2]) @ piece.front)  # along the front's normal
+        return piece.footprint[1] / 2 - out >= self.p.behind_front
 
     # -- the map's things -----------------------------------------------------------------------
 
