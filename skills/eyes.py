@@ -237,13 +237,16 @@ class Eyes:
         self.noticed(frame, None if self._held is None else self._held.name)
         return frame
 
-    def measure(self, name: str, point, allow_base: bool = False, radius: float = SEEN_RADIUS) -> Seen | None:
-        """Look at ``point`` (where ``name`` is believed to be, within ``radius``) and measure
-        ``name`` in the frame: the detection of its class there; None when no look shows it."""
+    def measure(self, name: str, point, allow_base: bool = False, radius: float = SEEN_RADIUS,
+                inside: str | None = None) -> Seen | None:
+        """Look at ``point`` (where ``name`` is believed to be, within ``radius``; ``inside``: in
+        that container) and measure ``name`` in the frame: the detection of its class there; None
+        when no look shows it."""
+        believed = Believed(tuple(map(float, point)), radius, inside, inside=inside is not None)
         for lift in LOOK_LIFTS:
             if not self.look_at(point, lift=lift, allow_base=allow_base):
                 continue
-            seen = seen_from(self.frame({name: Believed(tuple(map(float, point)), radius)}), name)
+            seen = seen_from(self.frame({name: believed}), name)
             if seen is not None:
                 return seen
         return None

@@ -234,15 +234,21 @@ class Hands:
         from its standoff. The detection taken for it is one of its class within the radius
         belief gave (else: anywhere on the piece it is believed on or in, else near the point)."""
         radius = self.belief_radius(where)
-        seen = self.eyes.measure(name, point, radius=radius)
+        seen = self.eyes.measure(name, point, radius=radius, inside=where.inside)
         if seen is None:
             self.nav.approach(self.nav.standoff(name, point, where.place))
-            seen = self.eyes.measure(name, point, radius=radius)
+            seen = self.eyes.measure(name, point, radius=radius, inside=where.inside)
+        wider = self.belief_radius(where, given=False)
+        if seen is None and wider > radius:
+            # where belief measured it may be off (a sighting taken for it that was not it); what
+            # belief says it is on or in still holds until a look says otherwise
+            seen = self.eyes.measure(name, point, radius=wider, inside=where.inside)
         return seen
 
-    def belief_radius(self, where: Where) -> float:
-        """How far from the point belief gave an item may be (see :meth:`locate`)."""
-        if where.radius is not None:
+    def belief_radius(self, where: Where, given: bool = True) -> float:
+        """How far from the point belief gave an item may be (see :meth:`locate`): the goal's
+        radius (``given``), else the extent of the piece it is believed on or in."""
+        if given and where.radius is not None:
             return where.radius
         piece = self.scene.furniture.get(where.place or "")
         if piece is not None:
@@ -320,7 +326,7 @@ class Hands:
                 return Outcome(False, f"{name}: no arm pose reaches it")
             way, off, turned = stand
             stood.append(self.body.base_pose())
-            closer = self.eyes.measure(name, seen.centroid)  # a second look from where the hand works
+            closer = self.eyes.measure(name, seen.centroid, inside=where.inside)  # a second look from where the hand works
             if closer is not None:
                 seen = closer
                 looks.append((seen, self.body.mark()))

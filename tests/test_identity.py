@@ -14,7 +14,7 @@ import pytest
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.labels import class_of, label_of
-from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.site_map import Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.scene.identity import Believed, Identifier, centroid_of, named_relations
 
 W, H, F = 160, 120, 100.0
@@ -105,6 +105,24 @@ def test_an_object_believed_elsewhere_takes_nothing_and_a_wide_belief_takes_anyt
     on_table = Believed((0.6, 0.5, 0.7), 0.65, support="table")
     assert names(ident().identify(pixel_frame(("plate", (0.85, 0.6, 0.72))), {"plate": on_table})) == ["plate"]
     assert names(ident().identify(pixel_frame(("plate", (-0.8, -0.6, 0.93))), {"plate": on_table})) == [""]
+
+
+def test_a_thing_inside_a_container_is_never_seen_shut_in_nor_on_its_front():
+    """Belief has the cup inside a cabinet that opens at the front (its front 0.25 m along y): a
+    detector's false positive of a cup on the front's face, within the belief's radius, is not
+    the cup; one standing in the cavity is. While belief has the cabinet shut, nothing is."""
+    cabinet = FurnitureInfo("cabinet", "cabinet", "container", "kitchen", (0.0, 0.5, -1.5708), (0.8, 0.5), 0.9,
+                            Cavity((0.1, 0.8), 0.03, "front"))
+    site = SiteMap(SITE.rooms, SITE.doors, (*SITE.furniture, cabinet))
+    who = Identifier({**VOCABULARY, "cabinet": "cabinet"}, site)
+    inside = Believed((0.0, 0.5, 0.45), 0.55, "cabinet", inside=True)
+    on_front, in_cavity = ("cup", (-0.1, 0.26, 0.4)), ("cup", (0.1, 0.52, 0.4))
+    assert names(who.identify(pixel_frame(on_front, in_cavity), {"cup": inside})) == ["", "cup"]
+    assert names(who.identify(pixel_frame(on_front), {"cup": inside})) == [""]
+    shut = Believed((0.0, 0.5, 0.45), 0.55, "cabinet", inside=True, hidden=True)
+    assert names(who.identify(pixel_frame(in_cavity), {"cup": shut})) == [""]
+    # on the cabinet (not in it), the front rule does not apply
+    assert names(who.identify(pixel_frame(on_front), {"cup": Believed((0.0, 0.5, 0.45), 0.55, "cabinet")})) == ["cup"]
 
 
 def test_a_confused_label_matches_at_a_cost_and_an_unrelated_one_never():

@@ -326,7 +326,7 @@ class Executive:
                            belief.typed(facts, k, self.task.objects),
                            tracks_hand={"holding", "hand_empty"} <= set(k.predicates))
         for n, obj in graph.objects.items():
-            if obj.centroid is not None:
+            if obj.centroid is not None and n not in prior_only:  # the prior's place is not where it was seen
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
         self.graph = graph
         states = self._ask_states(graph)
@@ -349,12 +349,16 @@ class Executive:
         held = next((a.args[0] for a in sorted(graph.facts) if a.predicate == "holding" and a.args), None)
         if state.gripper_holding is False:
             held = None  # an empty gripper holds nothing, whatever belief says
-        # a thing looked for is placed nowhere until this search has seen it — with depth, seen
-        # on or in something: a false positive of its class against a wall, whose centroid places
-        # it nowhere, does not pin it there (without pixels, a detection's reports place it) —
-        # and then where the search saw it
-        unplaced = {n for n in self._searching if not self.builder.detected(n)
-                    or self.geometry is not None and not self.builder.placed(n)}
+        # a thing looked for is placed nowhere until this search has seen it, and then where it
+        # did; so is, with depth, any item whose sightings place it on or in nothing: a false
+        # positive of its class against a wall or 0.9 m up in the wrong room, taken for it, would
+        # otherwise pin it there, and the real one would never be taken (without pixels, a
+        # detection's reports place it)
+        unplaced = {n for n in self._searching if not self.builder.detected(n)}
+        if self.geometry is not None:
+            in_hand = (held,) if held else ()
+            unplaced |= {n for n in self.task.objects if self._portable(n) and n not in in_hand
+                         and self.builder.detected(n) and not self.builder.placed(n, in_hand)}
         belief = {}
         for n in self.task.objects:
             if n in unplaced:

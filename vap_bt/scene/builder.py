@@ -451,12 +451,14 @@ class SceneGraphBuilder:
         if place is None and room is None:
             return None
         support = place.args[1] if place is not None else None
+        inside = place is not None and place.predicate == "inside"
+        hidden = inside and Atom("closed", (support,)) in graph.facts
         obj = graph.objects.get(name)
         if not seen_first and obj is not None and obj.centroid is not None and obj.located == frozenset(loc):
-            return Believed(obj.centroid, SEEN_RADIUS, support, room)
+            return Believed(obj.centroid, SEEN_RADIUS, support, room, hidden=hidden, inside=inside)
         point, radius = self._extent(graph, place, room)
         # never detected: only the task file's word places it, and the word may be wrong
-        return Believed(point, radius, support, room, told=name not in self.sighted)
+        return Believed(point, radius, support, room, told=name not in self.sighted, hidden=hidden, inside=inside)
 
     def _extent(self, graph: SceneGraph, place: Atom | None, room: str | None) -> tuple[tuple[float, float, float] | None, float]:
         """A point of where ``place`` (on or in something) or ``room`` puts a thing, and how far
