@@ -34,6 +34,15 @@ PATH_STEP = 0.05
 #: rad: a waypoint this near where the joints are is where they are (toppra finds no timing for a
 #: path of a few tenths of a milliradian, and a look already aimed was refused as unreachable)
 NO_MOVE = 1e-3
+#: rad the shoulder or the elbow may turn between two steps of a straight tcp line (a few
+#: centimetres each): more is IK answering from another branch of the arm (the shoulder swung
+#: 1.3 rad, the wrist half a turn round), and a spline through that jump sweeps the arm and
+#: overshot a wrist past its limit (boil_water on real sensors: the takeout's way into the cabinet
+#: was refused whole). The wrist's joints are not held to it: a line whose end turns the hand
+#: turns them that much per step
+LINE_JOINT_JUMP = 0.8
+#: of the arm's limits: backing off a strike, slowly
+BACK_OFF_SPEED = 0.3
 #: rad inside the joint limits a waypoint turned by a whole turn must stay
 UNWIND_MARGIN = 0.5
 #: the one turn a commanded shoulder lift is written in: a joint-space way between two values in it
@@ -61,6 +70,13 @@ IK_MOBILE = IKOptions(max_seeds=1, max_iterations=200, position_tolerance=2e-3, 
 
 class Stopped(Exception):
     """A motion did not complete (cancelled, or the driver refused it); the skill ends."""
+
+
+class Struck(Stopped):
+    """An arm motion stopped against something (the driver's ``blocked``): the scene model did not
+    hold it where it is — a piece of furniture a few centimetres off where the map, laid by a
+    localiser's error and a registration's, puts it. A checked way backs off the way it came
+    (:meth:`Body.through`); a line into a contact ends the skill."""
 
 
 class Slipped(Stopped):
@@ -267,7 +283,14 @@ class Body:
         for q in route:
             # each segment from where the joints are (an arm held off its set-point by something
             # it touched would have the next segment refused as starting elsewhere)
-            if not self._timed([self.q(), q], False, speed):
+            before = self.q()
+            try:
+                if not self._timed([before, q], False, speed):
+                    return False
+            except Struck:
+                # the way was clear of the scene as modelled, not as it stands: back the way it
+                # came (a second strike ends the skill) and let the caller try another way
+                self._timed([self.q(), before], False, BACK_OFF_SPEED)
                 return False
         return True
 
@@ -310,6 +333,8 @@ class Body:
     def _follow(self, traj: JointTrajectory) -> None:
         res = self.arm.follow(traj, self.cancelled)
         if not res.completed:
+            if res.reason.startswith("blocked") and not self.cancelled():
+                raise Struck(res.reason)
             raise Stopped(res.reason or "the arm stopped")
 
     def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False, frame: str = "tcp") -> bool:
@@ -353,8 +378,8 @@ class Body:
         qs: list[np.ndarray] = []
         for k in range(1, steps + 1):
             q = self.solve(se3.interpolate(start, target, k / steps), frame, seed, collide=collide)
-            if q is None:
-                break
+            if q is None or _turned_by(q[3:6], seed[3:6]) > LINE_JOINT_JUMP:
+                break  # IK lost the line, or left it for another branch of the arm
             qs.append(q)
             seed = q
         return qs
@@ -392,6 +417,11 @@ class Body:
         q = self.q()
         q[3:] = self.cfg.arm.home
         self.through([q], 0.8)
+
+
+def _turned_by(q: np.ndarray, ref: np.ndarray) -> float:
+    """The largest joint change from ``ref`` to ``q``, each the short way round (rad)."""
+    return float(np.max(np.abs(np.remainder(np.asarray(q) - ref + np.pi, 2 * np.pi) - np.pi)))
 
 
 def _nearest_turn(q: np.ndarray, ref: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:

@@ -190,40 +190,39 @@ class Eyes:
         band left of it that the stereo pair cannot see past it: the item's box is projected once
         (normalised image coordinates, from the camera pose now), widened to the left by its
         stereo shadow at that distance, and aims whose point falls outside that outline by
-        AIM_MARGIN, and inside the frame, are tried from small turns to large ones.
-        Returns ``T`` when the point is not covered or no turn clears it."""
+        AIM_MARGIN, and inside the frame, are tried from small turns to large ones; when none
+        clears the shadow too, the item alone (the shadow costs depth only, the picture still
+        shows the point: a knife held across the view cast a shadow that no turn cleared, and the
+        aim went straight at the egg behind the blade). Returns ``T`` when the point is not
+        covered or no turn clears it."""
         if self.held is None:
             return T
         corners = self.held.corners_at(self.body.pose("tcp"))
         C = np.linalg.inv(self.body.pose("camera_optical"))
         pc = corners @ C[:3, :3].T + C[:3, 3]
         z = np.maximum(pc[:, 2], self.cam.near)
-        uv = pc[:, :2] / z[:, None]
+        item = pc[:, :2] / z[:, None]
+        outlines = [item]
         if self.cam.baseline > 0.0:  # the right imager's view of the point is blocked this far left of the item
-            shadow = uv.copy()
+            shadow = item.copy()
             shadow[:, 0] -= self.cam.baseline * np.maximum(1.0 / z - 1.0 / max(distance, 1e-3), 0.0)
-            uv = np.vstack([uv, shadow])
-        hull = cv2.convexHull(uv.astype(np.float32))
+            outlines.insert(0, np.vstack([item, shadow]))
         half = np.array([self.cam.width / 2 / self.cam.fx, self.cam.height / 2 / self.cam.fy]) - AIM_MARGIN
+        for outline in outlines:
+            hull = cv2.convexHull(outline.astype(np.float32))
 
-        def clear(uv) -> bool:
-            if np.any(np.abs(uv) > half):
-                return False
-            return cv2.pointPolygonTest(hull, (float(uv[0]), float(uv[1])), True) < -AIM_MARGIN
+            def clear(uv, hull=hull) -> bool:
+                if np.any(np.abs(uv) > half):
+                    return False
+                return cv2.pointPolygonTest(hull, (float(uv[0]), float(uv[1])), True) < -AIM_MARGIN
 
-        if clear(np.zeros(2)):
-            return T
-        for r in AIM_TURNS:
-            for ang in np.linspace(0.0, 2 * math.pi, 16, endpoint=False):
-                uv = np.array([math.cos(ang), math.sin(ang)]) * math.tan(r)
-                if clear(uv):
-                    d = np.array([uv[0], uv[1], 1.0])
-                    d /= np.linalg.norm(d)
-                    # the turn taking the optical axis to d, undone: the point then shows at uv
-                    axis = np.cross((0.0, 0.0, 1.0), d)
-                    out = T.copy()
-                    out[:3, :3] = T[:3, :3] @ se3.axis_angle(axis / np.linalg.norm(axis), math.acos(float(d[2]))).T
-                    return out
+            if clear(np.zeros(2)):
+                return T
+            for r in AIM_TURNS:
+                for ang in np.linspace(0.0, 2 * math.pi, 16, endpoint=False):
+                    uv = np.array([math.cos(ang), math.sin(ang)]) * math.tan(r)
+                    if clear(uv):
+                        return _turned_to(T, uv)
         return T
 
     # -- seeing --------------------------------------------------------------------------------
@@ -250,3 +249,14 @@ class Eyes:
             if seen is not None:
                 return seen
         return None
+
+
+def _turned_to(T: np.ndarray, uv: np.ndarray) -> np.ndarray:
+    """The camera pose ``T`` turned so that the point on its optical axis shows at ``uv``
+    (normalised image coordinates): the turn taking the axis to that direction, undone."""
+    d = np.array([uv[0], uv[1], 1.0])
+    d /= np.linalg.norm(d)
+    axis = np.cross((0.0, 0.0, 1.0), d)
+    out = T.copy()
+    out[:3, :3] = T[:3, :3] @ se3.axis_angle(axis / np.linalg.norm(axis), math.acos(float(d[2]))).T
+    return out

@@ -258,13 +258,19 @@ class Handles:
         z = sum(cav.z) / 2 if cav is not None else f.height / 2
         return f.to_world((0.0, f.depth / 2, z))
 
-    def joint_now(self, name: str, opening: bool) -> float:
+    def joint_now(self, name: str, opening: bool, again: bool = False) -> float:
         """The leaf's joint value as a look shows it; else what the action presumes (closed before
-        an open, open before a close)."""
+        an open, open before a close). ``again``: a second look, from where the hand will work,
+        changes the first one's value only on clear evidence (``gated``) — it is for where the
+        handle is: from close above a drawer's front, every pulled-out value explains its points
+        as well as the closed one (no sight line crosses a front pulled out under the camera),
+        and a closed drawer was taken for one open 16 cm, the hand closing on air in front of it;
+        a shut room door seen from beside its handle was fitted a quarter open, and the hand
+        pushed it open on its way to where that handle would be."""
         leaf = self.scene.leaves[name]
         default = 0.0 if opening else leaf.art.opened * OPEN_TO
         if self.eyes.look_at(self.leaf_point(name)):
-            q = self.scene.fit_leaf(name, self.eyes.frame())
+            q = self.scene.fit_leaf(name, self.eyes.frame(), gated=again, handle=True if again else None)
             if q is not None:
                 return q
         return self.scene.joint.get(name, default)
@@ -319,7 +325,7 @@ class Handles:
         # the map onto what the camera shows (the handle within a centimetre or two of where the
         # fingers will close, however far the localiser is off) and the path is planned again
         here = self.body.base_pose()
-        q0 = self.joint_now(name, opening)
+        q0 = self.joint_now(name, opening, again=True)
         again, _, _ = self._plan(name, q0, opening, here)
         if again.waypoints:
             path, grasp = again, again.waypoints[0]

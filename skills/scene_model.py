@@ -31,6 +31,7 @@ from vap_bt.motion import se3
 from vap_bt.motion.collision import SceneBoxes
 from vap_bt.motion.footprint import Obb, apart, footprint
 from vap_bt.robot.frame import Frame
+from vap_bt.robot.labels import label_of
 from vap_bt.robot.site_map import Articulation, FurnitureInfo, SiteMap
 from vap_bt.scene.pointcloud import backproject, instance_cloud
 
@@ -39,6 +40,17 @@ from vap_bt.scene.pointcloud import backproject, instance_cloud
 #: itself (a false positive on a patch of it) is nothing the base could run into (the flattest
 #: item, a plate lying, stands 1.8 cm)
 FLOOR_TOUCH, FLOOR_ITEM_TOP, FLOOR_ITEM_LEAST = 0.06, 0.3, 0.012
+#: how high an item rises is read at this quantile of its points' heights: on a stereo camera's
+#: depth a patch of floor has points a few centimetres up (the noise of a metre or two), and an
+#: unnamed false positive on it, taken by its highest point, stood in the base's way
+FLOOR_ITEM_QUANTILE = 0.75
+#: m round a leaf (where it is believed to stand) within which a piece's points are the leaf's,
+#: left out of registering the map (:meth:`SceneModel.relocalize`)
+LEAF_CUT = 0.03
+#: m beyond a mapped solid's faces a point is still that solid's (the depth noise of a metre or
+#: two, 1-3 cm, and the localiser's error left after registration); a detection with fewer than
+#: MAP_LEFT_LEAST points off the map is nothing new (a few noisy pixels)
+MAP_SLACK, MAP_LEFT_LEAST = 0.05, 20
 #: m the base already is from a floor item when it counts as touching it (see low_obstacles)
 LOW_MARGIN = 0.01
 #: what the keys of floor items nobody named start with; one seen again within this (m) of where
@@ -427,9 +439,14 @@ class SceneModel:
             cloud = instance_cloud(frame, d)
             if cloud is None:
                 continue
-            clouds[d.name] = np.asarray(cloud.points)
-            models[d.name] = raw[d.name].solids() + ([leaves[d.name].box(self.joint.get(d.name, 0.0))]
-                                                     if d.name in leaves else [])
+            pts = np.asarray(cloud.points)
+            if d.name in leaves:
+                # the map is laid by what does not move: a leaf stands where it was last seen, as
+                # far as anyone knows, and a fit that takes it for fixed slides the map along its
+                # travel (a drawer pulled open, alone in view, moved the map 11 cm on exact depth)
+                pts = pts[~leaves[d.name].box(self.joint.get(d.name, 0.0)).contains(pts, LEAF_CUT)]
+            clouds[d.name] = pts
+            models[d.name] = raw[d.name].solids()
         c = register(clouds, models, self.registration)
         if c is None:
             return None
@@ -475,19 +492,39 @@ class SceneModel:
         if held is not None:
             self.floor_items.pop(held, None)
         mapped = self.site.static_names()
+        fixed = {label_of(n, self.site) for n in mapped}  # furniture and doors: the map's, never on the floor
         for d in frame.detections:
-            if d.name in mapped or (d.name and d.name == held):
+            if d.name in mapped or (d.name and d.name == held) or (not d.name and d.label in fixed):
                 continue
             cloud = instance_cloud(frame, d)
             if cloud is None or not len(cloud.points):
                 continue
-            pts = np.asarray(cloud.points)
+            pts = self.unmapped(np.asarray(cloud.points))
+            if len(pts) < MAP_LEFT_LEAST:
+                if d.name:
+                    self.floor_items.pop(d.name, None)
+                continue  # what the map already holds (a mask spilled onto a leaf, a false positive on it)
             lo, hi = pts.min(axis=0), pts.max(axis=0)
             key = d.name or self._anonymous_key(d.label, (lo + hi) / 2)
-            if lo[2] < FLOOR_TOUCH and FLOOR_ITEM_LEAST < hi[2] < FLOOR_ITEM_TOP:
+            rise = float(np.quantile(pts[:, 2], FLOOR_ITEM_QUANTILE))  # not the highest: noise lifts a few
+            if lo[2] < FLOOR_TOUCH and FLOOR_ITEM_LEAST < rise and hi[2] < FLOOR_ITEM_TOP:
                 self.floor_items[key] = Obb.aabb((lo[0], lo[1], 0.0), (hi[0], hi[1], hi[2]))
             else:
                 self.floor_items.pop(key, None)
+
+    def unmapped(self, pts: np.ndarray) -> np.ndarray:
+        """Those of ``pts`` that no mapped solid explains — walls, furniture, leaves where they are
+        believed — within :data:`MAP_SLACK`: the obstacle layer holds what the map does not. A
+        detection of a log on a room door's open leaf (the detector's false positive, its points
+        the leaf's foot) was remembered as a log on the floor beside the leaf, and no way past the
+        leaf was clear (store_firewood on real sensors)."""
+        if not len(pts):
+            return pts
+        boxes = self.walls() + [b for f in self.furniture.values() for b in f.solids()] + self.leaf_boxes()
+        mapped = np.zeros(len(pts), bool)
+        for b in boxes:
+            mapped |= b.contains(pts, MAP_SLACK)
+        return pts[~mapped]
 
     def _anonymous_key(self, label: str, centre: np.ndarray) -> str:
         """The key of an unnamed item of class ``label`` at ``centre``: that of one remembered
@@ -621,11 +658,13 @@ class SceneModel:
             votes.append(bool(np.median(returns) > p[2] + beyond))
         return None if not votes else 2 * sum(votes) > len(votes)
 
-    def fit_leaf(self, name: str, frame: Frame, hint: float | None = None, gated: bool = False) -> float | None:
+    def fit_leaf(self, name: str, frame: Frame, hint: float | None = None, gated: bool = False,
+                 handle: bool | None = None) -> float | None:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece
         of furniture (or door) (:meth:`Leaf.fit`), or ``hint`` when the frame does not show it.
         ``gated``: the believed value stands unless the frame clearly explains another better
-        (a passing glance, not a look aimed at the leaf)."""
+        (a passing glance, or a second look from close by). ``handle``: a room door's handle is
+        placed where the frame shows it (:meth:`_fix_door`; by default when not ``gated``)."""
         leaf = self.leaves.get(name)
         d = frame.detection(name)
         cloud = instance_cloud(frame, d) if (leaf is not None and d is not None) else None
@@ -640,7 +679,7 @@ class SceneModel:
         if q is None:
             return hint
         self.joint[name] = q
-        if door and not gated:
+        if door and (not gated if handle is None else handle):
             self._fix_door(name, frame, leaf, q)
             q = self.joint[name]  # the handle's face may have said the leaf stands a little further
         return q

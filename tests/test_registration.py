@@ -63,6 +63,19 @@ def test_a_localisation_error_is_recovered_from_two_pieces(dx, dy, dth):
     assert abs(c.dtheta - dth) < 0.01
 
 
+def test_a_fit_within_its_own_error_leaves_the_map_where_the_localiser_puts_it():
+    """A centimetre's offset is within what a fit errs by on exact depth (the map's boxes are not
+    the meshes): no correction, not a centimetre's wrong one; four centimetres are corrected."""
+    rng = np.random.default_rng(3)
+    for dx, corrected in ((0.01, False), (0.04, True)):
+        truth = Correction(dx, 0.0, 0.0, (2.7, 3.0), 0, (), 1.0)
+        clouds = {f.name: view_of(f, truth, 0.005, rng) for f in (CABINET, TABLE)}
+        c = register(clouds, {f.name: Furniture(f).solids() for f in (CABINET, TABLE)})
+        assert c is not None and c.is_identity() is not corrected
+        if corrected:
+            assert abs(c.point((2.0, 3.5, 0.5))[0] - truth.point((2.0, 3.5, 0.5))[0]) < 0.012
+
+
 def test_points_the_map_does_not_explain_give_no_correction():
     rng = np.random.default_rng(2)
     clouds = {"cabinet": rng.uniform((1.5, 3.0, 0.0), (2.5, 4.0, 1.0), (300, 3))}  # not a cabinet's faces
