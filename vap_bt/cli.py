@@ -113,6 +113,7 @@ def _run(args, stdout) -> int:
     cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
                               vlm_noise=args.vlm_noise, injection=False if args.no_injection else None,
                               max_replans=args.max_replans, planner=args.planner, transport=args.transport,
+                              sensors=args.sensors,
                               early_stop=args.early_stop or None, protocol=args.protocol,
                               viewpoints=args.viewpoints, vlm=args.vlm, vlm_url=args.vlm_url,
                               second_look=False if args.one_look else None,
@@ -303,6 +304,9 @@ def build_parser() -> argparse.ArgumentParser:
                     help="parse the task file's instruction: with the VLM even though it has goal: atoms "
                          "(those are then the report's reference)")
     sr.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
+    sr.add_argument("--sensors", choices=["exact", "real"],
+                    help="pybullet: the wrist depth camera and the base's localiser exact (default), or real: "
+                         "D435i-like depth and an AMCL-like pose error (docs/world.md)")
     sr.add_argument("--early-stop", action="store_true", help="stop a vote once it is decided")
     sr.add_argument("--protocol", choices=["paper", "lean"],
                     help="how checks ask: the paper's Alg. 2 (default), or lean (early stop, questions in flight "

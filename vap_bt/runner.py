@@ -73,6 +73,9 @@ class RunConfig:
     miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
     relation_noise: float = _DETECTOR.relation_noise  # symbolic relation reports (0: exact where shown)
     transport: str = "inproc"
+    #: pybullet: the depth camera and the localiser — exact (the renderer's depth, the true base
+    #: pose) or real (D435i-like depth, an AMCL-like error; vap_bt/sim/depth_noise.py, localization.py)
+    sensors: str = "exact"
     planner: str = "fast-downward"
     protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
     viewpoints: str = "vlm"  # where to look from next: vlm | greedy
@@ -102,7 +105,15 @@ def make_world(task: Task, cfg: RunConfig) -> World:
     if cfg.world == "pybullet":
         from vap_bt.sim.pybullet_world import PybulletWorld
 
-        return PybulletWorld(task, seed=cfg.seed, injection=cfg.injection)
+        from vap_bt.sim.depth_noise import DepthNoiseModel
+        from vap_bt.sim.localization import LocalizationModel
+
+        if cfg.sensors not in ("exact", "real"):
+            raise ValueError(f"unknown sensors {cfg.sensors!r} (exact, real)")
+        exact = cfg.sensors == "exact"
+        return PybulletWorld(task, seed=cfg.seed, injection=cfg.injection,
+                             depth_noise=DepthNoiseModel.exact() if exact else DepthNoiseModel(),
+                             localization=LocalizationModel.perfect() if exact else LocalizationModel())
     raise ValueError(f"unknown world {cfg.world!r} (symbolic, pybullet)")
 
 
@@ -183,6 +194,8 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
     if cfg.world == "pybullet" and task.spec.scene is None:  # a PDDL problem has no geometry to build
         raise InputError("--world", "the pybullet world builds a household from a task file's scene:; "
                                     "this task has a PDDL problem instead: run it --world symbolic")
+    if cfg.sensors != "exact" and cfg.world != "pybullet":
+        raise InputError("--sensors", "only the pybullet world has a depth camera and a localiser to model")
     if cfg.vlm not in VLMS:
         raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} ({', '.join(VLMS)})")
     if cfg.vlm in ("sim", "sim-http") and (cfg.vlm_url or cfg.vlm_model):

@@ -40,9 +40,10 @@ sys.path.insert(0, str(ROOT))
 from tools.bench.intervals import wilson  # noqa: E402
 
 
-def episode(job: tuple[str, bool, int, str]) -> dict:
-    """One episode in this worker: (task file, injection, seed, protocol) -> the figures of its report."""
-    path, injection, seed, protocol = job
+def episode(job: tuple[str, bool, int, str, str]) -> dict:
+    """One episode in this worker: (task file, injection, seed, protocol, sensors) -> the figures
+    of its report."""
+    path, injection, seed, protocol, sensors = job
     from vap_bt import taskfile
     from vap_bt.runner import RunConfig, Session
 
@@ -50,17 +51,17 @@ def episode(job: tuple[str, bool, int, str]) -> dict:
     t0 = time.perf_counter()
     try:
         session = Session(task, RunConfig.from_task(task, world="pybullet", seed=seed, injection=injection,
-                                                           protocol=protocol))
+                                                           protocol=protocol, sensors=sensors))
         try:
             rep = session.episode()
         finally:
             session.close()
     except Exception as exc:  # noqa: BLE001 - a crash is a failed episode, reported as such
-        return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol,
+        return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol, "sensors": sensors,
                 "world_success": False, "claimed": False,
                 "wall_s": time.perf_counter() - t0, "reason": f"crashed: {type(exc).__name__}: {exc}",
                 "actions": 0, "replans": 0, "injected": 0, "looked": 0, "looked_right": 0, "graph": None}
-    return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol,
+    return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol, "sensors": sensors,
             "world_success": bool(rep["goal_satisfied"]),
             "claimed": bool(rep["success"]), "wall_s": rep["wall_s"], "reason": rep["reason"],
             "actions": len(rep["actions_executed"]), "replans": rep["replans"], "injected": len(rep["injected"]),
@@ -79,6 +80,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--tasks", help="comma-separated task names (default: every file in trees/)")
     ap.add_argument("--injection", choices=("off", "on", "both"), default="both")
     ap.add_argument("--protocol", choices=("paper", "lean"), default="paper", help="how every check asks")
+    ap.add_argument("--sensors", choices=("exact", "real"), default="exact",
+                    help="the depth camera and the localiser (as `vap-bt run --sensors`)")
     ap.add_argument("--json", help="write every episode's figures here")
     args = ap.parse_args(argv)
     paths = sorted((ROOT / "trees").glob("*.yaml"))
@@ -87,7 +90,7 @@ def main(argv: list[str] | None = None) -> int:
         paths = [p for p in paths if p.stem in wanted]
     modes = {"off": (False,), "on": (True,), "both": (False, True)}[args.injection]
     # seed by seed, both modes and every task in each: a run stopped early is still balanced
-    jobs = [(str(p), inj, s, args.protocol) for s in range(args.first_seed, args.first_seed + args.seeds)
+    jobs = [(str(p), inj, s, args.protocol, args.sensors) for s in range(args.first_seed, args.first_seed + args.seeds)
             for inj in modes for p in paths]
     rows: list[dict] = []
     t0 = time.perf_counter()

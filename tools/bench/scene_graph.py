@@ -7,7 +7,10 @@ file's prior for what no view shows), and the runner scores the result against t
 that moment: precision and recall of the ``on``/``inside``/``in_room`` relations of the items
 (all of them, and only those the camera saw), detection recall, and the time the build took.
 
-    python tools/bench/scene_graph.py [--seeds 3] [--json out.json]
+    python tools/bench/scene_graph.py [--seeds 3] [--sensors real|exact] [--json out.json]
+
+``--sensors real`` (the default here) builds from the D435i-like depth and with the AMCL-like
+localisation error (docs/world.md); ``exact`` from the renderer's depth and the true base pose.
 
 Progress (scenes done, rate, time left) goes to stderr.
 
@@ -34,6 +37,7 @@ from tools.progress import Progress  # noqa: E402
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=3)
+    ap.add_argument("--sensors", choices=("real", "exact"), default="real", help="depth camera and localiser")
     ap.add_argument("--json", help="write every scene's figures here")
     args = ap.parse_args(argv)
     rows = []
@@ -43,7 +47,7 @@ def main(argv: list[str] | None = None) -> int:
           f"{'views':>5s} {'build s':>8s}  wrong / missing")
     for path in paths:
         task = taskfile.load(path)
-        session = Session(task, RunConfig.from_task(task, world="pybullet", injection=False))
+        session = Session(task, RunConfig.from_task(task, world="pybullet", injection=False, sensors=args.sensors))
         try:
             for seed in range(args.seeds):
                 s = session.build_graph(seed)
