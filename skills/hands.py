@@ -702,6 +702,7 @@ class Hands:
             straight=not front_open) is not None), spots[-1])
         f = self.scene.furniture.get(where)
         local = None if f is None else f.local(spot)  # the spot on the piece, wherever the map lies
+        others = [s if f is None else f.local(s) for s in spots if not np.allclose(s, spot)]
         for stand in range(PLACE_STANDS):
             self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach,
                                                  straight=not front_open))
@@ -727,6 +728,14 @@ class Hands:
                                if self.straight_in(g, a, where, c)), (G, corners))
         self.progress(0.2, "pre-place")
         reached = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))
+        for other in ([] if inside or front_open else others):
+            if reached is not None:
+                break
+            # the spot the stand was chosen for is out of the arm's reach from where the base
+            # came to stand (the deep spot beside a bottle already there): the next one, from here
+            self.carry()
+            G, _, corners = targets(self.body.base_pose(), at=other if f is None else f.to_world(other))
+            reached = self.reach_pre(G, a, None, PRE_PLACE, list(corners))
         if reached is None:
             self.carry()
             return Outcome(False, f"{where}: no arm pose reaches it")
