@@ -86,7 +86,7 @@ def worlds():
 # ------------------------------------------------------------ effects without situations
 
 
-@on_both_sensors("the placeon finds no arm pose over the counter as the registered map has it")
+@on_both_sensors()
 def test_grasp_navigate_place(worlds, sensors):
     w = worlds("collect_cup", sensors=sensors)
     run(w, "find(floor_living_room, cup, living_room)", "grasp(cup, coffee_table, living_room)")
