@@ -191,18 +191,23 @@ class Hands:
                 break
         return self.scene.furniture.get(name)
 
+    def regarded_points(self, name: str) -> np.ndarray | None:
+        """``name``'s points in the frame of the last :meth:`regard` (within TAP_SEARCH_RANGE), or
+        None when that frame does not show it or has no depth."""
+        frame = self.regarded
+        d = None if frame is None else frame.detection(name)
+        if d is None or frame.depth is None or frame.masks is None:
+            return None
+        return np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
+                                      TAP_SEARCH_RANGE).points)
+
     def tap_seen(self, f: Furniture, tap: np.ndarray) -> np.ndarray:
         """The tap as the last :meth:`regard` shows it: the registration fixes the sink's front and
         turn well, its place along a long counter less so (the frame may show no side of it); the
         tap's arm is what of the sink stands above its top near where the map puts the tap, and
         its middle across gives the tap's place along the front. ``tap`` when it does not show."""
-        frame = self.regarded
-        d = None if frame is None else frame.detection(f.name)
-        if d is None or frame.depth is None or frame.masks is None:
-            return tap
-        pts = np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
-                                     TAP_SEARCH_RANGE).points)
-        if not len(pts):
+        pts = self.regarded_points(f.name)
+        if pts is None or not len(pts):
             return tap
         up = pts[(pts[:, 2] > f.height + TAP_ABOVE) & (np.linalg.norm(pts[:, :2] - tap[:2], axis=1) < TAP_SEARCH)]
         if len(up) < TAP_MIN_POINTS:
@@ -212,17 +217,14 @@ class Hands:
 
     def switch_seen(self, f: Furniture, switch: np.ndarray) -> np.ndarray:
         """The switch as the last :meth:`regard` shows the appliance's front: the registration
-        places a front to a centre-metre or two, and a fingertip that stops short of the switch
+        places a front to a centimetre or two, and a fingertip that stops short of the switch
         by that presses nothing. Of the appliance's points near where the map puts the switch,
         most lie on its front (the median of their depth along its normal); the switch stands out
         of the front as the map says, so it is moved along the normal to where the front is seen.
         ``switch`` when the frame does not show it."""
-        frame = self.regarded
-        d = None if frame is None else frame.detection(f.name)
-        if d is None or frame.depth is None or frame.masks is None:
+        pts = self.regarded_points(f.name)
+        if pts is None:
             return switch
-        pts = np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
-                                     TAP_SEARCH_RANGE).points)
         near = pts[np.linalg.norm(pts - switch, axis=1) < SWITCH_SEARCH] if len(pts) else pts
         if len(near) < 2 * TAP_MIN_POINTS:
             return switch
