@@ -301,11 +301,16 @@ class Body:
         in :data:`SHOULDER_TURN` instead: the short way round may lead through the arm's mount."""
         lo, hi = np.array(self.cfg.arm.lower), np.array(self.cfg.arm.upper)
         out, prev = [], start
+        turns = 2 * np.pi * np.arange(-2, 3)[:, None]
         for q in qs:
             q = q.copy()
-            arm = q[3:] + 2 * np.pi * np.round((prev[3:] - q[3:]) / (2 * np.pi))
-            ok = (arm >= lo + UNWIND_MARGIN) & (arm <= hi - UNWIND_MARGIN)
-            q[3:] = _shoulder_in_turn(np.where(ok, arm, q[3:]))
+            # every whole-turn copy of each joint's angle that lies well within its limits, the
+            # nearest to the last waypoint's; a joint whose range holds none keeps IK's answer
+            options = q[3:] + turns
+            inside = (options >= lo + UNWIND_MARGIN) & (options <= hi - UNWIND_MARGIN)
+            cost = np.where(inside, np.abs(options - prev[3:]), np.inf)
+            best = options[np.argmin(cost, axis=0), np.arange(len(lo))]
+            q[3:] = _shoulder_in_turn(np.where(inside.any(axis=0), best, q[3:]))
             out.append(q)
             prev = q
         return out

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 import pinocchio as pin
 
-from skills.body import Body, angle_to
+from skills.body import Body, Struck, angle_to
 from skills.eyes import Eyes
 from skills.hands import APPROACH, Hands, Outcome, Where
 from skills.navigator import Navigator
@@ -327,15 +327,21 @@ class Handles:
         here = self.body.base_pose()
         q0 = self.joint_now(name, opening, again=True)
         again, _, _ = self._plan(name, q0, opening, here)
+        ways = [path]
         if again.waypoints:
-            path, grasp = again, again.waypoints[0]
-            if np.linalg.norm(np.subtract(grasp.q[:2], here[:2])) > REPLAN_STEP:
-                self.nav.approach(tuple(grasp.q[:3]))
+            # the path planned from here first; the one the base came for still serves if the new
+            # one's pre-pose has no clear way to it (IK may answer another wrist), unless the base moves on
+            ways = [again, path]
+            if np.linalg.norm(np.subtract(again.waypoints[0].q[:2], here[:2])) > REPLAN_STEP:
+                self.nav.approach(tuple(again.waypoints[0].q[:3]))
+                ways = [again]
         self.hands.progress(0.1, "reaching for the handle")
         self.body.fingers(LOOSE_GRIP)  # wide enough round the bar, narrow enough beside the leaf
-        if not self.body.through([path.pre.q], 0.8):
+        path = next((p for p in ways if self.body.through([p.pre.q], 0.8)), None)
+        if path is None:
             self.body.home()
             return Outcome(False, f"{name}: handle out of reach")
+        grasp = path.waypoints[0]
         self.body.line(grasp.T, steps=4, speed=0.3)
         self.body.through([grasp.q], 0.3)
         if not self.body.fingers(0.0, GRIP_FORCE):
@@ -343,17 +349,24 @@ class Handles:
             return Outcome(True, f"{name}: the handle slipped")
         self.body.fingers(LOOSE_GRIP)  # the bar may now turn in the hand
         self.hands.progress(0.3, "moving the handle")
-        self.body.through([w.q for w in path.waypoints[1:]], FOLLOW_SPEED)
+        struck = False
+        try:
+            self.body.through([w.q for w in path.waypoints[1:]], FOLLOW_SPEED)
+        except Struck:
+            # the hand or the leaf met what the path did not hold (the leaf's stop, the carcass):
+            # the fingers must still let go of the bar, or every later motion drags the leaf along
+            struck = True
         reached = path.joint_values[-1]
-        if not self.body.holding():
-            # the handle slipped out of the hand on the way: the leaf is not where the path ended,
-            # and backing off as if it were would push it; the wrist camera, right at it, shows it
+        if struck or not self.body.holding():
+            # the handle slipped out of the hand on the way, or the way stopped short: the leaf is
+            # not where the path ended, and backing off as if it were would push it; the wrist
+            # camera, right at it, shows it
             seen = self.scene.fit_leaf(name, self.eyes.frame())
             reached = seen if seen is not None else q0
         self.scene.joint[name] = reached
         self.hands.progress(0.85, "letting go")
         self._retreat(name, reached, start)
-        if not path.complete:
+        if struck or not path.complete:
             return Outcome(True, f"{name}: the arm could not follow the handle all the way")
         return Outcome(True)
 
@@ -372,7 +385,10 @@ class Handles:
         n = n if (self.body.pose("tcp")[:3, 3] - panel.center) @ n > 0 else -n
         away = self.body.pose("tcp")
         away[:3, 3] += n * 0.1
-        self.body.line(away, steps=2, speed=0.3)
+        try:
+            self.body.line(away, steps=2, speed=0.3)
+        except Struck:
+            pass  # the forearm met the carcass under an oven's dropped door: the hand is off the bar, fold from here
         static = self.scene.obstacles(moving=name) + [box.polygon()]
         here = np.array(self.body.base_pose())
         back = here - 0.25 * np.array([math.cos(here[2]), math.sin(here[2]), 0.0])

@@ -746,7 +746,10 @@ class Hands:
         # down onto a support, the line is solved clear of the scene where it can be: the first IK
         # answer along it may swing the upper arm into the support's edge where another is clear
         clear = not front_open and self.straight_in(G, a, where if inside else None, list(corners))
-        self.body.line(G, steps=4, speed=0.3, collide=clear)
+        try:
+            self.body.line(G, steps=4, speed=0.3, collide=clear)
+        except Struck:
+            pass  # the way down stopped on contact (the item touching down, a rim): it is let go there
         self.let_go()
         self.progress(0.8, "retreat")
         # out of the grasp along the hand's axis first (a hand holding from the side would lift

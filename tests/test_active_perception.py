@@ -75,10 +75,11 @@ class Suggests:
 
 
 def run(child: ScriptedCheck, camera: Camera, vlm=None, facts=(), budget: int = 3, felt=None,
-        strategy: str = "vlm", second_look: bool = True, phase: str = "pre") -> tuple[Status, ActivePerception, ExecutionContext]:
+        strategy: str = "vlm", second_look: bool = True, phase: str = "pre",
+        doubted=()) -> tuple[Status, ActivePerception, ExecutionContext]:
     ctx = ExecutionContext(graph=SceneGraph.of_facts(set(facts)), vlm=vlm or Suggests("left"), camera=camera,
                            skills=None, budget=budget, felt=felt or (lambda graph, atom: None),
-                           viewpoints=ViewpointStrategy(strategy), second_look=second_look)
+                           viewpoints=ViewpointStrategy(strategy), second_look=second_look, doubted=set(doubted))
     node = ActivePerception(ctx, child, phase, None, 0)
     for _ in range(50):
         node.tick_once()
@@ -106,6 +107,19 @@ def test_a_surprise_the_second_view_does_not_repeat_is_not_believed():
     child = ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True), view("yyyyy", True), view("yyyyy", True)])
     status, node, ctx = run(child, Camera())
     assert status == Status.SUCCESS and child.runs == 3 and ctx.verifications[-1].outcome == "confirmed"
+
+
+def test_a_precondition_an_action_failed_on_is_confirmed_only_by_a_second_view():
+    """An action that failed when it ran is evidence against what it presumed (an oven believed
+    open that no arm pose reaches into): one confirming picture is not enough the next time; the
+    doubt goes once a check has settled it."""
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("nnnnn", True), view("nnnnn", True)])
+    camera = Camera()
+    status, node, ctx = run(child, camera, doubted={CUP_ON_TABLE})
+    assert status == Status.FAILURE and child.runs == 3 and ctx.situation.observed is False
+    assert CUP_ON_TABLE not in ctx.doubted
+    undoubted = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("nnnnn", True)])
+    assert run(undoubted, Camera())[0] == Status.SUCCESS and undoubted.runs == 1
 
 
 def test_the_papers_rule_believes_the_first_settled_view():

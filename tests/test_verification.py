@@ -9,7 +9,7 @@ import pytest
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception import prompts
-from vap_bt.perception.verification import Round, Verdict, VoteSettings, verdict, vote_round
+from vap_bt.perception.verification import Round, Verdict, VoteSettings, stand_of, verdict, vote_round
 from vap_bt.perception.vlm import Answer, Query, parse_choice, parse_yes_no
 from vap_bt.robot.frame import Frame
 
@@ -172,6 +172,23 @@ def test_a_view_that_said_otherwise_is_outvoted_only_by_more_settled_views():
     against, sure = rnd("nnnnn", False), rnd("yyyny", True)  # a consistent "no", judged insufficient
     assert verdict([against, sure], exhausted=False) is None
     assert verdict([against, sure, rnd("yyyyy", True)], exhausted=False) == Verdict(True, "settled")
+
+
+def test_the_same_picture_asked_again_is_no_second_opinion():
+    """boil_water seed 2: sent back to one stand check after check, the robot piled up copies of
+    one wrong "heated" view until they outvoted the views that said no, and claimed a success the
+    world denied. Rounds from one stand count once."""
+    def at(answers, sufficient, stand):
+        r = rnd(answers, sufficient)
+        r.stand = stand
+        return r
+
+    against = at("nnnnn", False, (1, 0, 0))
+    same = [at("yyyny", True, (2, 0, 0)) for _ in range(3)]
+    assert verdict([against, *same], exhausted=False) is None
+    assert verdict([against, *same, at("yyyyy", True, (3, 0, 0))], exhausted=False) == Verdict(True, "settled")
+    frame = Frame("f", 0.0, camera_pose=np.eye(4))
+    assert stand_of(frame) == stand_of(Frame("g", 1.0, camera_pose=np.eye(4))) and stand_of(Frame("h", 0.0)) is None
 
 
 def test_a_view_whose_answers_disagreed_among_themselves_votes_nothing():

@@ -49,7 +49,7 @@ from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.perception.verification import Round, Verdict, choice, target_of, verdict
+from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict
 
 
 class ActivePerception(py_trees.decorators.Decorator):
@@ -148,10 +148,13 @@ class ActivePerception(py_trees.decorators.Decorator):
         (docs/perception.md): one more view that showed the atom's objects and whose answers
         agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
         success will be claimed, two views the model judged sufficient, or one and two more whose
-        answers agreed."""
-        if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal"):
+        answers agreed. A precondition of an action that failed when it last ran
+        (``ctx.doubted``) is treated as a surprise even when confirmed: the failure is evidence
+        against it (an oven the survey took for open, into which no arm pose reaches)."""
+        doubted = self.phase == "pre" and self.atom in self.ctx.doubted
+        if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal" and not doubted):
             return False
-        rounds = self._evidence()
+        rounds = distinct(self._evidence())
         agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in rounds)
         if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
             settled = sum(r.settled and r.vote == value for r in rounds)
@@ -216,6 +219,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
                                                    v.atom, v.expected, value, outcome, list(self.rounds)))
         self.ctx.record(self.ctx.verifications[-1])
+        if outcome != "unsettled":
+            self.ctx.doubted.discard(v.atom)
         if outcome in ("confirmed", "contradicted", "felt"):
             self.ctx.verified.remember(v.atom, value)
         if self.phase == "goal" and outcome == "unsettled":
@@ -227,6 +232,9 @@ class ActivePerception(py_trees.decorators.Decorator):
             self.ctx.progress(f"    situation: could not see {'' if v.expected else 'not '}{v.atom}")
             return Status.FAILURE
         if outcome != "contradicted":  # confirmed, felt, reused, or unsettled where the plan may go on
+            return Status.SUCCESS
+        if self.phase == "pre" and v.atom in self.ctx.on_trial:
+            self.ctx.progress(f"    {v.atom} observed {value} again: trying {self.action} against it")
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]
         self.ctx.situation = Situation(kind, self.action, self.step, v.atom, v.expected, value)

@@ -183,6 +183,14 @@ class ExecutionContext:
     #: preconditions the camera could not make out however often the robot looked again: it acts on
     #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
     on_belief: set[Atom] = field(default_factory=set)
+    #: preconditions of an action that failed when it ran: a failure is evidence against what the
+    #: action presumed, so a view that confirms one is a second opinion only with another view
+    #: from a new picture that agrees (as for a surprise); cleared when a check settles it
+    doubted: set[Atom] = field(default_factory=set)
+    #: preconditions the camera denied, that no action can make true, after every doubt: the
+    #: action itself is their test (its skill fails if the camera was right), so a check that
+    #: contradicts one again lets the action run (the verification still says contradicted)
+    on_trial: set[Atom] = field(default_factory=set)
     verified: Verified = field(default_factory=Verified)
     #: where work in flight runs (a thread pool against a remote model; inline in-process)
     executor: Executor = field(default_factory=InlineExecutor)

@@ -144,6 +144,8 @@ class Executive:
         self.graph: SceneGraph | None = None  # belief, once the first survey has built it
         self._prior_graph = SceneGraph.of_facts(prior)  # what the task file says, until then
         self._searching: set[str] = set()  # objects being looked for: placed nowhere
+        #: how often the robot went to look from close by at each set of items (a new stand each time)
+        self._near_looks: Counter[tuple[str, ...]] = Counter()
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
@@ -239,13 +241,16 @@ class Executive:
                     out.reason = f"replanning budget ({self.s.max_replans}) exhausted"
                     return out
                 t0 = time.perf_counter()
+                if situation.kind == "execution" and situation.action is not None:
+                    ctx.doubted |= {lit.atom for lit in situation.action.preconditions
+                                    if lit.positive and lit.atom.predicate != VIEW_PREDICATE}
                 survey = self._correct(graph, situation)
                 if survey is None and times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
                     survey = self._look_afresh(graph, situation)
                 if survey is not None:
                     out.surveys.append(survey)
                 try:
-                    plan = self._replan(graph, situation, plan, doubted)
+                    plan = self._replan(graph, situation, plan, doubted, ctx.on_trial)
                 except UnsolvableError as exc:
                     out.reason = f"no plan after {situation.kind} situation: {exc}"
                     return out
@@ -261,21 +266,40 @@ class Executive:
         finally:
             self.halt(tree)
 
-    def _replan(self, graph: SceneGraph, s: Situation, plan: Plan, doubted: Counter) -> Plan:
+    def _replan(self, graph: SceneGraph, s: Situation, plan: Plan, doubted: Counter, on_trial: set[Atom]) -> Plan:
         """A plan from the corrected belief. When the correction leaves none, the observation
         behind it is doubted: a camera that errs (as every real one does, and the more so about a
         relation it saw poorly) can report a fact that shuts every way to the goal — the cup "not
         reachable" with nothing in front of it. Belief goes back to what it held, the robot
         re-approaches what the atom is about (a new picture, not the one that misled it: a model
         answers one picture the same way every time), and the next plan checks the atom again. An
-        observation is doubted at most :data:`MAX_DOUBTS` times; the next contradiction stands."""
+        observation is doubted at most :data:`MAX_DOUBTS` times. A denied *precondition* that
+        still leaves no plan is then put on trial (``on_trial``): the action is tried against it —
+        its skill fails if the camera was right, and that failure is the situation that stands.
+        A check that could not see its atom, after whose look belief no longer holds what the plan
+        presumed, leaves belief as it was (no view denied it)."""
         try:
             return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
         except UnsolvableError:
-            if s.atom is None or s.observed is None or doubted[s.atom] >= MAX_DOUBTS:
+            if s.atom is None or s.observed is None and (s.kind != "unseen" or (s.atom in graph.facts) == s.expected):
                 raise
+            if doubted[s.atom] >= MAX_DOUBTS and (s.kind != "precondition" or s.atom in on_trial):
+                raise
+        complement = self.task.knowledge.complements.get(s.atom.predicate)
+        if s.observed is None:
+            # no view could tell, and the look that followed dropped what the plan presumed (a
+            # re-survey's geometry does not see a bowl blocking a plate it cannot see): nothing
+            # said otherwise, so belief holds it again, and the next check looks once more
+            graph.correct(s.atom, s.expected, complement, cause="belief")
+            self.progress(f"    {s.atom} is what every plan needs, and no view denied it: believing it again")
+            return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
+        if doubted[s.atom] >= MAX_DOUBTS:
+            on_trial.add(s.atom)
+            graph.correct(s.atom, not s.observed, complement, cause="trial")
+            self.progress(f"    {s.atom} = {s.observed} still leaves no plan: the action will be tried against it")
+            return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
         doubted[s.atom] += 1
-        graph.correct(s.atom, not s.observed, self.task.knowledge.complements.get(s.atom.predicate), cause="doubt")
+        graph.correct(s.atom, not s.observed, complement, cause="doubt")
         self.progress(f"    {s.atom} = {s.observed} leaves no plan: doubting it, looking again")
         self._look_at(graph, s.atom.args)
         return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
@@ -310,10 +334,12 @@ class Executive:
             sweep = self.builder.sweep(self.camera, rooms).after(sweep)
         if unplaced() and any(self.builder.wall_views(r) for r in rooms):
             # misses are systematic for a view, and a thing on the floor shows in few of the
-            # sweep's views: last, the floor along every wall, until it is found
+            # sweep's views: the floor along every wall, until it is found
             self.progress(f"survey: {', '.join(unplaced())} still not seen; looking along the walls")
             sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
                                             until=lambda: not unplaced()).after(sweep)
+        if unplaced():
+            sweep = self._nearer(rooms, lambda: not unplaced(), f"survey: {', '.join(unplaced())} still not seen;").after(sweep)
         state = self.body.state()
         located, prior_only = belief.item_facts(self.builder, items, self.prior)
         facts = belief.map_facts(site_map) | belief.robot_facts(state, sweep, site_map) | belief.hand_facts(state, self.builder)
@@ -433,13 +459,22 @@ class Executive:
         return self._resurvey(graph, items, f"{describe(s)} again")
 
     def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
-        """Go and look at what a check could not make out: the sweep's own view of it (or of what
-        it rests on). What could not be made out is not in view: the new plan re-approaches it."""
+        """Go and look at what a check could not make out: the sweep's own view of a piece of
+        furniture or a door; for items, a view from close by of where belief puts them, another
+        each time (the same stand would show the same picture, which a model answers the same
+        way). What could not be made out is not in view: the new plan re-approaches it."""
         for a in names:
             if Atom(VIEW_PREDICATE, (a,)) in graph.facts:
                 graph.correct(Atom(VIEW_PREDICATE, (a,)), False)
         view = next((v for n in names if not self._portable(n) and (v := self.builder.view_of(graph, n))), None)
-        if view is not None and self.camera.goto_view(view):
+        if view is None:  # about items only: from close by, a new stand each time (a new picture)
+            near = next((vs for n in names if (vs := self.builder.near_views(graph, n))), [])
+            self._near_looks[names] += 1
+            turn = self._near_looks[names]
+            view = next((v for v in near[turn:] + near[:turn] if self.camera.goto_view(v)), None)
+        elif not self.camera.goto_view(view):
+            view = None
+        if view is not None:
             self.progress(f"    looking again: {view.label}")
             sweep = SweepRecord((view.room,), 1, 1, 0, last_view=view, last_frame=self.camera.capture(view.aim))
             self.builder.integrate(sweep.last_frame)
@@ -528,6 +563,8 @@ class Executive:
             self.progress(f"    still not found: looking along the walls of {', '.join(rooms)}")
             sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
                                             until=found).after(sweep)
+            if not found():
+                sweep = self._nearer(rooms, found, "    still not found:").after(sweep)
         for o in items:
             observed = self.builder.observed(o, in_hand)
             if o not in in_hand and self.builder.placed(o, in_hand):
@@ -537,6 +574,13 @@ class Executive:
         survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
+
+    def _nearer(self, rooms: list[str], found: Callable[[], bool], lead: str) -> SweepRecord:
+        """The last look of a search: the tops of the rooms' pieces that things are put on, from
+        nearer than the sweep's, until ``found()`` (a small thing on a counter that every view
+        of the sweep missed: a detector's miss belongs to the picture, a new one draws anew)."""
+        self.progress(f"{lead} looking nearer at the tops in {', '.join(rooms)}")
+        return self.builder.look_round(self.camera, [(r, self.builder.near_top_views(r)) for r in rooms], until=found)
 
     def _felt(self, graph: SceneGraph, atom: Atom) -> bool | None:
         """Proprioception's word on ``holding(x)`` and ``hand_empty``: the gripper reports whether

@@ -51,6 +51,9 @@ class Round:
     #: which of the frame's detections the robot took for each of the atom's objects (its own
     #: re-identification: name -> the detection's index), so a report can say what it looked at
     identified: dict[str, int] = field(default_factory=dict)
+    #: where the camera stood for the picture (its believed pose, rounded: :func:`stand_of`); two
+    #: rounds from one stand are one picture — the model answers it the same way every time
+    stand: tuple | None = None
 
     @property
     def settled(self) -> bool:
@@ -210,7 +213,7 @@ class RoundAsker:
     def finish(self) -> Round:
         """The round as asked: its questions, answers, vote v_p = 1[mean(y) > 0.5] over the usable
         answers (none usable: no vote) and whether they agree enough to be consistent."""
-        r = Round(view=self.frame.frame_id,
+        r = Round(view=self.frame.frame_id, stand=stand_of(self.frame),
                   identified={n: k for n, k in self.frame.identified().items() if n in objects_of(self.atom)})
         for i in sorted(self.answers):
             r.questions.append(self.questions[i])
@@ -292,6 +295,27 @@ class Verdict:
     outcome: str  # "settled" (views agree), "agreed" (budget spent, every view agreed), "unsettled"
 
 
+#: a stand's position to this (metres) and its viewing direction to this (unit-vector components)
+STAND_STEP = 0.02
+
+
+def stand_of(frame: Frame) -> tuple | None:
+    """Where the camera stood for ``frame``, rounded to :data:`STAND_STEP`; None without a pose."""
+    T = frame.camera_pose
+    if T is None:
+        return None
+    return tuple(int(round(float(v) / STAND_STEP)) for v in (*T[:3, 3], *T[:3, 2]))
+
+
+def distinct(rounds: list[Round]) -> list[Round]:
+    """The rounds of different pictures: of rounds from one stand (:attr:`Round.stand`) only the
+    last counts — the same picture asked again is the same draw of the model's errors, not a
+    second opinion (a robot sent back to one stand again and again would otherwise pile up
+    agreeing "views" of one wrong answer)."""
+    last = {r.stand: k for k, r in enumerate(rounds) if r.stand is not None}
+    return [r for k, r in enumerate(rounds) if r.stand is None or last[r.stand] == k]
+
+
 def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
     """Weigh every view of one check (the paper's Alg. 2 takes the first settled round; one lucky
     round after views that said otherwise is too close to a guess to rewrite belief):
@@ -309,7 +333,9 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
     A view whose detector did not find the atom's objects (``unshown``) votes nothing: its
     answers are guesses about a thing it does not show.
 
-    Returns None while the check should keep looking."""
+    Rounds from one stand count once (:func:`distinct`). Returns None while the check should
+    keep looking."""
+    rounds = distinct(rounds)
     shown = [r for r in rounds if not r.unshown]
     votes = [r.vote for r in shown if r.consistent and r.vote is not None]
     for value in (True, False):

@@ -47,6 +47,10 @@ SUPPORT_PREDICATES = ("on", "inside")
 #: things onto what stands behind them)
 VIEW_STANDOFF = 1.6
 TOP_VIEW_STANDOFF = 1.0
+#: the last look of a search for what the sweeps did not find: the tops of the pieces things are
+#: put on from this near (a small thing covers twice the pixels it did from TOP_VIEW_STANDOFF, and
+#: a detector's miss belongs to the picture: a new one draws anew)
+SEARCH_TOP_STANDOFF = 0.7
 #: the height aimed at on furniture whose height perception has not measured yet
 FURNITURE_AIM_HEIGHT = 0.7
 #: a look round the floor: this far from the room's centre, in these directions
@@ -194,6 +198,12 @@ class SceneGraphBuilder:
                 out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0), info.floor), stand,
                                      f"{room} floor by the wall at ({px:.2f}, {py:.2f})"))
         return out
+
+    def near_top_views(self, room: str) -> list[Viewpoint]:
+        """A look at the top of every piece in ``room`` that things are put on, from nearer than
+        the sweep's (:data:`SEARCH_TOP_STANDOFF`)."""
+        return [self._furniture_view(f, SEARCH_TOP_STANDOFF, "its top, from nearer")
+                for f in self.site_map.furniture if f.room == room and f.pose is not None and self._supports_things(f.type)]
 
     def spot_views(self, room: str, spot: tuple[float, float]) -> list[Viewpoint]:
         """A look at ``room``'s floor round ``spot`` from stands all round it in the room, each
@@ -385,6 +395,19 @@ class SceneGraphBuilder:
         room = room or (self.site_map.room(rooms[0]) if rooms else None)
         views = self.views(room.name) if room is not None else []
         return views[-1] if views else None  # the look round its floor
+
+    def near_views(self, graph: SceneGraph, name: str) -> list[Viewpoint]:
+        """Views from close by of an item where belief puts it, for a check that could not make
+        it out from afar (a lemon's cut, a cup's water): the top of the piece it rests on or in
+        from the sweep's close stand and from nearer, or the floor round it from all sides."""
+        place = self.place_of(graph, name)
+        piece = self.site_map.piece(place) if place else None
+        if piece is not None and piece.pose is not None:
+            return [self._furniture_view(piece, TOP_VIEW_STANDOFF, "its top, from close by"),
+                    self._furniture_view(piece, SEARCH_TOP_STANDOFF, "its top, from nearer")]
+        room = next((r for r in self.site_map.rooms if r.floor == place), None)
+        p = self.point_of(graph, name)
+        return self.spot_views(room.name, p[:2]) if room is not None and p is not None else []
 
     def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
         """Aim at the first of ``names`` that belief can place (the object a question is about,
