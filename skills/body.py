@@ -45,6 +45,9 @@ LINE_JOINT_JUMP = 0.8
 BACK_OFF_SPEED = 0.3
 #: rad inside the joint limits a waypoint turned by a whole turn must stay
 UNWIND_MARGIN = 0.5
+#: an IK answer this near a joint limit is turned by a whole turn if it can be (a timed spline
+#: through it overshoots the limit, and the driver refuses the trajectory)
+LIMIT_EDGE = 0.1
 #: the one turn a commanded shoulder lift is written in: a joint-space way between two values in it
 #: never swings the upper arm through pointing straight down into its own mount (+pi/2, the same
 #: pose as -3pi/2). Turned towards the last pose instead (the short way), a look swung it from
@@ -304,13 +307,17 @@ class Body:
         turns = 2 * np.pi * np.arange(-2, 3)[:, None]
         for q in qs:
             q = q.copy()
-            # every whole-turn copy of each joint's angle that lies well within its limits, the
-            # nearest to the last waypoint's; a joint whose range holds none keeps IK's answer
+            arm = q[3:] + 2 * np.pi * np.round((prev[3:] - q[3:]) / (2 * np.pi))
+            ok = (arm >= lo + UNWIND_MARGIN) & (arm <= hi - UNWIND_MARGIN)
+            # IK's own answer where the nearest turn is not well within the limits — unless that
+            # answer is so near a limit that the timed spline would overshoot it (a wrist at
+            # -6.2 rad): then the nearest whole-turn copy that is well within them
             options = q[3:] + turns
             inside = (options >= lo + UNWIND_MARGIN) & (options <= hi - UNWIND_MARGIN)
-            cost = np.where(inside, np.abs(options - prev[3:]), np.inf)
-            best = options[np.argmin(cost, axis=0), np.arange(len(lo))]
-            q[3:] = _shoulder_in_turn(np.where(inside.any(axis=0), best, q[3:]))
+            best = options[np.argmin(np.where(inside, np.abs(options - prev[3:]), np.inf), axis=0), np.arange(len(lo))]
+            edge = (q[3:] < lo + LIMIT_EDGE) | (q[3:] > hi - LIMIT_EDGE)
+            raw = np.where(edge & inside.any(axis=0), best, q[3:])
+            q[3:] = _shoulder_in_turn(np.where(ok, arm, raw))
             out.append(q)
             prev = q
         return out

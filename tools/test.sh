@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The test suite: sets up if needed, then runs every test (slow ones included).
+# The test suite: sets up if needed, then runs every test (slow ones included), one pytest-xdist
+# worker per core (VAP_BT_TEST_WORKERS to change it; 0 runs in this process).
 # pytest exits 5 when it collects no test; that is a failure here, never a silent pass.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh || exit 1
-.venv/bin/python -m pytest -q "$@"
+.venv/bin/python -m pytest -q -n "${VAP_BT_TEST_WORKERS:-auto}" --dist loadfile "$@"
 code=$?
 if [ "$code" -eq 5 ]; then
   echo "test.sh: pytest collected no test — treating as a failure" >&2

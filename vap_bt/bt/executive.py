@@ -273,7 +273,8 @@ class Executive:
         reachable" with nothing in front of it. Belief goes back to what it held, the robot
         re-approaches what the atom is about (a new picture, not the one that misled it: a model
         answers one picture the same way every time), and the next plan checks the atom again. An
-        observation is doubted at most :data:`MAX_DOUBTS` times. A denied *precondition* that
+        observation is doubted at most :data:`MAX_DOUBTS` times; an effect observed missing never
+        is (belief already went back to what it held). A denied *precondition* that
         still leaves no plan is then put on trial (``on_trial``): the action is tried against it —
         its skill fails if the camera was right, and that failure is the situation that stands.
         A check that could not see its atom, after whose look belief no longer holds what the plan
@@ -281,7 +282,13 @@ class Executive:
         try:
             return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
         except UnsolvableError:
-            if s.atom is None or s.observed is None and (s.kind != "unseen" or (s.atom in graph.facts) == s.expected):
+            if s.atom is None or s.kind == "effect":
+                # an effect observed missing is the check doing its work: belief went back to what
+                # it held before the action, and doubting the observation would believe the
+                # action worked (cut_lemon seed 0 with injection: a failed cut, the knife lost,
+                # "sliced" doubted into belief and then claimed)
+                raise
+            if s.observed is None and (s.kind != "unseen" or (s.atom in graph.facts) == s.expected):
                 raise
             if doubted[s.atom] >= MAX_DOUBTS and (s.kind != "precondition" or s.atom in on_trial):
                 raise
