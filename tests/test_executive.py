@@ -234,3 +234,30 @@ def test_a_goal_the_camera_could_not_confirm_is_looked_at_again_before_success_i
         # the look after each unconfirmed goal moves the robot (a new belief about where it is): the
         # same belief comes back, and the episode stops, only once the views repeat
         assert len(goal_checks) == 2 if success else 3 <= len(goal_checks) < 10
+
+
+def test_a_precondition_denied_that_leaves_no_plan_is_doubted_then_tried_against(monkeypatch):
+    """A camera that keeps saying the cup is out of reach, with nothing in front of it: no plan
+    makes it reachable. The observation is doubted twice (belief back, a new look); denied a
+    third time it is put on trial — the grasp runs against it, and the world, where the cup is in
+    reach, lets it succeed. The verifications still say what the camera said."""
+    from vap_bt.bt.active_perception import ActivePerception
+
+    settle = ActivePerception._settle
+
+    def out_of_reach(self, value, outcome):
+        if self.phase == "pre" and self.verify.atom.predicate == "reachable":
+            return settle(self, False, "contradicted")
+        return settle(self, value, outcome)
+
+    monkeypatch.setattr(ActivePerception, "_settle", out_of_reach)
+    lines = []
+    task = load(TREES / "collect_cup.yaml")
+    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
+                                          miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+    assert sum("leaves no plan: doubting it" in m for m in lines) == 2
+    assert any("the action will be tried against it" in m for m in lines)
+    assert any("trying grasp(cup" in m for m in lines)
+    denied = [v for v in r["verifications"] if v["predicate"] == "reachable(cup)"]
+    assert len(denied) == 4 and all(v["outcome"] == "contradicted" and v["value"] is False for v in denied)

@@ -113,6 +113,29 @@ def test_the_floor_along_every_wall_is_looked_at_from_inside_the_room_facing_the
     assert b.wall_views("nowhere") == []
 
 
+def test_an_item_is_looked_at_from_close_by_on_its_support_or_round_it_on_the_floor():
+    """A check that could not make an item out goes to look from close by where belief puts it:
+    the top of the piece it rests on from two stands in front of it, nearer each, facing it; an
+    item on the floor from stands all round it."""
+    from vap_bt.scene.builder import SEARCH_TOP_STANDOFF, TOP_VIEW_STANDOFF
+
+    task = load(TREES / "collect_cup.yaml").planning
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 3.0)),),
+                   furniture=(FurnitureInfo("counter", "counter", "surface", "kitchen", (2.0, 2.5, -np.pi / 2), (1.0, 0.6)),))
+    b = SceneGraphBuilder(task.knowledge, task.objects, site)
+    on_counter = SceneGraph.of_facts({A("on(cup, counter)"), A("in_room(cup, kitchen)")})
+    views = b.near_views(on_counter, "cup")
+    assert [v.aim.names for v in views] == [("counter",), ("counter",)]
+    assert [round(2.5 - v.base_pose[1], 3) for v in views] == [0.3 + TOP_VIEW_STANDOFF, 0.3 + SEARCH_TOP_STANDOFF]
+    assert all(v.base_pose[0] == pytest.approx(2.0) and v.base_pose[2] == pytest.approx(np.pi / 2) for v in views)
+    on_floor = SceneGraph.of_facts({A("on(cup, floor_kitchen)"), A("in_room(cup, kitchen)")})
+    round_it = b.near_views(on_floor, "cup")
+    assert len(round_it) >= 3 and all(v.aim.names == ("floor_kitchen",) for v in round_it)
+    assert len({v.base_pose for v in round_it}) == len(round_it)  # each from its own stand
+    held = SceneGraph.of_facts({A("holding(cup)")})
+    assert b.near_views(held, "cup") == []
+
+
 def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     """boil_water: the cup is in the closed cabinet, which no view shows into; the task file says
     so, and the belief says which source placed it."""
