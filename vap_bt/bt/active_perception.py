@@ -148,10 +148,11 @@ class ActivePerception(py_trees.decorators.Decorator):
         (docs/perception.md): one more view that showed the atom's objects and whose answers
         agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
         success will be claimed, two views the model judged sufficient, or one and two more whose
-        answers agreed. A precondition of an action that failed when it last ran
-        (``ctx.doubted``) is treated as a surprise even when confirmed: the failure is evidence
-        against it (an oven the survey took for open, into which no arm pose reaches)."""
-        doubted = self.phase == "pre" and self.atom in self.ctx.doubted
+        answers agreed. An atom in doubt (``ctx.doubted``: a precondition of an action that failed
+        when it last ran, an effect of one that lost its tool) is treated as a surprise even when
+        confirmed: the failure is evidence against it (an oven the survey took for open, into
+        which no arm pose reaches)."""
+        doubted = self.atom in self.ctx.doubted
         if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal" and not doubted):
             return False
         rounds = distinct(self._evidence())

@@ -139,6 +139,12 @@ class Verified:
         """The rounds ``atom`` was judged on since the last action that could have changed it."""
         return list(self._rounds.get(atom, ()))
 
+    def distrust(self, atoms) -> None:
+        """Forget the values and views ``atoms`` were judged on: something since casts doubt on
+        them (the action meant to bring them about lost its tool)."""
+        self._values = {a: v for a, v in self._values.items() if a not in atoms}
+        self._rounds = {a: r for a, r in self._rounds.items() if a not in atoms}
+
     def executed(self, action: GroundAction) -> None:
         """``action`` ran (or tried to): forget what it could have changed."""
         args, changed = set(action.args), action.may_add | action.may_delete
@@ -183,9 +189,10 @@ class ExecutionContext:
     #: preconditions the camera could not make out however often the robot looked again: it acts on
     #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
     on_belief: set[Atom] = field(default_factory=set)
-    #: preconditions of an action that failed when it ran: a failure is evidence against what the
-    #: action presumed, so a view that confirms one is a second opinion only with another view
-    #: from a new picture that agrees (as for a surprise); cleared when a check settles it
+    #: preconditions of an action that failed when it ran (a failure is evidence against what the
+    #: action presumed), and effects of one that lost its tool: a view that confirms one is a
+    #: second opinion only with another view from a new picture that agrees (as for a surprise);
+    #: cleared when a check settles it
     doubted: set[Atom] = field(default_factory=set)
     #: preconditions the camera denied, that no action can make true, after every doubt: the
     #: action itself is their test (its skill fails if the camera was right), so a check that

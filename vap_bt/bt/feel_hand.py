@@ -8,7 +8,9 @@ So after every action that leaves belief holding something, the gripper (``ctx.f
 its fingers closed on something) is asked, at no cost: an empty gripper is a situation of kind
 ``effect`` about ``holding``, observed false. It names no action — the action did what it did
 (the robot moved), only the hand lost its item — so nothing is undone; the plan's tail after the
-action is what the replan may reuse.
+action is what the replan may reuse. When the item lost is one the action worked with (a knife
+that dropped mid-cut), the action's other effects are put in doubt (``ctx.doubted``): views
+judged before count for nothing, and a confirming view needs a second from a new picture.
 """
 
 from __future__ import annotations
@@ -30,6 +32,14 @@ class FeelHand(py_trees.behaviour.Behaviour):
     def update(self) -> Status:
         for atom in sorted(a for a in self.ctx.graph.facts if a.predicate == "holding"):
             if self.ctx.felt(self.ctx.graph, atom) is False:
+                if atom.args[0] in self.action.args:
+                    # the action lost the very thing it worked with (the knife dropped mid-cut):
+                    # what it was to bring about is in doubt, and views judged before the hand
+                    # was felt are no evidence for it (cut_lemon seed 1 with injection: a lemon
+                    # "sliced" on one view, and on one more at the goal, that was never cut)
+                    effects = {a for a in self.action.may_add if a.predicate != "holding"}
+                    self.ctx.doubted |= effects
+                    self.ctx.verified.distrust(effects)
                 self.ctx.situation = Situation("effect", None, self.step + 1, atom, True, False,
                                                f"the gripper holds nothing after {self.action}")
                 self.ctx.progress(f"    situation: the gripper holds nothing after {self.action}")
