@@ -282,34 +282,42 @@ class Executive:
         try:
             return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
         except UnsolvableError:
-            if s.atom is None or s.kind == "effect":
-                # an effect observed missing is the check doing its work: belief went back to what
-                # it held before the action, and doubting the observation would believe the
-                # action worked (cut_lemon seed 0 with injection: a failed cut, the knife lost,
-                # "sliced" doubted into belief and then claimed)
+            recourse = self._recourse(graph, s, doubted, on_trial)
+            if recourse is None:
                 raise
-            if s.observed is None and (s.kind != "unseen" or (s.atom in graph.facts) == s.expected):
-                raise
-            if doubted[s.atom] >= MAX_DOUBTS and (s.kind != "precondition" or s.atom in on_trial):
-                raise
-        complement = self.task.knowledge.complements.get(s.atom.predicate)
+        # belief back to what the plan presumed: what it held before an unseen check, the
+        # opposite of what a doubted or tried observation said
+        value = s.expected if recourse == "belief" else not s.observed
+        graph.correct(s.atom, value, self.task.knowledge.complements.get(s.atom.predicate), cause=recourse)
+        if recourse == "belief":
+            self.progress(f"    {s.atom} is what every plan needs, and no view denied it: believing it again")
+        elif recourse == "trial":
+            on_trial.add(s.atom)
+            self.progress(f"    {s.atom} = {s.observed} still leaves no plan: the action will be tried against it")
+        else:
+            doubted[s.atom] += 1
+            self.progress(f"    {s.atom} = {s.observed} leaves no plan: doubting it, looking again")
+            self._look_at(graph, s.atom.args)
+        return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
+
+    @staticmethod
+    def _recourse(graph: SceneGraph, s: Situation, doubted: Counter, on_trial: set[Atom]) -> str | None:
+        """What to do when the corrected belief leaves no plan (:meth:`_replan`): "belief" (an
+        unseen atom the look dropped is held again), "doubt", "trial", or None (the situation
+        stands). An effect observed missing is the check doing its work: belief already went
+        back to what it held before the action, and doubting it would believe the action worked
+        (cut_lemon seed 0 with injection: a failed cut, the knife lost, "sliced" doubted into
+        belief and then claimed)."""
+        if s.atom is None or s.kind == "effect":
+            return None
+        spent = doubted[s.atom] >= MAX_DOUBTS
         if s.observed is None:
             # no view could tell, and the look that followed dropped what the plan presumed (a
-            # re-survey's geometry does not see a bowl blocking a plate it cannot see): nothing
-            # said otherwise, so belief holds it again, and the next check looks once more
-            graph.correct(s.atom, s.expected, complement, cause="belief")
-            self.progress(f"    {s.atom} is what every plan needs, and no view denied it: believing it again")
-            return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
-        if doubted[s.atom] >= MAX_DOUBTS:
-            on_trial.add(s.atom)
-            graph.correct(s.atom, not s.observed, complement, cause="trial")
-            self.progress(f"    {s.atom} = {s.observed} still leaves no plan: the action will be tried against it")
-            return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
-        doubted[s.atom] += 1
-        graph.correct(s.atom, not s.observed, complement, cause="doubt")
-        self.progress(f"    {s.atom} = {s.observed} leaves no plan: doubting it, looking again")
-        self._look_at(graph, s.atom.args)
-        return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
+            # re-survey's geometry does not see a bowl blocking a plate it cannot see)
+            return "belief" if s.kind == "unseen" and (s.atom in graph.facts) != s.expected and not spent else None
+        if not spent:
+            return "doubt"
+        return "trial" if s.kind == "precondition" and s.atom not in on_trial else None
 
     @staticmethod
     def halt(tree: py_trees.trees.BehaviourTree) -> None:
