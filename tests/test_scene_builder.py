@@ -74,18 +74,26 @@ def test_detections_outside_the_task_vocabulary_are_not_objects_of_the_plan():
 
 def test_the_floor_round_a_spot_is_looked_at_from_all_round_it_within_its_room():
     """Where something slipped from the hand: the floor round the spot the robot stands on (and
-    under its own base), seen from stands round it, each facing it; none beyond the room's walls."""
+    under its own base), seen from stands round it in two rings (the nearer turned by half a
+    step: new pictures, the item larger in them), each facing it; none beyond the room's walls."""
+    from vap_bt.scene.builder import SPOT_LOOK_RINGS
+
     task = load(TREES / "collect_cup.yaml").planning
     site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 3.0)),))
     b = SceneGraphBuilder(task.knowledge, task.objects, site)
     views = b.spot_views("kitchen", (1.0, 1.5))
-    assert 3 <= len(views) < 6  # the stands through the wall at x = 0 are not offered
+    # the stand through the wall at x = 0 is not offered: one of the six 1.1 m away
+    assert len(views) == 11 and len({v.label for v in views}) == 11
+    distances = []
     for v in views:
         x, y, yaw = v.base_pose
         assert 0.0 < x < 4.0 and 0.0 < y < 3.0
         assert v.aim.point == (1.0, 1.5, 0.0) and v.aim.names == ("floor_kitchen",)
-        assert np.hypot(x - 1.0, y - 1.5) == pytest.approx(1.1)
-        assert np.cos(yaw) * (1.0 - x) + np.sin(yaw) * (1.5 - y) == pytest.approx(1.1)  # facing the spot
+        d = float(np.hypot(x - 1.0, y - 1.5))
+        distances.append(round(d, 6))
+        assert np.cos(yaw) * (1.0 - x) + np.sin(yaw) * (1.5 - y) == pytest.approx(d)  # facing the spot
+    assert sorted(set(distances)) == sorted(round(d, 6) for d, _ in SPOT_LOOK_RINGS)
+    assert distances == sorted(distances, reverse=True)  # the far ring first: it sees more floor
 
 
 def test_the_floor_along_every_wall_is_looked_at_from_inside_the_room_facing_the_wall():

@@ -59,9 +59,10 @@ from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import VLM
 from vap_bt.robot.camera import Aim, Body, Camera
 from vap_bt.scene import belief
-from vap_bt.scene.builder import GEOMETRIC_PREDICATES, Geometry, SceneGraphBuilder, SweepRecord
+from vap_bt.scene.builder import GEOMETRIC_PREDICATES, SUPPORT_PREDICATES, Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph
 from vap_bt.scene.identity import Identifier, IdentifyingCamera
+from vap_bt.scene.misses import Misses
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
 from vap_bt.skill import SkillClient
@@ -146,6 +147,8 @@ class Executive:
         self._searching: set[str] = set()  # objects being looked for: placed nowhere
         #: how often the robot went to look from close by at each set of items (a new stand each time)
         self._near_looks: Counter[tuple[str, ...]] = Counter()
+        #: where checks did not find items a measurement had put there (a false positive's spot)
+        self.misses = Misses()
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
@@ -347,14 +350,9 @@ class Executive:
         if unplaced():  # a detector misses things now and then: look round once more before giving up
             self.progress(f"survey: {', '.join(unplaced())} not seen; looking again")
             sweep = self.builder.sweep(self.camera, rooms).after(sweep)
-        if unplaced() and any(self.builder.wall_views(r) for r in rooms):
-            # misses are systematic for a view, and a thing on the floor shows in few of the
-            # sweep's views: the floor along every wall, until it is found
-            self.progress(f"survey: {', '.join(unplaced())} still not seen; looking along the walls")
-            sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
-                                            until=lambda: not unplaced()).after(sweep)
         if unplaced():
-            sweep = self._nearer(rooms, lambda: not unplaced(), f"survey: {', '.join(unplaced())} still not seen;").after(sweep)
+            sweep = self._closer_looks(sweep, rooms, lambda: not unplaced(),
+                                       lambda: f"survey: {', '.join(unplaced())} still not seen;")
         state = self.body.state()
         located, prior_only = belief.item_facts(self.builder, items, self.prior)
         facts = belief.map_facts(site_map) | belief.robot_facts(state, sweep, site_map) | belief.hand_facts(state, self.builder)
@@ -399,7 +397,7 @@ class Executive:
         if self.geometry is not None:
             in_hand = (held,) if held else ()
             unplaced |= {n for n in self.task.objects if self._portable(n) and n not in in_hand
-                         and self.builder.detected(n) and not self.builder.placed(n, in_hand)}
+                         and self.builder.detected(n) and (not self.builder.placed(n, in_hand) or self._at_miss(n))}
         belief = {}
         for n in self.task.objects:
             if n in unplaced:
@@ -442,6 +440,7 @@ class Executive:
 
     def _correct(self, graph: SceneGraph, s: Situation) -> Survey | None:
         """Bring belief in line with what was observed; returns the re-survey it took, if any."""
+        self._note_miss(graph, s)
         if s.kind == "effect" and s.action is not None:
             graph.undo(s.action)
         if s.atom is not None and s.observed is not None:
@@ -531,10 +530,10 @@ class Executive:
             if o in in_hand:
                 continue  # belief holds it and the gripper feels something: it is in the hand
             observed = self.builder.observed(o, in_hand) if o in seen else set()
-            if self.builder.placed(o, in_hand):
+            if self.builder.placed(o, in_hand) and not self._at_miss(o):
                 graph.relocate(o, observed)
                 graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
-            elif self._expected_in_sight(graph, o):
+            elif self._at_miss(o) or self._expected_in_sight(graph, o):
                 lost.append(o)  # the camera turned toward where belief puts it, and it is not there
         return lost
 
@@ -566,20 +565,14 @@ class Executive:
         rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
 
-        def found() -> bool:
-            return all(o in in_hand or self.builder.placed(o, in_hand) for o in lost)
+        def found() -> bool:  # a sighting where a check found it missing is not (yet) taken
+            return all(o in in_hand or (self.builder.placed(o, in_hand) and not self._at_miss(o)) for o in lost)
 
         if rest and not found():
             self.progress(f"    not there: searching {', '.join(rest)}")
             sweep = self.builder.sweep(self.camera, rest).after(sweep)
         if not found():
-            # the sweep's views leave the feet of the walls out: what rolled away lies there
-            rooms = [*near, *rest]
-            self.progress(f"    still not found: looking along the walls of {', '.join(rooms)}")
-            sweep = self.builder.look_round(self.camera, [(r, self.builder.wall_views(r)) for r in rooms],
-                                            until=found).after(sweep)
-            if not found():
-                sweep = self._nearer(rooms, found, "    still not found:").after(sweep)
+            sweep = self._closer_looks(sweep, [*near, *rest], found, lambda: "    still not found:")
         for o in items:
             observed = self.builder.observed(o, in_hand)
             if o not in in_hand and self.builder.placed(o, in_hand):
@@ -590,12 +583,42 @@ class Executive:
         self.on_survey(survey, graph)
         return survey
 
-    def _nearer(self, rooms: list[str], found: Callable[[], bool], lead: str) -> SweepRecord:
-        """The last look of a search: the tops of the rooms' pieces that things are put on, from
-        nearer than the sweep's, until ``found()`` (a small thing on a counter that every view
-        of the sweep missed: a detector's miss belongs to the picture, a new one draws anew)."""
-        self.progress(f"{lead} looking nearer at the tops in {', '.join(rooms)}")
-        return self.builder.look_round(self.camera, [(r, self.builder.near_top_views(r)) for r in rooms], until=found)
+    def _closer_looks(self, sweep: SweepRecord, rooms: list[str], found: Callable[[], bool],
+                      lead: Callable[[], str]) -> SweepRecord:
+        """The last looks of a survey or a search, each until ``found()``: first the floor along
+        every wall (the sweep's views leave the feet of the walls out, and what rolled away lies
+        there), then the tops of the rooms' pieces that things are put on, from nearer than the
+        sweep's (a small thing on a counter every sweep view missed: a detector's miss belongs to
+        the picture, a new one draws anew). ``lead()`` opens each progress line; the looks are
+        added to ``sweep``."""
+        for what, views in (("along the walls of", self.builder.wall_views),
+                            ("nearer at the tops in", self.builder.near_top_views)):
+            looks = [(r, views(r)) for r in rooms]
+            if found() or not any(v for _, v in looks):
+                continue
+            self.progress(f"{lead()} looking {what} {', '.join(rooms)}")
+            sweep = self.builder.look_round(self.camera, looks, until=found).after(sweep)
+        return sweep
+
+    def _note_miss(self, graph: SceneGraph, s: Situation) -> None:
+        """A check that did not find an item at its place or in view, while belief had it where
+        frames had measured it: note the spot (:mod:`vap_bt.scene.misses`). Items the hand holds
+        are not missing anywhere."""
+        for a in graph.facts:
+            if a.predicate == "holding" and a.args:
+                self.misses.clear(a.args[0])
+        a = s.atom
+        if a is None or s.observed is True or not a.args or a.predicate not in (VIEW_PREDICATE, *SUPPORT_PREDICATES):
+            return
+        obj = graph.objects.get(a.args[0])
+        if obj is not None and self._portable(obj.name) and obj.centroid is not None \
+                and obj.located == frozenset(graph.location(obj.name)):
+            self.misses.note(obj.name, obj.centroid)
+
+    def _at_miss(self, name: str) -> bool:
+        """Whether the frames' track of ``name`` puts it where a check found it missing."""
+        g = self.builder.geometry
+        return g is not None and self.misses.at(name, g.centroid(name))
 
     def _felt(self, graph: SceneGraph, atom: Atom) -> bool | None:
         """Proprioception's word on ``holding(x)`` and ``hand_empty``: the gripper reports whether
