@@ -1,12 +1,15 @@
-"""FeelHand: the gripper's word after an action, and what it casts doubt on."""
+"""FeelHand: the gripper's word after an action, what it casts doubt on, and what the hand
+holds when the fingers feel something belief does not."""
 
 from __future__ import annotations
 
 from py_trees.common import Status
 
-from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.context import ExecutionContext, Situation
+from vap_bt.bt.executive import Executive, last_taken_from_hand
 from vap_bt.bt.feel_hand import FeelHand
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception.verification import Round
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.taskfile import load
@@ -39,3 +42,46 @@ def test_a_tool_lost_by_the_action_that_used_it_casts_doubt_on_the_actions_effec
 def test_an_item_lost_on_the_way_casts_no_doubt_on_what_the_action_did_to_other_things():
     ctx = after(("find", ("counter", "lemon", "kitchen")), "knife")
     assert SLICED not in ctx.doubted and len(ctx.verified.views(SLICED)) == 1
+
+
+# -- the gripper holds something belief does not (Executive._held_after_all) ------------------
+
+LOG = Atom("holding", ("wood1",))
+ON_HEARTH = Atom("on", ("wood1", "hearth"))
+
+
+def grasped_then_denied() -> tuple[SceneGraph, GroundAction, Situation]:
+    """store_firewood seed 4: the grasp took the log, a view judged it not held; belief, as
+    :meth:`Executive._correct` leaves it, has the grasp undone and the log not held."""
+    knowledge = load(TREES / "store_firewood.yaml").planning.knowledge
+    grasp = knowledge.ground("grasp", ("wood1", "hearth", "living_room"))
+    graph = SceneGraph.of_facts({ON_HEARTH, Atom("hand_empty"), Atom("robot_in", ("living_room",)),
+                                 Atom("in_room", ("wood1", "living_room")), Atom("robot_at", ("wood1",)),
+                                 Atom("reachable", ("wood1",)), Atom("inview", ("wood1",))}, tracks_hand=True)
+    graph.apply(grasp)
+    s = Situation("effect", grasp, 8, LOG, True, False)
+    graph.undo(grasp)
+    graph.correct(LOG, False)
+    return graph, grasp, s
+
+
+def test_a_grasp_a_view_judged_empty_handed_holds_what_the_fingers_closed_on():
+    graph, _, s = grasped_then_denied()
+    Executive._held_after_all(graph, s)
+    assert LOG in graph.facts and ON_HEARTH not in graph.facts and Atom("hand_empty") not in graph.facts
+
+
+def test_a_hand_judged_not_empty_holds_the_item_a_check_last_took_out_of_it():
+    graph, _, _ = grasped_then_denied()  # the grasp undone: a view said it did not take
+    assert last_taken_from_hand(graph) == "wood1"
+    Executive._held_after_all(graph, Situation("precondition", None, 0, Atom("hand_empty"), True, False))
+    assert LOG in graph.facts
+
+
+def test_an_item_the_robot_put_down_is_not_taken_back_into_the_hand():
+    graph, grasp, _ = grasped_then_denied()
+    graph.apply(grasp)
+    graph.correct(LOG, False, cause="gripper")  # the fingers felt it gone: not a view's say-so
+    assert last_taken_from_hand(graph) is None
+    Executive._held_after_all(graph, Situation("precondition", None, 0, Atom("hand_empty"), True, False))
+    assert LOG not in graph.facts

@@ -144,6 +144,29 @@ def test_an_item_is_looked_at_from_close_by_on_its_support_or_round_it_on_the_fl
     assert b.near_views(held, "cup") == []
 
 
+def test_what_is_in_a_basket_is_looked_at_from_above_and_what_is_in_a_fridge_from_the_front():
+    """store_firewood seed 4: three views of the basket's front judged the log in it outside; its
+    top from close by shows the inside. A fridge's inside shows through its open door. A piece
+    named for itself (the check relates an item belief no longer places to it) is looked at the
+    same way."""
+    from vap_bt.robot.site_map import Cavity
+    from vap_bt.scene.builder import TOP_LOOKS
+
+    task = load(TREES / "store_firewood.yaml").planning
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 6.0, 4.0)),), furniture=(
+        FurnitureInfo("basket", "basket", "container", "kitchen", (2.0, 3.5, -np.pi / 2), (0.5, 0.4), 0.3,
+                      Cavity((0.02, 0.3), 0.02, "top")),
+        FurnitureInfo("fridge", "fridge", "container", "kitchen", (4.0, 3.5, -np.pi / 2), (0.7, 0.7), 1.7,
+                      Cavity((0.1, 1.6), 0.04, "front"))))
+    b = SceneGraphBuilder(task.knowledge, {**task.objects, "fridge": "container"}, site)
+    in_basket = SceneGraph.of_facts({A("inside(wood1, basket)")})
+    for name in ("wood1", "basket"):
+        assert [v.label for v in b.near_views(in_basket, name)] == [f"basket {label}" for label in TOP_LOOKS.values()]
+    in_fridge = SceneGraph.of_facts({A("inside(wood1, fridge)")})
+    for name in ("wood1", "fridge"):
+        assert [v.label for v in b.near_views(in_fridge, name)] == ["fridge from the front"]
+
+
 def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     """boil_water: the cup is in the closed cabinet, which no view shows into; the task file says
     so, and the belief says which source placed it."""

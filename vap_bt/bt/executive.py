@@ -473,20 +473,26 @@ class Executive:
         return self._resurvey(graph, items, f"{describe(s)} again")
 
     def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
-        """Go and look at what a check could not make out: the sweep's own view of a piece of
-        furniture or a door; for items, a view from close by of where belief puts them, another
-        each time (the same stand would show the same picture, which a model answers the same
-        way). What could not be made out is not in view: the new plan re-approaches it."""
+        """Go and look at what a check could not make out: for an item, a view from close by of
+        where belief puts it, another each time (the same stand would show the same picture,
+        which a model answers the same way) — a log in a basket shows from above, not from the
+        basket's front (store_firewood seed 4: three front views judged it outside); else the
+        sweep's own view of the piece of furniture or the door. What could not be made out is not
+        in view: the new plan re-approaches it."""
         for a in names:
             if Atom(VIEW_PREDICATE, (a,)) in graph.facts:
                 graph.correct(Atom(VIEW_PREDICATE, (a,)), False)
-        view = next((v for n in names if not self._portable(n) and (v := self.builder.view_of(graph, n))), None)
-        if view is None:  # about items only: from close by, a new stand each time (a new picture)
-            near = next((vs for n in names if (vs := self.builder.near_views(graph, n))), [])
+        # about an item: where belief puts it, else the piece the check relates it to
+        items = [n for n in names if self._portable(n)]
+        close = [*items, *(n for n in names if n not in items and self.builder.site_map.piece(n))] if items else []
+        near = next((vs for n in close if (vs := self.builder.near_views(graph, n))), [])
+        view = None if near else next((v for n in names if not self._portable(n)
+                                       and (v := self.builder.view_of(graph, n))), None)
+        if near:
             self._near_looks[names] += 1
             turn = self._near_looks[names]
             view = next((v for v in near[turn:] + near[:turn] if self.camera.goto_view(v)), None)
-        elif not self.camera.goto_view(view):
+        elif view is not None and not self.camera.goto_view(view):
             view = None
         if view is not None:
             self.progress(f"    looking again: {view.label}")
@@ -498,15 +504,10 @@ class Executive:
     def _feel_hand(self, graph: SceneGraph, s: Situation) -> list[str]:
         """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
         belief had in the hand: it is somewhere else now, and must be looked for. A gripper that
-        holds something belief does not, after a failed action that was to take one thing into
-        the hand, holds that thing: the action stopped after the fingers closed (a lift or a
-        withdrawal blocked), and its effects are believed as if it had reported success."""
+        holds something belief does not: see :meth:`_held_after_all`."""
         felt = self.body.state().gripper_holding
-        if felt and s.kind == "execution" and s.action is not None \
-                and not any(a.predicate == "holding" for a in graph.facts):
-            took = [a for a in s.action.diff(graph.state()).added if a.predicate == "holding"]
-            if len(took) == 1:
-                graph.apply(s.action)
+        if felt and not any(a.predicate == "holding" for a in graph.facts):
+            self._held_after_all(graph, s)
             return []
         if felt is not False:
             return []
@@ -516,6 +517,28 @@ class Executive:
         if "hand_empty" in self.task.knowledge.predicates and Atom("hand_empty") not in graph.facts:
             graph.correct(Atom("hand_empty"), True, cause="gripper")
         return [a.args[0] for a in held]
+
+    @staticmethod
+    def _held_after_all(graph: SceneGraph, s: Situation) -> None:
+        """The gripper holds something belief does not: what. After an action that was to take
+        one thing into the hand, that thing — the action stopped after the fingers closed (a lift
+        or a withdrawal blocked), or a look judged the hand empty: one view against the fingers'
+        word — and the action's effects are believed as if it had succeeded. After a check that
+        the hand holds an item, or that it is empty, said no: the item, or the last one a check
+        took out of the hand (store_firewood seed 4: a view judged the log not held, and the robot
+        searched two rooms for the log in its own hand until the replanning budget ran out)."""
+        if s.action is not None and s.kind in ("execution", "effect"):
+            took = [a for a in s.action.diff(graph.state()).added if a.predicate == "holding"]
+            if len(took) == 1 and (s.kind == "execution" or s.atom in took):
+                graph.apply(s.action)
+                return
+        if s.atom is None or s.observed is not False:
+            return
+        item = s.atom.args[0] if s.atom.predicate == "holding" and s.atom.args else None
+        if s.atom.predicate == "hand_empty":
+            item = last_taken_from_hand(graph)
+        if item is not None:
+            graph.relocate(item, {Atom("holding", (item,))})
 
     def _relocate(self, graph: SceneGraph, portable: list[str]) -> list[str]:
         """Look where belief puts ``portable``; re-locate what the frame shows. Returns the objects
@@ -679,6 +702,18 @@ def sweep_order(site_map, start: str | None) -> list[str]:
             todo += sorted(nbrs[r] - set(order))
     order += [r.name for r in site_map.rooms if r.name not in order]
     return order[::-1]
+
+
+def last_taken_from_hand(graph: SceneGraph) -> str | None:
+    """The item a check last took out of the hand in belief (a view that judged it not held, or a
+    grasp not done), unless something else touched what the hand holds since (an action put it
+    down, the gripper felt it gone)."""
+    for ch in reversed(graph.history):
+        touched = [a for a in ch.added | ch.removed if a.predicate == "holding" and a.args]
+        if touched:
+            # "correct": a check said it is not held; "undo": a check said the grasp did not take
+            return touched[0].args[0] if ch.cause in ("correct", "undo") and touched[0] in ch.removed else None
+    return None
 
 
 def unconfirmed_goal(atoms: list[Atom], step: int) -> Situation:

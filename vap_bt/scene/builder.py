@@ -406,11 +406,16 @@ class SceneGraphBuilder:
 
     def near_views(self, graph: SceneGraph, name: str) -> list[Viewpoint]:
         """Views from close by of an item where belief puts it, for a check that could not make
-        it out from afar (a lemon's cut, a cup's water): the top of the piece it rests on or in
-        from the sweep's close stand and from nearer, or the floor round it from all sides."""
+        it out from afar (a lemon's cut, a cup's water, a log in a basket): the top of the piece it
+        rests on or in from the sweep's close stand and from nearer, or the floor round it from
+        all sides; inside a container that opens at the front (a fridge), the sweep's front view.
+        ``name`` may be the piece itself (what a check relates an item belief no longer places to)."""
         place = self.place_of(graph, name)
         piece = self.site_map.piece(place) if place else None
         if piece is not None and piece.pose is not None:
+            if piece.cavity is not None and piece.cavity.open == "front" and (name == place or any(
+                    a.predicate == "inside" and a.args[1:] == (place,) for a in graph.location(name))):
+                return [self._furniture_view(piece)]
             return [self._top_view(piece, standoff) for standoff in TOP_LOOKS]
         room = next((r for r in self.site_map.rooms if r.floor == place), None)
         p = self.point_of(graph, name)
