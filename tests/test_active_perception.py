@@ -136,6 +136,28 @@ def test_a_goal_is_confirmed_by_two_views_judged_sufficient():
     assert status == Status.SUCCESS and child.runs == 3 and camera.asked == ["left", "left"]
 
 
+def test_a_goal_is_not_claimed_on_a_narrow_vote():
+    """cut_lemon seed 3 with injection: views of a lemon the knife never cut said "sliced" four
+    times and "not sliced" three over the goal's checks; success needs GOAL_MARGIN times as many
+    sufficient views for the goal as views against it, or it stays unconfirmed."""
+    def goal_check(earlier: list[Round], own: list[Round]) -> ExecutionContext:
+        ctx = ExecutionContext(graph=SceneGraph.of_facts(set()), vlm=Suggests("left"), camera=Camera(), skills=None,
+                               budget=len(own) - 1)
+        ctx.verified.saw(CUP_ON_TABLE, earlier)
+        node = ActivePerception(ctx, ScriptedCheck(CUP_ON_TABLE, own), "goal", None, 0)
+        for _ in range(20):
+            node.tick_once()
+            if node.status != Status.RUNNING:
+                break
+        return ctx
+
+    earlier = [view("nnnnn", True)] * 3 + [view("yyyyy", True)] * 3
+    ctx = goal_check(earlier, [view("yyyyy", True), view("yyyyy", True)])  # 5 for, 3 against
+    assert ctx.verifications[-1].outcome == "unsettled" and ctx.unconfirmed_goal == [CUP_ON_TABLE]
+    ctx = goal_check(earlier, [view("yyyyy", True)] * 3)  # 6 for, 3 against: twice as many
+    assert ctx.verifications[-1].outcome == "confirmed" and not ctx.unconfirmed_goal
+
+
 def test_it_moves_where_the_vlm_says_until_a_view_settles():
     child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False), view("yyyyy", True)])
     camera, vlm = Camera(), Suggests("right")

@@ -225,3 +225,17 @@ def test_the_detector_model_is_printed_with_its_error_rates():
     assert {"miss_rate", "accuracy", "view_correlation", "relation_noise", "relations"} <= set(d)
     assert d["error_at_observability"]["1.0"] < 0.001 < d["error_at_observability"]["0.3"] < 0.2
     assert DetectorModel(relation_noise=0.0).error_at(0.3) == 0.0
+
+
+def test_in_a_world_without_camera_poses_a_frame_names_its_stand():
+    """Symbolic cut_lemon with injection: the effect check after a failed cut and the goal check
+    right after it looked at one picture, whose wrong "sliced" counted as two views, and success
+    was claimed on a whole lemon (11 of 135 symbolic episodes claimed what the world denied)."""
+    from vap_bt.perception.verification import stand_of
+
+    w = world("cut_lemon.yaml")
+    first, again = w.capture(), w.capture()
+    assert first.frame_id != again.frame_id and stand_of(first) == stand_of(again) is not None
+    w.move_view(Aim(("lemon",)), "left")
+    assert stand_of(w.capture()) != stand_of(first)
+

@@ -67,6 +67,8 @@ def test_images_travel_as_raw_bytes_not_json():
     back = decode(frame, Frame)
     assert back.depth.dtype == np.float32 and back.rgb.shape == (480, 640, 3) and back.masks.dtype == np.int32
     assert back.detections == obs.detections and np.array_equal(back.camera_pose, np.eye(4))
+    # a world without camera poses names the stand instead (the same while the robot has not moved)
+    assert decode(encode(Frame("g", 1.0, stand="view-3")), Frame).stand == "view-3"
 
 
 @pytest.mark.parametrize("frame, message", [

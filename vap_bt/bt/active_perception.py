@@ -51,6 +51,13 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict
 
+#: success is claimed on a goal atom only when the sufficient views for it are at least this many
+#: times the views that voted against it: a model wrong about one relation in most pictures of it
+#: can outvote the truth by one (cut_lemon seed 3 with injection: four views "sliced", three "not",
+#: of a lemon the knife never cut); a narrow vote leaves the goal unconfirmed, and no success is
+#: claimed that the views do not clearly show
+GOAL_MARGIN = 2
+
 
 class ActivePerception(py_trees.decorators.Decorator):
     """Look again, from elsewhere, until a check's views decide (budget K)."""
@@ -148,7 +155,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         (docs/perception.md): one more view that showed the atom's objects and whose answers
         agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
         success will be claimed, two views the model judged sufficient, or one and two more whose
-        answers agreed. An atom in doubt (``ctx.doubted``: a precondition of an action that failed
+        answers agreed, and :data:`GOAL_MARGIN` times as many sufficient views for it as views
+        that voted against it. An atom in doubt (``ctx.doubted``: a precondition of an action that failed
         when it last ran, an effect of one that lost its tool) is treated as a surprise even when
         confirmed: the failure is evidence against it (an oven the survey took for open, into
         which no arm pose reaches)."""
@@ -159,7 +167,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in rounds)
         if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
             settled = sum(r.settled and r.vote == value for r in rounds)
-            return not (settled >= 2 or settled >= 1 and agreeing >= 3)
+            against = sum(not r.unshown and r.consistent and r.vote is not None and r.vote != value for r in rounds)
+            return not ((settled >= 2 or settled >= 1 and agreeing >= 3) and settled >= GOAL_MARGIN * against)
         return agreeing < 2
 
     def _evidence(self) -> list[Round]:

@@ -473,24 +473,23 @@ class Executive:
         return self._resurvey(graph, items, f"{describe(s)} again")
 
     def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
-        """Go and look at what a check could not make out: for an item, a view from close by of
-        where belief puts it, another each time (the same stand would show the same picture,
-        which a model answers the same way) — a log in a basket shows from above, not from the
-        basket's front (store_firewood seed 4: three front views judged it outside); else the
-        sweep's own view of the piece of furniture or the door. What could not be made out is not
-        in view: the new plan re-approaches it."""
+        """Go and look at what a check could not make out: the sweep's own view of a piece of
+        furniture or a door; about an item in or on a container open at the top, the container's
+        top from close by (a log in a basket shows from above: three views of the basket's front
+        judged it outside, store_firewood seed 4); about items only, a view from close by of where
+        belief puts them. From close by, another stand each time (the same stand would show the
+        same picture, which a model answers the same way). What could not be made out is not in
+        view: the new plan re-approaches it."""
         for a in names:
             if Atom(VIEW_PREDICATE, (a,)) in graph.facts:
                 graph.correct(Atom(VIEW_PREDICATE, (a,)), False)
-        # about an item: where belief puts it, else the piece the check relates it to
-        items = [n for n in names if self._portable(n)]
-        close = [*items, *(n for n in names if n not in items and self.builder.site_map.piece(n))] if items else []
-        near = next((vs for n in close if (vs := self.builder.near_views(graph, n))), [])
-        view = None if near else next((v for n in names if not self._portable(n)
-                                       and (v := self.builder.view_of(graph, n))), None)
+        # an item and a container open at the top: the container's top from close by
+        tops = [n for n in names if self.builder.opens_on_top(n)] if any(map(self._portable, names)) else []
+        view = next((v for n in names if not tops and not self._portable(n) and (v := self.builder.view_of(graph, n))), None)
+        near = [] if view else next((vs for n in (tops or names) if (vs := self.builder.near_views(graph, n))), [])
         if near:
             self._near_looks[names] += 1
-            turn = self._near_looks[names]
+            turn = self._near_looks[names] % len(near)  # round the stands, a new one each time
             view = next((v for v in near[turn:] + near[:turn] if self.camera.goto_view(v)), None)
         elif view is not None and not self.camera.goto_view(view):
             view = None
@@ -624,15 +623,16 @@ class Executive:
         return sweep
 
     def _note_miss(self, graph: SceneGraph, s: Situation) -> None:
-        """A check that did not find an item at its place or in view, while belief had it where
-        frames had measured it: note the spot (:mod:`vap_bt.scene.misses`). Items the hand holds
-        are not missing anywhere."""
+        """A check before an action that did not find an item at its place or in view, while belief
+        had it where frames had measured it: note the spot (:mod:`vap_bt.scene.misses`). Items the
+        hand holds are not missing anywhere."""
         for a in graph.facts:
             if a.predicate == "holding" and a.args:
                 self.misses.clear(a.args[0])
         a = s.atom
-        if a is None or s.observed is True or not a.args or a.predicate not in (VIEW_PREDICATE, *SUPPORT_PREDICATES):
-            return
+        if s.kind not in ("unseen", "precondition") or a is None or s.observed is True or not a.args \
+                or a.predicate not in (VIEW_PREDICATE, *SUPPORT_PREDICATES):
+            return  # an effect or a goal is about what the robot just did there: no phantom put it
         obj = graph.objects.get(a.args[0])
         if obj is not None and self._portable(obj.name) and obj.centroid is not None \
                 and obj.located == frozenset(graph.location(obj.name)):

@@ -300,10 +300,11 @@ STAND_STEP = 0.02
 
 
 def stand_of(frame: Frame) -> tuple | None:
-    """Where the camera stood for ``frame``, rounded to :data:`STAND_STEP`; None without a pose."""
+    """Where the camera stood for ``frame``, rounded to :data:`STAND_STEP`; in a world without
+    camera poses, the frame's named stand (:attr:`Frame.stand`); None without either."""
     T = frame.camera_pose
     if T is None:
-        return None
+        return (frame.stand,) if frame.stand else None
     return tuple(int(round(float(v) / STAND_STEP)) for v in (*T[:3, 3], *T[:3, 2]))
 
 

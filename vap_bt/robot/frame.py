@@ -78,6 +78,9 @@ class Frame:
     masks: np.ndarray | None = None  # (H, W) int32 instance mask ids, -1 background
     intrinsics: tuple[float, float, float, float] | None = None  # fx, fy, cx, cy (pixels)
     camera_pose: np.ndarray | None = None  # (4, 4) map <- optical frame (z forward, x right, y down)
+    #: where the camera stood, in a world without camera poses: a name the same while the robot
+    #: has not moved (the robot knows whether it moved); with a pose, the pose says it
+    stand: str | None = None
     #: what the camera was aimed at (for records and people; never used to interpret the frame)
     aim: tuple[str, ...] = ()
     extra: dict = field(default_factory=dict)

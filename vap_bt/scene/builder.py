@@ -227,25 +227,38 @@ class SceneGraphBuilder:
                                  f"{room} floor round ({sx:.2f}, {sy:.2f}), from heading {h:+.2f}"))
         return out
 
+    def opens_on_top(self, name: str) -> bool:
+        """Whether ``name`` is a mapped container whose inside shows from above (a basket, a drawer
+        pulled out), not through a door at its front."""
+        piece = self.site_map.piece(name)
+        return piece is not None and piece.pose is not None and piece.cavity is not None and piece.cavity.open == "top"
+
     def _has_top(self, f) -> bool:
         """Whether things are put on this placed piece of furniture (the domain's ``on`` takes its type)."""
         sig = self.knowledge.predicates.get("on")
         return f.pose is not None and sig is not None and len(sig) == 2 and self.knowledge.is_subtype(f.type, sig[1])
 
-    def _top_view(self, f, standoff: float) -> Viewpoint:
-        return self._furniture_view(f, standoff, TOP_LOOKS[standoff])
+    def _top_view(self, f, standoff: float, at: tuple[float, ...] | None = None) -> Viewpoint:
+        return self._furniture_view(f, standoff, TOP_LOOKS[standoff], at)
 
-    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front") -> Viewpoint:
+    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front",
+                        at: tuple[float, ...] | None = None) -> Viewpoint:
+        """A look at ``f`` from ``standoff`` in front of it: at its middle, or at the point ``at``
+        on it (an item on a long table: from in front of the item, or the frame of a near look
+        leaves it out)."""
         if f.pose is None:
             return Viewpoint(f.room, Aim((f.name,), place=f.name), None, f"{f.name}")
         x, y, yaw = f.pose
-        depth = f.footprint[1] if f.footprint else 0.5
+        width, depth = f.footprint if f.footprint else (0.5, 0.5)
         box = self.geometry.box(f.name) if self.geometry else None
         # the measured top once the piece has been seen (a look at its top), else a usual height
         z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
+        side = (-math.sin(yaw), math.cos(yaw))  # along the front
+        shift = 0.0 if at is None else max(-width / 2, min(width / 2, (at[0] - x) * side[0] + (at[1] - y) * side[1]))
+        ax, ay = (x, y) if at is None else (at[0], at[1])
         d = depth / 2 + standoff
-        base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
-        return Viewpoint(f.room, Aim((f.name,), (x, y, z), f.name), base, f"{f.name} {label}")
+        base = (x + d * math.cos(yaw) + shift * side[0], y + d * math.sin(yaw) + shift * side[1], yaw + math.pi)
+        return Viewpoint(f.room, Aim((f.name,), (ax, ay, z), f.name), base, f"{f.name} {label}")
 
     def _door_view(self, d, room: str) -> Viewpoint:
         if d.pose is None or self.site_map.room(room).bounds is None:
@@ -416,7 +429,8 @@ class SceneGraphBuilder:
             if piece.cavity is not None and piece.cavity.open == "front" and (name == place or any(
                     a.predicate == "inside" and a.args[1:] == (place,) for a in graph.location(name))):
                 return [self._furniture_view(piece)]
-            return [self._top_view(piece, standoff) for standoff in TOP_LOOKS]
+            at = self.point_of(graph, name) if name != place else None
+            return [self._top_view(piece, standoff, at) for standoff in TOP_LOOKS]
         room = next((r for r in self.site_map.rooms if r.floor == place), None)
         p = self.point_of(graph, name)
         return self.spot_views(room.name, p[:2]) if room is not None and p is not None else []

@@ -216,7 +216,8 @@ class SymbolicWorld:
                                      fingers=self._fingers(), picture=f"sym-view-{self._view}",
                                      labels={o: class_of(o) for o in vis})
         self.captures.add(self._record)
-        return Frame(frame_id, float(self._tick), tuple(self._detect(o, shown) for o in shown), rgb=card, aim=self._aim)
+        return Frame(frame_id, float(self._tick), tuple(self._detect(o, shown) for o in shown), rgb=card, aim=self._aim,
+                     stand=f"view-{self._view}")
 
     def goto_view(self, view: Viewpoint) -> bool:
         """Stand at the view's place — what its aim names, where belief puts it — if the open doors

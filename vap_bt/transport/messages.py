@@ -309,7 +309,7 @@ def _pack_frame(f: Frame) -> tuple[dict[str, Any], Arrays]:
     dets = [{"name": d.name, "label": d.label, "pixels": d.pixels, "mask_id": d.mask_id, "score": d.score,
              "relations": _atoms_out(d.relations)} for d in f.detections]
     return {"frame_id": f.frame_id, "stamp": f.stamp, "detections": dets, "intrinsics": f.intrinsics,
-            "aim": list(f.aim), "extra": f.extra}, arrays
+            "aim": list(f.aim), "extra": f.extra, "stand": f.stand}, arrays
 
 
 def _unpack_frame(d: dict[str, Any], arrays: Arrays) -> Frame:
@@ -317,7 +317,8 @@ def _unpack_frame(d: dict[str, Any], arrays: Arrays) -> Frame:
                            _atoms_in(x["relations"]), name=x["name"]) for x in d["detections"])
     return Frame(d["frame_id"], float(d["stamp"]), dets, rgb=arrays.get("rgb"), depth=arrays.get("depth"),
                  masks=arrays.get("masks"), intrinsics=_tuple_or_none(d["intrinsics"]),
-                 camera_pose=arrays.get("camera_pose"), aim=tuple(d["aim"]), extra=dict(d["extra"]))
+                 camera_pose=arrays.get("camera_pose"), aim=tuple(d["aim"]), extra=dict(d["extra"]),
+                 stand=d.get("stand"))
 
 
 def _unpack_state(d: dict[str, Any], _: Arrays) -> RobotState:
