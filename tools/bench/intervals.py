@@ -18,3 +18,33 @@ def wilson(k: int, n: int, z: float = 1.96) -> tuple[float, float]:
     mid, half = (p + z * z / (2 * n)), z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
     # clamped: at k = 0 or k = n rounding leaves a bound a hair outside [0, 1] ("-0.0 %")
     return max(0.0, (mid - half) / (1 + z * z / n)), min(1.0, (mid + half) / (1 + z * z / n))
+
+
+def paired_difference(both: int, only_first: int, only_second: int, neither: int,
+                      z: float = 1.96) -> tuple[float, float, float]:
+    """The difference of two success rates measured on the same n episodes (second minus
+    first), with Newcombe's interval for paired proportions (Statistics in Medicine 17, 1998,
+    method 10: Wilson intervals of each rate, joined through the pairs' correlation). Pairing
+    counts only the episodes the two runs decided differently: ``only_first`` succeeded in the
+    first run alone, ``only_second`` in the second alone."""
+    n = both + only_first + only_second + neither
+    if n == 0:
+        return 0.0, -1.0, 1.0
+    p1, p2 = (both + only_first) / n, (both + only_second) / n
+    (l1, u1), (l2, u2) = wilson(both + only_first, n, z), wilson(both + only_second, n, z)
+    den = math.sqrt((both + only_first) * (only_second + neither) * (both + only_second) * (only_first + neither))
+    phi = (both * neither - only_first * only_second) / den if den else 0.0
+    d = p2 - p1
+    lower = math.sqrt(max(0.0, (p2 - l2) ** 2 - 2 * phi * (p2 - l2) * (u1 - p1) + (u1 - p1) ** 2))
+    upper = math.sqrt(max(0.0, (u2 - p2) ** 2 - 2 * phi * (u2 - p2) * (p1 - l1) + (p1 - l1) ** 2))
+    return d, max(-1.0, d - lower), min(1.0, d + upper)
+
+
+def mcnemar_p(only_first: int, only_second: int) -> float:
+    """Two-sided exact McNemar p-value: how often the episodes the two runs decided differently
+    would split at least this unevenly if neither run were better (a fair coin per episode)."""
+    n, k = only_first + only_second, min(only_first, only_second)
+    if n == 0:
+        return 1.0
+    tail = sum(math.comb(n, i) for i in range(k + 1)) / 2 ** n
+    return min(1.0, 2 * tail)
