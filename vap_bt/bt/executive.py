@@ -416,16 +416,20 @@ class Executive:
         return any(a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj for a in self.prior)
 
     def _ask_states(self, graph: SceneGraph) -> list[StateAnswer]:
-        """Ask the VLM whether each container and door seen is open; believe what settles."""
+        """Ask the VLM whether each openable thing seen (a door, a drawer, a fridge) is open;
+        believe what settles. What the map says cannot be opened or shut (a basket) is not asked:
+        its state is rigid, and a view that judged a basket "not open" left no plan to put logs in
+        it (store_firewood seeds 7 and 10). Without ``openable`` in the domain, every container."""
         if self.vlm is None or not self.profile.asks("open", 1):
             return []
         k = self.task.knowledge
         sig = k.predicates["open"][0]
-        openable = {a.args[0] for a in self.builder.site_map.facts if a.predicate == "openable"}
-        containers = {f.name for f in self.builder.site_map.furniture if "container" in k.parents
-                      and k.is_subtype(f.type, "container")}
-        candidates = [n for n in sorted(self.builder.evidence) if n in openable | containers
-                      and k.is_subtype(self.task.objects[n], sig)]
+        if "openable" in k.predicates:
+            askable = {a.args[0] for a in self.builder.site_map.facts if a.predicate == "openable"}
+        else:
+            askable = {f.name for f in self.builder.site_map.furniture if "container" in k.parents
+                       and k.is_subtype(f.type, "container")}
+        candidates = [n for n in sorted(self.builder.evidence) if n in askable and k.is_subtype(self.task.objects[n], sig)]
         with make_executor(self.s.threads) as executor:
             answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile,
                                     protocol=self.s.protocol, undetectable=self.builder.undetectable(),
