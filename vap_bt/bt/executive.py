@@ -466,7 +466,7 @@ class Executive:
                  and not any(a.predicate in ("on", "inside", "holding") for a in graph.location(o))]
         if not lost:
             return None
-        return self._resurvey(graph, lost)
+        return self._resurvey(graph, lost, worked=self._worked(s))
 
     def _look_afresh(self, graph: SceneGraph, s: Situation) -> Survey:
         """A situation came back unchanged: re-survey for the items it is about (or round the
@@ -474,7 +474,7 @@ class Executive:
         than from the belief that led to the same failure."""
         names = (*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()))
         items = list(dict.fromkeys(o for o in names if self._portable(o)))
-        return self._resurvey(graph, items, f"{describe(s)} again")
+        return self._resurvey(graph, items, f"{describe(s)} again", self._worked(s))
 
     def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
         """Go and look at what a check could not make out: the sweep's own view of a piece of
@@ -563,7 +563,13 @@ class Executive:
                 lost.append(o)  # the camera turned toward where belief puts it, and it is not there
         return lost
 
-    def _resurvey(self, graph: SceneGraph, lost: list[str], why: str | None = None) -> Survey:
+    def _worked(self, s: Situation) -> tuple[str, ...]:
+        """The pieces of furniture the situation's action worked at (a fridge a pie was taken
+        from): what slips from the hand there falls on the floor at their front."""
+        return tuple(n for n in (s.action.args if s.action else ()) if self.builder.site_map.piece(n) is not None)
+
+    def _resurvey(self, graph: SceneGraph, lost: list[str], why: str | None = None,
+                  worked: tuple[str, ...] = ()) -> Survey:
         """Sweep the rooms belief put the lost objects in and the robot's own; if that does not
         find them, the rest of the house; then the floor along every wall of those rooms, until
         they are found. Every item the sweep saw is re-located. ``why``: the
@@ -576,17 +582,21 @@ class Executive:
         self.builder.forget(items)
         self._searching = set(lost)  # placed nowhere while looked for: taken wherever first seen
         try:
-            return self._search(graph, lost, why, near, items)
+            return self._search(graph, lost, why, near, items, worked)
         finally:
             self._searching = set()
 
-    def _search(self, graph: SceneGraph, lost: list[str], why: str | None, near: list[str], items: list[str]) -> Survey:
+    def _search(self, graph: SceneGraph, lost: list[str], why: str | None, near: list[str], items: list[str],
+                worked: tuple[str, ...] = ()) -> Survey:
         """The sweeps of a re-survey (:meth:`_resurvey`)."""
         here = self.body.state().room
         # an item that slipped from the hand lies on the floor near the robot (or under its base,
-        # if it drove on): look at the floor round where it stands first
+        # if it drove on), or at the front of the piece the hand worked at (a pie the hand lost on
+        # its way out of the fridge, a metre from the base): look at the floor round those first
         state = self.body.state()
-        around = tuple(self.builder.spot_views(here, state.base_pose[:2])) if here and state.base_pose else ()
+        spots = [state.base_pose[:2]] if here and state.base_pose else []
+        spots += [p for n in worked if (p := self.builder.front_spot(n)) is not None] if here else []
+        around = tuple(v for p in spots for v in self.builder.spot_views(here, p))
         sweep = self.builder.sweep(self.camera, near, first=around)
         rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
