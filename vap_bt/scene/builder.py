@@ -252,27 +252,20 @@ class SceneGraphBuilder:
         sig = self.knowledge.predicates.get("on")
         return f.pose is not None and sig is not None and len(sig) == 2 and self.knowledge.is_subtype(f.type, sig[1])
 
-    def _top_view(self, f, standoff: float, at: tuple[float, ...] | None = None) -> Viewpoint:
-        return self._furniture_view(f, standoff, TOP_LOOKS[standoff], at)
+    def _top_view(self, f, standoff: float) -> Viewpoint:
+        return self._furniture_view(f, standoff, TOP_LOOKS[standoff])
 
-    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front",
-                        at: tuple[float, ...] | None = None) -> Viewpoint:
-        """A look at ``f`` from ``standoff`` in front of it: at its middle, or at the point ``at``
-        on it (an item on a long table: from in front of the item, or the frame of a near look
-        leaves it out)."""
+    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front") -> Viewpoint:
         if f.pose is None:
             return Viewpoint(f.room, Aim((f.name,), place=f.name), None, f"{f.name}")
         x, y, yaw = f.pose
-        width, depth = f.footprint if f.footprint else (0.5, 0.5)
+        depth = f.footprint[1] if f.footprint else 0.5
         box = self.geometry.box(f.name) if self.geometry else None
         # the measured top once the piece has been seen (a look at its top), else a usual height
         z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
-        side = (-math.sin(yaw), math.cos(yaw))  # along the front
-        shift = 0.0 if at is None else max(-width / 2, min(width / 2, (at[0] - x) * side[0] + (at[1] - y) * side[1]))
-        ax, ay = (x, y) if at is None else (at[0], at[1])
         d = depth / 2 + standoff
-        base = (x + d * math.cos(yaw) + shift * side[0], y + d * math.sin(yaw) + shift * side[1], yaw + math.pi)
-        return Viewpoint(f.room, Aim((f.name,), (ax, ay, z), f.name), base, f"{f.name} {label}")
+        base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
+        return Viewpoint(f.room, Aim((f.name,), (x, y, z), f.name), base, f"{f.name} {label}")
 
     def _door_view(self, d, room: str) -> Viewpoint:
         if d.pose is None or self.site_map.room(room).bounds is None:
@@ -434,17 +427,14 @@ class SceneGraphBuilder:
     def near_views(self, graph: SceneGraph, name: str) -> list[Viewpoint]:
         """Views from close by of an item where belief puts it, for a check that could not make
         it out from afar (a lemon's cut, a cup's water, a log in a basket): the top of the piece it
-        rests on or in from the sweep's close stand and from nearer, or the floor round it from
-        all sides; inside a container that opens at the front (a fridge), the sweep's front view.
-        ``name`` may be the piece itself (what a check relates an item belief no longer places to)."""
+        rests on or in from the sweep's close stand and from nearer (for a pie in the oven too: a
+        front view instead left heat_pie seed 0's "heated" unconfirmed), or the floor round it
+        from all sides. ``name`` may be the piece itself
+        (a basket a check relates an item to)."""
         place = self.place_of(graph, name)
         piece = self.site_map.piece(place) if place else None
         if piece is not None and piece.pose is not None:
-            if piece.cavity is not None and piece.cavity.open == "front" and (name == place or any(
-                    a.predicate == "inside" and a.args[1:] == (place,) for a in graph.location(name))):
-                return [self._furniture_view(piece)]
-            at = self.point_of(graph, name) if name != place else None
-            return [self._top_view(piece, standoff, at) for standoff in TOP_LOOKS]
+            return [self._top_view(piece, standoff) for standoff in TOP_LOOKS]
         room = next((r for r in self.site_map.rooms if r.floor == place), None)
         p = self.point_of(graph, name)
         return self.spot_views(room.name, p[:2]) if room is not None and p is not None else []
