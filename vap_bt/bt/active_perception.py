@@ -49,7 +49,7 @@ from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict
+from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
 
 #: success is claimed on a goal atom only when the sufficient views for it are at least this many
 #: times the views that voted against it: a model wrong about one relation in most pictures of it
@@ -164,10 +164,10 @@ class ActivePerception(py_trees.decorators.Decorator):
         if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal" and not doubted):
             return False
         rounds = distinct(self._evidence())
-        agreeing = sum(not r.unshown and r.consistent and r.vote == value for r in rounds)
+        voted = votes(rounds)
+        agreeing, against = voted.count(value), sum(v != value for v in voted)
         if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
             settled = sum(r.settled and r.vote == value for r in rounds)
-            against = sum(not r.unshown and r.consistent and r.vote is not None and r.vote != value for r in rounds)
             return not ((settled >= 2 or settled >= 1 and agreeing >= 3) and settled >= GOAL_MARGIN * against)
         return agreeing < 2
 

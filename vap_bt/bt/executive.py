@@ -397,7 +397,7 @@ class Executive:
         if self.geometry is not None:
             in_hand = (held,) if held else ()
             unplaced |= {n for n in self.task.objects if self._portable(n) and n not in in_hand
-                         and self.builder.detected(n) and (not self.builder.placed(n, in_hand) or self._at_miss(n))}
+                         and self.builder.detected(n) and not self._placed_anew(n, in_hand)}
         belief = {}
         for n in self.task.objects:
             if n in unplaced:
@@ -556,7 +556,7 @@ class Executive:
             if o in in_hand:
                 continue  # belief holds it and the gripper feels something: it is in the hand
             observed = self.builder.observed(o, in_hand) if o in seen else set()
-            if self.builder.placed(o, in_hand) and not self._at_miss(o):
+            if self._placed_anew(o, in_hand):
                 graph.relocate(o, observed)
                 graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
             elif self._at_miss(o) or self._expected_in_sight(graph, o):
@@ -602,7 +602,7 @@ class Executive:
         in_hand = self._in_hand(graph)
 
         def found() -> bool:  # a sighting where a check found it missing is not (yet) taken
-            return all(o in in_hand or (self.builder.placed(o, in_hand) and not self._at_miss(o)) for o in lost)
+            return all(o in in_hand or self._placed_anew(o, in_hand) for o in lost)
 
         if rest and not found():
             self.progress(f"    not there: searching {', '.join(rest)}")
@@ -651,6 +651,11 @@ class Executive:
         if obj is not None and self._portable(obj.name) and obj.centroid is not None \
                 and obj.located == frozenset(graph.location(obj.name)):
             self.misses.note(obj.name, obj.centroid)
+
+    def _placed_anew(self, name: str, held=()) -> bool:
+        """Whether the frames put ``name`` on or in something (or in the hand) somewhere a check
+        did not find it missing: a sighting the executive takes as where the item is."""
+        return self.builder.placed(name, held) and not self._at_miss(name)
 
     def _at_miss(self, name: str) -> bool:
         """Whether the frames' track of ``name`` puts it where a check found it missing."""

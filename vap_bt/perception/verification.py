@@ -317,6 +317,12 @@ def distinct(rounds: list[Round]) -> list[Round]:
     return [r for k, r in enumerate(rounds) if r.stand is None or last[r.stand] == k]
 
 
+def votes(rounds: list[Round]) -> list[bool]:
+    """What the views voted: one value for each round whose detector showed the atom's objects
+    and whose answers were consistent (see :func:`verdict`)."""
+    return [r.vote for r in rounds if not r.unshown and r.consistent and r.vote is not None]
+
+
 def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
     """Weigh every view of one check (the paper's Alg. 2 takes the first settled round; one lucky
     round after views that said otherwise is too close to a guess to rewrite belief):
@@ -337,15 +343,14 @@ def verdict(rounds: list[Round], exhausted: bool) -> Verdict | None:
     Rounds from one stand count once (:func:`distinct`). Returns None while the check should
     keep looking."""
     rounds = distinct(rounds)
-    shown = [r for r in rounds if not r.unshown]
-    votes = [r.vote for r in shown if r.consistent and r.vote is not None]
+    voted = votes(rounds)
     for value in (True, False):
         settled = sum(r.settled and r.vote == value for r in rounds)
-        against = sum(v != value for v in votes)
+        against = sum(v != value for v in voted)
         if settled and (against == 0 or settled > against):
             return Verdict(value, "settled")
     if not exhausted:
         return None
-    if len(votes) >= AGREEING_VIEWS and len(set(votes)) == 1:
-        return Verdict(votes[0], "agreed")
+    if len(voted) >= AGREEING_VIEWS and len(set(voted)) == 1:
+        return Verdict(voted[0], "agreed")
     return Verdict(False, "unsettled")
