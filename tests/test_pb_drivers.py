@@ -14,6 +14,7 @@ from driver_scripts import (CLOSED, OPEN, arc_joints, drive, frame, hold, kitche
 from vap_bt.domain.atoms import Atom
 from vap_bt.motion.kinematics import Kinematics
 from vap_bt.robot.drivers import JointTrajectory
+from vap_bt.robot.labels import partners
 
 pytestmark = pytest.mark.slow
 
@@ -232,7 +233,10 @@ def test_the_wrist_camera_frame_is_what_it_sees_now(counter):
     frame_ = d.camera.capture()
     shown = counter.captures.get(frame_.frame_id).visibility  # the world's record: the detector says "cup", not which
     assert shown.get("cup", 0.0) > 0.0 and shown.get("counter", 0.0) > 0.0
-    assert all(not x.name for x in frame_.detections) and {x.label for x in frame_.detections} <= {"cup", "counter", "door"}
+    # labels are classes of the scene's things (a false positive takes one of them too), or the
+    # classes a detector confuses them with now and then
+    classes = {c for k in counter._classes for c in (k, *partners(k))}
+    assert all(not x.name for x in frame_.detections) and {x.label for x in frame_.detections} <= classes
     assert frame_.rgb.shape == (120, 160, 3) and frame_.depth.shape == (120, 160) and frame_.masks is not None
     assert frame_.intrinsics is not None and np.allclose(frame_.camera_pose, counter.robot.link_pose("camera_optical"))
     assert counter.captures.get(frame_.frame_id) is not None  # the simulated VLM answers about it

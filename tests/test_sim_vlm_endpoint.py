@@ -275,8 +275,11 @@ def test_a_symbolic_run_through_the_endpoint_is_the_in_process_run(protocol):
 
 @pytest.mark.slow
 def test_a_pybullet_run_through_the_endpoint_is_the_in_process_run():
-    here = _episode("collect_cup.yaml", "pybullet", "sim", 2, protocol="lean")
-    over_http = _episode("collect_cup.yaml", "pybullet", "sim-http", 2, protocol="lean")
+    # an episode in which the model never abstains (the counts below say so): under constrained
+    # decoding the endpoint turns an abstention into a seeded guess, as a hosted API would, and the
+    # runs part there (seed 2 abstains on hand_empty once the world's physics settles its cup anew)
+    here = _episode("collect_cup.yaml", "pybullet", "sim", 1, protocol="lean")
+    over_http = _episode("collect_cup.yaml", "pybullet", "sim-http", 1, protocol="lean")
     _same_episode(here, over_http)
     assert over_http["vlm"]["served"]["counts"] == {"answered": over_http["vlm_queries"]}
     assert {tuple(r["image_size"]) for r in over_http["vlm"]["requests"]} == {(320, 240)}

@@ -441,12 +441,14 @@ class Session:
 
     def _sensors(self) -> dict:
         """The world's sensor models (printed next to the detector): the depth camera's noise and
-        the localiser's error, where the world has them."""
+        the localiser's error, and the physics' step, where the world has them."""
         out = {}
         for key, attr in (("depth_noise", "depth_noise"), ("localization", "localization_model")):
             model = getattr(self.world, attr, None)
             if model is not None:
                 out[key] = model.describe()
+        if getattr(self.world, "physics", None):
+            out["physics"] = self.world.physics
         return out
 
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],

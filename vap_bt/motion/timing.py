@@ -41,16 +41,37 @@ def _path_parameter(waypoints: np.ndarray) -> np.ndarray:
     return s / s[-1]
 
 
-def _dedupe(waypoints: np.ndarray, eps: float = 1e-9) -> np.ndarray:
-    """Drop waypoints equal to their predecessor: the spline needs a strictly growing s."""
-    keep = np.concatenate(([True], np.linalg.norm(np.diff(waypoints, axis=0), axis=1) > eps))
-    return waypoints[keep]
+#: rad (joint-space norm): a waypoint this near the one kept before it is the same pose. TOPP-RA
+#: finds no parametrization for a path shorter than about 2e-5 rad (a settled arm asked to go
+#: where it already is, up to the physics' last micro-radians), and a UR5e's repeatability
+#: (±0.03 mm at its 0.85 m reach, about 4e-5 rad) does not tell such poses apart
+SAME_POSE = 1e-4
+
+
+def _dedupe(waypoints: np.ndarray, eps: float = SAME_POSE) -> np.ndarray:
+    """Drop waypoints within ``eps`` of the one kept before them (the spline needs a strictly
+    growing s); the last waypoint stands in for a kept one it is that near to: the path still
+    ends where it was asked to."""
+    kept = [waypoints[0]]
+    for q in waypoints[1:]:
+        if np.linalg.norm(q - kept[-1]) > eps:
+            kept.append(q)
+    if len(kept) > 1:
+        kept[-1] = waypoints[-1]
+    return np.array(kept)
 
 
 def _at_rest(q: np.ndarray) -> Trajectory:
     q = q.reshape(1, -1)
     zero = np.zeros_like(q)
     return Trajectory(np.zeros(1), q, zero, zero)
+
+
+def _step(a: np.ndarray, b: np.ndarray, dt: float) -> Trajectory:
+    """From ``a`` to ``b``, no further apart than :data:`SAME_POSE`, in one sample."""
+    q = np.stack([a, b])
+    zero = np.zeros_like(q)
+    return Trajectory(np.array([0.0, dt]), q, zero, zero)
 
 
 def _slowdown(timed, tau: np.ndarray, limits: Limits) -> float:
@@ -72,9 +93,10 @@ def time_path(
     gridpoints: int | None = None,
 ) -> Trajectory:
     """Fastest rest-to-rest trajectory through ``waypoints`` (K, dof), sampled every ``dt`` s."""
-    path_q = _dedupe(np.asarray(waypoints, dtype=float))
+    waypoints = np.asarray(waypoints, dtype=float)
+    path_q = _dedupe(waypoints)
     if len(path_q) < 2:
-        return _at_rest(path_q[0])
+        return _at_rest(path_q[0]) if np.array_equal(waypoints[-1], path_q[0]) else _step(path_q[0], waypoints[-1], dt)
     path = ta.SplineInterpolator(_path_parameter(path_q), path_q)
     v, a = limits.velocity, limits.acceleration
     constraints = [

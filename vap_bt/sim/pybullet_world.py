@@ -74,6 +74,17 @@ SOLVER_ITERATIONS = 20
 #: sideways, every step: it rolls off across the room, gaining speed, and bounces from wall to
 #: wall. At 120 Hz it lands and lies where it fell
 SUBSTEPS = 2
+#: physics sub-steps per step while a loose item (one the hand does not hold) moves faster than
+#: LOOSE_SPEED m/s: at 120 Hz a lying cylinder of the catalog (a stick, r 0.014 m; a log, r
+#: 0.032 m) gains energy as it rolls. Dropped from 0.3-1.2 m at 0.1-0.5 m/s it ran away across
+#: the room in 47-55 of 90 drops, and put down rolling at 0.05-0.6 m/s in 15 of 30
+#: (gather_kindling seed 9 with injection: a stick let go at x 2.3 m rolled, speeding up from 0.25
+#: to 0.39 m/s, into the wall at x 0.07 m); at 180 Hz 8-16 of 90 drops ran away, at 240 Hz none:
+#: rolling friction stops it within 0.2 m. The energy is the integrator's, not physics'. Only a
+#: loose item in motion needs the finer step; the arm, the base and what rests keep the usual
+#: one (a step costs 0.23 ms at 240 Hz, 0.13 ms at 120 Hz)
+LOOSE_SUBSTEPS = 4
+LOOSE_SPEED = 0.05
 #: the arm's joints as an episode begins: the wrist camera over the front of the base, looking at
 #: the floor 1.5 m ahead (where a look from the home pose leaves it). An initial condition, like
 #: the base's start pose; the world never moves the arm itself
@@ -129,6 +140,7 @@ class PybulletWorld:
             pb.setGravity(0, 0, -9.81, physicsClientId=self.cid)
             pb.setPhysicsEngineParameter(fixedTimeStep=DT, numSolverIterations=SOLVER_ITERATIONS, numSubSteps=SUBSTEPS,
                                          physicsClientId=self.cid)
+            self._substeps = SUBSTEPS
             self.types = self.layout.objects()
             self.plan = plan_scene(self.layout, self.catalog, seed)
             self.scene = build_scene(self.cid, self.plan, self.catalog, self.types)
@@ -176,11 +188,27 @@ class PybulletWorld:
     def step(self) -> None:
         """One physics step; then door stops, the physics rules and Table II's effects."""
         with self._lock:
+            substeps = LOOSE_SUBSTEPS if self._loose_moving() else SUBSTEPS
+            if substeps != self._substeps:
+                pb.setPhysicsEngineParameter(numSubSteps=substeps, physicsClientId=self.cid)
+                self._substeps = substeps
             pb.stepSimulation(physicsClientId=self.cid)
             self.scene.hold_limits()
             self.ticks += 1
             self.rules.step()
             self.injection.step()
+
+    def _loose_moving(self) -> bool:
+        """Whether an item the hand does not hold moves faster than :data:`LOOSE_SPEED`."""
+        held = self.robot.grip.body if self.robot.grip is not None else None
+        return any(np.linalg.norm(pb.getBaseVelocity(b, physicsClientId=self.cid)[0]) > LOOSE_SPEED
+                   for t in self.scene.things.values() if t.item is not None for b in t.bodies if b != held)
+
+    @property
+    def physics(self) -> dict:
+        """How pybullet integrates the household, for the report: results depend on it."""
+        return {"dt": DT, "substeps": SUBSTEPS, "loose_substeps": LOOSE_SUBSTEPS, "loose_speed": LOOSE_SPEED,
+                "solver_iterations": SOLVER_ITERATIONS}
 
     # ------------------------------------------------------------ actions
 
