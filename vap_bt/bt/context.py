@@ -190,9 +190,8 @@ class ExecutionContext:
     #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
     on_belief: set[Atom] = field(default_factory=set)
     #: preconditions of an action that failed when it ran (a failure is evidence against what the
-    #: action presumed), and effects of one that lost its tool: a view that confirms one is a
-    #: second opinion only with another view from a new picture that agrees (as for a surprise);
-    #: cleared when a check settles it
+    #: action presumed): a view that confirms one is a second opinion only with another view from
+    #: a new picture that agrees (as for a surprise); cleared when a check settles it
     doubted: set[Atom] = field(default_factory=set)
     #: preconditions the camera denied, that no action can make true, after every doubt: the
     #: action itself is their test (its skill fails if the camera was right), so a check that

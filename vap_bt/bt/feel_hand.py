@@ -6,11 +6,15 @@ when the item was what it acted on; otherwise the first to notice would be the n
 needs the item in the hand — after the robot has driven off, away from where it fell, or over it.
 So after every action that leaves belief holding something, the gripper (``ctx.felt``: whether
 its fingers closed on something) is asked, at no cost: an empty gripper is a situation of kind
-``effect`` about ``holding``, observed false. It names no action — the action did what it did
-(the robot moved), only the hand lost its item — so nothing is undone; the plan's tail after the
-action is what the replan may reuse. When the item lost is one the action worked with (a knife
-that dropped mid-cut), the action's other effects are put in doubt (``ctx.doubted``): views
-judged before count for nothing, and a confirming view needs a second from a new picture.
+``effect`` about ``holding``, observed false. Usually it names no action — the action did what
+it did (the robot moved), only the hand lost its item — so nothing is undone; the plan's tail
+after the action is what the replan may reuse. When the item lost is one the action worked with
+(a knife that dropped mid-cut, a cup on its way to the tap) and the action does not move the
+robot, the situation names the action: it is believed not done (the executive takes its effects
+back, as for any effect found missing) and the replan does it again. A tool lost on the way did
+not do the work, and a model asked afterwards is no second chance to believe it did: cut_lemon
+seed 0 with injection claimed a lemon "sliced" on two views from nearly one spot, after the knife
+fell before the stroke and the first views had said "not sliced".
 """
 
 from __future__ import annotations
@@ -20,6 +24,7 @@ from py_trees.common import Status
 
 from vap_bt.bt.context import ExecutionContext, Situation
 from vap_bt.domain.knowledge import GroundAction
+from vap_bt.scene.belief import ROBOT_PREDICATES
 
 
 class FeelHand(py_trees.behaviour.Behaviour):
@@ -32,16 +37,17 @@ class FeelHand(py_trees.behaviour.Behaviour):
     def update(self) -> Status:
         for atom in sorted(a for a in self.ctx.graph.facts if a.predicate == "holding"):
             if self.ctx.felt(self.ctx.graph, atom) is False:
-                if atom.args[0] in self.action.args:
-                    # the action lost the very thing it worked with (the knife dropped mid-cut):
-                    # what it was to bring about is in doubt, and views judged before the hand
-                    # was felt are no evidence for it (cut_lemon seed 1 with injection: a lemon
-                    # "sliced" on one view, and on one more at the goal, that was never cut)
-                    effects = {a for a in self.action.may_add if a.predicate != "holding"}
-                    self.ctx.doubted |= effects
-                    self.ctx.verified.distrust(effects)
-                self.ctx.situation = Situation("effect", None, self.step + 1, atom, True, False,
+                lost_its_tool = atom.args[0] in self.action.args and not self._moves_robot()
+                if lost_its_tool:  # a value judged of its effects is not reused (the lean protocol)
+                    self.ctx.verified.distrust({a for a in self.action.may_add if a.predicate != "holding"})
+                self.ctx.situation = Situation("effect", self.action if lost_its_tool else None,
+                                               self.step if lost_its_tool else self.step + 1, atom, True, False,
                                                f"the gripper holds nothing after {self.action}")
                 self.ctx.progress(f"    situation: the gripper holds nothing after {self.action}")
                 return Status.FAILURE
         return Status.SUCCESS
+
+    def _moves_robot(self) -> bool:
+        """Whether the action changes where the robot is (a navigation carrying the item: it got
+        there, whatever the hand lost on the way)."""
+        return any(a.predicate in ROBOT_PREDICATES for a in self.action.may_add | self.action.may_delete)
