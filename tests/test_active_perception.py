@@ -138,8 +138,9 @@ def test_a_goal_is_confirmed_by_two_views_judged_sufficient():
 
 def test_a_goal_is_not_claimed_on_a_narrow_vote():
     """cut_lemon seed 3 with injection: views of a lemon the knife never cut said "sliced" four
-    times and "not sliced" three over the goal's checks; success needs GOAL_MARGIN times as many
-    sufficient views for the goal as views against it, or it stays unconfirmed."""
+    times and "not sliced" three over the goal's checks; success needs GOAL_MARGIN times as many,
+    and GOAL_MARGIN more, sufficient views for the goal as views against it, or it stays
+    unconfirmed."""
     def goal_check(earlier: list[Round], own: list[Round]) -> ExecutionContext:
         ctx = ExecutionContext(graph=SceneGraph.of_facts(set()), vlm=Suggests("left"), camera=Camera(), skills=None,
                                budget=len(own) - 1)
@@ -155,6 +156,11 @@ def test_a_goal_is_not_claimed_on_a_narrow_vote():
     ctx = goal_check(earlier, [view("yyyyy", True), view("yyyyy", True)])  # 5 for, 3 against
     assert ctx.verifications[-1].outcome == "unsettled" and ctx.unconfirmed_goal == [CUP_ON_TABLE]
     ctx = goal_check(earlier, [view("yyyyy", True)] * 3)  # 6 for, 3 against: twice as many
+    assert ctx.verifications[-1].outcome == "confirmed" and not ctx.unconfirmed_goal
+    # few views: twice as many is not enough when they win by one (symbolic cut_lemon seed 13)
+    ctx = goal_check([view("nnnnn", True)], [view("yyyyy", True)] * 2)  # 2 for, 1 against
+    assert ctx.verifications[-1].outcome == "unsettled" and ctx.unconfirmed_goal == [CUP_ON_TABLE]
+    ctx = goal_check([view("nnnnn", True)], [view("yyyyy", True)] * 3)  # 3 for, 1 against
     assert ctx.verifications[-1].outcome == "confirmed" and not ctx.unconfirmed_goal
 
 

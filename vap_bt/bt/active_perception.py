@@ -52,10 +52,13 @@ from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
 
 #: success is claimed on a goal atom only when the sufficient views for it are at least this many
-#: times the views that voted against it: a model wrong about one relation in most pictures of it
-#: can outvote the truth by one (cut_lemon seed 3 with injection: four views "sliced", three "not",
-#: of a lemon the knife never cut); a narrow vote leaves the goal unconfirmed, and no success is
-#: claimed that the views do not clearly show
+#: times, and this many more than, the views that voted against it. The ratio: a model wrong about
+#: one relation in most pictures of it can outvote the truth by one (cut_lemon seed 3 with
+#: injection: four views "sliced", three "not", of a lemon the knife never cut). The difference:
+#: views of one worth each move the odds by one likelihood ratio apiece, so few views must not win
+#: by one either (symbolic cut_lemon seed 13: two "sliced" and one "not" of a lemon a blade failed
+#: to split). A narrow vote leaves the goal unconfirmed: no success is claimed that the views do
+#: not clearly show
 GOAL_MARGIN = 2
 
 
@@ -155,8 +158,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         (docs/perception.md): one more view that showed the atom's objects and whose answers
         agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
         success will be claimed, two views the model judged sufficient, or one and two more whose
-        answers agreed, and :data:`GOAL_MARGIN` times as many sufficient views for it as views
-        that voted against it. An atom in doubt (``ctx.doubted``: a precondition of an action that failed
+        answers agreed, and :data:`GOAL_MARGIN` times as many, and as many more, sufficient views
+        for it as views that voted against it. An atom in doubt (``ctx.doubted``: a precondition of an action that failed
         when it last ran, an effect of one that lost its tool) is treated as a surprise even when
         confirmed: the failure is evidence against it (an oven the survey took for open, into
         which no arm pose reaches)."""
@@ -168,7 +171,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         agreeing, against = voted.count(value), sum(v != value for v in voted)
         if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
             settled = sum(r.settled and r.vote == value for r in rounds)
-            return not ((settled >= 2 or settled >= 1 and agreeing >= 3) and settled >= GOAL_MARGIN * against)
+            return not ((settled >= 2 or settled >= 1 and agreeing >= 3)
+                        and settled >= GOAL_MARGIN * against and settled - against >= GOAL_MARGIN)
         return agreeing < 2
 
     def _evidence(self) -> list[Round]:
