@@ -158,11 +158,11 @@ class ActivePerception(py_trees.decorators.Decorator):
         (docs/perception.md): one more view that showed the atom's objects and whose answers
         agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
         success will be claimed, two views the model judged sufficient, or one and two more whose
-        answers agreed, and :data:`GOAL_MARGIN` times as many, and as many more, sufficient views
-        for it as views that voted against it. An atom in doubt (``ctx.doubted``: a precondition of an action that failed
-        when it last ran, an effect of one that lost its tool) is treated as a surprise even when
-        confirmed: the failure is evidence against it (an oven the survey took for open, into
-        which no arm pose reaches)."""
+        answers agreed — and, when any view voted against it, :data:`GOAL_MARGIN` times as many,
+        and as many more, sufficient views for it as views against. An atom in doubt
+        (``ctx.doubted``: a precondition of an action that failed when it last ran) is treated as
+        a surprise even when confirmed: the failure is evidence against it (an oven the survey
+        took for open, into which no arm pose reaches)."""
         doubted = self.atom in self.ctx.doubted
         if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal" and not doubted):
             return False
@@ -171,8 +171,9 @@ class ActivePerception(py_trees.decorators.Decorator):
         agreeing, against = voted.count(value), sum(v != value for v in voted)
         if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
             settled = sum(r.settled and r.vote == value for r in rounds)
-            return not ((settled >= 2 or settled >= 1 and agreeing >= 3)
-                        and settled >= GOAL_MARGIN * against and settled - against >= GOAL_MARGIN)
+            enough = settled >= 2 or settled >= 1 and agreeing >= 3
+            return not (enough and (against == 0 or settled >= GOAL_MARGIN * against
+                                    and settled - against >= GOAL_MARGIN))
         return agreeing < 2
 
     def _evidence(self) -> list[Round]:
