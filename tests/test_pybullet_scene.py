@@ -3,6 +3,7 @@
 from pathlib import Path
 
 import numpy as np
+import pybullet as pb
 import pytest
 from skill_runs import camera
 
@@ -114,8 +115,6 @@ def test_a_dropped_lying_item_rolls_no_faster_than_it_landed_and_comes_to_rest(t
     """A stick or a log let go at carrying height, moving as the base carried it, lands, rolls
     ever slower and lies still within a stride of where it fell. At the usual 120 Hz it sank into
     the floor and rolled off gaining speed in about half of such drops (``LOOSE_SUBSTEPS``)."""
-    import pybullet as pb
-
     world = PybulletWorld(load(TREES[0].parent / f"{task}.yaml"), injection=False)
 
     def speed() -> float:

@@ -447,8 +447,9 @@ class Session:
             model = getattr(self.world, attr, None)
             if model is not None:
                 out[key] = model.describe()
-        if getattr(self.world, "physics", None):
-            out["physics"] = self.world.physics
+        physics = getattr(self.world, "physics", None)
+        if physics:
+            out["physics"] = physics
         return out
 
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],

@@ -48,6 +48,6 @@ class FeelHand(py_trees.behaviour.Behaviour):
         return Status.SUCCESS
 
     def _moves_robot(self) -> bool:
-        """Whether the action changes where the robot is (a navigation carrying the item: it got
-        there, whatever the hand lost on the way)."""
+        """Whether the action changes where the robot is or what it has in view (a navigation
+        carrying the item, a find: it got there, whatever the hand lost on the way)."""
         return any(a.predicate in ROBOT_PREDICATES for a in self.action.may_add | self.action.may_delete)
