@@ -24,7 +24,9 @@ executive and the skills reason only about frames so named (:class:`Identifier`,
   (the Hungarian method, :func:`scipy.optimize.linear_sum_assignment`) over the distances,
   each normalised by and gated at how far from its point belief allows the object to be: a
   measured centroid (``SEEN_RADIUS``), anywhere on the top of the piece it is believed on,
-  anywhere on the floor of a room. A label the detector confuses with the object's class
+  anywhere on the floor of a room — plus what a vague belief pays for its spread, so that a
+  detection near where one bottle was measured is that bottle, not another believed only
+  "somewhere on this counter". A label the detector confuses with the object's class
   (:func:`vap_bt.robot.labels.similar`) matches at a cost (``similar_cost``). Two bottles are
   two tracks: each takes the detection nearest where it was; an object believed somewhere far
   away takes nothing here. In a frame without pixels the detection's reported support decides
@@ -72,8 +74,12 @@ SUPPORT_MARGIN = 0.15
 #: m: heights on a doorway's middle line, one of which a frame looking at the doorway shows
 DOORWAY_HEIGHTS = (0.2, 0.6, 1.0, 1.4, 1.8)
 #: m over which the cost of taking a detection beyond a told belief's radius grows by one: far
-#: beyond any house, so that such a match only ever comes after every one within a gate
+#: beyond any house
 TOLD_SCALE = 1000.0
+#: what taking a detection beyond a told belief's radius costs at least: above any match within
+#: a gate (the distance term is at most 1, the spread term at most 2·ln(house / SEEN_RADIUS) < 8),
+#: so that such a match only ever comes after every one within a gate
+BEYOND_GATE = 100.0
 #: gated assignments get this cost instead (never chosen over any real one)
 _GATED = 1e6
 
@@ -324,8 +330,8 @@ class Identifier:
                 return None
             dist = float(np.linalg.norm(np.subtract(point, b.point)))
             if dist <= b.radius:
-                return dist / b.radius + extra
-            return 1.0 + dist / TOLD_SCALE + extra if b.told else None
+                return dist / b.radius + _spread(b.radius) + extra
+            return BEYOND_GATE + dist / TOLD_SCALE + extra if b.told else None
         if not d.relations or Atom("holding", (SELF,)) in d.relations:
             return None  # nothing to place it by (or it is in the hand, and not what belief holds)
         support, unresolved = _reported_support(d, names)
@@ -361,6 +367,17 @@ class Identifier:
 
 
 # -- what a detection shows -----------------------------------------------------------------------
+
+def _spread(radius: float) -> float:
+    """What a belief pays for being vague: 2·ln(radius / SEEN_RADIUS), the part of a negative
+    log-likelihood that a density spread over a disc of that radius adds (zero for a measured
+    centroid). Without it a distance normalised by the radius alone makes a loose belief the
+    cheaper one: a bottle seen 7 cm from where bottle1 was measured was taken for bottle2,
+    believed "anywhere on the counter" (radius 0.82 m) after a place that slipped, because 0.10 /
+    0.82 < 0.07 / 0.25 — and the goal was claimed from a view of bottle1 (retrieve_bottles seed 5,
+    injection on)."""
+    return 2.0 * math.log(max(radius, SEEN_RADIUS) / SEEN_RADIUS)
+
 
 def centroid_of(frame: Frame, d: Detection, max_range: float = 4.0, max_points: int = 400) -> np.ndarray | None:
     """The median (map frame) of the points of ``d``'s mask with a depth return within
