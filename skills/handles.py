@@ -61,6 +61,17 @@ LAG_STEPS = (-0.15, 0.0, 0.15)
 RING = dict(distance=(0.58, 0.66, 0.74, 0.84), bearing=(0.0, -0.35, 0.35, -0.7, 0.7, -1.0, 1.0), yaw=(0.0, -0.3, 0.3))
 GLOBAL_TRIES = 6  # initial poses whose whole path is planned before settling for the furthest
 OPEN_TO = 0.92  # share of its travel an opened door or drawer is pulled to
+#: an opening the arm could not follow all the way that left the leaf below this share of its
+#: travel is pulled again, from where the leaf stopped (a new stance, a new path): an oven's
+#: drop-down door left at a third of its travel lay across the way into the cavity, and every
+#: placein after the "successful" open found no arm pose (heat_pie seeds 4, 9, 10)
+PULL_AGAIN_BELOW = 0.7
+#: pulls an opening takes at most
+PULLS = 2
+#: how an opening or closing that the arm could not follow to its end says so (a handle that
+#: slipped from the fingers is another matter: the leaf is where the slip left it, and pulling
+#: again would fight whatever held it)
+NOT_ALL_THE_WAY = "the arm could not follow the handle all the way"
 #: a closing hand presses a furniture door a little past closed, against its stop: the grip is
 #: springy and the joint's friction would otherwise leave the leaf a few per cent open (room doors
 #: swing both ways and have no stop there)
@@ -282,7 +293,7 @@ class Handles:
             return Outcome(False, f"{name} has nothing to open")
         held = self.eyes.held
         if held is None or not self.body.holding():
-            return self._open_close(name, opening)
+            return self._pulls(name, opening)
         sideways = abs(self.body.pose("tcp")[2, 2]) < 0.8  # level or pitched, not from above
         x, y, _ = self.body.base_pose()
         room = self.scene.room_at(x, y)
@@ -290,11 +301,28 @@ class Handles:
                          key=lambda f: math.hypot(f.origin[0] - x, f.origin[1] - y))
         if not shelves or not self.hands.place(held.name, shelves[0].name, False, edge=sideways).completed:
             return Outcome(False, f"{name}: the hand is full")
-        out = self._open_close(name, opening)
+        out = self._pulls(name, opening)
         seen = self.hands.locate(held.name, shelves[0].top_point(), Where(on=shelves[0].name))
         if seen is not None:  # taken again the way it was held: it may have to go into a low cavity next
             self.hands.grasp(held.name, seen.centroid, Where(on=shelves[0].name), sideways=sideways)
         return out
+
+    def _pulls(self, name: str, opening: bool) -> Outcome:
+        """:meth:`_open_close`, and an opening the arm could not follow all the way that stopped
+        short (:data:`PULL_AGAIN_BELOW`) once more from where the leaf stands, up to :data:`PULLS`
+        in all."""
+        out = self._open_close(name, opening)
+        for _ in range(PULLS - 1):
+            if not (opening and out.message.endswith(NOT_ALL_THE_WAY) and self._short(name)):
+                break
+            self.hands.progress(0.0, f"{name} stands short of open: pulling again")
+            out = self._open_close(name, opening)
+        return out
+
+    def _short(self, name: str) -> bool:
+        """Whether ``name``'s leaf, as last seen, stands below :data:`PULL_AGAIN_BELOW` of its travel."""
+        art = self.scene.leaves[name].art
+        return abs(self.scene.joint.get(name, 0.0)) < PULL_AGAIN_BELOW * abs(art.opened)
 
     def _plan(self, name: str, q0: float, opening: bool, here) -> tuple[HandlePath, float, float]:
         """The whole-body path carrying ``name``'s handle from ``q0`` to open or shut, planned
@@ -367,7 +395,7 @@ class Handles:
         self.hands.progress(0.85, "letting go")
         self._retreat(name, reached, start)
         if struck or not path.complete:
-            return Outcome(True, f"{name}: the arm could not follow the handle all the way")
+            return Outcome(True, f"{name}: {NOT_ALL_THE_WAY}")
         return Outcome(True)
 
     def _retreat(self, name: str, q: float, start) -> None:

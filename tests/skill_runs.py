@@ -26,9 +26,10 @@ from vap_bt.transport.inprocess import InProcessSkillClient
 TREES = Path(__file__).resolve().parents[1] / "trees"
 
 
-def pybullet(name, situations=None, sensors: str = "exact", **kw):
-    """The pybullet world of ``trees/<name>.yaml`` (or of a task file path), small images; with
-    exact depth and localisation, or (``sensors="real"``) the world's default sensor models."""
+def pybullet(name, situations=None, sensors: str = "exact", seed: int = 0, **kw):
+    """The pybullet world of ``trees/<name>.yaml`` (or of a task file path) laid out by ``seed``,
+    small images; with exact depth and localisation, or (``sensors="real"``) the world's default
+    sensor models."""
     from vap_bt.sim.depth_noise import DepthNoiseModel
     from vap_bt.sim.localization import LocalizationModel
     from vap_bt.sim.pybullet_world import PybulletWorld
@@ -41,7 +42,7 @@ def pybullet(name, situations=None, sensors: str = "exact", **kw):
         kw.setdefault("localization", LocalizationModel.perfect())
 
     task = load(name if isinstance(name, Path) else TREES / f"{name}.yaml")
-    return PybulletWorld(task, seed=0, injection=situations is not None, situations=situations,
+    return PybulletWorld(task, seed=seed, injection=situations is not None, situations=situations,
                          image_size=(160, 120), **kw)
 
 
