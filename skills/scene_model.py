@@ -86,6 +86,16 @@ LEAF_MARGIN = 0.03
 #: episodes looked at, an oblique frame of the foot of a leaf 0-10 either way (boil_water seed 16
 #: with injection flipped an open cabinet door shut and open again on such frames)
 LEAF_REFIT_POINTS = 40
+#: what a point the camera saw through a leaf's face counts against that joint value, in points
+#: on its box: a closed leaf's box overlaps the carcass's front edge, whose points accrue to it
+#: whatever the leaf does, while a point seen through the face is possible only if the leaf is not
+#: there. Counted once each, 83 points of an oven's front edge outweighed 40 seen through the shut
+#: door it would have been, and a look into the cavity from above, its dropped door out of the
+#: frame, refitted the wide-open door shut (heat_pie seed 0): the arm then struck the real door.
+#: Hinged leaves only: a drawer's front slides out in front of the carcass's edge instead of
+#: swinging off it, and weighted fits of the kitchen drawer made the arm strike it in the skill
+#: tests' takeouts
+THROUGH_WEIGHT = 3
 #: depth this far past a doorway means the view goes through it
 SEE_THROUGH = 0.3
 HIDDEN_SHARE = 0.5  # a depth return nearer than this share of a point's distance is something in front of it
@@ -336,10 +346,10 @@ class Leaf:
             slack: tuple[tuple[float, float, float], ...] = ((0.0, 0.0, 0.0),)) -> float | None:
         """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
         None when no joint value puts the leaf on any of them. A joint value is supported by the
-        points on its leaf's box and contradicted by the points the camera saw through the leaf's
-        face there: the carcass's front edge lies where a closed leaf would be, so the points on
-        it alone would call a wide-open fridge closed, but a closed leaf would have hidden the
-        inside of the cavity the camera sees. With ``believed`` (where the leaf is thought to
+        points on its leaf's box and contradicted (a hinged leaf :data:`THROUGH_WEIGHT` times as
+        strongly) by the points the camera saw through the leaf's face there: the carcass's front edge lies
+        where a closed leaf would be, so the points on it alone would call a wide-open fridge
+        closed, but a closed leaf would have hidden the inside of the cavity the camera sees. With ``believed`` (where the leaf is thought to
         stand), the best value must explain :data:`LEAF_REFIT_POINTS` more points than the belief
         does, else the belief stands: a frame that shows only a leaf's foot or edge explains a few
         points either way, and the ties and near-ties between such values are not evidence.
@@ -364,9 +374,10 @@ class Leaf:
             anything = True
             through = np.zeros_like(on) if e is None else np.array(
                 [int(seen_through(self.face(q), e, p, LEAF_MARGIN).sum()) for q in values])
-            better = (on - through) > score
+            support = on - (1 if self.art.prismatic else THROUGH_WEIGHT) * through
+            better = support > score
             which = [(dx, dy, dth) if b else w for b, w in zip(better, which)]
-            score = np.where(better, on - through, score)
+            score = np.where(better, support, score)
         if not anything:
             return None
         best = int(np.argmax(score))
