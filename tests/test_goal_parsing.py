@@ -16,7 +16,7 @@ import pytest
 import yaml
 
 from vap_bt.domain.atoms import Atom, Literal
-from vap_bt.errors import EXIT_BAD_INPUT
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_TRANSPORT
 from vap_bt.perception.backends import GeminiVLM, OpenAICompatVLM, RetryPolicy
 from vap_bt.perception.goal_parsing import (
     GoalParseError, GoalParser, GoalSyntaxError, follow_up, goal_errors, goal_prompt, predicate_list, read_goal)
@@ -282,7 +282,7 @@ def test_a_run_with_a_goal_in_words_over_zenoh_pursues_the_parsed_goal(cli, serv
     server = goal_server(serve, GOOD)
     code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--world", "symbolic",
                                 "--vlm", "openai", "--vlm-url", f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS,
-                                "--seed", "3")
+                                "--seed", "3", "--verify", "none")
     assert code in (0, 1), err  # success is the world's to say; the run ends either way
     parsed = rep["goal_parsing"]
     assert parsed["goal"] == [GOOD] and parsed["source"] == "--goal" and parsed["instruction"] == WORDS
@@ -292,9 +292,29 @@ def test_a_run_with_a_goal_in_words_over_zenoh_pursues_the_parsed_goal(cli, serv
     assert rep["vlm"]["backend"] == "openai" and rep["vlm"]["by_purpose"]["goal"] == 1
     records = rep["vlm"]["requests"]
     assert [r["purpose"] for r in records if r["kind"] == "text"] == ["goal"]
-    # the symbolic world's frames carry no pixels: the questions are abstentions, nothing is sent
+    # the symbolic world's frames carry no pixels: what the survey asks is an abstention, nothing is sent
     assert {r["outcome"] for r in records if r["kind"] != "text"} <= {"no_image"}
     assert len(server.seen) == 1
+
+
+def test_a_real_vlm_in_a_world_without_pictures_is_refused_unless_it_only_parses_goals(cli, serve):
+    """Every check it was asked would be an abstention: 355 of them, then "stuck" (issue 26)."""
+    server = goal_server(serve, GOOD)
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--vlm", "openai",
+                       "--vlm-url", f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS)
+    assert code == EXIT_BAD_INPUT and err.startswith("vap-bt: --vlm: the openai VLM answers from pictures")
+    assert len(err.strip().splitlines()) == 1 and "--verify none" in err and not server.seen
+
+
+def test_a_vlm_server_that_is_not_there_is_one_line_and_exit_4_within_seconds(cli):
+    """Nothing listens on 127.0.0.1:9 (discard, never served here): the run says so before any
+    world starts, instead of spending every query's retries (39 warnings in 150 s)."""
+    started = time.monotonic()
+    code, _, err = cli("run", TREES / "collect_cup.yaml", "--world", "pybullet", "--vlm", "openai",
+                       "--vlm-url", "http://127.0.0.1:9/v1", "--vlm-model", "m", "-q")
+    assert code == EXIT_TRANSPORT and time.monotonic() - started < 20
+    assert err.startswith("vap-bt: --vlm-url: no VLM server answers at http://127.0.0.1:9/v1: nothing accepts")
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
 
 
 def test_an_instruction_is_parsed_and_the_world_judges_the_parsed_goal(cli, serve, tmp_path):
@@ -325,7 +345,7 @@ def test_a_goal_the_vlm_cannot_give_ends_the_run_with_exit_2_and_a_report(cli, s
     server = goal_server(serve, "I would put the cup on the counter.")
     code, rep, err = run_report(cli, tmp_path, TREES / "collect_cup.yaml", "--world", "symbolic",
                                 "--vlm", "openai", "--vlm-url", f"{server.url}/v1", "--vlm-model", "m", "--goal", WORDS,
-                                "--transport", "inproc")
+                                "--transport", "inproc", "--verify", "none")
     assert code == EXIT_BAD_INPUT and err.startswith("vap-bt: --goal: the openai VLM gave no usable goal")
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     parsed = rep["goal_parsing"]

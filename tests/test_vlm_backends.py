@@ -581,6 +581,22 @@ def test_make_backend_builds_from_names_and_environment(serve):
         assert o.describe()["url"] == "http://127.0.0.1:1/v1" and o.describe()["api_key"] == "unset"
 
 
+def test_unreachable_says_why_no_server_answers_and_nothing_when_one_does(serve):
+    import socket
+
+    server = serve(chat("yes"))
+    with make_backend("openai", f"{server.url}/v1", "m", env={}) as up:
+        assert up.unreachable() is None  # a GET of the API root is a 501 here: an answer all the same
+    assert server.seen == []  # the probe asked nothing of the model
+    with make_backend("openai", "http://127.0.0.1:9/v1", "m", env={}) as down:  # nothing listens on 9 here
+        assert down.unreachable(timeout_s=2.0).startswith("nothing accepts a connection there")
+    with socket.socket() as mute:  # accepts connections, never answers
+        mute.bind(("127.0.0.1", 0))
+        mute.listen(1)
+        with make_backend("gemini", f"http://127.0.0.1:{mute.getsockname()[1]}/v1beta", env={}) as silent:
+            assert silent.unreachable(timeout_s=0.5) == "no answer within 0.5 s"
+
+
 @pytest.mark.parametrize("args,where", [
     (("llama",), "--vlm"),
     (("openai", "http://127.0.0.1:8000/v1"), "--vlm-model"),

@@ -180,6 +180,16 @@ def make_vlm(task: Task, world: World, cfg: RunConfig, endpoint=None):
     raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} ({', '.join(VLMS)})")
 
 
+def reached(vlm, cfg: RunConfig):
+    """``vlm``, a real backend, once a server has answered at its URL; else one line, exit 4."""
+    why = vlm.unreachable()
+    if why is not None:
+        vlm.close()
+        option = "--vlm-url" if cfg.vlm_url else f"--vlm {cfg.vlm} (its default URL)"
+        raise TransportError(f"{option}: no VLM server answers at {vlm.url}: {why}; start it, or point --vlm-url at one")
+    return vlm
+
+
 @dataclass(frozen=True)
 class GoalWords:
     """A goal in words to be parsed by the VLM, and the input it came from (named in errors)."""
@@ -201,6 +211,10 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
     if cfg.vlm in ("sim", "sim-http") and (cfg.vlm_url or cfg.vlm_model):
         raise InputError("--vlm-url" if cfg.vlm_url else "--vlm-model",
                          f"only for a real backend (--vlm openai|gemini); the {cfg.vlm} VLM has neither")
+    if cfg.vlm in HTTP_BACKENDS and cfg.world == "symbolic" and cfg.verify != "none":
+        # every check would be an abstention without a request: the run would only ever be stuck
+        raise InputError("--vlm", f"the {cfg.vlm} VLM answers from pictures and the symbolic world's frames "
+                                  "have none: run it --world pybullet, or --verify none (it then only parses goals)")
     if cfg.vlm_latency and cfg.vlm != "sim-http":
         raise InputError("--vlm-latency", "only for --vlm sim-http (the simulated VLM behind its endpoint)")
     if not cfg.vlm_latency >= 0:
@@ -281,13 +295,15 @@ class Session:
         self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
         self._world_side_vlm = self.cfg.vlm == "sim"  # a real backend is the executive's own client
         self._connected = None
+        # a real backend is the executive's own client, built and reached before any world starts
+        self.vlm = reached(make_vlm(self.task, None, self.cfg), self.cfg) if self.cfg.vlm in HTTP_BACKENDS else None
         if self.remote is not None:
             self._connect()
         else:
             self.world = make_world(self.task, self.cfg)
             self.skills = make_skills(self.task, self.world)
             self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
-            self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
+            self.vlm = self.vlm or make_vlm(self.task, self.world, self.cfg, self.endpoint)
         self._goal_parser: GoalParser | None = None
         self._first_request = 0
         self.profile = make_profile(self.task, self.vlm)
@@ -311,7 +327,8 @@ class Session:
         self._connected = ConnectedTransport(self.remote, self.task.name, world_side_vlm=self._world_side_vlm)
         self.cfg = replace(self.cfg, injection=bool(self._connected.world.info()["injection"]))  # the world's say
         self.world, self.skills, self.endpoint = self._connected.world, {}, None
-        self.vlm = self._connected.vlm_client if self._world_side_vlm else make_vlm(self.task, None, self.cfg)
+        if self._world_side_vlm:
+            self.vlm = self._connected.vlm_client
 
     def _executive(self, cfg: RunConfig, scores: list[dict]) -> tuple[Executive, MeteredVLM]:
         """A fresh world state for ``cfg.seed`` and an executive wired to it (see the module docstring)."""

@@ -48,6 +48,10 @@ from vap_bt.robot.frame import Frame
 log = logging.getLogger("vap_bt.vlm")
 
 ERROR_BODY_CHARS = 2000  # of an error body kept in a record: enough for any server's message
+#: s a run waits for a VLM server to answer at all before saying none does: a server that is up
+#: answers any request at once, if only with an error (a model still loading does not hold up its
+#: HTTP layer)
+PREFLIGHT_S = 5.0
 
 
 @dataclass(frozen=True)
@@ -127,6 +131,12 @@ class HttpVLM:
 
     def retry_hint(self, response: httpx.Response) -> float | None:
         return retry_after(response)
+
+    def unreachable(self, timeout_s: float = PREFLIGHT_S) -> str | None:
+        """Why no server answers at the backend's URL (a sentence), or None when one does. Asked
+        once before an episode: a wrong ``--vlm-url`` is then one line within seconds, not every
+        query's retries spent one after the other (39 warnings in 150 s, the run still going)."""
+        return self._transport.probe(self.url, timeout_s)
 
     # --- the template ---------------------------------------------------------------------------
     def ask(self, query: Query, frame: Frame) -> Answer:

@@ -133,6 +133,19 @@ class Transport:
         log.warning("VLM POST %s gave up after %d attempt(s): %s", url, attempt, detail)
         return Exchange(status, text, attempt, failure, detail)
 
+    def probe(self, url: str, timeout_s: float) -> str | None:
+        """One GET of ``url``, no retry: why nothing answered (a sentence), or None when a server
+        did — with any status (the API root is a 404 on many servers, and a 404 is an answer)."""
+        try:
+            self._client.get(url, timeout=timeout_s)
+        except httpx.TimeoutException:
+            return f"no answer within {timeout_s:g} s"
+        except httpx.ConnectError as e:
+            return f"nothing accepts a connection there ({e})"
+        except httpx.HTTPError as e:
+            return f"{type(e).__name__}: {e}"
+        return None
+
     def close(self) -> None:
         self._closed.set()
         self._client.close()
