@@ -347,10 +347,10 @@ class Leaf:
         """The joint value that best explains ``pts`` (the piece's points, seen from ``eye``), or
         None when no joint value puts the leaf on any of them. A joint value is supported by the
         points on its leaf's box and contradicted (a hinged leaf :data:`THROUGH_WEIGHT` times as
-        strongly) by the points the camera saw through the leaf's face there: the carcass's front edge lies
-        where a closed leaf would be, so the points on it alone would call a wide-open fridge
-        closed, but a closed leaf would have hidden the inside of the cavity the camera sees. With ``believed`` (where the leaf is thought to
-        stand), the best value must explain :data:`LEAF_REFIT_POINTS` more points than the belief
+        strongly) by the points the camera saw through the leaf's face there: the carcass's front
+        edge lies where a closed leaf would be, so the points on it alone would call a wide-open
+        fridge closed, but a closed leaf would have hidden the inside of the cavity the camera
+        sees. With ``believed`` (where the leaf is thought to stand), the best value must explain :data:`LEAF_REFIT_POINTS` more points than the belief
         does, else the belief stands: a frame that shows only a leaf's foot or edge explains a few
         points either way, and the ties and near-ties between such values are not evidence.
         ``slack``: planar offsets (dx, dy, dθ about the hinge) the points may lie off the map's

@@ -303,7 +303,8 @@ class Session:
             self.world = make_world(self.task, self.cfg)
             self.skills = make_skills(self.task, self.world)
             self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
-            self.vlm = self.vlm or make_vlm(self.task, self.world, self.cfg, self.endpoint)
+            if self.vlm is None:  # the simulated VLM, in process or behind its endpoint
+                self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
         self._goal_parser: GoalParser | None = None
         self._first_request = 0
         self.profile = make_profile(self.task, self.vlm)
