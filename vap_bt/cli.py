@@ -11,7 +11,7 @@
 ``vap-bt run TASK.yaml --connect EP`` run the executive against a sim and skill servers already running
 
 Exit codes are documented in :mod:`vap_bt.errors`: 0 success, 1 goal not reached, 2 bad input,
-3 no plan, 4 transport down. Errors print one line on stderr, never a traceback. Progress goes to
+3 no plan, 4 transport down, 5 the planner ran out of time. Errors print one line on stderr, never a traceback. Progress goes to
 stderr; stdout carries only a command's result (a run's summary table, or with ``--json`` its JSON).
 """
 
@@ -25,7 +25,8 @@ import sys
 from pathlib import Path
 
 from vap_bt import report as report_mod
-from vap_bt.errors import EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_OK, InputError, VapBtError
+from vap_bt.errors import (EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_OK, EXIT_PLANNING_TIMEOUT, EXIT_UNSOLVABLE,
+                            InputError, VapBtError)
 
 
 def _progress(quiet: bool):
@@ -153,7 +154,8 @@ def _run(args, stdout) -> int:
             recorder.serve_until_interrupted(say=lambda m: print(m, file=sys.stderr, flush=True))
             recorder.close()
     ok = rep["success"] and rep["goal_satisfied"]
-    return EXIT_OK if ok else EXIT_GOAL_NOT_REACHED
+    no_plan = {"unsolvable": EXIT_UNSOLVABLE, "timeout": EXIT_PLANNING_TIMEOUT}.get(rep.get("no_initial_plan"))
+    return EXIT_OK if ok else no_plan or EXIT_GOAL_NOT_REACHED
 
 
 def _remote_settings(args):
@@ -275,7 +277,8 @@ def build_parser() -> argparse.ArgumentParser:
                     "symbolic; --world overrides; a PDDL domain and problem run symbolic. Progress goes to\n"
                     "stderr; at the end stdout gets a summary table, or with --json only the JSON summary.\n"
                     "Exit codes: 0 success (the world confirms it), 1 goal not reached, 2 bad input,\n"
-                    "3 no plan, 4 transport down.")
+                    "3 no plan exists from what the robot saw, 4 transport down, 5 the planner ran\n"
+                    "out of time.")
     sr.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
     sr.add_argument("--domain")
     sr.add_argument("--problem")

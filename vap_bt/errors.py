@@ -11,6 +11,7 @@ code  meaning
 2     bad input: a file, field or argument is wrong (:class:`InputError`)
 3     no plan exists for the problem as given (:class:`UnsolvableError`)
 4     the transport could not be brought up (:class:`TransportError`)
+5     the planner ran out of time before it found a plan (:class:`PlanningTimeout`)
 ====  =====================================================================
 """
 
@@ -21,6 +22,7 @@ EXIT_GOAL_NOT_REACHED = 1
 EXIT_BAD_INPUT = 2
 EXIT_UNSOLVABLE = 3
 EXIT_TRANSPORT = 4
+EXIT_PLANNING_TIMEOUT = 5
 
 
 class VapBtError(Exception):
@@ -38,7 +40,15 @@ class InputError(VapBtError):
 
 
 class UnsolvableError(VapBtError):
+    """No plan reaches the goal: the planner proved it, or the search space is exhausted."""
+
     exit_code = EXIT_UNSOLVABLE
+
+
+class PlanningTimeout(VapBtError):
+    """The planner gave up at its time limit: a plan may exist, none was found in time."""
+
+    exit_code = EXIT_PLANNING_TIMEOUT
 
 
 class TransportError(VapBtError):

@@ -227,7 +227,7 @@ def goal_words(task: Task, cfg: RunConfig) -> GoalWords | None:
     task's PDDL goal runs. Words are parsed when
 
     * ``--goal WORDS`` is given (``cfg.goal``): they replace the task's goal;
-    * the task file has an ``instruction:`` and no ``goal:`` atoms;
+    * the task states no goal (:attr:`~vap_bt.taskfile.Task.states_goal`) and has an ``instruction:``;
     * ``--parse-instruction`` (``cfg.parse_instruction``) asks for the instruction to be parsed
       although ``goal:`` atoms exist (they are then the report's reference, ``file_goal``).
 
@@ -241,7 +241,7 @@ def goal_words(task: Task, cfg: RunConfig) -> GoalWords | None:
         if not cfg.goal.strip():
             raise InputError("--goal", "empty: say what the robot should achieve")
         words = GoalWords(cfg.goal.strip(), "--goal", "--goal")
-    elif cfg.parse_instruction or not task.planning.goal:
+    elif cfg.parse_instruction or not task.states_goal:
         if not instruction:
             raise InputError(field, "no instruction: to parse (give instruction: words, or --goal)")
         words = GoalWords(instruction, "instruction", field)
@@ -482,6 +482,7 @@ class Session:
             "success": out.success,
             "goal_satisfied": satisfied,
             "reason": out.reason,
+            "no_initial_plan": out.no_initial_plan or None,
             "seed": cfg.seed,
             "task": {"name": self.task.name, "file": str(self.task.path) if self.task.path else None,
                      "instruction": self.task.spec.instruction, "goal": [str(l) for l in goal],

@@ -115,6 +115,12 @@ class Task:
         return self.spec.name
 
     @property
+    def states_goal(self) -> bool:
+        """Whether the task gives its goal in PDDL: a problem file always does (``(:goal (and))``,
+        already true, included), a scene only with ``goal:`` atoms."""
+        return self.spec.problem is not None or bool(self.spec.goal)
+
+    @property
     def options(self) -> Options:
         return self.spec.options
 

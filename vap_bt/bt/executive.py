@@ -50,7 +50,7 @@ from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, s
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
-from vap_bt.errors import UnsolvableError
+from vap_bt.errors import PlanningTimeout, UnsolvableError
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.viewpoints import ViewpointStrategy
@@ -114,6 +114,8 @@ class Survey:
 
 @dataclass
 class EpisodeOutcome:
+    """How an episode ended: the executive's claim, why, and what it did on the way."""
+
     success: bool  # the executive's own claim: its tree reached GoalCheck and it held
     reason: str
     plans: list[Plan]
@@ -124,6 +126,9 @@ class EpisodeOutcome:
     ticks: int
     graph: SceneGraph
     context: ExecutionContext
+    #: why there was no first plan: "unsolvable" (none exists from what the survey saw) or
+    #: "timeout" (the planner gave up); empty when there was one. The CLI's exit codes 3 and 5
+    no_initial_plan: str = ""
 
 
 class Executive:
@@ -184,8 +189,9 @@ class Executive:
         try:
             try:
                 plan = self.planner.plan(graph.state(), self.task.goal)
-            except UnsolvableError as exc:
+            except (UnsolvableError, PlanningTimeout) as exc:
                 out.reason = f"no initial plan: {exc}"
+                out.no_initial_plan = "timeout" if isinstance(exc, PlanningTimeout) else "unsolvable"
                 return out
             out.plans.append(plan)
             self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
@@ -254,7 +260,7 @@ class Executive:
                     out.surveys.append(survey)
                 try:
                     plan = self._replan(graph, situation, plan, doubted, ctx.on_trial)
-                except UnsolvableError as exc:
+                except (UnsolvableError, PlanningTimeout) as exc:
                     out.reason = f"no plan after {situation.kind} situation: {exc}"
                     return out
                 self.halt(tree)

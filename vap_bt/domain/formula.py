@@ -50,6 +50,8 @@ class Or:
 Formula = Union[Literal, And, Or]
 TRUE: Formula = And(())
 FALSE: Formula = Or(())
+#: the predicate of a lifted equality literal (no PDDL predicate can be named ``=``)
+EQUALS = "="
 
 
 class FormulaTooLarge(ValueError):
@@ -144,40 +146,60 @@ def _merge(a: tuple[Literal, ...], b: tuple[Literal, ...]) -> tuple[Literal, ...
     return merged
 
 
-def from_up(node) -> Formula:
-    """A ground unified-planning boolean expression (quantifiers already removed) in negation
-    normal form. Raises ``ValueError`` on anything else (a numeric comparison, a quantifier)."""
-    return _nnf(node, True)
+def from_up(node, lifted: bool = False) -> Formula:
+    """A unified-planning boolean expression (quantifiers already removed) in negation normal
+    form. Ground, unless ``lifted``: then an action's parameters may stand in atoms as ``?x``
+    and an equality over them as an :data:`EQUALS` literal, for :func:`bind` to decide. Raises
+    ``ValueError`` on anything else (a numeric comparison, a quantifier)."""
+    return _nnf(node, True, lifted)
 
 
-def _nnf(node, positive: bool) -> Formula:
+def _nnf(node, positive: bool, lifted: bool) -> Formula:
     if node.is_bool_constant():
         return TRUE if node.bool_constant_value() == positive else FALSE
     if node.is_fluent_exp():
-        return Literal(Atom(node.fluent().name, tuple(_object(a) for a in node.args)), positive)
+        return Literal(Atom(node.fluent().name, tuple(_term(a, lifted) for a in node.args)), positive)
     if node.is_not():
-        return _nnf(node.arg(0), not positive)
+        return _nnf(node.arg(0), not positive, lifted)
     if node.is_and() or node.is_or():
-        parts = [_nnf(a, positive) for a in node.args]
+        parts = [_nnf(a, positive, lifted) for a in node.args]
         return conjunction(parts) if node.is_and() == positive else disjunction(parts)
     if node.is_implies():  # a -> b  ==  not a or b
-        parts = [_nnf(node.arg(0), not positive), _nnf(node.arg(1), positive)]
+        parts = [_nnf(node.arg(0), not positive, lifted), _nnf(node.arg(1), positive, lifted)]
         return disjunction(parts) if positive else conjunction(parts)
     if node.is_iff():
         a, b = node.arg(0), node.arg(1)
-        same = conjunction([_nnf(a, True), _nnf(b, True)]), conjunction([_nnf(a, False), _nnf(b, False)])
-        differ = conjunction([_nnf(a, True), _nnf(b, False)]), conjunction([_nnf(a, False), _nnf(b, True)])
+        same = (conjunction([_nnf(a, True, lifted), _nnf(b, True, lifted)]),
+                conjunction([_nnf(a, False, lifted), _nnf(b, False, lifted)]))
+        differ = (conjunction([_nnf(a, True, lifted), _nnf(b, False, lifted)]),
+                  conjunction([_nnf(a, False, lifted), _nnf(b, True, lifted)]))
         return disjunction(same if positive else differ)
     if node.is_equals() and all(a.is_object_exp() for a in node.args):
         return TRUE if (node.arg(0) == node.arg(1)) == positive else FALSE
+    if node.is_equals() and lifted:
+        return Literal(Atom(EQUALS, tuple(_term(a, lifted) for a in node.args)), positive)
     raise ValueError(f"unsupported expression {node}")
 
 
-def _object(node) -> str:
+def _term(node, lifted: bool) -> str:
+    if lifted and node.is_parameter_exp():
+        return f"?{node.parameter().name}"
     if not node.is_object_exp():
         raise ValueError(f"not a ground argument: {node}")
     return node.object().name
 
 
-__all__ = ["And", "Or", "FALSE", "Formula", "FormulaTooLarge", "TRUE", "assume", "conjunction", "disjunction",
-           "dnf", "from_up", "holds", "literals", "support"]
+def bind(f: Formula, binding: dict[str, str]) -> Formula:
+    """A lifted formula with its parameters replaced by objects (``binding``: ``?x`` -> object)
+    and its equalities decided, simplified."""
+    if isinstance(f, Literal):
+        args = tuple(binding.get(a, a) for a in f.atom.args)
+        if f.atom.predicate == EQUALS:
+            return TRUE if (args[0] == args[1]) == f.positive else FALSE
+        return Literal(Atom(f.atom.predicate, args), f.positive)
+    parts = [bind(p, binding) for p in f.parts]
+    return conjunction(parts) if isinstance(f, And) else disjunction(parts)
+
+
+__all__ = ["And", "EQUALS", "Or", "FALSE", "Formula", "FormulaTooLarge", "TRUE", "assume", "conjunction", "disjunction",
+           "bind", "dnf", "from_up", "holds", "literals", "support"]

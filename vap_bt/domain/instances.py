@@ -1,18 +1,24 @@
-"""Action instances through unified-planning: quantifiers compiled away, then ground one by one.
+"""Action instances: each action read once as a lifted template, then ground by substitution.
 
 The parsed problem is compiled once with unified-planning's quantifiers remover: ``forall`` and
 ``exists`` over typed variables become conjunctions and disjunctions over the problem's objects,
-and ``forall`` effects become one conditional effect per object. Each action instance is then
-ground by unified-planning's grounder (``GrounderHelper``: parameters substituted, the expression
-simplified, so that ``(= ?from ?to)`` is decided) and translated into a
-:class:`~vap_bt.domain.knowledge.GroundAction`.
+and ``forall`` effects become one conditional effect per object. Each action is then translated
+once into a *template* — its precondition and effect conditions as :mod:`~vap_bt.domain.formula`
+formulas whose atoms may name parameters (``?x``), equality kept as a ``=`` literal — and an
+instance is the template with its arguments substituted, equalities decided, simplified. This is
+what unified-planning's ``GrounderHelper`` does per instance; doing it on our own formulas makes
+an instance cost microseconds instead of milliseconds (pegsol's 2,271 instances took 40 s through
+the helper), and keeps the helper's parameter enumeration out of the way: it ends in a
+``ValueError`` inside unified-planning on driverlog and elevators (``tests/domains/up-grounder-*``
+reproduce it).
 
-Two grounders are kept, for two different questions:
+Two questions are asked of the instances:
 
 * :meth:`UPInstances.ground` answers "what does this action do" for any state, so it uses no
   facts of the initial state at all (the executive applies it to a belief the camera corrected);
-* :meth:`UPInstances.candidates` enumerates the parameter tuples worth grounding for the search,
-  with unified-planning's pruning by static fluents — rigid facts, never the fluent ones.
+* :meth:`UPInstances.candidates` enumerates the argument tuples worth grounding for the search:
+  typed objects, pruned by the precondition's positive literals over *rigid* predicates (those no
+  action changes), which the initial state fixes for good — never by the fluent ones.
 
 Action costs come from the problem's action-cost metric (PDDL ``:action-costs``), evaluated with
 the static numeric fluents of the initial state (road lengths); without a metric every action
@@ -22,10 +28,30 @@ costs 1.
 from __future__ import annotations
 
 import threading
+from dataclasses import dataclass
+from typing import Iterator
 
 from vap_bt.domain.atoms import Atom, Literal
-from vap_bt.domain.formula import FALSE, TRUE, And, Formula, conjunction, from_up
+from vap_bt.domain.formula import EQUALS, FALSE, TRUE, And, Formula, bind, conjunction, from_up
 from vap_bt.domain.knowledge import ConditionalEffect, GroundAction
+
+
+@dataclass(frozen=True)
+class _Effect:
+    """One lifted effect: the atom it sets, to which value, under which condition."""
+
+    atom: Atom
+    value: bool
+    condition: Formula
+
+
+@dataclass(frozen=True)
+class _Template:
+    """One lifted action: parameters, precondition and effects over ``?x`` terms."""
+
+    params: tuple[str, ...]
+    precondition: Formula
+    effects: tuple[_Effect, ...]
 
 
 class UPInstances:
@@ -33,16 +59,22 @@ class UPInstances:
 
     def __init__(self, problem, has_quantifiers: bool = True) -> None:
         from unified_planning.engines import CompilationKind
-        from unified_planning.engines.compilers import GrounderHelper, QuantifiersRemover
+        from unified_planning.engines.compilers import QuantifiersRemover
         from unified_planning.model.walkers import Simplifier
 
         if has_quantifiers:
             problem = QuantifiersRemover().compile(problem, CompilationKind.QUANTIFIERS_REMOVING).problem
         self.problem = problem
         self._actions = {a.name: a for a in problem.actions}
+        self._templates = {a.name: _template(a) for a in problem.actions}
+        self._allowed = {a.name: tuple(frozenset(o.name for o in problem.objects(p.type)) for p in a.parameters)
+                         for a in problem.actions}
         self._objects = {o.name: o for o in problem.all_objects}
-        self._exact = GrounderHelper(problem, prune_actions=False)
-        self._static = GrounderHelper(problem, prune_actions=True)
+        changed = {e.atom.predicate for t in self._templates.values() for e in t.effects}
+        self._rigid_facts = frozenset(
+            _atom(k) for k, v in problem.explicit_initial_values.items()
+            if k.type.is_bool_type() and v.is_true() and k.fluent().name not in changed)
+        self._rigid = {f.name for f in problem.fluents if f.type.is_bool_type()} - changed
         self._metric = next((m for m in problem.quality_metrics if m.is_minimize_action_costs()), None)
         self._statics = Simplifier(problem.environment, problem)
         # unified-planning's expression manager is not thread-safe, and the symbolic world's
@@ -58,47 +90,95 @@ class UPInstances:
         return conjunction([from_up(g) for g in self.problem.goals])
 
     def candidates(self, name: str) -> list[tuple[str, ...]]:
-        """Parameter tuples of action ``name`` that the static (rigid) facts do not rule out."""
-        with self._lock:
-            return [tuple(p.object().name for p in params)
-                    for params in self._static.get_possible_parameters(self._actions[name])]
+        """Argument tuples of action ``name`` that the rigid facts do not rule out."""
+        t = self._templates[name]
+        required = [l.atom for l in _split(t.precondition)[0]
+                    if l.positive and l.atom.predicate in self._rigid]
+        return list(_join(t.params, [sorted(s) for s in self._allowed[name]], required, self._rigid_facts))
 
     def ground(self, name: str, args: tuple[str, ...]) -> GroundAction:
-        with self._lock:
-            return self._ground(name, args)
-
-    def _ground(self, name: str, args: tuple[str, ...]) -> GroundAction:
-        action = self._actions[name]
-        params = []
-        for p, a in zip(action.parameters, args):
-            obj = self._objects.get(a)
-            if obj is None:
-                raise ValueError(f"{name}: unknown object {a!r}")
-            if not p.type.is_compatible(obj.type):
-                raise ValueError(f"{name}: {a!r} is a {obj.type}, parameter {p.name} expects a {p.type}")
-            params.append(self.problem.environment.expression_manager.ObjectExp(obj))
-        ground = self._exact.ground_action(action, tuple(params))
-        cost = self._cost(action, tuple(params))
-        if ground is None or cost is None:
-            # unified-planning's grounder drops an instance whose precondition is contradictory
-            # (``(not (= ?x ?y))`` with x = y) or whose effects conflict; an instance whose cost is
-            # undefined in the initial state is inapplicable (PDDL 2.1). Either way it never applies
+        action, allowed = self._actions[name], self._allowed[name]
+        for p, a, ok in zip(action.parameters, args, allowed):
+            if a not in ok:
+                if a not in self._objects:
+                    raise ValueError(f"{name}: unknown object {a!r}")
+                raise ValueError(f"{name}: {a!r} is a {self._objects[a].type}, parameter {p.name} expects a {p.type}")
+        t = self._templates[name]
+        binding = dict(zip(t.params, args))
+        cost = self._cost(action, args)
+        pre = bind(t.precondition, binding)
+        if pre == FALSE or cost is None:
+            # a contradictory precondition (``(not (= ?x ?y))`` with x = y) never holds; an
+            # instance whose cost is undefined in the initial state is inapplicable (PDDL 2.1)
             return GroundAction(name, tuple(args), (), frozenset(), frozenset(), condition=FALSE, cost=cost or 0)
-        pre = conjunction([from_up(p) for p in ground.preconditions])
         required, rest = _split(pre)
-        add, delete, conditional = _effects(ground.effects)
+        add, delete, conditional = _effects(t.effects, binding)
         return GroundAction(name, tuple(args), required, add, delete, condition=rest, conditional=conditional,
                             cost=cost)
 
-    def _cost(self, action, params) -> int | None:
+    def _cost(self, action, args: tuple[str, ...]) -> int | None:
         """The instance's cost; None where it is undefined (a cost fluent without a value)."""
         if self._metric is None:
             return 1
         expr = self._metric.get_action_cost(action)
         if expr is None:
             return 0
-        value = self._statics.simplify(expr.substitute(dict(zip(action.parameters, params))))
+        if expr.is_constant():
+            return int(expr.constant_value())
+        em = self.problem.environment.expression_manager
+        subs = {p: em.ObjectExp(self._objects[a]) for p, a in zip(action.parameters, args)}
+        with self._lock:
+            value = self._statics.simplify(expr.substitute(subs))
         return int(value.constant_value()) if value.is_constant() else None
+
+
+def _template(action) -> _Template:
+    pre = conjunction([from_up(p, lifted=True) for p in action.preconditions])
+    effects = []
+    for e in action.effects:
+        if not e.fluent.type.is_bool_type():
+            continue  # numeric effects are the action costs, read from the metric
+        if not e.value.is_bool_constant():
+            raise ValueError(f"unsupported effect {e}")
+        atom = from_up(e.fluent, lifted=True).atom
+        cond = from_up(e.condition, lifted=True) if e.is_conditional() else TRUE
+        effects.append(_Effect(atom, e.value.bool_constant_value(), cond))
+    return _Template(tuple(f"?{p.name}" for p in action.parameters), pre, tuple(effects))
+
+
+def _join(params: tuple[str, ...], domains: list[list[str]], required: list[Atom],
+          facts: frozenset[Atom]) -> Iterator[tuple[str, ...]]:
+    """Every typed argument tuple under which each ``required`` atom is among ``facts``: a
+    backtracking join that checks an atom as soon as its last parameter is bound."""
+    position = {p: i for i, p in enumerate(params)}
+
+    def last(atom: Atom) -> int:
+        return max((position[a] for a in atom.args if a in position), default=-1)
+
+    checks: list[list[Atom]] = [[] for _ in params]
+    for atom in required:
+        if last(atom) < 0:
+            if atom not in facts:
+                return  # a ground rigid precondition that is false: no instance applies
+        else:
+            checks[last(atom)].append(atom)
+    binding: dict[str, str] = {}
+
+    def extend(i: int) -> Iterator[tuple[str, ...]]:
+        if i == len(params):
+            yield tuple(binding[p] for p in params)
+            return
+        for obj in domains[i]:
+            binding[params[i]] = obj
+            if all(Atom(a.predicate, tuple(binding.get(x, x) for x in a.args)) in facts for a in checks[i]):
+                yield from extend(i + 1)
+        binding.pop(params[i], None)
+
+    yield from extend(0)
+
+
+def _atom(node) -> Atom:
+    return Atom(node.fluent().name, tuple(a.object().name for a in node.args))
 
 
 def _split(pre: Formula) -> tuple[tuple[Literal, ...], Formula]:
@@ -111,19 +191,18 @@ def _split(pre: Formula) -> tuple[tuple[Literal, ...], Formula]:
     return (), pre
 
 
-def _effects(effects) -> tuple[frozenset[Atom], frozenset[Atom], tuple[ConditionalEffect, ...]]:
+def _effects(effects: tuple[_Effect, ...], binding: dict[str, str]
+             ) -> tuple[frozenset[Atom], frozenset[Atom], tuple[ConditionalEffect, ...]]:
     add: set[Atom] = set()
     delete: set[Atom] = set()
     conditional: dict[Formula, tuple[set[Atom], set[Atom]]] = {}
     for e in effects:
-        if not e.value.is_bool_constant():
-            raise ValueError(f"unsupported effect {e}")
-        atom = Atom(e.fluent.fluent().name, tuple(a.object().name for a in e.fluent.args))
-        cond = from_up(e.condition) if e.is_conditional() else TRUE
+        cond = bind(e.condition, binding)
         if cond == FALSE:
             continue
+        atom = Atom(e.atom.predicate, tuple(binding.get(a, a) for a in e.atom.args))
         adds, dels = (add, delete) if cond == TRUE else conditional.setdefault(cond, (set(), set()))
-        (adds if e.value.bool_constant_value() else dels).add(atom)
+        (adds if e.value else dels).add(atom)
     return frozenset(add), frozenset(delete), tuple(
         ConditionalEffect(c, frozenset(a), frozenset(d)) for c, (a, d) in conditional.items())
 

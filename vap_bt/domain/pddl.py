@@ -10,6 +10,7 @@ unified-planning), the initial state and the goal — and turns every parser com
 
 from __future__ import annotations
 
+import re
 import warnings
 from pathlib import Path
 
@@ -47,19 +48,7 @@ def load_task(domain_file: str | Path, problem_file: str | Path) -> PlanningTask
     for p in (domain_path, problem_path):
         if not p.is_file():
             raise InputError(str(p), "no such file")
-    domain, problem = Source.read(domain_path), Source.read(problem_path)
-    domain_text = either.rewrite(domain)
-    reader = _reader()
-    try:
-        reader.parse_problem_string(domain_text)
-    except Exception as exc:  # the parser raises many kinds; all are bad input here
-        raise explain_unreadable([domain]) or _parse_error(domain_path, exc) from None
-    try:
-        up_problem = reader.parse_problem_string(domain_text, problem.text)
-    except Exception as exc:
-        raise explain_unreadable([problem]) or _parse_error(problem_path, exc) from None
-    return from_up(up_problem, source=f"{domain_path} + {problem_path}", where=problem_path,
-                   sources=[domain, problem], domain_file=domain_path)
+    return _parse(domain_path, Source.read(problem_path), where=problem_path)
 
 
 def parse_strings(domain_file: str | Path, problem_text: str, where: str) -> PlanningTask:
@@ -67,14 +56,38 @@ def parse_strings(domain_file: str | Path, problem_text: str, where: str) -> Pla
     domain_path = Path(domain_file)
     if not domain_path.is_file():
         raise InputError(str(domain_path), "no such file")
+    return _parse(domain_path, Source(where, problem_text), where=where)
+
+
+def _parse(domain_path: Path, problem: Source, where: Path | str) -> PlanningTask:
+    """The domain is parsed alone first, so that an error in it names the domain file and its
+    line, not the problem (or the task file the problem was generated from)."""
     domain = Source.read(domain_path)
+    domain_text = either.rewrite(domain)
     reader = _reader()
     try:
-        up_problem = reader.parse_problem_string(either.rewrite(domain), problem_text)
+        reader.parse_problem_string(domain_text)
+    except Exception as exc:  # the parser raises many kinds; all are bad input here
+        raise explain_unreadable([domain]) or _parse_error(domain_path, exc) from None
+    try:
+        up_problem = reader.parse_problem_string(domain_text, total_cost_from_zero(problem.text))
     except Exception as exc:
-        raise explain_unreadable([domain]) or _parse_error(where, exc) from None
+        raise explain_unreadable([problem]) or _parse_error(where, exc) from None
     return from_up(up_problem, source=f"{domain_path} + {where}", where=where,
-                   sources=[domain, Source(where, problem_text)], domain_file=domain_path)
+                   sources=[domain, problem], domain_file=domain_path)
+
+
+def total_cost_from_zero(problem_text: str) -> str:
+    """The problem with ``(= (total-cost) 0)`` in its initial state when it minimizes total-cost
+    without giving it a value. Fast Downward starts total-cost at 0 either way (IPC 2018's
+    agricola and settlers rely on it); unified-planning then reads the metric as an arbitrary
+    final-state expression and the problem as numeric planning. Inserted on the ``(:init`` line,
+    so every line number stays the file's."""
+    plain = re.sub(r";[^\n]*", "", problem_text)
+    if not re.search(r"\(\s*:metric\s+minimize\s+\(\s*total-cost\s*\)", plain, flags=re.I) or re.search(
+            r"\(\s*=\s*\(\s*total-cost\s*\)", plain, flags=re.I):
+        return problem_text
+    return re.sub(r"\(\s*:init\b", lambda m: m.group(0) + " (= (total-cost) 0)", problem_text, count=1, flags=re.I)
 
 
 def from_up(problem, source: str, where: Path | str, sources: list[Source] | None = None,

@@ -1,0 +1,6 @@
+(define (problem roads-p1) (:domain roads)
+  (:objects a b c - town)
+  (:init (at a) (road a b) (road b c) (road a c)
+         (= (road-length a b) 2) (= (road-length b c) 3) (= (road-length a c) 9))
+  (:goal (at c))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,7 @@
+(define (domain rooms)
+  (:requirements :strips :typing)
+  (:types robot room)
+  (:predicates (at ?r - robot ?x - room) (door ?x ?y - room))
+  (:action move :parameters (?r - robot ?x ?y - room)
+    :precondition (and (at ?r ?x) (door ?x ?y))
+    :effect (and (not (at ?r ?x)) (at ?r ?y))))

@@ -1,0 +1,5 @@
+(define (problem up-grounder-p1)
+  (:domain up-grounder)
+  (:objects a b - place)
+  (:init (road a) (paved a))
+  (:goal (at a)))
