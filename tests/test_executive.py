@@ -142,6 +142,66 @@ def test_report_has_everything_to_rerun(tmp_path, cli):
     assert r2["situations"] == r["situations"] and r2["vlm_queries"] == r["vlm_queries"]
 
 
+def test_under_lean_the_goal_is_looked_at_before_success_is_claimed():
+    """The lean protocol reuses what nothing since could have changed — but not for the goal:
+    on(cup, counter), confirmed by placeon's effect check, is looked at again by the goal check
+    (it was "reused", with no view, and success claimed on it), and the report says so."""
+    r = session("collect_cup.yaml", protocol="lean").episode(0)
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+    checks = r["verifications"]
+    assert any(v["phase"] == "eff" and v["predicate"] == "on(cup, counter)" and v["outcome"] == "confirmed"
+               for v in checks), "the goal atom was verified mid-plan: the goal check could have reused it"
+    assert any(v["outcome"] == "reused" for v in checks), "lean still reuses before actions"
+    goal = [v for v in checks if v["phase"] == "goal"]
+    assert goal and all(v["outcome"] != "reused" and v["views"] >= 1 and v["queries"] >= 1 for v in goal), goal
+    assert all(v["basis"] == "vlm" for v in goal)
+    evidence = r["goal_evidence"]
+    assert [e["predicate"] for e in evidence["looked"]] == ["on(cup, counter)"]
+    assert evidence["felt"] == evidence["unchecked"] == []
+    looked = evidence["looked"][0]
+    assert looked["outcome"] == "confirmed" and looked["value"] is True
+    assert checks[looked["verification"]] == goal[-1], "it names the goal's last check, by its index"
+
+
+def test_goal_atoms_left_to_the_body_or_the_map_are_reported_as_such(tmp_path):
+    """A goal with atoms no camera is asked about: where the robot is (localization's), which
+    room the cup is in (never checked) — and whether the hand is empty, which the first view of
+    the wrist camera leaves to the gripper. The claim lists each by what it rests on."""
+    text = (TREES / "collect_cup.yaml").read_text()
+    text = text.replace("../domains/household.pddl", str(TREES.parent / "domains" / "household.pddl"))
+    text = text.replace('  - "on(cup, counter)"\n', '  - "on(cup, counter)"\n  - "robot_in(kitchen)"\n'
+                                                      '  - "in_room(cup, kitchen)"\n  - "hand_empty"\n')
+    (tmp_path / "goal.yaml").write_text(text)
+    task = load(tmp_path / "goal.yaml")
+    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", protocol="lean")).episode(0)
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+    e = r["goal_evidence"]
+    names = {kind: {x["predicate"] for x in e[kind]} for kind in e}
+    assert names["looked"] == {"on(cup, counter)"}
+    assert names["felt"] == {"robot_in(kitchen)", "hand_empty"}
+    assert names["unchecked"] == {"in_room(cup, kitchen)"}
+    felt = {x["predicate"]: x for x in e["felt"]}
+    assert "proprioception" in felt["robot_in(kitchen)"]["reason"]  # the profile's source, no check
+    hand = r["verifications"][felt["hand_empty"]["verification"]]  # the gripper settled its check
+    assert hand["phase"] == "goal" and hand["basis"] == "proprioception"
+    assert "never checked" in e["unchecked"][0]["reason"]
+
+
+def test_reused_values_are_counted_apart_never_as_verified():
+    """A lean run's report counts as verified (and correct) only values a sense gave when the check
+    ran — looked at or felt — and the reused ones apart, outside the accuracy's denominator."""
+    r = session("collect_cup.yaml", protocol="lean").episode(0)
+    checks, counts = r["verifications"], r["perception"]["verifications"]
+    reused = [v for v in checks if v["outcome"] == "reused"]
+    sensed = [v for v in checks if v["outcome"] in ("confirmed", "contradicted", "felt")]
+    assert reused and counts["reused"] == len(reused)
+    assert counts["n"] == len(sensed) and counts["n"] + counts["reused"] + counts["unsettled"] == len(checks)
+    assert counts["correct"] == sum(v["value"] == v["truth"] for v in sensed)
+    assert all(v["basis"] == "reused" and v["views"] == 0 for v in reused)
+    looked = [v for v in sensed if v["basis"] == "vlm"]
+    assert counts["looked"] == len(looked) < counts["n"]  # hand_empty after placeon was felt
+
+
 @pytest.mark.slow
 def test_zenoh_embedded_run_matches_the_in_process_run():
     """Same task, same seed: the loop over real Zenoh sessions makes the same episode."""
@@ -215,11 +275,11 @@ def test_a_goal_the_camera_could_not_confirm_is_looked_at_again_before_success_i
     def blind_to_goal(times: int):
         left = {"n": times}
 
-        def weigh(self, value, outcome):
+        def weigh(self, value, outcome, basis=None):
             if self.phase == "goal" and left["n"]:
                 left["n"] -= 1
                 return settle(self, self.verify.expected, "unsettled")
-            return settle(self, value, outcome)
+            return settle(self, value, outcome, basis)
         return weigh
 
     task = load(TREES / "collect_cup.yaml")
@@ -254,10 +314,10 @@ def test_a_precondition_denied_that_leaves_no_plan_is_doubted_then_tried_against
 
     settle = ActivePerception._settle
 
-    def out_of_reach(self, value, outcome):
+    def out_of_reach(self, value, outcome, basis=None):
         if self.phase == "pre" and self.verify.atom.predicate == "reachable":
             return settle(self, False, "contradicted")
-        return settle(self, value, outcome)
+        return settle(self, value, outcome, basis)
 
     monkeypatch.setattr(ActivePerception, "_settle", out_of_reach)
     lines = []

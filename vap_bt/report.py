@@ -4,6 +4,12 @@
 read after the episode. They are reported side by side so that a claim the world denies shows.
 The report also records the seed, versions, world and VLM parameters, every plan, action,
 verification, situation (detected, and injected by the world) and replan.
+
+A claim is only as good as what it rests on: ``goal_evidence`` says, per goal atom, whether the
+goal's last check looked at it (a VLM verdict), felt it (proprioception) or left it to belief
+(the map, never checked), and every verification its ``basis``. Accuracy figures count the values
+a sense gave at the time (:func:`verification_counts`); a value reused from an earlier check is
+counted apart and never as verified.
 """
 
 from __future__ import annotations
@@ -23,6 +29,27 @@ def versions() -> dict[str, str]:
         except metadata.PackageNotFoundError:
             out[dist] = "not installed"
     return out
+
+
+#: the bases of a value a sense gave when its check ran (vap_bt.bt.context.Basis): the verified ones
+SENSED = ("vlm", "proprioception")
+
+
+def verification_counts(verifications: list[dict]) -> dict:
+    """The report's ``perception.verifications``, from its ``verifications`` (each with the world's
+    ``truth`` when it settled): ``n`` values a sense settled — looked at (the VLM's verdict) or felt
+    (the gripper) — and how many matched the world (``correct``); of them, those looked at alone
+    (``looked``, ``looked_correct``); the ``unsettled`` checks (belief stood) and the ``reused``
+    values (the lean protocol's: an earlier check's, nothing looked at — neither verified nor
+    correct, and outside any accuracy's denominator). The runner and the benches all count here."""
+    def right(vs: list[dict]) -> int:
+        return sum(v["value"] == v.get("truth") for v in vs)
+
+    sensed = [v for v in verifications if v["basis"] in SENSED]
+    looked = [v for v in sensed if v["basis"] == "vlm"]
+    return {"n": len(sensed), "correct": right(sensed), "looked": len(looked), "looked_correct": right(looked),
+            "unsettled": sum(v["basis"] == "belief" for v in verifications),
+            "reused": sum(v["basis"] == "reused" for v in verifications)}
 
 
 def command_line() -> str:

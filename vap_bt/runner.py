@@ -30,7 +30,7 @@ from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import MeteredVLM, Paraphraser
-from vap_bt.report import versions
+from vap_bt.report import verification_counts, versions
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.graph_score import score_graph
@@ -362,7 +362,6 @@ class Session:
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
                               on_verification=self._score_verification,
                               goal_parser=self._goal_parser, profile=self.profile)
-        self._verified: list[bool] = []
         self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
         return executive, metered
 
@@ -428,8 +427,8 @@ class Session:
         instances the robot looked at: its atom's objects resolved through the executive's own
         association in each view (:meth:`CaptureRecord.resolve`: which detection it took for which
         object), so that two bottles it named the other way round are scored as what it really
-        saw; an atom about a false positive it took for an object holds of nothing. And whether a
-        settled value matched the world."""
+        saw; an atom about a false positive it took for an object holds of nothing. Which settled
+        values matched it is counted for the report by :func:`vap_bt.report.verification_counts`."""
         captures = getattr(self.world, "captures", None)  # a world in another process: names as names
         records = [(captures.get(r.view), r) for r in v.rounds] if captures is not None else []
         atom: Atom | None = v.atom
@@ -444,8 +443,6 @@ class Session:
         else:
             first_truth = truth
         self._truths[id(v)] = {"truth": truth, "first_truth": first_truth}
-        if v.outcome in ("confirmed", "contradicted", "felt", "reused"):
-            self._verified.append(truth == v.value)
 
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
@@ -478,11 +475,14 @@ class Session:
         satisfied = self._holds(goal)
         ctx = out.context
         detector = cfg.detector() if self.world.name == "symbolic" else getattr(self.world, "detector", None)
+        verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications]
         return {
             "success": out.success,
             "goal_satisfied": satisfied,
             "reason": out.reason,
             "no_initial_plan": out.no_initial_plan or None,
+            # what the goal's last check rested on: looked at, felt, or belief alone
+            "goal_evidence": ctx.goal_evidence.to_json() if ctx.goal_evidence is not None else None,
             "seed": cfg.seed,
             "task": {"name": self.task.name, "file": str(self.task.path) if self.task.path else None,
                      "instruction": self.task.spec.instruction, "goal": [str(l) for l in goal],
@@ -498,9 +498,7 @@ class Session:
                     **self._requests()},
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
                            "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
-                           "verifications": {"n": len(self._verified), "correct": sum(self._verified),
-                                             "unsettled": sum(v.outcome == "unsettled" for v in ctx.verifications),
-                                             "reused": sum(v.outcome == "reused" for v in ctx.verifications)}},
+                           "verifications": verification_counts(verifications)},
             "plans": [p.to_json() for p in out.plans],
             "actions_executed": ctx.actions,
             "situations": [s.to_json() for s in out.situations],
@@ -511,7 +509,7 @@ class Session:
             "surveys": len(out.surveys),
             "ticks": out.ticks,
             "vlm_queries": vlm.total,
-            "verifications": [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications],
+            "verifications": verifications,
             "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints},
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],

@@ -19,11 +19,13 @@ flight, ``vlm.wall_s`` of the report). Those reruns must be the same episodes as
 latency (the answers are seeded per query, not per order): the bench checks it.
 
 Figures: VLM round trips (queries) per executed action; verification accuracy against the oracle
-(the report's ``perception.verifications``: settled values that matched the world at that moment),
-pooled, with a Wilson 95 % interval; viewpoints per uncertainty resolution: over the checks whose
-first view did not decide (more than one view), the moves made in those that a later view
-settled (consistent answers, judged sufficient); checks that ended on the verdict's fallback —
-the budget spent, insufficient views agreeing — are counted apart: no viewpoint resolved them.
+(the report's ``perception.verifications``: values a sense settled — looked at or felt — that
+matched the world at that moment; values the lean protocol reused are counted apart, outside the
+denominator), pooled, with a Wilson 95 % interval; viewpoints per uncertainty resolution: over
+the checks whose first view did not decide (more than one view), the moves made in those that a
+later view settled (consistent answers, judged sufficient); checks that ended on the verdict's
+fallback — the budget spent, insufficient views agreeing — are counted apart: no viewpoint
+resolved them.
 Targets are the issue's (lean without logprobs <= 1/2 and with logprobs <= 1/4 of
 the paper's round trips at equal or better accuracy; lean's VLM wall time <= 1/5 of the paper's;
 VLM-guided viewpoints <= 1.5 per resolution and below greedy).
@@ -53,7 +55,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from tools.bench.intervals import wilson  # noqa: E402
-from vap_bt.report import versions  # noqa: E402
+from vap_bt.report import verification_counts, versions  # noqa: E402
 from vap_bt.sim.observability import RELATION_CLASS  # noqa: E402
 
 #: name -> RunConfig overrides (besides world, seed, vlm="sim-http", transport="inproc")
@@ -169,16 +171,17 @@ def figures(rep: dict) -> dict:
     decided = [v for v in uncertain if v["outcome"] in ("confirmed", "contradicted")]
     resolved = [v for v in decided if v["rounds"][-1]["consistent"] and v["rounds"][-1]["sufficient"]]
     pv = rep["perception"]["verifications"]
-    first, settled = defaultdict(lambda: [0, 0]), defaultdict(lambda: [0, 0])
+    first, by_relation = defaultdict(lambda: [0, 0]), defaultdict(list)
     for v in rep["verifications"]:
         relation = RELATION_CLASS.get(v["predicate"].split("(")[0], "other")
+        by_relation[relation].append(v)
         vote = v["rounds"][0]["vote"] if v["rounds"] else None
         if vote is not None and "first_truth" in v:  # the first view's majority vote, against its capture
             first[relation][0] += vote == v["first_truth"]
             first[relation][1] += 1
-        if v["outcome"] in SETTLED and "truth" in v:  # the value the check settled on, when it settled
-            settled[relation][0] += v["value"] == v["truth"]
-            settled[relation][1] += 1
+    # the value a check settled on by looking (not felt, not reused), against the world when it settled
+    counts = {rel: verification_counts(vs) for rel, vs in by_relation.items()}
+    settled = {rel: [c["looked_correct"], c["looked"]] for rel, c in counts.items() if c["looked"]}
     return {
         "first_view": dict(first), "settled": dict(settled),
         "success": bool(rep["success"] and rep["goal_satisfied"]), "claimed": bool(rep["success"]),
@@ -194,10 +197,6 @@ def figures(rep: dict) -> dict:
         "fingerprint": json.dumps([rep["verifications"], [p["actions"] for p in rep["plans"]]], sort_keys=True),
         "wall_s": rep["wall_s"],
     }
-
-
-#: outcomes of a check that settled a value by looking (not reused from earlier, not felt)
-SETTLED = ("confirmed", "contradicted")
 
 
 #: resamples for the bootstrap intervals of the viewpoint figures (seeded: the bench is reproducible)

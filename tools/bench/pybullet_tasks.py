@@ -38,6 +38,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from tools.bench.intervals import wilson  # noqa: E402
+from vap_bt.report import verification_counts  # noqa: E402
 
 
 def episode(job: tuple[str, bool, int, str, str]) -> dict:
@@ -61,14 +62,13 @@ def episode(job: tuple[str, bool, int, str, str]) -> dict:
                 "world_success": False, "claimed": False,
                 "wall_s": time.perf_counter() - t0, "reason": f"crashed: {type(exc).__name__}: {exc}",
                 "actions": 0, "replans": 0, "injected": 0, "looked": 0, "looked_right": 0, "graph": None}
+    looked = verification_counts(rep["verifications"])
     return {"task": task.name, "seed": seed, "injection": injection, "protocol": protocol, "sensors": sensors,
             "world_success": bool(rep["goal_satisfied"]),
             "claimed": bool(rep["success"]), "wall_s": rep["wall_s"], "reason": rep["reason"],
             "actions": len(rep["actions_executed"]), "replans": rep["replans"], "injected": len(rep["injected"]),
             # how well the robot perceived, against the oracle: checks settled by looking that matched
-            "looked": sum(v["outcome"] in ("confirmed", "contradicted") for v in rep["verifications"]),
-            "looked_right": sum(v["outcome"] in ("confirmed", "contradicted") and v["value"] == v.get("truth")
-                                for v in rep["verifications"]),
+            "looked": looked["looked"], "looked_right": looked["looked_correct"],
             "graph": (rep["perception"]["graph"]["initial"] or {}).get("relations_perceived")}
 
 

@@ -35,7 +35,11 @@ something; where it is sure — the hand empty or not, an empty hand holding not
 overrules a camera that settled otherwise), then follows the context's ``unseen`` policy — by default it is a situation of kind
 ``unseen``: the action does not run, the executive looks for what the check was about and
 replans. Under the lean protocol an atom verified earlier, that no action since could have
-changed, is not asked again (``ctx.verified``).
+changed, is not asked again (``ctx.verified``) — mid-plan only: the goal's check, on which
+success is claimed, looks under every protocol (an earlier check's views of the atom count
+beside its own, never instead of them). A reused value is recorded as ``reused``, apart from
+what was looked at or felt, and is never scored as verified
+(:func:`vap_bt.report.verification_counts`).
 """
 
 from __future__ import annotations
@@ -45,7 +49,7 @@ from concurrent.futures import Future
 import py_trees
 from py_trees.common import Status
 
-from vap_bt.bt.context import ExecutionContext, Phase, Situation, Verification
+from vap_bt.bt.context import BASIS, Basis, ExecutionContext, Outcome, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
@@ -87,8 +91,10 @@ class ActivePerception(py_trees.decorators.Decorator):
     def tick(self):
         if self.status != Status.RUNNING:
             self.initialise()
-            reused = self.ctx.verified.get(self.atom)
-            if reused is not None:  # lean: verified before, and nothing since could have changed it
+            # lean: verified before, and nothing since could have changed it. Never the goal's check:
+            # success is claimed on it, so it looks (an earlier value is evidence only beside its own views)
+            reused = None if self.phase == "goal" else self.ctx.verified.get(self.atom)
+            if reused is not None:
                 self._end_tick(self._settle(reused, "reused"))
                 yield self
                 return
@@ -142,12 +148,12 @@ class ActivePerception(py_trees.decorators.Decorator):
         felt = self.ctx.felt(self.ctx.graph, self.atom)
         if v.outcome == "unsettled":
             if felt is not None:  # the camera could not tell; the gripper can
-                return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted")
+                return self._feel(felt)
             return self._settle(self.verify.expected, "unsettled")
         if felt is not None and felt != v.value and (felt is False or not self.atom.args):
             # the gripper is surer than a camera where it can be: fingers that closed on nothing
             # hold nothing, and whether the hand is empty at all is theirs to say
-            return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted")
+            return self._feel(felt)
         return self._settle(v.value, "confirmed" if v.value == self.verify.expected else "contradicted")
 
     def _look_twice(self, value: bool) -> bool:
@@ -228,11 +234,16 @@ class ActivePerception(py_trees.decorators.Decorator):
             cancel_all([self._job])
             self._job, self._stage = None, "look"
 
-    def _settle(self, value: bool, outcome: str) -> Status:
+    def _feel(self, felt: bool) -> Status:
+        """Settle on the gripper's word (it can contradict the plan as well as confirm it)."""
+        return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted", "proprioception")
+
+    def _settle(self, value: bool, outcome: Outcome, basis: Basis | None = None) -> Status:
         v = self.verify
         self.ctx.verified.saw(v.atom, self.rounds)
         self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
-                                                   v.atom, v.expected, value, outcome, list(self.rounds)))
+                                                   v.atom, v.expected, value, outcome, list(self.rounds),
+                                                   basis or BASIS[outcome]))
         self.ctx.record(self.ctx.verifications[-1])
         if outcome != "unsettled":
             self.ctx.doubted.discard(v.atom)

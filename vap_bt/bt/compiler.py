@@ -25,12 +25,14 @@ the map's (rigid facts, by default), or never checked — is recorded on the con
 with the profile's reason, for the report. After an action that leaves belief holding something,
 the gripper is asked whether it still does (:class:`~vap_bt.bt.feel_hand.FeelHand`, the effect
 phase's last node: proprioception, no question to the camera). Before claiming success, the goal's
-atoms are looked at once more (``goal``, with the effect checks): an effect confirmed minutes ago
-may have been undone since (a bottle rolled off the counter). The verification mode removes whole
-phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase with nothing to
-check (``find`` has no precondition the camera judges) is left out rather than compiled to an
-empty sequence: an empty sequence does nothing in py_trees, clutters every view of the tree, and
-is a load error in BehaviorTree.CPP ("must have 1 or more children").
+atoms are looked at once more (``goal``, with the effect checks) under every protocol — the lean
+protocol's reuse of an unchanged value never settles a goal check: an effect confirmed minutes
+ago may have been undone since (a bottle rolled off the counter), and success is claimed on what
+the goal check saw (``GoalCheck`` records what each goal atom rests on). The verification mode
+removes whole phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase
+with nothing to check (``find`` has no precondition the camera judges) is left out rather than
+compiled to an empty sequence: an empty sequence does nothing in py_trees, clutters every view of
+the tree, and is a load error in BehaviorTree.CPP ("must have 1 or more children").
 """
 
 from __future__ import annotations
@@ -101,5 +103,5 @@ def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Li
     nodes = [compile_action(ctx, a, i, knowledge, e) for i, (a, e) in enumerate(zip(plan, steps))]
     if ctx.mode.eff:
         nodes += _checks(ctx, "goal", goal, None, len(plan), knowledge)
-    nodes.append(GoalCheck(ctx, goal, len(plan)))
+    nodes.append(GoalCheck(ctx, goal, len(plan), profile_of(ctx, knowledge)))
     return py_trees.composites.Sequence("plan", memory=True, children=nodes)

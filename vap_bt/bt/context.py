@@ -26,6 +26,16 @@ from vap_bt.robot.camera import Aim, Camera
 from vap_bt.skill import SkillClient
 
 Phase = Literal["pre", "eff", "goal"]
+Outcome = Literal["confirmed", "contradicted", "unsettled", "felt", "reused"]
+#: what a check's value rests on: the VLM's verdict on views this check took ("vlm"), the
+#: gripper's feel ("proprioception"), an earlier check's value that no action since could have
+#: changed ("reused": the lean protocol's, nothing was looked at), or nothing — belief stands
+#: ("belief": unsettled). Only a value a sense gave at the time is scored as verified
+#: (:func:`vap_bt.report.verification_counts`)
+Basis = Literal["vlm", "proprioception", "reused", "belief"]
+#: the basis of each outcome where the outcome alone says it (the gripper can contradict too)
+BASIS: dict[Outcome, Basis] = {"confirmed": "vlm", "contradicted": "vlm", "felt": "proprioception",
+                               "reused": "reused", "unsettled": "belief"}
 SituationKind = Literal["precondition", "effect", "execution", "goal", "unseen"]
 #: what a precondition check that could not settle does (:class:`ExecutionContext.unseen`):
 #: "look" — stop before the action and look for what it is about, then replan (the default: a plan
@@ -75,12 +85,13 @@ class Verification:
     atom: Atom
     expected: bool
     value: bool
-    outcome: Literal["confirmed", "contradicted", "unsettled", "felt", "reused"]
+    outcome: Outcome
     rounds: list[Round]
+    basis: Basis
 
     def to_json(self) -> dict:
         return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
-                "expected": self.expected, "value": self.value, "outcome": self.outcome,
+                "expected": self.expected, "value": self.value, "outcome": self.outcome, "basis": self.basis,
                 "views": len(self.rounds), "queries": sum(len(r.answers) + (r.sufficient_by == "model")
                                                           + (r.direction is not None) for r in self.rounds),
                 "rounds": [r.to_json() for r in self.rounds]}
@@ -101,8 +112,47 @@ class Unchecked:
                 "name": self.atom.predicate, "expected": self.expected, "reason": self.reason}
 
 
+@dataclass(frozen=True)
+class GoalAtomEvidence:
+    """What one goal atom rests on when the goal is checked: the last goal check of it
+    (``verification``: its index in the context's, and the report's, verifications), or, where
+    none looked, why not."""
+
+    atom: Atom
+    expected: bool
+    rests_on: Literal["looked", "felt", "unchecked"]
+    verification: int | None = None
+    check: Verification | None = None
+    reason: str = ""
+
+    def to_json(self) -> dict:
+        out = {"predicate": str(self.atom), "expected": self.expected}
+        if self.check is not None:
+            out.update(verification=self.verification, value=self.check.value, outcome=self.check.outcome,
+                       views=len(self.check.rounds))
+        if self.reason:
+            out["reason"] = self.reason
+        return out
+
+
+@dataclass(frozen=True)
+class GoalEvidence:
+    """What the goal check of a tree rested on, per goal literal (the report's ``goal_evidence``):
+    ``looked`` — a VLM verdict on views its goal check took; ``felt`` — the body's word (the
+    gripper settled the check, or the domain leaves the predicate to proprioception);
+    ``unchecked`` — belief alone (map knowledge, a predicate never checked, goal checks off, or a
+    look that could not settle it)."""
+
+    atoms: tuple[GoalAtomEvidence, ...]
+
+    def to_json(self) -> dict:
+        return {kind: [a.to_json() for a in self.atoms if a.rests_on == kind]
+                for kind in ("looked", "felt", "unchecked")}
+
+
 class Verified:
-    """Atoms verified earlier and not changeable since (the lean protocol's reuse).
+    """Atoms verified earlier and not changeable since (the lean protocol's reuse, mid-plan only:
+    the goal's check before success is claimed always looks).
 
     An entry lives until an executed action could have changed its atom: one whose arguments
     include one of the atom's objects, or one of whose effects (conditional ones included) could
@@ -171,6 +221,9 @@ class ExecutionContext:
     #: goal atoms the final look could not settle: success is not claimed over them (the
     #: executive looks again, and clears this for the next tree)
     unconfirmed_goal: list[Atom] = field(default_factory=list)
+    #: what the goal check of the tree last ticked through to it rested on (None: no tree since
+    #: the last plan got there); recorded by :class:`~vap_bt.bt.goal_check.GoalCheck`
+    goal_evidence: GoalEvidence | None = None
     actions: list[dict] = field(default_factory=list)
     unseen: UnseenPolicy = "look"
     #: what the body itself says of an atom the camera could not settle (the gripper of

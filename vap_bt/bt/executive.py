@@ -335,6 +335,7 @@ class Executive:
             tree.root.stop(Status.INVALID)
 
     def _tree(self, ctx: ExecutionContext, plan: Plan) -> py_trees.trees.BehaviourTree:
+        ctx.goal_evidence = None  # a claim rests on the new tree's own goal checks
         return py_trees.trees.BehaviourTree(compile_plan(ctx, plan.actions, self.task.goal, self.task.knowledge))
 
     # -- perception ----------------------------------------------------------------------------

@@ -8,7 +8,9 @@ then the view-sufficiency question, for every check. ``lean`` changes only how m
 * **concurrent** — a round's questions are in flight at once (they are about one frame);
 * **reuse** — an atom verified earlier is not asked again while no executed action could have
   changed it (none named one of its objects or could add or delete its predicate; the hand's
-  atoms are re-asked after every action, as the hand can lose things on any move);
+  atoms are re-asked after every action, as the hand can lose things on any move) — before an
+  action only: the goal's check, on which success is claimed, always looks. A reused value is
+  reported as such (outcome and basis ``reused``) and never counted as verified;
 * **logprobs** — where the backend reports token probabilities, one question stands for the N
   votes when its answer is confident (the probability it states for its answer at least
   ``confident``: 0.95, as strong a statement as a unanimous vote and above what the simulated model
