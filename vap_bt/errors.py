@@ -11,6 +11,7 @@ code  meaning
 2     bad input: a file, field or argument is wrong (:class:`InputError`)
 3     no plan exists for the problem as given (:class:`UnsolvableError`)
 4     the transport could not be brought up (:class:`TransportError`)
+130   interrupted (Ctrl-C, SIGINT): a run still writes its report so far
 ====  =====================================================================
 """
 
@@ -21,6 +22,7 @@ EXIT_GOAL_NOT_REACHED = 1
 EXIT_BAD_INPUT = 2
 EXIT_UNSOLVABLE = 3
 EXIT_TRANSPORT = 4
+EXIT_INTERRUPTED = 130  # the shell's 128 + SIGINT
 
 
 class VapBtError(Exception):

@@ -4,6 +4,10 @@
 read after the episode. They are reported side by side so that a claim the world denies shows.
 The report also records the seed, versions, world and VLM parameters, every plan, action,
 verification, situation (detected, and injected by the world) and replan.
+
+A run stopped by Ctrl-C, at whatever moment, writes the same report with what was known by then
+(:class:`vap_bt.runner.EpisodeInterrupted`): the same keys, so that a reader needs no second
+schema; ``interrupted`` says it was stopped and ``phase`` what the episode was doing.
 """
 
 from __future__ import annotations
