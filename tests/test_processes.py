@@ -100,10 +100,10 @@ def parts(tmp: Path) -> Iterator[tuple[str, dict[str, Part]]]:
 
 
 def _stop_all(running: dict[str, Part]) -> None:
-    for part in running.values():
+    # the parts that need the sim first: a skill server whose sim goes away first exits 4, not 0
+    for part in reversed(running.values()):
         if part.proc.poll() is None:
             os.killpg(part.proc.pid, signal.SIGTERM)
-    for part in running.values():
         try:
             part.proc.wait(30)
         except subprocess.TimeoutExpired:
@@ -179,6 +179,34 @@ def test_killing_the_arm_server_mid_takeout_fails_that_goal_within_half_a_second
         assert sim.stderr().split("begin takeout(", 1)[1].count("] begin ") == 0
         assert "Traceback" not in run.stderr() + running["sim"].stderr()
     assert running["sim"].proc.returncode == 0 and running["base"].proc.returncode == 0
+
+
+@pytest.mark.slow
+def test_a_skill_server_whose_sim_vanishes_says_so_and_exits_4(tmp_path):
+    """The sim is killed under a ready skill server: the server does not go on silently serving
+    nothing — it says in one line that the sim is gone, and exits 4, within a few seconds."""
+    ep = endpoint(free_port())
+    running: dict[str, Part] = {}
+    try:
+        sim = running["sim"] = _start(tmp_path, "sim", _vap_bt("sim", TASK, "--no-injection", "--listen", ep))
+        sim.wait_for(r"vap-bt sim: ready", 120)
+        arm = running["arm"] = _start(tmp_path, "arm", _vap_bt("serve", "--robot", "ur5e", "--world", "remote",
+                                                              "--connect", ep))
+        arm.wait_for(r"vap-bt serve: ready", 60)
+        os.killpg(sim.proc.pid, signal.SIGKILL)
+        killed_at = time.monotonic()
+        try:
+            code = arm.proc.wait(10)
+        except subprocess.TimeoutExpired:
+            raise AssertionError(f"the skill server still runs 10 s after its sim was killed:\n{arm.stderr()}")
+        print(f"the server exited {time.monotonic() - killed_at:.2f} s after the kill")  # shown with -s
+        assert code == 4, arm.stderr()
+        assert arm.stderr().strip().splitlines()[-1] == (
+            f"vap-bt serve: the sim at {ep} is gone (robot ur5e's drivers withdrew their liveliness token): "
+            "stopping, exit 4 — start `vap-bt sim` again, then this server")
+        assert "Traceback" not in arm.stderr()
+    finally:
+        _stop_all(running)
 
 
 #: what a part that finds no sim at --connect is told to do
