@@ -14,6 +14,7 @@ import json
 import os
 import re
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -99,10 +100,10 @@ def parts(tmp: Path) -> Iterator[tuple[str, dict[str, Part]]]:
 
 
 def _stop_all(running: dict[str, Part]) -> None:
-    for part in running.values():
+    # the parts that need the sim first: a skill server whose sim goes away first exits 4, not 0
+    for part in reversed(running.values()):
         if part.proc.poll() is None:
             os.killpg(part.proc.pid, signal.SIGTERM)
-    for part in running.values():
         try:
             part.proc.wait(30)
         except subprocess.TimeoutExpired:
@@ -180,23 +181,69 @@ def test_killing_the_arm_server_mid_takeout_fails_that_goal_within_half_a_second
     assert running["sim"].proc.returncode == 0 and running["base"].proc.returncode == 0
 
 
+@pytest.mark.slow
+def test_a_skill_server_whose_sim_vanishes_says_so_and_exits_4(tmp_path):
+    """The sim is killed under a ready skill server: the server does not go on silently serving
+    nothing — it says in one line that the sim is gone, and exits 4, within a few seconds."""
+    ep = endpoint(free_port())
+    running: dict[str, Part] = {}
+    try:
+        sim = running["sim"] = _start(tmp_path, "sim", _vap_bt("sim", TASK, "--no-injection", "--listen", ep))
+        sim.wait_for(r"vap-bt sim: ready", 120)
+        arm = running["arm"] = _start(tmp_path, "arm", _vap_bt("serve", "--robot", "ur5e", "--world", "remote",
+                                                              "--connect", ep))
+        arm.wait_for(r"vap-bt serve: ready", 60)
+        os.killpg(sim.proc.pid, signal.SIGKILL)
+        killed_at = time.monotonic()
+        try:
+            code = arm.proc.wait(10)
+        except subprocess.TimeoutExpired:
+            raise AssertionError(f"the skill server still runs 10 s after its sim was killed:\n{arm.stderr()}")
+        print(f"the server exited {time.monotonic() - killed_at:.2f} s after the kill")  # shown with -s
+        assert code == 4, arm.stderr()
+        assert arm.stderr().strip().splitlines()[-1] == (
+            f"vap-bt serve: the sim at {ep} is gone (robot ur5e's drivers withdrew their liveliness token): "
+            "stopping, exit 4 — start `vap-bt sim` again, then this server")
+        assert "Traceback" not in arm.stderr()
+    finally:
+        _stop_all(running)
+
+
+#: what a part that finds no sim at --connect is told to do
+START_THE_SIM = ("start `vap-bt sim TASK` first (it listens on tcp/127.0.0.1:7447 unless given --listen), "
+                 "or pass --connect where it listens")
+#: what a part that cannot listen where it is told is told
+PORT_TAKEN = ("another process listens there already (a `vap-bt sim` or `vap-bt serve` still running?) — "
+              "stop it, or pass --listen with another port")
+
+
 @pytest.mark.parametrize("argv, code, message", [
     (("run", TASK, "--connect", "tcp/127.0.0.1:{port}"), 4,
-     "vap-bt: zenoh could not start: Unable to connect to any of [Single(tcp/127.0.0.1:{port})]!"),
+     "vap-bt: cannot reach the sim at tcp/127.0.0.1:{port}: nothing listens there — " + START_THE_SIM),
     (("run", TASK, "--listen", "tcp/127.0.0.1:{port}"), 2,
      "vap-bt: --listen: only with --connect (the executive then listens there as a Zenoh peer); "
      "the embedded run picks a free loopback port itself"),
+    (("run", TASK, "--connect", "tcp/127.0.0.1:{port}", "--listen", "tcp/127.0.0.1:{busy}"), 4,
+     "vap-bt: cannot listen at tcp/127.0.0.1:{busy}: " + PORT_TAKEN),
     (("serve", "--robot", "ur5e", "--world", "remote", "--connect", "tcp/127.0.0.1:{port}"), 4,
-     "vap-bt: zenoh could not start: Unable to connect to any of [Single(tcp/127.0.0.1:{port})]!"),
+     "vap-bt: cannot reach the sim at tcp/127.0.0.1:{port}: nothing listens there — " + START_THE_SIM),
+    (("serve", "--robot", "ur5e", "--world", "symbolic", "--task", str(ROOT / "trees" / "collect_cup.yaml"),
+      "--listen", "tcp/127.0.0.1:{busy}"), 4,
+     "vap-bt: cannot listen at tcp/127.0.0.1:{busy}: " + PORT_TAKEN),
     (("serve", "--world", "remote", "--task", TASK), 2,
      "vap-bt: --task: a remote world is vap-bt sim's: give the task to vap-bt sim"),
+    (("sim", TASK, "--listen", "tcp/127.0.0.1:{busy}"), 4,
+     "vap-bt: cannot listen at tcp/127.0.0.1:{busy}: " + PORT_TAKEN),
     (("sim", str(ROOT / "tests" / "domains" / "nope.yaml")), 2, None),
-], ids=["run-nobody-there", "run-listen-alone", "serve-nobody-there", "serve-remote-task", "sim-no-task"])
+], ids=["run-nobody-there", "run-listen-alone", "run-port-taken", "serve-nobody-there", "serve-port-taken",
+        "serve-remote-task", "sim-port-taken", "sim-no-task"])
 def test_a_part_that_cannot_start_says_why_in_one_line(argv, code, message):
     port = free_port()
-    argv = [a.format(port=port) for a in argv]
-    done = subprocess.run(_vap_bt(*argv), capture_output=True, text=True, timeout=120, cwd=ROOT)
+    with socket.create_server(("127.0.0.1", 0)) as taken:  # a port something else listens on
+        busy = taken.getsockname()[1]
+        argv = [a.format(port=port, busy=busy) for a in argv]
+        done = subprocess.run(_vap_bt(*argv), capture_output=True, text=True, timeout=120, cwd=ROOT)
     assert done.returncode == code, done.stderr
     assert "Traceback" not in done.stderr
     last = done.stderr.strip().splitlines()[-1]
-    assert last == message.format(port=port) if message else last.startswith("vap-bt: ") and "nope.yaml" in last
+    assert last == message.format(port=port, busy=busy) if message else last.startswith("vap-bt: ") and "nope.yaml" in last

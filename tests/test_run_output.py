@@ -8,12 +8,14 @@ off the report, so it agrees with the report file), or with ``--json`` the JSON 
 from __future__ import annotations
 
 import json
+import signal
 import subprocess
 import sys
+import time
 
 import pytest
 
-from vap_bt.errors import EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_INTERRUPTED
 
 from conftest import DOMAINS, HOUSEHOLD_TASKS, ROOT, TREES
 
@@ -93,6 +95,71 @@ def test_json_prints_only_the_summary_on_stdout_and_the_table_on_stderr(cli, tmp
     code, out, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "8",
                          "--transport", "inproc", "--json", "--full", "-q")
     assert code == 0 and err == "" and json.loads(out)["versions"] == rep["versions"]
+
+
+def _interrupted_when(progress: str, tmp_path) -> tuple[subprocess.Popen, str, str]:
+    """``vap-bt run`` in the symbolic world, Ctrl-C (SIGINT) once stderr shows ``progress``; returns the
+    process, its stdout and its stderr. The simulated VLM answers over HTTP a little slowly (the
+    sim-http endpoint, 0.3 s an answer), so that the survey's questions and an action's checks last
+    long enough for a signal to land in them."""
+    argv = [sys.executable, "-m", "vap_bt.cli", "run", str(TREES / "collect_cup.yaml"), "--world", "symbolic",
+            "--vlm", "sim-http", "--vlm-latency", "0.3", "--report", str(tmp_path / "r.json")]
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    try:
+        seen = []
+        for line in p.stderr:
+            seen.append(line)
+            if line.startswith(progress):
+                time.sleep(0.3)  # into the questions that follow the line
+                p.send_signal(signal.SIGINT)
+                break
+        out, rest = p.communicate(timeout=60)
+        return p, out, "".join(seen) + rest
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait(10)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("progress, phase", [("survey: ", "survey"), ("  a0: ", "acting")], ids=["survey", "mid-plan"])
+def test_ctrl_c_at_any_moment_writes_the_whole_report_and_the_table(progress, phase, cli, tmp_path):
+    """Ctrl-C during the survey (before any plan) or while the first action's checks run: exit 130,
+    the report so far with every key a finished run's report has, and the summary table."""
+    code, _, _ = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--seed", "8", "--transport", "inproc",
+                     "--report", tmp_path / "done.json", "-q")
+    finished = json.loads((tmp_path / "done.json").read_text())
+    assert code == 0
+    p, out, err = _interrupted_when(progress, tmp_path)
+    assert p.returncode == EXIT_INTERRUPTED, err
+    rep = json.loads((tmp_path / "r.json").read_text())
+    assert list(rep) == list(finished)
+    assert rep["interrupted"] and rep["phase"] == phase and rep["reason"] == "interrupted" and not rep["success"]
+    rows = table(out)
+    assert list(rows) == LABELS and rows["success"] == f"no: interrupted (phase: {phase})"
+    assert rows["report"] == str(tmp_path / "r.json")
+    assert f"vap-bt: interrupted (phase: {phase})" in err
+    if phase == "acting":  # what ran before the signal is kept
+        assert rep["plans"] and rep["actions_executed"] and rep["perception"]["graph"]["initial"]
+    else:
+        assert not rep["plans"] and not rep["actions_executed"]
+
+
+def test_ctrl_c_while_the_world_starts_still_writes_the_whole_report(cli, tmp_path, monkeypatch):
+    """Before any episode: the world, skills and transport coming up (phase ``starting``)."""
+    from vap_bt import runner
+
+    def interrupted(task, cfg):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(runner, "make_world", interrupted)
+    code, out, err = cli("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--transport", "inproc",
+                         "--report", tmp_path / "r.json")
+    rep = json.loads((tmp_path / "r.json").read_text())
+    assert code == EXIT_INTERRUPTED and "vap-bt: interrupted (phase: starting)" in err
+    assert rep["interrupted"] and rep["phase"] == "starting" and rep["goal_satisfied"] is None
+    assert {"plans", "actions_executed", "perception", "vlm", "world", "versions"} <= set(rep)
+    assert table(out)["success"] == "no: interrupted (phase: starting)"
 
 
 def test_pybullet_for_a_pddl_problem_is_one_line_and_exit_2(cli):

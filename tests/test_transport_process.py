@@ -66,9 +66,10 @@ def test_serve_stops_cleanly_on_sigterm_and_refuses_bad_input():
     assert bad.stderr.strip().splitlines() == [
         "vap-bt serve: --robot: no skill plugin is bound to robot 'r2d2' (robots with skills: base, ur5e)"
     ]
-    cmd, env = serve_command("--world", "fact_world:FactWorld", "--connect", endpoint(free_port()),
+    port = free_port()
+    cmd, env = serve_command("--world", "fact_world:FactWorld", "--connect", endpoint(port),
                              "--peer-timeout", "0.5")
     unreachable = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=60)
     assert unreachable.returncode == 4, unreachable.stderr
-    assert "no Zenoh peer or router answered" in unreachable.stderr
+    assert f"cannot reach a Zenoh peer or router at {endpoint(port)}: nothing listens there" in unreachable.stderr
     assert "Traceback" not in unreachable.stderr

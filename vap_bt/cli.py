@@ -11,8 +11,9 @@
 ``vap-bt run TASK.yaml --connect EP`` run the executive against a sim and skill servers already running
 
 Exit codes are documented in :mod:`vap_bt.errors`: 0 success, 1 goal not reached, 2 bad input,
-3 no plan, 4 transport down, 5 the planner ran out of time. Errors print one line on stderr, never a traceback. Progress goes to
-stderr; stdout carries only a command's result (a run's summary table, or with ``--json`` its JSON).
+3 no plan, 4 transport down, 5 the planner ran out of time, 130 interrupted (Ctrl-C; a run still
+writes its report so far and prints its summary). Errors print one line on stderr, never a
+traceback. Progress goes to stderr; stdout carries only a command's result (a run's summary table, or with ``--json`` its JSON).
 """
 
 from __future__ import annotations
@@ -25,8 +26,8 @@ import sys
 from pathlib import Path
 
 from vap_bt import report as report_mod
-from vap_bt.errors import (EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_OK, EXIT_PLANNING_TIMEOUT, EXIT_UNSOLVABLE,
-                            InputError, VapBtError)
+from vap_bt.errors import (EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_INTERRUPTED, EXIT_OK, EXIT_PLANNING_TIMEOUT,
+                            EXIT_UNSOLVABLE, InputError, VapBtError)
 
 
 def _progress(quiet: bool):
@@ -131,28 +132,32 @@ def _run(args, stdout) -> int:
 
         recorder = TreeRecorder.open(args.rerun, name=f"{task.name} seed {cfg.seed}")
         progress(recorder.hint)
-    session = Session(task, cfg, progress, recorder=recorder, remote=remote)
-    rep: dict = {"success": False, "goal_satisfied": None, "reason": "interrupted", "seed": cfg.seed,
-                 "command": report_mod.command_line()}
-    finished = False
+    session = None
+    rep: dict | None = None  # the episode's report: finished, or as far as a Ctrl-C let it get
     try:
+        session = Session(task, cfg, progress, recorder=recorder, remote=remote)
         rep = {**session.episode(), "command": report_mod.command_line()}
-        finished = True
-    except EpisodeInterrupted as stop:
-        rep = {**stop.report, "command": report_mod.command_line(), "interrupted": True}
-        raise
-    except GoalParseError as exc:  # the report keeps what the VLM answered
-        rep = {**rep, "reason": "goal not parsed", "goal_parsing": exc.record.to_json()}
+    except EpisodeInterrupted as stop:  # Ctrl-C, at any moment: the report so far ends the run as one would
+        rep = {**stop.report, "command": report_mod.command_line()}
+    except GoalParseError as exc:  # no episode to report, but what the VLM answered is kept
+        if args.report:
+            report_mod.write({"success": False, "goal_satisfied": None, "reason": "goal not parsed",
+                              "seed": cfg.seed, "command": report_mod.command_line(),
+                              "goal_parsing": exc.record.to_json()}, args.report)
         raise
     finally:
-        session.close()
-        if args.report:  # written even when the run stops early, so nothing already known is lost
-            report_mod.write(rep, args.report)
-        if finished:  # said before a served recording keeps the command waiting for Ctrl-C
-            _finish_run(args, rep, stdout, recorder)
+        if session is not None:
+            session.close()
+        if rep is not None:
+            if args.report:  # written even when the run stops early, so nothing already known is lost
+                report_mod.write(rep, args.report)
+            _finish_run(args, rep, stdout, recorder)  # said before a served recording waits for Ctrl-C
         if recorder is not None:
             recorder.serve_until_interrupted(say=lambda m: print(m, file=sys.stderr, flush=True))
             recorder.close()
+    if rep["interrupted"]:
+        print(f"vap-bt: interrupted (phase: {rep['phase']})", file=sys.stderr, flush=True)
+        return EXIT_INTERRUPTED
     ok = rep["success"] and rep["goal_satisfied"]
     no_plan = {"unsolvable": EXIT_UNSOLVABLE, "timeout": EXIT_PLANNING_TIMEOUT}.get(rep.get("no_initial_plan"))
     return EXIT_OK if ok else no_plan or EXIT_GOAL_NOT_REACHED
@@ -278,7 +283,8 @@ def build_parser() -> argparse.ArgumentParser:
                     "stderr; at the end stdout gets a summary table, or with --json only the JSON summary.\n"
                     "Exit codes: 0 success (the world confirms it), 1 goal not reached, 2 bad input,\n"
                     "3 no plan exists from what the robot saw, 4 transport down, 5 the planner ran\n"
-                    "out of time.")
+                    "out of time, 130 interrupted (Ctrl-C: the report so far and the summary are still\n"
+                    "written).")
     sr.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
     sr.add_argument("--domain")
     sr.add_argument("--problem")
@@ -404,6 +410,14 @@ def _add_transport_commands(sub) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    try:
+        return _command(argv)
+    except KeyboardInterrupt:  # before a run has begun (imports, the task file), or a command without a report
+        print("vap-bt: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _command(argv: list[str] | None) -> int:
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
@@ -416,9 +430,6 @@ def main(argv: list[str] | None = None) -> int:
     except VapBtError as exc:
         print(f"vap-bt: {exc}", file=sys.stderr)
         return exc.exit_code
-    except KeyboardInterrupt:
-        print("vap-bt: interrupted", file=sys.stderr)
-        return 130
     except BrokenPipeError:  # output piped into a reader that stopped early (head, less)
         sys.stderr.close()
         return EXIT_OK

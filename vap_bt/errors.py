@@ -12,6 +12,7 @@ code  meaning
 3     no plan exists for the problem as given (:class:`UnsolvableError`)
 4     the transport could not be brought up (:class:`TransportError`)
 5     the planner ran out of time before it found a plan (:class:`PlanningTimeout`)
+130   interrupted (Ctrl-C, SIGINT): a run still writes its report so far
 ====  =====================================================================
 """
 
@@ -23,6 +24,7 @@ EXIT_BAD_INPUT = 2
 EXIT_UNSOLVABLE = 3
 EXIT_TRANSPORT = 4
 EXIT_PLANNING_TIMEOUT = 5
+EXIT_INTERRUPTED = 130  # the shell's 128 + SIGINT
 
 
 class VapBtError(Exception):

@@ -10,6 +10,10 @@ goal's last check looked at it (a VLM verdict), felt it (proprioception) or left
 (the map, never checked), and every verification its ``basis``. Accuracy figures count the values
 a sense gave at the time (:func:`verification_counts`); a value reused from an earlier check is
 counted apart and never as verified.
+
+A run stopped by Ctrl-C, at whatever moment, writes the same report with what was known by then
+(:class:`vap_bt.runner.EpisodeInterrupted`): the same keys, so that a reader needs no second
+schema; ``interrupted`` says it was stopped and ``phase`` what the episode was doing.
 """
 
 from __future__ import annotations

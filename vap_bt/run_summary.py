@@ -29,12 +29,14 @@ def verdict(rep: dict) -> str:
         return "yes (the world confirms the goal)"
     if claimed:
         return "NO: the executive claimed success but the world denies the goal"
-    return f"no: {rep['reason']}" + (" (yet the goal holds in the world)" if holds else "")
+    stopped = f" (phase: {rep['phase']})" if rep.get("interrupted") else ""  # Ctrl-C: in which phase
+    return f"no: {rep['reason']}{stopped}" + (" (yet the goal holds in the world)" if holds else "")
 
 
 def summary(rep: dict, outputs: Outputs = Outputs()) -> dict:
     """The JSON summary ``vap-bt run --json`` prints: the report's headline facts."""
-    out = {k: rep[k] for k in ("success", "goal_satisfied", "reason", "seed", "replans", "vlm_queries", "wall_s")}
+    out = {k: rep[k] for k in ("success", "goal_satisfied", "reason", "interrupted", "phase", "seed", "replans",
+                               "vlm_queries", "wall_s")}
     out["task"] = rep["task"]["name"]
     out["world"] = rep["world"]["name"]
     out["actions_executed"] = len(rep["actions_executed"])

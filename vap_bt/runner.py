@@ -9,6 +9,11 @@ executive is handed robot interfaces, skills and a VLM, never the world.
 
 A :class:`Session` keeps what can be reused between episodes of one task (the world, the grounded
 task and the planner's cache), which is what makes symbolic campaigns fast.
+
+A Ctrl-C may come at any moment — while the world starts, during the survey, mid-plan — and what
+was known by then is still worth a report: :class:`EpisodeInterrupted` carries one with every key
+a finished report has, filled with what happened so far (nothing yet, before the episode began),
+``interrupted`` true and the ``phase`` it stopped in (``starting``, or the executive's phase).
 """
 
 from __future__ import annotations
@@ -41,7 +46,7 @@ from vap_bt.world import World
 
 
 class EpisodeInterrupted(KeyboardInterrupt):
-    """Ctrl-C during an episode; carries the report of the episode up to that moment."""
+    """Ctrl-C at any moment of a session; carries the report of the episode up to that moment."""
 
     def __init__(self, report: dict) -> None:
         super().__init__("interrupted")
@@ -51,6 +56,8 @@ class EpisodeInterrupted(KeyboardInterrupt):
 #: how often the tree is ticked while a goal is in flight on a skill server
 TICK_PERIOD_S = 0.002
 _DETECTOR = DetectorModel()
+#: the phase of an episode before its executive runs: the world, skills and transport coming up
+STARTING = "starting"
 
 
 @dataclass
@@ -286,15 +293,33 @@ class Session:
     #: a TransportSettings: the world, skills and VLM run in other processes (``vap-bt run --connect``)
     remote: Any = None
     planner: Planner = field(init=False)
-    world: World = field(init=False)
+    world: World | None = field(init=False)  # None only until it comes up
     #: the last episode's outcome (belief, context, plans), beside its report
     last_outcome: EpisodeOutcome | None = field(init=False, default=None)
 
     def __post_init__(self) -> None:
         self.words = check_config(self.task, self.cfg)  # bad input is said before a world starts
-        self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
+        t0 = time.perf_counter()
+        self._nothing_started()
+        try:
+            self._start()
+        except KeyboardInterrupt:
+            stop = self._interrupted(self.cfg, None, None, [], t0)
+            self.close()
+            raise stop from None
+
+    def _nothing_started(self) -> None:
+        """What a session holds before anything has come up: what close() and a report read."""
         self._world_side_vlm = self.cfg.vlm == "sim"  # a real backend is the executive's own client
-        self._connected = None
+        self.world, self.skills, self.endpoint, self.vlm = None, {}, None, None
+        self._connected = self._embedded = self._goal_parser = None
+        self._first_request = 0
+        self.profile = self.task.profile
+        self._truths: dict[int, dict] = {}
+
+    def _start(self) -> None:
+        """The planner, the VLM, the world and the transport, in that order."""
+        self.planner = Planner(self.task.planning, first_engine=self.cfg.planner, ground_eagerly=True)
         # a real backend is the executive's own client, built and reached before any world starts
         self.vlm = reached(make_vlm(self.task, None, self.cfg), self.cfg) if self.cfg.vlm in HTTP_BACKENDS else None
         if self.remote is not None:
@@ -305,12 +330,9 @@ class Session:
             self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
             if self.vlm is None:  # the simulated VLM, in process or behind its endpoint
                 self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
-        self._goal_parser: GoalParser | None = None
-        self._first_request = 0
         self.profile = make_profile(self.task, self.vlm)
         if self.endpoint is not None:  # the served model reads questions in the words the executive asks
             self.endpoint.read_questions(self.profile, self.task.planning)
-        self._embedded = None
         if self.cfg.transport == "zenoh" and self._connected is None:
             from vap_bt.transport.embedded import EmbeddedTransport
 
@@ -377,35 +399,46 @@ class Session:
         cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
         t0 = time.perf_counter()
         scores: list[dict] = []
-        executive, metered = self._executive(cfg, scores)
+        executive = metered = None
         try:
+            executive, metered = self._executive(cfg, scores)
             outcome = self.last_outcome = executive.run()
         except KeyboardInterrupt:
-            if executive.outcome is None:
-                raise
-            outcome = executive.outcome  # what happened until the interruption is still worth keeping
-            outcome.reason = "interrupted"
-            rep = self._report(cfg, outcome, metered, scores, time.perf_counter() - t0)
-            raise EpisodeInterrupted(rep) from None
+            raise self._interrupted(cfg, executive, metered, scores, t0) from None
         except TransportError as exc:  # a part went away mid-episode: the tree is halted, the episode ends
-            if executive.outcome is None:
+            if executive is None or executive.outcome is None:
                 raise  # it never came up: nothing ran
             outcome = self.last_outcome = executive.outcome
             outcome.reason = f"transport down: {exc}"
             self.progress(f"stopped: transport down ({exc})")
         wall = time.perf_counter() - t0
-        return self._report(cfg, outcome, metered, scores, wall)
+        return self._report(cfg, outcome, metered, scores, wall, executive.phase)
+
+    def _interrupted(self, cfg: RunConfig, executive: Executive | None, metered: MeteredVLM | None,
+                     scores: list[dict], t0: float) -> EpisodeInterrupted:
+        """Ctrl-C: the report of the episode as far as it got, whatever it was doing (the executive,
+        if it was running, has halted its tree on the way out)."""
+        outcome = executive.so_far() if executive is not None else EpisodeOutcome.nothing_yet(
+            SceneGraph.of_facts(self.task.prior))
+        outcome.reason = "interrupted"
+        if metered is None and self.vlm is not None:  # stopped before the episode asked anything
+            metered = MeteredVLM(self.vlm)
+        phase = executive.phase if executive is not None else STARTING
+        rep = self._report(cfg, outcome, metered, scores, time.perf_counter() - t0, phase, interrupted=True)
+        return EpisodeInterrupted(rep)
 
     def close(self) -> None:
+        """Close whatever came up (all of it, or what had when a Ctrl-C stopped the start)."""
         if self._embedded is not None:
             self._embedded.close()
         if self._connected is not None:
             self._connected.close()
-        if not self._world_side_vlm:
+        if not self._world_side_vlm and self.vlm is not None:
             self.vlm.close()
         if self.endpoint is not None:
             self.endpoint.close()
-        self.world.close()
+        if self.world is not None:
+            self.world.close()
 
     def _transport(self):
         if self._connected is not None:
@@ -467,35 +500,36 @@ class Session:
             out["physics"] = physics
         return out
 
-    def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM, scores: list[dict],
-                wall: float) -> dict:
+    def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM | None, scores: list[dict],
+                wall: float, phase: str, interrupted: bool = False) -> dict:
+        """The episode's report (:mod:`vap_bt.report`); ``phase`` is the one it ended in. Only an
+        episode interrupted while its world started may lack the world (and the VLM): what the
+        world would say is then None or empty."""
         parse = self.goal_parse
         goal = self.task.planning.goal if parse is None or parse.goal is None else parse.goal  # the goal pursued
-        oracle = self.world.oracle
-        satisfied = self._holds(goal)
         ctx = out.context
-        detector = cfg.detector() if self.world.name == "symbolic" else getattr(self.world, "detector", None)
+        world_name = self.world.name if self.world is not None else cfg.world
+        detector = cfg.detector() if world_name == "symbolic" else getattr(self.world, "detector", None)
         verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications]
         return {
             "success": out.success,
-            "goal_satisfied": satisfied,
+            "goal_satisfied": self._holds(goal),
             "reason": out.reason,
             "no_initial_plan": out.no_initial_plan or None,
             # what the goal's last check rested on: looked at, felt, or belief alone
             "goal_evidence": ctx.goal_evidence.to_json() if ctx.goal_evidence is not None else None,
+            "interrupted": interrupted,
+            "phase": phase,
             "seed": cfg.seed,
             "task": {"name": self.task.name, "file": str(self.task.path) if self.task.path else None,
                      "instruction": self.task.spec.instruction, "goal": [str(l) for l in goal],
                      "belief": sorted(map(str, self.task.prior)) if self.task.spec.scene is not None else "problem init"},
             "config": asdict(cfg),
-            "world": {"name": self.world.name, "injection": self.world_situations(),
+            "world": {"name": world_name, "injection": self.world_situations(),
                       "detector": detector.describe() if detector is not None else None,
                       **self._sensors()},
             "goal_parsing": self._goal_parsing_report(),
-            "vlm": {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts),
-                    "wall_s": round(vlm.wall_s, 4), "query_s": round(vlm.seconds, 4),
-                    **({"served": self.endpoint.describe()} if self.endpoint is not None else {}),
-                    **self._requests()},
+            "vlm": self._vlm_report(cfg, vlm),
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
                            "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
                            "verifications": verification_counts(verifications)},
@@ -503,12 +537,12 @@ class Session:
             "actions_executed": ctx.actions,
             "situations": [s.to_json() for s in out.situations],
             "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step}
-                         for i in oracle.injected()],
+                         for i in (self.world.oracle.injected() if self.world is not None else [])],
             "replans": out.replans,
             "replan_ms": [round(s * 1000, 3) for s in out.replan_seconds],
             "surveys": len(out.surveys),
             "ticks": out.ticks,
-            "vlm_queries": vlm.total,
+            "vlm_queries": vlm.total if vlm is not None else 0,
             "verifications": verifications,
             "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints},
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
@@ -517,7 +551,9 @@ class Session:
             # actions' sent_s/done_s count from this time.perf_counter() (CLOCK_MONOTONIC on Linux:
             # comparable with the other processes' clocks on this machine)
             "clock_t0": round(ctx.t0, 6),
-            **({"processes": self._connected.describe()} if self._connected is not None else {}),
+            # a run against parts elsewhere: where they were (None: stopped before it reached them)
+            **({"processes": self._connected.describe() if self._connected is not None else None}
+               if self.remote is not None else {}),
             "versions": versions(),
         }
 
@@ -536,14 +572,25 @@ class Session:
         return {**parse.to_json(), "file_goal": [str(l) for l in file_goal] if file_goal else None,
                 "file_goal_satisfied": self._holds(file_goal) if file_goal else None}
 
+    def _vlm_report(self, cfg: RunConfig, vlm: MeteredVLM | None) -> dict:
+        """The report's ``vlm``: the model, and what the episode asked of it (None: it never came up)."""
+        if vlm is None:
+            return {"backend": cfg.vlm, "queries": 0, "by_purpose": {}, "wall_s": 0.0, "query_s": 0.0}
+        return {**vlm.describe(), "queries": vlm.total, "by_purpose": dict(vlm.counts),
+                "wall_s": round(vlm.wall_s, 4), "query_s": round(vlm.seconds, 4),
+                **({"served": self.endpoint.describe()} if self.endpoint is not None else {}),
+                **self._requests()}
+
     def _requests(self) -> dict:
         """A real backend's record of every request this episode made (the sim VLM keeps none)."""
         if self._world_side_vlm:
             return {}
         return {"requests": [r.to_json() for r in self.vlm.requests[self._first_request:]]}
 
-    def _holds(self, goal) -> bool:
-        """The oracle's word on a goal, now."""
+    def _holds(self, goal) -> bool | None:
+        """The oracle's word on a goal, now (None: no world came up to ask)."""
+        if self.world is None:
+            return None
         return all(self.world.oracle.holds(l.atom) == l.positive for l in goal)
 
     def world_situations(self) -> list[dict]:

@@ -23,6 +23,10 @@ context; the executive handles it and swaps in a new tree:
 A goal given in words is read between the survey and the first plan (paper Alg. 1 line 2): the
 ``goal_parser`` (:mod:`vap_bt.perception.goal_parsing`) is handed the scene graph's objects.
 
+The executive says which :data:`PHASES` it is in (``phase``) and keeps the episode so far readable
+at every moment (:meth:`Executive.so_far`), so that a Ctrl-C, which may come anywhere, still leaves
+a whole report: before the first plan that is the belief built so far and nothing done.
+
 The executive talks only to protocols — skills (:class:`~vap_bt.skill.SkillClient`), the camera
 service and the body (:mod:`vap_bt.robot.camera`), a VLM — and to the task file's words; it never
 sees a world or its truth. Its detector reports class labels, not which object each detection is:
@@ -75,6 +79,10 @@ MAX_DOUBTS = 2
 #: the perception predicate that says the robot is placed to act on a thing; a skill that failed
 #: to act from where the robot stands makes these beliefs stale, so the new plan re-approaches
 VIEW_PREDICATE = "inview"
+#: what an episode is doing, in order (``Executive.phase``): looking round, reading a goal in
+#: words, the first plan, ticking a plan's tree, and handling a situation (correcting belief,
+#: looking again, replanning)
+PHASES = ("survey", "goal parsing", "planning", "acting", "replanning")
 
 
 @dataclass
@@ -130,6 +138,12 @@ class EpisodeOutcome:
     #: "timeout" (the planner gave up); empty when there was one. The CLI's exit codes 3 and 5
     no_initial_plan: str = ""
 
+    @classmethod
+    def nothing_yet(cls, graph: SceneGraph) -> "EpisodeOutcome":
+        """An episode stopped before its first plan: no plan, survey, action or situation; ``graph``
+        is belief as far as it got."""
+        return cls(False, "", [], [], 0, [], [], 0, graph, ExecutionContext(graph, None, None, None))
+
 
 class Executive:
     """Runs one task to its end: perceive, plan, tick, handle situations, replan."""
@@ -165,18 +179,23 @@ class Executive:
         self.goal_parser = goal_parser
         #: which predicates are asked of the VLM and how (default: the domain's own profile)
         self.profile = profile if profile is not None else resolve(task.knowledge)
-        #: the episode so far; readable after an interruption (Ctrl-C) for a partial report
+        #: the episode once it has a belief to plan from (before that, :meth:`so_far`)
         self.outcome: EpisodeOutcome | None = None
+        self.phase = PHASES[0]  # which of PHASES the episode is in
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
             raise ValueError("verification needs a VLM; use verify mode 'none' to run without one")
 
     # -- the loop ----------------------------------------------------------------------------
 
+    def so_far(self) -> EpisodeOutcome:
+        """The episode up to now, readable at any moment (after a Ctrl-C, for the report)."""
+        if self.outcome is not None:
+            return self.outcome
+        return EpisodeOutcome.nothing_yet(self.graph if self.graph is not None else self._prior_graph)
+
     def run(self) -> EpisodeOutcome:
+        self.phase = "survey"
         graph, survey = self.perceive()
-        if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
-            self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
-            self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
         executor = make_executor(self.s.threads)
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
@@ -187,6 +206,11 @@ class Executive:
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         try:
+            if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
+                self.phase = "goal parsing"
+                self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
+                self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
+            self.phase = "planning"
             try:
                 plan = self.planner.plan(graph.state(), self.task.goal)
             except (UnsolvableError, PlanningTimeout) as exc:
@@ -196,6 +220,7 @@ class Executive:
             out.plans.append(plan)
             self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
             tree = self._tree(ctx, plan)
+            self.phase = "acting"
             try:
                 return self._tick_until_done(tree, ctx, plan, out)
             finally:
@@ -231,6 +256,7 @@ class Executive:
                 if situation is None:
                     out.reason = "the tree failed without a situation"
                     return out
+                self.phase = "replanning"
                 out.situations.append(situation)
                 if situation.kind == "unseen" and self.s.unseen == "stop":
                     out.reason = f"stopped: {situation.detail}"
@@ -270,6 +296,7 @@ class Executive:
                 out.plans.append(plan)
                 self.progress(f"replan #{out.replans} ({plan.engine}, {out.replan_seconds[-1] * 1000:.1f} ms): "
                               f"{len(plan)} actions")
+                self.phase = "acting"
             out.reason = f"time budget ({self.s.max_seconds:g} s) exhausted"
             return out
         finally:

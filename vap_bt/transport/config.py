@@ -24,13 +24,23 @@ opens a lonely session. :func:`open_session` therefore waits, up to ``peer_timeo
 least one peer or router to be connected whenever the configuration says there should be one
 (connect endpoints, or client mode), and otherwise raises :class:`~vap_bt.errors.TransportError`
 (exit code 4) with one line saying what it tried.
+
+When ``zenoh.open`` does fail (a client whose router is not there, a port already taken) it says
+so in Rust's debug form (``Unable to connect to any of [Single(tcp/…)]!``). Every session of the
+project is opened here, so :func:`start_failure` turns that into the one line a person can act on:
+the endpoint, what is wrong there — a TCP probe tells "nothing listens" from "something listens
+and refused us" — and what to do, in the words of the part expected there (:class:`Peer`: the
+sim, for the parts of an episode run as separate processes).
 """
 
 from __future__ import annotations
 
 import argparse
+import errno
 import json
+import os
 import re
+import socket
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -51,6 +61,20 @@ PEER_TIMEOUT_S = 5.0
 
 
 @dataclass(frozen=True)
+class Peer:
+    """Who a session's connect endpoints should reach and how to bring it up: the words of the
+    one line said when it cannot be reached."""
+
+    who: str = "a Zenoh peer or router"
+    remedy: str = "start it first, or pass --connect where it listens"
+
+
+#: the hub of an episode run as separate processes, which its other parts connect to
+SIM = Peer("the sim", f"start `vap-bt sim TASK` first (it listens on {SIM_ENDPOINT} unless given --listen), "
+                      "or pass --connect where it listens")
+
+
+@dataclass(frozen=True)
 class TransportSettings:
     """How to open a session; the command-line options map onto this one to one."""
 
@@ -59,6 +83,7 @@ class TransportSettings:
     config_file: str | None = None
     peer_timeout: float = PEER_TIMEOUT_S
     mode: str = "peer"
+    peer: Peer = Peer()  # who the connect endpoints should reach, for the line said when they do not
 
 
 def build_config(settings: TransportSettings) -> zenoh.Config:
@@ -86,26 +111,94 @@ def open_session(settings: TransportSettings) -> zenoh.Session:
     try:
         session = zenoh.open(conf)
     except zenoh.ZError as exc:
-        raise TransportError(f"zenoh could not start: {_short(exc)}") from None
+        raise TransportError(start_failure(exc, conf, settings.peer)) from None
     targets = expected_peers(conf)
     if targets is not None and not _wait_for_peer(session, settings.peer_timeout):
         session.close()
-        raise TransportError(
-            f"no Zenoh peer or router answered at {targets} within {settings.peer_timeout:g} s "
-            "(not running, wrong address, or credentials refused)"
-        )
+        raise TransportError(_unreachable(targets, settings.peer, f"within {settings.peer_timeout:g} s"))
     return session
+
+
+def start_failure(exc: zenoh.ZError, conf: zenoh.Config, peer: Peer) -> str:
+    """The one line for a session ``zenoh.open`` refused: whom it could not reach, or where it
+    could not listen, and what to do; Zenoh's own words only for what is neither."""
+    text = _short(exc)
+    if text.startswith("Unable to connect to any of"):  # a client whose router did not answer
+        return _unreachable(expected_peers(conf) or "the configured router", peer)
+    taken = _LISTEN_FAILED.search(text)
+    if taken:
+        return _cannot_listen(taken["endpoint"], int(taken["errno"]))
+    where = "; ".join(f"{key} {', '.join(eps)}" for key in ("listen", "connect") if (eps := _endpoints(conf, key)))
+    return f"zenoh could not start{f' ({where})' if where else ''}: {text}"
+
+
+#: how zenoh says a listener could not be bound: ``… listener bound to tcp/h:p: [h:p: … (os error 98) …``
+_LISTEN_FAILED = re.compile(r"listener bound to (?P<endpoint>\S+?): .*?\(os error (?P<errno>\d+)\)")
+
+
+def _unreachable(targets: str, peer: Peer, waited: str = "") -> str:
+    """``cannot reach the sim at tcp/…: nothing listens there — start …``."""
+    return f"cannot reach {peer.who} at {targets}: {_what_is_there(targets, waited)} — {peer.remedy}"
+
+
+def _what_is_there(targets: str, waited: str) -> str:
+    """What a plain TCP connection finds at the endpoints: Zenoh's refusal and its silence look
+    the same, but a port nobody listens on is not a router that refused our credentials."""
+    listening = [_tcp_listens(ep) for ep in targets.split(", ")]
+    if listening and not any(x is None or x for x in listening):
+        return "nothing listens there"
+    answered = f"no Zenoh peer or router answered{f' {waited}' if waited else ''}"
+    if any(listening):
+        return f"something listens there, but {answered} (not a Zenoh router, or credentials or TLS refused)"
+    return f"{answered} (not running, wrong address, or credentials refused)"
+
+
+def _tcp_listens(endpoint: str) -> bool | None:
+    """Whether something accepts a TCP connection at a ``tcp/`` or ``tls/`` endpoint (None: another
+    protocol, or an address this cannot read)."""
+    found = re.fullmatch(r"(?:tcp|tls)/\[?([^\]\s]+?)\]?:(\d+)(?:[?#].*)?", endpoint.strip())
+    if found is None:
+        return None
+    try:
+        with socket.create_connection((found[1], int(found[2])), timeout=1.0):
+            return True
+    except OSError:
+        return False
+
+
+#: why a port could not be listened on, and what to do about it, by errno
+_LISTEN_ADVICE = {
+    errno.EADDRINUSE: ("another process listens there already (a `vap-bt sim` or `vap-bt serve` still running?)",
+                       "stop it, or pass --listen with another port"),
+    errno.EADDRNOTAVAIL: ("no network interface of this machine has that address",
+                          "pass --listen with one of its addresses, e.g. tcp/127.0.0.1:PORT"),
+    errno.EACCES: ("permission denied (ports below 1024 need privileges)", "pass --listen with a port above 1023"),
+}
+
+
+def _cannot_listen(endpoint: str, code: int) -> str:
+    why, remedy = _LISTEN_ADVICE.get(code, (os.strerror(code).lower(), "check --listen"))
+    return f"cannot listen at {endpoint}: {why} — {remedy}"
 
 
 def expected_peers(conf: zenoh.Config) -> str | None:
     """A description of whom the session must reach, or None when it need reach nobody."""
-    mode = json.loads(conf.get_json("mode") or "null") or "peer"
-    endpoints = json.loads(conf.get_json("connect/endpoints") or "[]")
-    if isinstance(endpoints, dict):  # per-mode lists
-        endpoints = endpoints.get(mode, [])
+    endpoints = _endpoints(conf, "connect")
     if endpoints:
         return ", ".join(endpoints)
-    return "the configured router" if mode == "client" else None
+    return "the configured router" if _mode(conf) == "client" else None
+
+
+def _mode(conf: zenoh.Config) -> str:
+    return json.loads(conf.get_json("mode") or "null") or "peer"
+
+
+def _endpoints(conf: zenoh.Config, key: str) -> list[str]:
+    """The ``listen`` or ``connect`` endpoints of ``conf`` in its mode."""
+    endpoints = json.loads(conf.get_json(f"{key}/endpoints") or "[]")
+    if isinstance(endpoints, dict):  # per-mode lists
+        endpoints = endpoints.get(_mode(conf), [])
+    return list(endpoints)
 
 
 def _wait_for_peer(session: zenoh.Session, timeout: float) -> bool:
@@ -171,4 +264,4 @@ def part_settings(args: argparse.Namespace) -> TransportSettings:
     ``--connect`` (default :data:`SIM_ENDPOINT`), or a peer when it ``--listen``s too."""
     connect = tuple(args.connect) or (() if args.zenoh_config else (SIM_ENDPOINT,))
     return TransportSettings(listen=tuple(args.listen), connect=connect, config_file=args.zenoh_config,
-                             peer_timeout=args.peer_timeout, mode="peer" if args.listen else "client")
+                             peer_timeout=args.peer_timeout, mode="peer" if args.listen else "client", peer=SIM)

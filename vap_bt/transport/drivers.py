@@ -8,6 +8,7 @@ interfaces, so a skill cannot tell where the robot is::
     vap/<robot>/driver/<call>            queryable: DriverCall -> DriverReply (or a Frame)
     vap/<robot>/driver/stop              published: stop a part's motion (DriverCall "stop")
     vap/<robot>/driver-client/<client>   liveliness token of a RemoteDrivers
+    vap/<robot>/driver-host              liveliness token of the DriverServer (the robot's process)
 
 ``<call>`` is one of ``arm.state``, ``arm.tcp``, ``arm.follow``, ``arm.stop``, ``gripper.state``,
 ``gripper.move``, ``base.pose``, ``base.follow``, ``base.stop``, ``camera.capture``, and the
@@ -23,6 +24,11 @@ motion dies, Zenoh drops the token and the server stops that client's motions at
 robot never finishes a trajectory for a skill that no longer exists (a real arm's protective
 stop on a lost stream). A motion whose reply never comes (the driver host died) ends as not
 completed, "transport", after its own duration plus ``MOTION_SLACK_S``.
+
+The other way round, the server's own token (``driver-host``, declared once everything else is)
+is the robot's heartbeat: :class:`HostWatch` tells a process whose skills drive the robot from
+afar that the robot's process has gone — stopped, died (its link closed at once) or hung past
+the link lease — rather than letting it wait, silent, for calls nobody will answer.
 """
 
 from __future__ import annotations
@@ -60,6 +66,10 @@ def driver_key(robot: str, call: str) -> str:
 
 def client_token_key(robot: str, client: str) -> str:
     return f"{keys.ROOT}/{keys.chunk('robot', robot)}/driver-client/{keys.chunk('client', client)}"
+
+
+def host_token_key(robot: str) -> str:
+    return f"{keys.ROOT}/{keys.chunk('robot', robot)}/driver-host"
 
 
 # -- server ----------------------------------------------------------------------------------------
@@ -102,6 +112,8 @@ class DriverServer:
         self._declared.append(self.session.declare_subscriber(driver_key(self.robot, "stop"), self._on_stop))
         self._declared.append(self.session.liveliness().declare_subscriber(
             f"{keys.ROOT}/{self.robot}/driver-client/*", self._on_client))
+        # last: whoever sees the token finds every call above answered
+        self._declared.append(self.session.liveliness().declare_token(host_token_key(self.robot)))
         log.info("driver server for robot %s up", self.robot)
         return self
 
@@ -198,6 +210,24 @@ def _motion_reply(r: MotionResult) -> DriverReply:
 
 
 # -- client ----------------------------------------------------------------------------------------
+
+
+class HostWatch:
+    """Calls ``on_lost`` when ``robot``'s driver host withdraws its token (it stopped, died or hung
+    past the lease); a host that has not declared one by now is never reported."""
+
+    def __init__(self, session: zenoh.Session, robot: str, on_lost: Callable[[], None]) -> None:
+        self._on_lost = on_lost
+        # with history: zenoh tells a subscriber of the loss only of tokens it was told of
+        self._subscriber = session.liveliness().declare_subscriber(host_token_key(robot), self._on_sample,
+                                                                   history=True)
+
+    def _on_sample(self, sample: zenoh.Sample) -> None:
+        if sample.kind == zenoh.SampleKind.DELETE:
+            self._on_lost()
+
+    def close(self) -> None:
+        self._subscriber.undeclare()
 
 
 class _Link:

@@ -10,12 +10,17 @@ does the same without the ``vap-bt`` wrapper.
 With ``--world remote`` the skills bind to a robot whose world runs in ``vap-bt sim``
 (:class:`~vap_bt.transport.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
 server is then a client of the sim's router (``--connect``, default ``tcp/127.0.0.1:7447``), and
-the camera robot's server (``ur5e``) hosts the camera service on the skills' own kit.
+the camera robot's server (``ur5e``) hosts the camera service on the skills' own kit. Such a
+server lives and dies with its sim: when the sim's driver token vanishes (the sim stopped, died
+or hung; :class:`~vap_bt.transport.drivers.HostWatch`) it says so in one line on stderr and exits
+4 — its skills' state (what the hand holds, the site map) belonged to that world, so a new sim
+gets new servers rather than these waiting for it.
 
 ``vap-bt skills`` lists the installed skill plugins: action, robot, resource, where it comes
 from; broken plugins and conflicting ones are reported too (a conflict exits with code 2).
 
-Exit codes follow :mod:`vap_bt.errors`: 2 bad input, 4 the transport could not come up.
+Exit codes follow :mod:`vap_bt.errors`: 2 bad input, 4 the transport could not come up or, for
+``--world remote``, the sim went away.
 """
 
 from __future__ import annotations
@@ -27,7 +32,7 @@ import sys
 import threading
 
 from vap_bt import plugins
-from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, InputError, VapBtError
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, VapBtError
 from vap_bt.transport.config import add_transport_arguments, open_session, part_settings, settings_from_args
 from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
@@ -72,13 +77,14 @@ def run_serve(args: argparse.Namespace) -> int:
         raise
     servers = [SkillServer(session, robot, plugins.instantiate(shared, robot, entries), camera=shared,
                            name=args.name) for robot in robots]
-    return _serve_until_stopped(session, servers, settings, closing=[world])
+    return _serve_until_stopped(session, servers, settings, _Stop(), closing=[world])
 
 
 def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
     """Skills over a robot whose world is ``vap-bt sim``'s (:class:`RemoteRobot`); the camera
     robot's server hosts the camera service, built on the same kit as its skills."""
     from vap_bt.runner import make_camera
+    from vap_bt.transport.drivers import HostWatch
     from vap_bt.transport.embedded import CAMERA_ROBOT
     from vap_bt.transport.remote_robot import RemoteRobot
 
@@ -99,21 +105,43 @@ def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
     servers = [SkillServer(session, robot, plugins.instantiate(body, robot, entries), name=args.name,
                            camera=make_camera(body) if robot == CAMERA_ROBOT else None)
                for robot, body in bodies.items()]
-    return _serve_until_stopped(session, servers, settings, closing=list(bodies.values()))
+    stop = _Stop()
+    sim = ", ".join(settings.connect) or "the configured router"
+    watches = [HostWatch(session, robot, lambda robot=robot: stop.world_gone(sim, robot)) for robot in bodies]
+    return _serve_until_stopped(session, servers, settings, stop, closing=[*watches, *bodies.values()])
 
 
-def _serve_until_stopped(session, servers: list[SkillServer], settings, closing: list) -> int:
-    """Start ``servers``, say ``ready``, wait for SIGINT/SIGTERM; then close everything."""
-    stop = threading.Event()
+class _Stop:
+    """Why serving ends, and its exit code: SIGINT or SIGTERM (0), or the remote world gone (4,
+    said in one line: a server that only waits would look alive and serve nothing)."""
+
+    def __init__(self) -> None:
+        self.event = threading.Event()
+        self.code = EXIT_OK
+        self._lock = threading.Lock()  # the robots' tokens vanish together: one line, not one each
+
+    def world_gone(self, sim: str, robot: str) -> None:
+        with self._lock:
+            if self.event.is_set():  # stopping already (a signal, or another robot's token)
+                return
+            self.code = EXIT_TRANSPORT
+            print(f"vap-bt serve: the sim at {sim} is gone (robot {robot}'s drivers withdrew their liveliness "
+                  "token): stopping, exit 4 — start `vap-bt sim` again, then this server",
+                  file=sys.stderr, flush=True)
+            self.event.set()
+
+
+def _serve_until_stopped(session, servers: list[SkillServer], settings, stop: _Stop, closing: list) -> int:
+    """Start ``servers``, say ``ready``, wait for SIGINT/SIGTERM or ``stop``; then close everything."""
     started: list[SkillServer] = []
     try:
         for server in servers:
             started.append(server.start())
-        _on_signals(stop)
+        _on_signals(stop.event)
         where = ", ".join(settings.listen) or f"(connected to {', '.join(settings.connect) or 'the configured router'})"
         hosted = "; ".join(f"{s.robot}: {' '.join(sorted(s.skills))}" for s in servers)
         print(f"vap-bt serve: ready on {where} — {hosted}", flush=True)
-        while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
+        while not stop.event.wait(0.5):  # short waits keep Ctrl-C responsive
             pass
     except KeyboardInterrupt:
         pass
@@ -123,7 +151,7 @@ def _serve_until_stopped(session, servers: list[SkillServer], settings, closing:
         session.close()
         for thing in closing:
             thing.close()
-    return EXIT_OK
+    return stop.code
 
 
 def add_skills_arguments(p: argparse.ArgumentParser) -> None:
