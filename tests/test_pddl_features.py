@@ -19,7 +19,7 @@ from unified_planning.plans import ActionInstance, SequentialPlan
 from unified_planning.shortcuts import FluentExp, PlanValidator, SequentialSimulator
 
 from vap_bt import taskfile
-from vap_bt.domain import either
+from vap_bt.domain import dialect
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.expectation import expect
 from vap_bt.domain.grounding import ground
@@ -63,7 +63,7 @@ def task_of(name: str):
 def up_verdict(domain: str, problem: str, actions: list[str]):
     """unified-planning's verdict on a plan given as ``name(a, b)`` strings, on the PDDL files
     as unified-planning itself reads them (``either`` widened first: it cannot read that)."""
-    up = PDDLReader().parse_problem_string(either.rewrite(Source.read(DOMAINS / domain)),
+    up = PDDLReader().parse_problem_string(dialect.domain_text(Source.read(DOMAINS / domain)),
                                            (DOMAINS / problem).read_text())
     acts = {a.name: a for a in up.actions}
     objs = {o.name: o for o in up.all_objects}

@@ -15,7 +15,8 @@ from unified_planning.engines.compilers import GrounderHelper
 from unified_planning.io import PDDLReader
 
 from vap_bt.domain.grounding import ground
-from vap_bt.domain.pddl import load_task, total_cost_from_zero
+from vap_bt.domain.dialect import total_cost_from_zero
+from vap_bt.domain.pddl import load_task
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import EXIT_PLANNING_TIMEOUT, EXIT_UNSOLVABLE, InputError, PlanningTimeout
 from vap_bt.taskfile import load
@@ -105,3 +106,20 @@ def test_an_error_in_the_domain_of_a_task_file_names_the_domain_file_and_its_lin
         load(tmp_path / "task.yaml")
     assert raised.value.where.startswith(f"{tmp_path / 'household.pddl'}")
     assert "task.yaml" not in raised.value.where
+
+
+def test_a_predicate_declared_with_one_parameter_name_twice_keeps_its_arity(cli, tmp_path):
+    """IPC 2000 logistics declares ``(in ?obj ?obj)``; unified-planning read a one-place ``in``
+    and refused every use of it."""
+    code, summary, _ = run(cli, tmp_path, IPC / "logistics00" / "domain.pddl", IPC / "logistics00" / "problem.pddl")
+    assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
+    assert any(a.startswith("load-") for a in summary["plans"][0])
+
+
+def test_a_parse_error_is_one_line_naming_the_file_and_line(cli, tmp_path):
+    domain = tmp_path / "d.pddl"
+    domain.write_text((DOMAINS / "rooms-domain.pddl").read_text().replace("(at ?r ?x)", "(at ?r ?x ?x)", 1))
+    code, out, err = cli("run", "--domain", domain, "--problem", DOMAINS / "rooms-unreachable.pddl",
+                         "--world", "symbolic")
+    assert code == 2 and len(err.strip().splitlines()) == 1, err
+    assert err.startswith(f"vap-bt: {domain}") and "Traceback" not in err

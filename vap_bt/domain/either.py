@@ -24,11 +24,11 @@ _EITHER = re.compile(r"\(\s*either\s+([^()]*)\)", re.IGNORECASE)
 
 def rewrite(src: Source) -> str:
     """``src``'s text with every predicate-declaration ``either`` widened to a common ancestor."""
-    text = _blank_comments(src.text)
+    text = blank_comments(src.text)
     if not _EITHER.search(text):
         return src.text
     parents = _type_parents(text)
-    predicates = _block(text, ":predicates")
+    predicates = block(text, ":predicates")
     out, last = [], 0
     for m in _EITHER.finditer(text):
         if predicates is None or not predicates[0] <= m.start() < predicates[1]:
@@ -45,11 +45,11 @@ def rewrite(src: Source) -> str:
     return "".join(out)
 
 
-def _blank_comments(text: str) -> str:
+def blank_comments(text: str) -> str:
     return re.sub(r";[^\n]*", lambda m: " " * len(m.group(0)), text)
 
 
-def _block(text: str, keyword: str) -> tuple[int, int] | None:
+def block(text: str, keyword: str) -> tuple[int, int] | None:
     """The span of the ``(keyword …)`` section, by matching parentheses."""
     m = re.search(r"\(\s*" + re.escape(keyword) + r"\b", text, re.IGNORECASE)
     if not m:
@@ -64,7 +64,7 @@ def _block(text: str, keyword: str) -> tuple[int, int] | None:
 
 def _type_parents(text: str) -> dict[str, str]:
     """``(:types a b - p c)`` as {a: p, b: p, c: object}."""
-    span = _block(text, ":types")
+    span = block(text, ":types")
     if span is None:
         return {}
     body = text[span[0]:span[1]].strip()[1:-1]

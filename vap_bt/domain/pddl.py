@@ -1,7 +1,7 @@
 """Reading PDDL files into a :class:`~vap_bt.domain.task.PlanningTask`, with clear errors.
 
-unified-planning does the parsing (after :mod:`vap_bt.domain.either` widened the ``either``
-types it cannot read); :mod:`vap_bt.domain.requirements` refuses what vap_bt does not run; this
+unified-planning does the parsing (after :mod:`vap_bt.domain.dialect` rewrote what Fast
+Downward reads and it does not); :mod:`vap_bt.domain.requirements` refuses what vap_bt does not run; this
 module translates the problem into :mod:`vap_bt.domain.knowledge`'s form — types,
 predicates, action schemas (with :mod:`vap_bt.domain.instances` grounding them through
 unified-planning), the initial state and the goal — and turns every parser complaint into one
@@ -10,11 +10,10 @@ unified-planning), the initial state and the goal — and turns every parser com
 
 from __future__ import annotations
 
-import re
 import warnings
 from pathlib import Path
 
-from vap_bt.domain import either
+from vap_bt.domain import dialect
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.formula import TRUE, And
 from vap_bt.domain.instances import UPInstances
@@ -38,7 +37,8 @@ def _reader():
 def _parse_error(path: Path | str, exc: Exception) -> InputError:
     line = getattr(exc, "lineno", None)
     where = f"{path}:{line}" if line else str(path)
-    msg = getattr(exc, "msg", None) or str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+    msg = getattr(exc, "msg", None) or str(exc) or type(exc).__name__
+    msg = " ".join(msg.split())  # one line: the reader's messages span several
     return InputError(where, f"PDDL error: {msg}")
 
 
@@ -63,31 +63,18 @@ def _parse(domain_path: Path, problem: Source, where: Path | str) -> PlanningTas
     """The domain is parsed alone first, so that an error in it names the domain file and its
     line, not the problem (or the task file the problem was generated from)."""
     domain = Source.read(domain_path)
-    domain_text = either.rewrite(domain)
+    domain_text = dialect.domain_text(domain)
     reader = _reader()
     try:
         reader.parse_problem_string(domain_text)
     except Exception as exc:  # the parser raises many kinds; all are bad input here
         raise explain_unreadable([domain]) or _parse_error(domain_path, exc) from None
     try:
-        up_problem = reader.parse_problem_string(domain_text, total_cost_from_zero(problem.text))
+        up_problem = reader.parse_problem_string(domain_text, dialect.problem_text(problem.text))
     except Exception as exc:
         raise explain_unreadable([problem]) or _parse_error(where, exc) from None
     return from_up(up_problem, source=f"{domain_path} + {where}", where=where,
                    sources=[domain, problem], domain_file=domain_path)
-
-
-def total_cost_from_zero(problem_text: str) -> str:
-    """The problem with ``(= (total-cost) 0)`` in its initial state when it minimizes total-cost
-    without giving it a value. Fast Downward starts total-cost at 0 either way (IPC 2018's
-    agricola and settlers rely on it); unified-planning then reads the metric as an arbitrary
-    final-state expression and the problem as numeric planning. Inserted on the ``(:init`` line,
-    so every line number stays the file's."""
-    plain = re.sub(r";[^\n]*", "", problem_text)
-    if not re.search(r"\(\s*:metric\s+minimize\s+\(\s*total-cost\s*\)", plain, flags=re.I) or re.search(
-            r"\(\s*=\s*\(\s*total-cost\s*\)", plain, flags=re.I):
-        return problem_text
-    return re.sub(r"\(\s*:init\b", lambda m: m.group(0) + " (= (total-cost) 0)", problem_text, count=1, flags=re.I)
 
 
 def from_up(problem, source: str, where: Path | str, sources: list[Source] | None = None,
@@ -108,7 +95,9 @@ def from_up(problem, source: str, where: Path | str, sources: list[Source] | Non
     objects = {o.name: o.type.name for o in problem.all_objects}
     knowledge = DomainKnowledge(name=problem.name, parents=parents, predicates=predicates, schemas=schemas,
                                 instances=instances, has_costs=instances.has_costs, domain_file=domain_file)
-    init = frozenset(_atom(k) for k, v in problem.initial_values.items() if k.type.is_bool_type() and v.is_true())
+    # the explicit values: initial_values would also build every false ground atom (11 s on nomystery)
+    init = frozenset(_atom(k) for k, v in problem.explicit_initial_values.items()
+                     if k.type.is_bool_type() and v.is_true())
     goal = _goal(instances, where)
     return PlanningTask(knowledge=knowledge, objects=objects, init=init, goal=goal,
                         name=problem.name, source=source, up_problem=problem)
