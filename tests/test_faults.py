@@ -96,3 +96,14 @@ def test_a_small_campaign_records_every_disturbance_kind_and_prints_its_table(tm
     assert faults.main(args) == 0
     assert len(out.read_text().splitlines()) == 6
     assert capsys.readouterr().out == table
+
+
+def test_the_watchdog_counts_an_episode_past_its_budget_as_a_hang_and_goes_on():
+    task = TREES / "collect_cup.yaml"
+    # 0.3 s is less than the worker's first session takes to build (grounding, Fast Downward)
+    jobs = [faults.Job(str(task), "collect_cup", seed, "symbolic", 1.0, 0.0, budget)
+            for seed, budget in ((0, 0.3), (1, 120.0))]
+    rows: list = []
+    faults.run_campaign(jobs, 1, rows.append)
+    assert [(r.seed, r.outcome) for r in rows][0] == (0, "hang")
+    assert rows[1].seed == 1 and rows[1].outcome in ("recovered", "aborted"), rows[1].error
