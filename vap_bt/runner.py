@@ -38,6 +38,7 @@ from vap_bt.perception.vlm import MeteredVLM, Paraphraser
 from vap_bt.report import verification_counts, versions
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.detector import DetectorModel
+from vap_bt.sim.disturbances import DisturbanceModel
 from vap_bt.sim.graph_score import score_graph
 from vap_bt.sim.situations import SituationModel
 from vap_bt.skill import Skill, performed_by_world
@@ -71,6 +72,9 @@ class RunConfig:
     max_replans: int = MAX_REPLANS
     max_seconds: float = 900.0
     injection: bool = True
+    #: the probability of a scripted disturbance per episode (a person moves a thing, pushes a
+    #: leaf shut or half shut: vap_bt.sim.disturbances); 0: none
+    disturbance: float = 0.0
     vlm: str = "sim"  # sim (world-side, offline) | sim-http | openai | gemini (see make_vlm)
     vlm_url: str | None = None  # openai/gemini: the API root (--vlm-url)
     vlm_model: str | None = None  # openai/gemini: the model name (--vlm-model)
@@ -105,10 +109,12 @@ class RunConfig:
 
 def make_world(task: Task, cfg: RunConfig) -> World:
     situations = SituationModel(enabled=cfg.injection, seed=cfg.seed)
+    disturbances = DisturbanceModel(cfg.disturbance) if cfg.disturbance > 0 else None
     if cfg.world == "symbolic":
         from vap_bt.sim.symbolic import SymbolicWorld
 
-        return SymbolicWorld(task.planning, situations, seed=cfg.seed, detector=cfg.detector())
+        return SymbolicWorld(task.planning, situations, seed=cfg.seed, detector=cfg.detector(),
+                             disturbances=disturbances)
     if cfg.world == "pybullet":
         from vap_bt.sim.pybullet_world import PybulletWorld
 
@@ -118,7 +124,7 @@ def make_world(task: Task, cfg: RunConfig) -> World:
         if cfg.sensors not in ("exact", "real"):
             raise ValueError(f"unknown sensors {cfg.sensors!r} (exact, real)")
         exact = cfg.sensors == "exact"
-        return PybulletWorld(task, seed=cfg.seed, injection=cfg.injection,
+        return PybulletWorld(task, seed=cfg.seed, injection=cfg.injection, disturbance_model=disturbances,
                              depth_noise=DepthNoiseModel.exact() if exact else DepthNoiseModel(),
                              localization=LocalizationModel.perfect() if exact else LocalizationModel())
     raise ValueError(f"unknown world {cfg.world!r} (symbolic, pybullet)")
@@ -526,6 +532,7 @@ class Session:
                      "belief": sorted(map(str, self.task.prior)) if self.task.spec.scene is not None else "problem init"},
             "config": asdict(cfg),
             "world": {"name": world_name, "injection": self.world_situations(),
+                      "disturbances": self.world_disturbances(),
                       "detector": detector.describe() if detector is not None else None,
                       **self._sensors()},
             "goal_parsing": self._goal_parsing_report(),
@@ -536,7 +543,8 @@ class Session:
             "plans": [p.to_json() for p in out.plans],
             "actions_executed": ctx.actions,
             "situations": [s.to_json() for s in out.situations],
-            "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step}
+            "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
+                          "affected": list(i.affected)}
                          for i in (self.world.oracle.injected() if self.world is not None else [])],
             "replans": out.replans,
             "replan_ms": [round(s * 1000, 3) for s in out.replan_seconds],
@@ -592,6 +600,10 @@ class Session:
         if self.world is None:
             return None
         return all(self.world.oracle.holds(l.atom) == l.positive for l in goal)
+
+    def world_disturbances(self) -> list[dict]:
+        """The disturbances the world scripted for this episode (applied or not: ``injected`` says)."""
+        return [d.to_json() if hasattr(d, "to_json") else dict(d) for d in getattr(self.world, "disturbances", None) or ()]
 
     def world_situations(self) -> list[dict]:
         model = getattr(self.world, "situations", None)

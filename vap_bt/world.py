@@ -28,8 +28,10 @@ class InjectedSituation:
 
     action: str
     args: tuple[str, ...]
-    kind: str  # e.g. "grasp_fails_object_unchanged", "held_object_drops"
+    kind: str  # e.g. "grasp_fails_object_unchanged", "object_moved_by_person"
     step: int
+    #: the things it changed (what fell, what a person moved, the leaf pushed), where the world says
+    affected: tuple[str, ...] = ()
 
 
 @dataclass

@@ -51,6 +51,7 @@ from vap_bt.perception.backends.image import rgb_sha1
 from vap_bt.sim.captures import CaptureLog, CaptureRecord
 from vap_bt.sim.depth_noise import DepthNoiseModel
 from vap_bt.sim.detector import DetectorModel
+from vap_bt.sim.disturbances import HALF_OPEN, HALF_SHUT, MOVED, SHUT, DisturbanceModel
 from vap_bt.sim.localization import Localization, LocalizationModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, look_pose, mask_extents, name_image, pixel_counts, render, visibility
@@ -100,7 +101,8 @@ class PybulletWorld:
     def __init__(self, task, seed: int = 0, gui: bool = False, injection: bool = True,
                  situations: SituationModel | None = None, disturbances: list[dict] | None = None,
                  image_size: tuple[int, int] = (320, 240), detector: DetectorModel | None = None,
-                 depth_noise: DepthNoiseModel | None = None, localization: LocalizationModel | None = None) -> None:
+                 depth_noise: DepthNoiseModel | None = None, localization: LocalizationModel | None = None,
+                 disturbance_model: DisturbanceModel | None = None) -> None:
         self.task = task
         self.layout = task.spec.scene
         if self.layout is None:
@@ -109,6 +111,8 @@ class PybulletWorld:
         self.gui = gui
         self.situations = situations or SituationModel(enabled=injection, seed=seed)
         self.disturbances = list(disturbances or [])
+        #: draws each episode's disturbances on reset (:mod:`vap_bt.sim.disturbances`), replacing the script
+        self.disturbance_model = disturbance_model
         self.camera = _camera(image_size)
         self.detector = detector or DetectorModel()
         #: what the wrist depth camera returns (:mod:`depth_noise`) and how well the base knows
@@ -136,6 +140,8 @@ class PybulletWorld:
                 pb.disconnect(self.cid)
             self.seed = seed
             self.situations.reseed(seed)
+            if self.disturbance_model is not None:
+                self.disturbances = [d.script() for d in self.disturbance_model.draw(self.task.planning, seed)]
             self.cid = pb.connect(pb.GUI if self.gui else pb.DIRECT)
             pb.setGravity(0, 0, -9.81, physicsClientId=self.cid)
             pb.setPhysicsEngineParameter(fixedTimeStep=DT, numSolverIterations=SOLVER_ITERATIONS, numSubSteps=SUBSTEPS,
@@ -261,16 +267,17 @@ class PybulletWorld:
                 # a person's hand is not simulated: the object is set down at its new place
                 pb.resetBasePositionAndOrientation(t.body, tuple(spot), pb.getBasePositionAndOrientation(
                     t.body, physicsClientId=self.cid)[1], physicsClientId=self.cid)
-                kind = "object_moved_by_person"
+                kind, affected = MOVED, name
             elif "door" in d:
                 h = self.scene.things[d["door"]].hinge
-                pb.resetJointState(h.body, h.joint, h.full * float(d.get("open", 0.4)), physicsClientId=self.cid)
-                kind = "door_left_half_open"
+                fraction = float(d.get("open", HALF_OPEN))
+                pb.resetJointState(h.body, h.joint, h.full * fraction, physicsClientId=self.cid)
+                kind, affected = (HALF_SHUT if fraction > 0 else SHUT), d["door"]
             else:
                 continue
             for _ in range(20):
                 self.step()
-            self._injected.append(InjectedSituation(action, tuple(args), kind, step))
+            self._injected.append(InjectedSituation(action, tuple(args), kind, step, (affected,)))
 
     def _free_spot(self, surface: str, item: str) -> np.ndarray:
         """Where a person sets ``item`` down on ``surface``: the centre of a spot on its top far

@@ -59,6 +59,7 @@ from vap_bt.scene.layout import floor_of
 from vap_bt.perception.backends.image import rgb_sha1
 from vap_bt.sim.captures import CaptureLog, CaptureRecord, ObjectView, frame_card
 from vap_bt.sim.detector import DetectorModel
+from vap_bt.sim.disturbances import MOVED, SHUT, Disturbance, DisturbanceModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.relation_reports import RelationDetector
 from vap_bt.sim.situations import SituationModel, SituationSpec
@@ -77,7 +78,7 @@ class SymbolicWorld:
     name = "symbolic"
 
     def __init__(self, task: PlanningTask, situations: SituationModel | None = None, seed: int = 0,
-                 detector: DetectorModel | None = None) -> None:
+                 detector: DetectorModel | None = None, disturbances: DisturbanceModel | None = None) -> None:
         self.task = task
         self.knowledge = task.knowledge
         self._situated = {"robot_in", "robot_at"} <= set(task.knowledge.predicates)
@@ -88,6 +89,10 @@ class SymbolicWorld:
         self.frame_cards = False  # frames carry a picture of their id (for the sim VLM served over HTTP)
         self.oracle = FunctionOracle(self._holds, self.injected)
         self._map = _site_map(task)
+        #: draws each episode's disturbances on reset; without one, :attr:`disturbances` is a script
+        #: that stays across resets (as the pybullet world's)
+        self.disturbance_model = disturbances
+        self.disturbances: list[Disturbance] = []
         self.reset(seed)
 
     # -- life cycle ------------------------------------------------------------------------
@@ -107,6 +112,8 @@ class SymbolicWorld:
         self._visibility: dict[tuple, float] = {}
         self._step = 0
         self._injected: list[InjectedSituation] = []
+        if self.disturbance_model is not None:
+            self.disturbances = self.disturbance_model.draw(self.task, seed)
         self.captures.clear()
 
     def close(self) -> None:
@@ -115,6 +122,13 @@ class SymbolicWorld:
     # -- actions ---------------------------------------------------------------------------
 
     def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
+        step = self._step
+        outcome = self._act(action, args, ctx)
+        if self._step > step:  # an action ran (or failed): what a person does after it happens now
+            self._disturb(action, tuple(args))
+        return outcome
+
+    def _act(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
         try:
             ga = self.knowledge.ground(action, tuple(args))
         except (KeyError, ValueError) as exc:
@@ -136,11 +150,12 @@ class SymbolicWorld:
         if starts:
             self.atoms = (self.atoms - {a for a in self.atoms if a.predicate == "robot_at"}) | starts
         intended = self._effects(ga, self.atoms, ctx)
+        affected = self._affected(spec, ga) if spec is not None else ()  # before anything falls
         if spec is not None and self._inject(spec, ga, ctx):
             # a failure that leaves the world as success would (an open door "fails to open") is
             # no situation: there is nothing to detect, so the oracle does not count it
             if self.atoms != intended:
-                self._injected.append(InjectedSituation(action, tuple(args), spec.kind, self._step))
+                self._injected.append(InjectedSituation(action, tuple(args), spec.kind, self._step, affected))
         else:
             self.atoms = intended
         self._look = None  # the skill moved the arm: the camera looks at what the robot stands at
@@ -313,13 +328,58 @@ class SymbolicWorld:
             self.atoms = self._effects(ga, self.atoms, ctx)
         return True
 
+    def _affected(self, spec: SituationSpec, ga) -> tuple[str, ...]:
+        """What ``spec`` will change, for the report: what falls (what is held, or the argument it
+        names), else the thing the action is about (its first argument)."""
+        held = self._held()
+        if spec.drops == "held" and held is not None:
+            return (held,)
+        return (ga.args[spec.drops],) if isinstance(spec.drops, int) else ga.args[:1]
+
     def _drop(self, obj: str, room: str) -> None:
+        self._set_down(obj, floor_of(room), room)
+
+    def _set_down(self, obj: str, place: str, room: str) -> None:
         was_held = Atom("holding", (obj,)) in self.atoms
         self.atoms -= {a for a in self.atoms if a.predicate in LOCATIONS and a.args[0] == obj}
-        self.atoms |= {Atom("on", (obj, floor_of(room))), Atom("in_room", (obj, room)), Atom("reachable", (obj,))}
+        self.atoms |= {Atom("on", (obj, place)), Atom("in_room", (obj, room)), Atom("reachable", (obj,))}
         self.atoms -= {a for a in self.atoms if a.predicate == "blocking" and obj in a.args}
         if was_held:
             self.atoms.add(Atom("hand_empty"))
+
+    # -- disturbances (vap_bt.sim.disturbances) ---------------------------------------------
+
+    def _disturb(self, action: str, args: tuple[str, ...]) -> None:
+        """What a person does after the action just run (index ``self._step - 1``), recorded with
+        Table II's situations when it changed the world."""
+        for d in self.disturbances:
+            if d.after == self._step - 1 and self._apply(d):
+                self._injected.append(InjectedSituation(action, args, d.kind, self._step, (d.target,)))
+                self._new_view()
+
+    def _apply(self, d: Disturbance) -> bool:
+        """Make ``d`` so; whether the world changed."""
+        before = set(self.atoms)
+        if d.kind == MOVED:
+            self._moved_by_person(d.target, d.to)
+        else:  # a leaf pushed shut, or half shut: ajar, neither open nor closed (the domain's note)
+            self.atoms -= {Atom("open", (d.target,)), Atom("closed", (d.target,))}
+            if d.kind == SHUT:
+                self.atoms.add(Atom("closed", (d.target,)))
+        return self.atoms != before
+
+    def _moved_by_person(self, obj: str, place: str | None) -> None:
+        """``obj`` put down on ``place`` — unless the robot holds it. A robot standing at it is
+        left standing where it was (its support), without it in view."""
+        room = self._map.floors().get(place) or next(iter(sorted(self._rooms_of(place or ""))), None)
+        if room is None or obj == self._held():
+            return
+        was = sorted(self._supports(obj))
+        if Atom("robot_at", (obj,)) in self.atoms and was:
+            self.atoms -= {Atom("robot_at", (obj,))}
+            self.atoms |= {Atom("robot_at", (was[0],)), Atom("inview", (was[0],))}
+        self.atoms.discard(Atom("inview", (obj,)))
+        self._set_down(obj, place, room)
 
     # -- views ------------------------------------------------------------------------------
 

@@ -100,8 +100,8 @@ class OracleServer:
         return OracleReply({"holds": [bool(self.world.oracle.holds(a)) for a in q.atoms]})
 
     def _injected(self, q: OracleQuery) -> OracleReply:
-        return OracleReply({"injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step}
-                                         for i in self.world.oracle.injected()]})
+        return OracleReply({"injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
+                                          "affected": list(i.affected)} for i in self.world.oracle.injected()]})
 
     def _info(self, q: OracleQuery) -> OracleReply:
         w, vlm = self.world, self.facts.vlm
@@ -147,7 +147,8 @@ class RemoteOracle:
 
     def injected(self) -> list[InjectedSituation]:
         rows = self._ask("injected").values["injected"]
-        return [InjectedSituation(r["action"], tuple(r["args"]), r["kind"], int(r["step"])) for r in rows]
+        return [InjectedSituation(r["action"], tuple(r["args"]), r["kind"], int(r["step"]), tuple(r.get("affected", ())))
+                for r in rows]
 
 
 class _Described:
