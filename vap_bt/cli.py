@@ -54,6 +54,9 @@ def _load_run_task(args):
         return taskfile.load(args.task)
     if not (args.domain and args.problem):
         raise InputError("command line", "give a task file, or both --domain and --problem")
+    for flag, name in (("--domain", args.domain), ("--problem", args.problem)):
+        if not Path(name).is_file():  # said here: from_spec would blame a task file's field
+            raise InputError(name, f"no such file (given as {flag})")
     spec = taskfile.TaskFile(name=Path(args.problem).stem, domain=str(Path(args.domain).resolve()),
                              problem=str(Path(args.problem).resolve()))
     return taskfile.from_spec(spec, base=Path.cwd(), where=args.problem)

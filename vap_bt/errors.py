@@ -18,6 +18,8 @@ code  meaning
 
 from __future__ import annotations
 
+from pathlib import Path
+
 EXIT_OK = 0
 EXIT_GOAL_NOT_REACHED = 1
 EXIT_BAD_INPUT = 2
@@ -55,3 +57,15 @@ class PlanningTimeout(VapBtError):
 
 class TransportError(VapBtError):
     exit_code = EXIT_TRANSPORT
+
+
+def read_text(path: str | Path) -> str:
+    """A file the user wrote (a task file, a PDDL file), as UTF-8 text; bytes that are not UTF-8
+    (a file saved in another encoding) are an :class:`InputError` naming the file and line."""
+    data = Path(path).read_bytes()
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        raise InputError(f"{path}:{line}", f"not UTF-8 text (byte {data[exc.start]:#04x}); "
+                                           "save the file as UTF-8") from None

@@ -37,6 +37,7 @@ file. It is read and checked against the domain when the task is loaded.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Literal
 
@@ -134,10 +135,10 @@ def load(path: str | Path) -> Task:
 def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
     from vap_bt.domain.pddl import load_task, parse_strings
 
-    domain_path = (base / spec.domain).resolve()
+    domain_path = _existing(base, spec.domain, where, "domain")
     perception = _perception_file(spec, base, domain_path, where)
     if spec.problem is not None:
-        planning = load_task(domain_path, (base / spec.problem).resolve())
+        planning = load_task(domain_path, _existing(base, spec.problem, where, "problem"))
         if spec.goal:
             planning = planning.with_state(planning.init, _goal(spec.goal, planning, where))
         return Task(spec, planning, Path(where), perception_file=perception)
@@ -149,12 +150,15 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
         if unknown:
             raise InputError(f"{where}: field goal", f"unknown object {unknown[0]!r} in {lit.atom} "
                              f"(the scene has {', '.join(sorted(objects))})")
-    text = problem_text(spec.name, objects, facts, goal_atoms)
+    # the goal is checked against the domain here, not by the PDDL parser, which would blame the
+    # scene for an unknown predicate, a wrong arity or type in goal: (and in its own words)
+    text = problem_text(spec.name, objects, facts, [])
     planning = parse_strings(domain_path, text, where=f"{where}: field scene")
     for a in goal_atoms:
         why = planning.check_atom(a.atom)
         if why:
             raise InputError(f"{where}: field goal", why)
+    planning = planning.with_state(planning.init, goal_atoms)
     prior = []
     for text_atom in spec.belief:
         lit = _parse(text_atom, where, field="belief")
@@ -163,6 +167,14 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
             raise InputError(f"{where}: field belief", why or f"state what holds, not what does not: {text_atom!r}")
         prior.append(lit.atom)
     return Task(spec, planning, Path(where), frozenset(prior), perception_file=perception)
+
+
+def _existing(base: Path, name: str, where, field: str) -> Path:
+    """The PDDL file a field names; a missing one is the task file's mistake, said as such."""
+    path = (base / name).resolve()
+    if not path.is_file():
+        raise InputError(f"{where}: field {field}", f"no such PDDL file: {path}")
+    return path
 
 
 def _perception_file(spec: TaskFile, base: Path, domain_path: Path, where) -> Path | None:
@@ -204,5 +216,8 @@ def problem_text(name: str, objects: dict[str, str], facts: set[Atom], goal: lis
     objs = "\n    ".join(f"{' '.join(names)} - {t}" for t, names in by_type.items())
     init = "\n    ".join(a.pddl() for a in sorted(facts))
     goals = " ".join(l.atom.pddl() if l.positive else f"(not {l.atom.pddl()})" for l in goal)
+    # the task's name as a PDDL name: any name: is the user's to choose, a space in it no PDDL error
+    name = re.sub(r"[^A-Za-z0-9_-]", "_", name)
+    name = name if name[:1].isalpha() else f"task_{name}"
     return (f"(define (problem {name}) (:domain household)\n  (:objects\n    {objs})\n"
             f"  (:init\n    {init})\n  (:goal (and {goals})))\n")

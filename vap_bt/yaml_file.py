@@ -14,7 +14,7 @@ from typing import Callable, TypeVar
 import yaml
 from pydantic import BaseModel, ValidationError
 
-from vap_bt.errors import InputError
+from vap_bt.errors import InputError, read_text
 
 M = TypeVar("M", bound=BaseModel)
 
@@ -26,12 +26,11 @@ def read_model(path: str | Path, model: type[M], what: str, shape: str,
     path = Path(path)
     if not path.is_file():
         raise InputError(str(path), f"no such {what}")
+    text = read_text(path)
     try:
-        raw = yaml.safe_load(path.read_text())
+        raw = yaml.safe_load(text)
     except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f"{path}:{mark.line + 1}" if mark else str(path)
-        raise InputError(where, f"not valid YAML: {getattr(exc, 'problem', exc)}") from None
+        raise _yaml_error(path, text, exc) from None
     if not isinstance(raw, dict):
         raise InputError(str(path), f"a {what} is a mapping ({shape})")
     if check is not None:
@@ -42,3 +41,13 @@ def read_model(path: str | Path, model: type[M], what: str, shape: str,
         err = exc.errors()[0]
         field = ".".join(str(x) for x in err["loc"]) or "(top level)"
         raise InputError(f"{path}: field {field}", err["msg"]) from None
+
+
+def _yaml_error(path: Path, text: str, exc: yaml.YAMLError) -> InputError:
+    """The YAML parser's complaint in one line, at the line it names (a character YAML does not
+    allow, a ``\\x00``, has a position instead of a mark)."""
+    mark = getattr(exc, "problem_mark", None)
+    position = getattr(exc, "position", None)
+    line = mark.line + 1 if mark else text.count("\n", 0, position) + 1 if position is not None else None
+    problem = " ".join(str(getattr(exc, "problem", None) or str(exc).splitlines()[0]).split())
+    return InputError(f"{path}:{line}" if line else str(path), f"not valid YAML: {problem}")

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from vap_bt.domain import dialect
 from vap_bt.domain.atoms import Atom, Literal
-from vap_bt.domain.formula import TRUE, And
+from vap_bt.domain.formula import FALSE, TRUE, And
 from vap_bt.domain.instances import UPInstances
 from vap_bt.domain.knowledge import ActionSchema, DomainKnowledge, EffectTemplate
 from vap_bt.domain.requirements import Source, check_costs, check_kind, explain_unreadable
@@ -37,8 +37,11 @@ def _reader():
 def _parse_error(path: Path | str, exc: Exception) -> InputError:
     line = getattr(exc, "lineno", None)
     where = f"{path}:{line}" if line else str(path)
-    msg = getattr(exc, "msg", None) or str(exc) or type(exc).__name__
-    msg = " ".join(msg.split())  # one line: the reader's messages span several
+    if isinstance(exc, KeyError):  # unified-planning's reader looks a name up that is not declared
+        return InputError(where, f"PDDL error: undeclared name {exc.args[0]!r} (a type, predicate or object)")
+    msg = getattr(exc, "msg", None) or (str(exc).splitlines() or [type(exc).__name__])[0]
+    # one line: unified-planning's message says where on a second line ("Error from line: 30, col 15")
+    msg = "; ".join(part.strip() for part in str(msg).splitlines() if part.strip()) or type(exc).__name__
     return InputError(where, f"PDDL error: {msg}")
 
 
@@ -131,6 +134,8 @@ def _goal(instances: UPInstances, where) -> tuple[Literal, ...]:
         raise InputError(str(where), f"the goal: {exc}") from None
     if goal == TRUE:
         return ()
+    if goal == FALSE:  # ``(or)``, ``(= a b)`` of two objects: said as such, not as a disjunction
+        raise InputError(str(where), "the goal can never hold: as written it is false")
     parts = goal.parts if isinstance(goal, And) else (goal,)
     if not all(isinstance(p, Literal) for p in parts):
         raise InputError(str(where), f"the goal {goal} is not a conjunction of literals: disjunctive goals "

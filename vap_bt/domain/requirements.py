@@ -20,7 +20,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from vap_bt.errors import InputError
+from vap_bt.errors import InputError, read_text
 
 #: unified-planning problem-kind features vap_bt plans, executes and verifies
 SUPPORTED_FEATURES = frozenset({
@@ -92,7 +92,7 @@ class Source:
 
     @classmethod
     def read(cls, path: Path | str) -> "Source":
-        return cls(str(path), Path(path).read_text())
+        return cls(str(path), read_text(path))
 
     def line_of(self, pattern: str) -> int | None:
         m = re.search(pattern, _without_comments(self.text), flags=re.IGNORECASE)

@@ -9,6 +9,7 @@ per room for things that fall). The same layout names the objects a physical wor
 
 from __future__ import annotations
 
+import re
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
@@ -84,6 +85,7 @@ class Layout(_Strict):
 
     @model_validator(mode="after")
     def _names(self) -> "Layout":
+        _unique_pddl_names(self)
         rooms = set(self.rooms)
         for name, d in self.doors.items():
             for r in d.between:
@@ -124,6 +126,25 @@ class Layout(_Strict):
         if it is None or it.held:
             return None
         return self.room_of(it.on or it.inside)
+
+
+#: a name both PDDL and a goal's atoms read as written: PDDL ignores case, atoms are lower-cased
+_NAME = re.compile(r"[a-z][a-z0-9_-]*")
+
+
+def _unique_pddl_names(layout: Layout) -> None:
+    """Every object of the scene has a name of its own that PDDL reads (else the generated problem
+    fails to parse, and the parser's message points into text the user never wrote)."""
+    kinds: dict[str, str] = {}
+    for kind, names in (("room", set(layout.rooms)), ("floor", {floor_of(r) for r in layout.rooms}),
+                        ("door", layout.doors), ("furniture", layout.furniture), ("item", layout.items)):
+        for name in names:
+            if not _NAME.fullmatch(name):
+                raise ValueError(f"{kind} {name!r}: a name is lower-case letters, digits, _ and -, "
+                                 "starting with a letter")
+            if name in kinds:
+                raise ValueError(f"{name!r} is the name of a {kinds[name]} already; the {kind} needs one of its own")
+            kinds[name] = kind
 
 
 def layout_facts(layout: Layout) -> set[Atom]:
