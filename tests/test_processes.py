@@ -16,16 +16,15 @@ import re
 import signal
 import socket
 import subprocess
-import sys
 import time
 from contextlib import contextmanager
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterator
 
 import pytest
 
 from plugin_fixtures.zenoh_net import endpoint, free_port
+from tools.bench.process_faults import Part, start, vap_bt
 
 pytestmark = pytest.mark.timeout(300)
 
@@ -34,44 +33,7 @@ TASK = str(ROOT / "trees" / "boil_water.yaml")
 SEED = "0"  # boil_water without injection succeeds on this seed embedded as well
 
 
-@dataclass
-class Part:
-    """One process of the episode, its output in files (a pipe nobody reads would stall it)."""
-
-    name: str
-    proc: subprocess.Popen
-    out: Path
-    err: Path
-
-    def stdout(self) -> str:
-        return self.out.read_text()
-
-    def stderr(self) -> str:
-        return self.err.read_text()
-
-    def wait_for(self, pattern: str, timeout: float, stream: str = "stdout") -> re.Match:
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            found = re.search(pattern, self.stdout() if stream == "stdout" else self.stderr())
-            if found:
-                return found
-            if self.proc.poll() is not None:
-                break
-            time.sleep(0.01)
-        raise AssertionError(f"{self.name}: no {pattern!r} on {stream} (exit {self.proc.poll()}):\n"
-                             f"{self.stdout()}\n{self.stderr()}")
-
-
-def _vap_bt(*args: str) -> list[str]:
-    return [sys.executable, "-m", "vap_bt.cli", *args]
-
-
-def _start(tmp: Path, name: str, argv: list[str]) -> Part:
-    out, err = tmp / f"{name}.out", tmp / f"{name}.err"
-    with out.open("w") as o, err.open("w") as e:
-        proc = subprocess.Popen(argv, stdout=o, stderr=e, stdin=subprocess.DEVNULL, cwd=ROOT,
-                                start_new_session=True)  # its own process group: killpg reaches its children
-    return Part(name, proc, out, err)
+_vap_bt, _start = vap_bt, start  # the parts as tools/bench/process_faults.py starts them
 
 
 def _group_gone(pgid: int) -> bool:

@@ -312,6 +312,30 @@ def test_an_unreachable_server_is_an_abstention(serve):
     assert answer.value is None and vlm.requests[0].outcome == "unreachable"
 
 
+def test_a_server_that_stops_answering_ends_the_episode_not_each_question(serve):
+    """The run's wrapper (StopWhenSilent): answers pass; a query whose retries found no server at
+    all, or no response within the deadline, is a TransportError ("transport down"); an error
+    status is a response — the server is there — and stays an abstention."""
+    from vap_bt.errors import TransportError
+    from vap_bt.perception.backends.base import StopWhenSilent
+
+    server = serve(chat("yes"), (500, {}, "overloaded"), (500, {}, "overloaded"), HANG)
+    policy = RetryPolicy(timeout_s=0.3, deadline_s=0.8, attempts=2, backoff_s=0.05)
+    with openai(server, policy=policy) as vlm:
+        watched = StopWhenSilent(vlm)
+        assert watched.ask(YESNO, FRAME).value is True and vlm.silent is None
+        assert watched.ask(YESNO, FRAME).value is None and vlm.silent is None  # 500 twice: an answer of sorts
+        with pytest.raises(TransportError, match=r"the VLM server at http://127\.0\.0\.1:\d+/v1 stopped "
+                                                 r"answering \(timeout after 2 attempt\(s\)"):
+            watched.ask(YESNO, FRAME)
+    gone = serve(chat("yes"))
+    url = gone.url
+    gone.close()
+    with OpenAICompatVLM(f"{url}/v1", "m", policy=FAST) as vlm:
+        with pytest.raises(TransportError, match=r"stopped answering \(unreachable after 3 attempt\(s\)"):
+            StopWhenSilent(vlm).ask(YESNO, FRAME)
+
+
 def test_a_rejected_optional_field_is_dropped_and_the_question_asked_again(serve):
     def script(i, seen):
         if "guided_choice" in seen.body:

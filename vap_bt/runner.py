@@ -30,6 +30,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
+from vap_bt.perception.backends.base import HttpVLM, StopWhenSilent
 from vap_bt.perception.goal_parsing import GoalParse, GoalParser
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile, resolve
@@ -368,6 +369,8 @@ class Session:
             self.endpoint.reset(cfg.seed)
         self._first_request = len(getattr(self.vlm, "requests", ()))
         skills, robot, vlm = self._transport()
+        if isinstance(vlm, HttpVLM):  # a server that stops answering ends the episode, "transport down"
+            vlm = StopWhenSilent(vlm)
         metered = MeteredVLM(vlm)
         self._goal_parser = None if self.words is None else GoalParser(
             metered, self.task.planning, self.words.text, self.words.where, self.words.source)

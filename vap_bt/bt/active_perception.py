@@ -53,6 +53,7 @@ from vap_bt.bt.context import BASIS, Basis, ExecutionContext, Outcome, Phase, Si
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
+from vap_bt.errors import TransportError
 from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
 
 #: success is claimed on a goal atom only when the sufficient views for it are at least this many
@@ -195,6 +196,8 @@ class ActivePerception(py_trees.decorators.Decorator):
             return Status.RUNNING
         try:
             direction = choice(self._job.result())
+        except TransportError:  # the VLM's server is gone: the episode ends (verify_predicate._answer)
+            raise
         except Exception:  # noqa: BLE001 - no answer: another way is taken (see _move)
             direction = None
         return self._move(direction)

@@ -20,6 +20,12 @@ context; the executive handles it and swaps in a new tree:
 5. the planner replans from the corrected graph — reusing the old plan's tail when it still
    works — within the replanning budget.
 
+Before any of that, an execution failure is asked of the skill client whether the robot still
+has a server (``rejoin``, where the client has one: :class:`~vap_bt.transport.client.ZenohSkillClient`).
+A goal that failed because its server died is no fact about the world to replan around: the
+executive waits, bounded, for the robot to be served again (a restarted ``vap-bt serve``) and
+then replans as for any failed action, or the episode ends "transport down" naming the robot.
+
 A goal given in words is read between the survey and the first plan (paper Alg. 1 line 2): the
 ``goal_parser`` (:mod:`vap_bt.perception.goal_parsing`) is handed the scene graph's objects.
 
@@ -258,6 +264,8 @@ class Executive:
                     return out
                 self.phase = "replanning"
                 out.situations.append(situation)
+                if situation.kind == "execution" and situation.action is not None:
+                    self._rejoin(situation.action.name)  # raises TransportError: nobody drives it
                 if situation.kind == "unseen" and self.s.unseen == "stop":
                     out.reason = f"stopped: {situation.detail}"
                     return out
@@ -301,6 +309,19 @@ class Executive:
             return out
         finally:
             self.halt(tree)
+
+    def _rejoin(self, action: str) -> None:
+        """Wait for ``action``'s robot to have a skill server again, if the client can tell
+        (:meth:`~vap_bt.transport.client.ZenohSkillClient.rejoin`); in-process skills always do."""
+        rejoin = getattr(self.skills, "rejoin", None)
+        if rejoin is None:
+            return
+        robot = self.skills.routes.get(action)
+        if robot is not None and not self.skills.servers(robot):
+            self.progress(f"    no skill server of robot {robot!r} is up: waiting for one")
+        back = rejoin(action)
+        if back is not None:
+            self.progress(f"    {back}")
 
     def _replan(self, graph: SceneGraph, s: Situation, plan: Plan, doubted: Counter, on_trial: set[Atom]) -> Plan:
         """A plan from the corrected belief. When the correction leaves none, the observation

@@ -26,6 +26,7 @@ from py_trees.common import Status
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
+from vap_bt.errors import TransportError
 from vap_bt.perception.verification import Round, RoundAsker, shown_plainly, sufficiency_query, unshown, yes_no
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
@@ -139,8 +140,12 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
 
 
 def _answer(f: Future) -> Answer:
-    """A future's answer; a backend that raised (none should) is no answer, never a crash."""
+    """A future's answer; a backend that raised (none should) is no answer, never a crash —
+    except a TransportError: the VLM's server stopped answering (``StopWhenSilent``), and the
+    episode ends "transport down" as when any part goes away, not on abstentions for ever."""
     try:
         return f.result()
+    except TransportError:
+        raise
     except Exception as exc:  # noqa: BLE001 - the contract is an abstention
         return Answer(f"error: {type(exc).__name__}: {exc}", None)

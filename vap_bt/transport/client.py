@@ -9,6 +9,13 @@ What happens next updates the handle under the client's lock:
 * a status message    -> new feedback, or the terminal state and result;
 * the server's liveliness token disappears -> every goal in flight on it ABORTED, "server vanished".
 
+A goal that failed because its robot has no server left (vanished, or nobody answered) is not
+the skill's failure but the transport's: :meth:`ZenohSkillClient.rejoin`, which the executive
+calls before it replans an execution failure, waits up to :data:`REJOIN_TIMEOUT_S` for a server
+of that robot to be up again (a restarted ``vap-bt serve``), and otherwise raises
+:class:`~vap_bt.errors.TransportError` naming the robot, so the episode ends "transport down"
+instead of replanning against a robot nobody drives.
+
 The reply is the latency-critical step (a behaviour reports RUNNING once it is in), so it does not
 go through a Python callback: Zenoh puts it in the query's own channel without taking the GIL,
 and the handle reads it whenever someone looks — :meth:`~ZenohGoalHandle.state` takes it without
@@ -64,6 +71,9 @@ from vap_bt.robot.state import RobotState
 ACCEPT_TIMEOUT_S = 5.0
 #: how long a camera request may take (rendering included)
 CAMERA_TIMEOUT_S = 30.0
+#: how long the executive waits for a vanished skill server's robot to be served again (a
+#: ``vap-bt serve`` restarted by hand or by a supervisor is up in a few seconds) before it gives up
+REJOIN_TIMEOUT_S = 30.0
 
 
 class ZenohGoalHandle:
@@ -181,6 +191,23 @@ class ZenohSkillClient:
         """The names of ``robot``'s skill servers whose liveliness tokens are up now."""
         with self._lock:
             return frozenset(self._alive.get(robot, ()))
+
+    def rejoin(self, action: str, timeout: float = REJOIN_TIMEOUT_S) -> str | None:
+        """Make sure a skill server hosts ``action``'s robot: None when one is up now; a sentence
+        when one came up within ``timeout`` (a restarted server); else a TransportError naming the
+        robot and the command that serves it. Blocks: called between trees, never from a tick."""
+        robot = self.routes.get(action)
+        if robot is None:
+            return None
+        t0 = time.monotonic()
+        with self._changed:
+            if self._alive.get(robot):
+                return None
+            if self._changed.wait_for(lambda: self._alive.get(robot), timeout):
+                back = ", ".join(sorted(self._alive[robot]))
+                return f"skill server {back} of robot {robot!r} is up again after {time.monotonic() - t0:.1f} s"
+        raise TransportError(f"the skill server of robot {robot!r} is gone (it ran {action}) and none came "
+                             f"back within {timeout:g} s (start `vap-bt serve --robot {robot} --world remote` again)")
 
     def close(self) -> None:
         """Fail goals still in flight, withdraw subscriptions; close the session if owned."""
@@ -311,6 +338,7 @@ class ZenohSkillClient:
         with self._lock:
             if sample.kind == zenoh.SampleKind.PUT:
                 self._alive[robot].add(server)
+                self._changed.notify_all()  # rejoin() waits for it
                 return
             self._alive[robot].discard(server)
             lost = [h for h in self._inflight.values() if h.robot == robot and h.server == server]
@@ -345,9 +373,23 @@ class _Queries:
             querier.undeclare()
 
     def ask(self, verb: str, request: Any, expect: type) -> Any:
-        return first_reply(self._queriers[verb].get(payload=encode(request)), expect,
-                           f"{self.what} {verb} on robot {self.robot}",
-                           f"no {self.what} on robot {self.robot!r} answered {verb} within {self.timeout:g} s")
+        t0 = time.monotonic()
+        replies = self._queriers[verb].get(payload=encode(request))
+        try:
+            answer = first_reply(replies, expect, f"{self.what} {verb} on robot {self.robot}", None)
+        except TransportError:
+            if time.monotonic() - t0 < 0.9 * self.timeout:
+                raise  # the server's own error
+            answer = None  # Zenoh's "Timeout" error reply: the query ran out its time
+        if answer is not None:
+            return answer
+        # no answer: the query either ran out its time (a part that is up but does not answer),
+        # or Zenoh closed it at once because nothing serves the key (the part's process is gone);
+        # the report says which ("within 30 s" after 2 ms sent people looking for a hang)
+        if time.monotonic() - t0 < 0.9 * self.timeout:
+            raise TransportError(f"no {self.what} on robot {self.robot!r} is up to answer {verb} "
+                                 f"(nothing serves it: its server is gone)")
+        raise TransportError(f"no {self.what} on robot {self.robot!r} answered {verb} within {self.timeout:g} s")
 
 
 class ZenohRobot:
@@ -420,10 +462,10 @@ def _direct(fn: Any) -> zenoh.handlers.Callback:
     return zenoh.handlers.Callback(fn, indirect=False)
 
 
-def first_reply(replies: Iterable[zenoh.Reply], expect: type, what: str, silence: str) -> Any:
+def first_reply(replies: Iterable[zenoh.Reply], expect: type, what: str, silence: str | None) -> Any:
     """The first reply of a query decoded as ``expect``; a TransportError naming ``what`` for an
     error reply or a payload that is not one (with the server's own explanation when it sent an
-    ErrorReply), and ``silence`` when nobody answered."""
+    ErrorReply), and ``silence`` when nobody answered (None: return None, the caller says why)."""
     for reply in replies:
         if reply.ok is None:
             raise TransportError(f"{what}: {_error_text(reply)}")
@@ -436,6 +478,8 @@ def first_reply(replies: Iterable[zenoh.Reply], expect: type, what: str, silence
             except MessageError:
                 reason = str(exc)
             raise TransportError(f"{what}: {reason}") from None
+    if silence is None:
+        return None
     raise TransportError(silence)
 
 

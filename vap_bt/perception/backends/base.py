@@ -21,6 +21,14 @@ predicate nobody wrote paraphrases for; its reply is checked line by line and re
 an :class:`~vap_bt.perception.vlm.Answer` with ``value=None`` and a record saying why. It is
 safe to call from many threads at once.
 
+``ask`` never raising means a server that is gone would have an episode go on without eyes, every
+check an abstention after its retries (3.5 s each against a closed port, 90 s against one that
+accepts and never answers), for as long as its budgets last. So the backend remembers, in
+:attr:`HttpVLM.silent`, why the last query got no response at all once its retries were spent
+(any response, even an error status, clears it), and the run wraps the backend in
+:class:`StopWhenSilent`, which turns that into a :class:`~vap_bt.errors.TransportError`: the
+episode ends "transport down" with its report, as for any other part that went away.
+
 :meth:`HttpVLM.complete` is the one text-only request (goal parsing): the same template without
 the frame, returning the reply's free text as a :class:`~vap_bt.perception.vlm.Completion`.
 """
@@ -36,6 +44,7 @@ from typing import Any, Callable
 import httpx
 import numpy as np
 
+from vap_bt.errors import TransportError
 from vap_bt.perception.backends.http import Exchange, RetryPolicy, Transport, retry_after
 from vap_bt.perception.backends.image import EncodedImage, ImageCache
 from vap_bt.perception.backends.record import RequestLog, RequestRecord
@@ -111,6 +120,9 @@ class HttpVLM:
         self._transport = Transport(policy, self.auth_headers(api_key), self.retry_hint)
         self._dropped: set[str] = set()
         self._lock = threading.Lock()
+        #: why the last query had no response at all after its retries (unreachable, timeout), or
+        #: None once any response came (see the module docstring)
+        self.silent: str | None = None
 
     # --- what a protocol says -------------------------------------------------------------------
     def endpoint(self) -> str:
@@ -209,6 +221,7 @@ class HttpVLM:
         """POST and read the protocol's reply; None (with ``rec`` saying why) when there is none."""
         ex = self._post(prompt, image, options, deadline, rec)
         rec.status = ex.status
+        self.silent = f"{ex.failure} after {ex.attempts} attempt(s): {ex.detail}" if ex.status is None else None
         if ex.failure:
             rec.outcome, rec.error, rec.reply = ex.failure, ex.detail, ex.text[:ERROR_BODY_CHARS]
             return None
@@ -312,3 +325,29 @@ class HttpVLM:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+
+class StopWhenSilent:
+    """A backend whose server stopped answering ends the episode: after each query, a
+    :class:`~vap_bt.errors.TransportError` if the backend's :attr:`~HttpVLM.silent` says its
+    retries were spent without a response (the module docstring says why). Everything else is
+    the backend's own."""
+
+    def __init__(self, inner: HttpVLM) -> None:
+        self.inner = inner
+        self.name = inner.name
+
+    def ask(self, query: Query, frame: Frame) -> Answer:
+        return self._checked(self.inner.ask(query, frame))
+
+    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
+        return self._checked(self.inner.complete(prompt, purpose))
+
+    def _checked(self, answer):
+        why = self.inner.silent
+        if why is not None:
+            raise TransportError(f"the VLM server at {self.inner.url} stopped answering ({why})")
+        return answer
+
+    def __getattr__(self, name: str):
+        return getattr(self.inner, name)
