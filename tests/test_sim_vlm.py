@@ -248,8 +248,8 @@ def test_judges_the_instance_the_executive_marked():
     # the runner scores a verdict, and records the truth, against what the robot looked at
     world = SimpleNamespace(captures=SimpleNamespace(get=recs.get), oracle=oracle)
     for view, value, right in (("f", True, True), ("f", False, False), ("g", False, True)):
-        runner = SimpleNamespace(world=world, _verified=[], _truths={})
+        runner = SimpleNamespace(world=world, _truths={})
         v = SimpleNamespace(outcome="confirmed", atom=on, value=value, rounds=[Round(view, identified={"bottle1": 0})])
         Session._score_verification(runner, v)
-        assert runner._verified == [right], (view, value)
+        assert (runner._truths[id(v)]["truth"] == value) == right, (view, value)
         assert runner._truths[id(v)]["truth"] == (view == "f") == runner._truths[id(v)]["first_truth"]
