@@ -15,6 +15,7 @@ from unified_planning.engines.compilers import GrounderHelper
 from unified_planning.io import PDDLReader
 
 from vap_bt.domain.grounding import ground
+from vap_bt.domain import dialect
 from vap_bt.domain.dialect import total_cost_from_zero
 from vap_bt.domain.pddl import load_task
 from vap_bt.domain.planner import Planner
@@ -123,3 +124,11 @@ def test_a_parse_error_is_one_line_naming_the_file_and_line(cli, tmp_path):
                          "--world", "symbolic")
     assert code == 2 and len(err.strip().splitlines()) == 1, err
     assert err.startswith(f"vap-bt: {domain}") and "Traceback" not in err
+
+
+def test_a_variable_glued_to_the_word_before_it_is_read_as_fast_downward_reads_it():
+    """IPC 2002 zenotravel writes ``(aircraft?a)``: unified-planning read the word ``aircraft?a``."""
+    task = load_task(IPC / "zenotravel" / "domain.pddl", IPC / "zenotravel" / "problem.pddl")
+    refuel = task.knowledge.instances.candidates("refuel")
+    assert {args[0] for args in refuel} == {"plane1"}  # (aircraft ?a) read, and pruning by it
+    assert dialect.problem_text("(at plane1?c)") == "(at plane1 ?c)"

@@ -9,6 +9,8 @@ so that an error still names the line of the user's file:
 * a predicate declared with one parameter name twice, ``(in ?obj ?obj)`` (IPC 2000 logistics):
   the names of a declaration's parameters mean nothing, unified-planning merges the two and reads
   a one-place predicate; the second becomes ``?obj-2``;
+* a variable glued to the word before it, ``(aircraft?a)`` (IPC 2002 zenotravel): Fast
+  Downward's tokenizer starts a new token at every ``?``, unified-planning's reads one word;
 * a problem that minimizes ``total-cost`` without giving it an initial value (IPC 2018 agricola
   and settlers): Fast Downward starts it at 0, unified-planning then reads the metric as an
   arbitrary final-state expression and the task as numeric planning; ``(= (total-cost) 0)`` is
@@ -23,18 +25,24 @@ from vap_bt.domain import either
 from vap_bt.domain.requirements import Source
 
 _DECLARATION = re.compile(r"\(\s*[^\s()?;]+((?:\s+[^\s()]+)*)\s*\)")
+_GLUED = re.compile(r"(?<=[^\s()?])\?")
 _METRIC = re.compile(r"\(\s*:metric\s+minimize\s+\(\s*total-cost\s*\)", re.IGNORECASE)
 _TOTAL_COST_SET = re.compile(r"\(\s*=\s*\(\s*total-cost\s*\)", re.IGNORECASE)
 
 
 def domain_text(src: Source) -> str:
     """The domain's text as unified-planning's reader takes it."""
-    return _distinct_parameters(either.rewrite(src))
+    return _distinct_parameters(either.rewrite(Source(src.path, _split_variables(src.text))))
 
 
 def problem_text(text: str) -> str:
     """The problem's text as unified-planning's reader takes it."""
-    return total_cost_from_zero(text)
+    return total_cost_from_zero(_split_variables(text))
+
+
+def _split_variables(text: str) -> str:
+    """A space before every ``?`` that follows a word, as Fast Downward's tokenizer reads it."""
+    return _GLUED.sub(" ?", text)
 
 
 def total_cost_from_zero(text: str) -> str:
