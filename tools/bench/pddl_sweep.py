@@ -9,8 +9,9 @@ the Fast Downward benchmark collection; see that folder's README) this runs
    90 s at most — the whole executive: parse, ground, plan, compile, tick every check, score.
 
 and sorts the run into one outcome: ``ran`` (exit 0: the world confirms the goal), ``not_reached``
-(exit 1), ``refused`` (exit 2 with one line saying why), ``no_plan`` (exit 3), ``timeout`` (over
-90 s) or ``traceback`` (anything that printed a Python traceback, or any other exit). The issue's
+(exit 1), ``refused`` (exit 2 with one line saying why), ``no_plan`` (exit 3),
+``planner_timeout`` (exit 5: Fast Downward gave up at the executive's 60 s), ``timeout`` (the
+run over 90 s) or ``traceback`` (anything that printed a Python traceback, or any other exit). The issue's
 promise: every problem Fast Downward solves within 30 s runs within 90 s, and none ends in a
 traceback.
 
@@ -43,8 +44,8 @@ from tools.progress import Progress  # noqa: E402
 IPC = ROOT / "tools" / "bench" / "ipc"
 FD_LIMIT_S = 30.0
 RUN_LIMIT_S = 90.0
-OUTCOMES = ("ran", "not_reached", "refused", "no_plan", "timeout", "traceback")
-EXIT_OUTCOME = {0: "ran", 1: "not_reached", 2: "refused", 3: "no_plan"}
+OUTCOMES = ("ran", "not_reached", "refused", "no_plan", "planner_timeout", "timeout", "traceback")
+EXIT_OUTCOME = {0: "ran", 1: "not_reached", 2: "refused", 3: "no_plan", 5: "planner_timeout"}
 
 
 def bounded(cmd: list[str], limit_s: float, **kw) -> subprocess.CompletedProcess | None:
@@ -101,7 +102,7 @@ def vap_bt_run(domain: Path, problem: Path) -> dict:
     outcome = EXIT_OUTCOME.get(done.returncode, "traceback")
     if "Traceback (most recent call last)" in done.stderr:
         outcome = "traceback"
-    message = err[-1] if err and outcome in ("refused", "no_plan", "traceback", "not_reached") else ""
+    message = err[-1] if err and outcome != "ran" else ""
     steps = None
     if done.returncode in (0, 1):
         try:
