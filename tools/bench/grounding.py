@@ -32,11 +32,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+from tools.bench.pddl_sweep import IPC, fast_downward_command  # noqa: E402
 from tools.progress import Progress  # noqa: E402
 from vap_bt.domain.grounding import ground  # noqa: E402
 from vap_bt.domain.pddl import load_task  # noqa: E402
 
-IPC = ROOT / "tools" / "bench" / "ipc"
 DEFAULT = ["gripper", "blocks", "logistics00", "driverlog", "elevators-opt08-strips", "depot",
            "nomystery-opt11-strips", "pegsol-08-strips", "scanalyzer-08-strips", "visitall-opt11-strips"]
 
@@ -66,16 +66,12 @@ def unified_planning(task) -> tuple[float | None, int | None]:
 
 
 def fast_downward(domain: Path, problem: Path) -> tuple[float, int]:
-    from up_fast_downward import FastDownwardPDDLPlanner
-
-    driver = FastDownwardPDDLPlanner()._base_cmd("plan")[1]
     with tempfile.TemporaryDirectory() as tmp:
-        sas = Path(tmp) / "output.sas"
         t0 = time.perf_counter()
-        subprocess.run([sys.executable, str(driver), "--sas-file", str(sas), "--translate", str(domain), str(problem)],
+        subprocess.run(fast_downward_command(tmp, "--translate", str(domain), str(problem)),
                        capture_output=True, check=True, cwd=tmp)
         seconds = time.perf_counter() - t0
-        operators = len(re.findall(r"^begin_operator$", sas.read_text(), flags=re.M))
+        operators = len(re.findall(r"^begin_operator$", (Path(tmp) / "output.sas").read_text(), flags=re.M))
     return seconds, operators
 
 

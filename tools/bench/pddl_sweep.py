@@ -69,14 +69,19 @@ def bounded(cmd: list[str], limit_s: float, **kw) -> subprocess.CompletedProcess
     return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
 
 
-def fast_downward(domain: Path, problem: Path) -> dict:
-    """Fast Downward's own verdict on the problem within FD_LIMIT_S."""
+def fast_downward_command(tmp: str, *args: str) -> list[str]:
+    """Fast Downward's driver as unified-planning ships it, its translated task in ``tmp``."""
     from up_fast_downward import FastDownwardPDDLPlanner
 
     driver = FastDownwardPDDLPlanner()._base_cmd("plan")[1]
+    return [sys.executable, str(driver), "--sas-file", f"{tmp}/output.sas", *args]
+
+
+def fast_downward(domain: Path, problem: Path) -> dict:
+    """Fast Downward's own verdict on the problem within FD_LIMIT_S."""
     with tempfile.TemporaryDirectory() as tmp:
-        cmd = [sys.executable, str(driver), "--plan-file", f"{tmp}/plan", "--sas-file", f"{tmp}/output.sas",
-               "--alias", "lama-first", str(domain), str(problem)]
+        cmd = fast_downward_command(tmp, "--plan-file", f"{tmp}/plan", "--alias", "lama-first", str(domain),
+                                    str(problem))
         t0 = time.perf_counter()
         done = bounded(cmd, FD_LIMIT_S, cwd=tmp)
         if done is None:
