@@ -14,7 +14,7 @@ import warnings
 from pathlib import Path
 
 from vap_bt.domain import dialect
-from vap_bt.domain.atoms import Atom, Literal
+from vap_bt.domain.atoms import Literal
 from vap_bt.domain.formula import FALSE, TRUE, And
 from vap_bt.domain.instances import UPInstances
 from vap_bt.domain.knowledge import ActionSchema, DomainKnowledge, EffectTemplate
@@ -98,9 +98,7 @@ def from_up(problem, source: str, where: Path | str, sources: list[Source] | Non
     objects = {o.name: o.type.name for o in problem.all_objects}
     knowledge = DomainKnowledge(name=problem.name, parents=parents, predicates=predicates, schemas=schemas,
                                 instances=instances, has_costs=instances.has_costs, domain_file=domain_file)
-    # the explicit values: initial_values would also build every false ground atom (11 s on nomystery)
-    init = frozenset(_atom(k) for k, v in problem.explicit_initial_values.items()
-                     if k.type.is_bool_type() and v.is_true())
+    init = instances.init  # the compiled problem's initial state is the parsed one's
     goal = _goal(instances, where)
     return PlanningTask(knowledge=knowledge, objects=objects, init=init, goal=goal,
                         name=problem.name, source=source, up_problem=problem)
@@ -121,10 +119,6 @@ def _term(node) -> str:
     if node.is_object_exp():
         return node.object().name
     return str(node)
-
-
-def _atom(node) -> Atom:
-    return Atom(node.fluent().name, tuple(a.object().name for a in node.args))
 
 
 def _goal(instances: UPInstances, where) -> tuple[Literal, ...]:
