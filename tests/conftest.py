@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import collections
 import json
 from functools import lru_cache
 from pathlib import Path
@@ -69,3 +70,21 @@ def cli(capsys):
 
 def load_json(text: str) -> dict:
     return json.loads(text)
+
+
+
+def pytest_collection_modifyitems(config, items):
+    """Heaviest files first. The suite runs one file per pytest-xdist worker (``--dist loadfile``),
+    and xdist by default hands out files with the most tests first, which leaves the slow
+    one-test files (a restarted skill server: a minute of real processes) for last, on one worker
+    while the other idles. Files are ordered instead by how many of their tests are marked
+    ``slow`` (most first), collection order otherwise; tools/test.sh turns xdist's reordering off.
+    The order is the same on every worker (xdist requires it)."""
+    def file_of(item):
+        return item.nodeid.split("::")[0]
+
+    slow, first = collections.Counter(), {}
+    for k, item in enumerate(items):
+        slow[file_of(item)] += item.get_closest_marker("slow") is not None
+        first.setdefault(file_of(item), k)
+    items.sort(key=lambda item: (-slow[file_of(item)], first[file_of(item)]))

@@ -111,3 +111,25 @@ def test_default_configuration_is_loopback_only():
     assert json.loads(conf.get_json("transport/link/tx/lease")) == 2000
     client = build_config(TransportSettings(connect=("tcp/127.0.0.1:7448",)))
     assert json.loads(client.get_json("listen/endpoints")) == []
+
+
+def test_the_executives_waits_are_options_of_run_only_and_must_be_positive(capsys):
+    import argparse
+
+    from vap_bt.transport.config import (CAMERA_TIMEOUT_S, REJOIN_TIMEOUT_S, add_executive_waits,
+                                         add_transport_arguments, part_settings)
+
+    run = argparse.ArgumentParser()
+    add_executive_waits(add_transport_arguments(run, default_listen=False))
+    s = part_settings(run.parse_args(["--rejoin-timeout", "2.5", "--camera-timeout", "12"]))
+    assert (s.rejoin_timeout, s.camera_timeout) == (2.5, 12.0)
+    defaults = part_settings(run.parse_args([]))
+    assert (defaults.rejoin_timeout, defaults.camera_timeout) == (REJOIN_TIMEOUT_S, CAMERA_TIMEOUT_S)
+    for bad in ("0", "-1", "nan", "inf", "soon"):
+        with pytest.raises(SystemExit) as exit_:
+            run.parse_args(["--rejoin-timeout", bad])
+        assert exit_.value.code == 2
+        assert f"argument --rejoin-timeout: {bad!r} is not a number of seconds above 0" in capsys.readouterr().err
+    serve = argparse.ArgumentParser()  # a server has no such waits: its settings keep the defaults
+    add_transport_arguments(serve, default_listen=True)
+    assert part_settings(serve.parse_args([])).rejoin_timeout == REJOIN_TIMEOUT_S

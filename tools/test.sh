@@ -5,7 +5,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh || exit 1
-.venv/bin/python -m pytest -q -n "${VAP_BT_TEST_WORKERS:-auto}" --dist loadfile "$@"
+.venv/bin/python -m pytest -q -n "${VAP_BT_TEST_WORKERS:-auto}" --dist loadfile --no-loadscope-reorder "$@"
 code=$?
 if [ "$code" -eq 5 ]; then
   echo "test.sh: pytest collected no test — treating as a failure" >&2

@@ -335,12 +335,12 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",
                     help="zenoh (default): skill servers in this command, reached over a loopback Zenoh link; "
                          "inproc: skills called directly (fast campaigns)")
-    from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments
+    from vap_bt.transport.config import SIM_ENDPOINT, add_executive_waits, add_transport_arguments
 
-    add_transport_arguments(sr, default_listen=False, connect_help=(
+    add_executive_waits(add_transport_arguments(sr, default_listen=False, connect_help=(
         f"run against parts already running: the router of `vap-bt sim` (e.g. {SIM_ENDPOINT}) and the skill "
         "servers of `vap-bt serve --world remote`; repeatable"),
-        listen_help="with --connect: also listen here, as a Zenoh peer; repeatable")
+        listen_help="with --connect: also listen here, as a Zenoh peer; repeatable"))
     sr.add_argument("--report", help="write the full JSON report here")
     sr.add_argument("--rerun", nargs="+", metavar="MODE",
                     help="live view in rerun: 'spawn' (a local viewer), 'serve [PORT]' (gRPC on 127.0.0.1, "

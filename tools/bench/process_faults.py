@@ -279,8 +279,9 @@ def _episode(tmp: Path, arm_argv: list[str] | None = None) -> Iterator[Episode]:
         e.orphans = stop_all(e.every)
 
 
-def run_fault(fault: str, tmp: Path) -> Result:
-    """One episode with ``fault`` injected (see the module docstring)."""
+def run_fault(fault: str, tmp: Path, *run_args: str) -> Result:
+    """One episode with ``fault`` injected (see the module docstring); ``run_args`` go to
+    ``vap-bt run`` (the tests shorten its waits: ``--rejoin-timeout``, ``--camera-timeout``)."""
     tmp.mkdir(parents=True, exist_ok=True)
     flag = tmp / "camera-silent"
     vlm = FlakyVLM() if fault == "vlm" else None
@@ -292,7 +293,7 @@ def run_fault(fault: str, tmp: Path) -> Result:
         with _episode(tmp, arm) as e:
             extra = ["--vlm", "openai", "--vlm-url", vlm.url, "--vlm-model", "flaky"] if vlm else []
             run = e.start(tmp, "run", vap_bt("run", TASK, "--connect", e.endpoint, "--seed", SEED, "--no-injection",
-                                             "--report", str(tmp / "report.json"), *extra))
+                                             "--report", str(tmp / "report.json"), *extra, *run_args))
             sim, running = e.running["sim"], e.running
             if fault == "kill":
                 sim.wait_for(r"\] begin find\(", 300, stream="stderr")

@@ -44,6 +44,7 @@ from vap_bt import plugins
 from vap_bt.errors import TransportError
 from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport import keys
+from vap_bt.transport.config import CAMERA_TIMEOUT_S, REJOIN_TIMEOUT_S
 from vap_bt.transport.messages import (
     CancelRequest,
     ErrorReply,
@@ -69,11 +70,6 @@ from vap_bt.robot.state import RobotState
 
 #: how long a goal request may wait for its server's accept/reject
 ACCEPT_TIMEOUT_S = 5.0
-#: how long a camera request may take (rendering included)
-CAMERA_TIMEOUT_S = 30.0
-#: how long the executive waits for a vanished skill server's robot to be served again (a
-#: ``vap-bt serve`` restarted by hand or by a supervisor is up in a few seconds) before it gives up
-REJOIN_TIMEOUT_S = 30.0
 
 
 class ZenohGoalHandle:
@@ -151,11 +147,12 @@ class ZenohSkillClient:
         routes: Mapping[str, str] | None = None,
         *,
         accept_timeout: float = ACCEPT_TIMEOUT_S,
+        rejoin_timeout: float = REJOIN_TIMEOUT_S,
         owns_session: bool = False,
     ) -> None:
         self.session = session
         self.routes = dict(plugins.routes(plugins.discover_skills()) if routes is None else routes)
-        self.accept_timeout = accept_timeout
+        self.accept_timeout, self.rejoin_timeout = accept_timeout, rejoin_timeout
         self._owns_session = owns_session
         self._prefix = str(session.zid())[:12]
         self._ids = itertools.count(1)
@@ -192,10 +189,12 @@ class ZenohSkillClient:
         with self._lock:
             return frozenset(self._alive.get(robot, ()))
 
-    def rejoin(self, action: str, timeout: float = REJOIN_TIMEOUT_S) -> str | None:
+    def rejoin(self, action: str, timeout: float | None = None) -> str | None:
         """Make sure a skill server hosts ``action``'s robot: None when one is up now; a sentence
         when one came up within ``timeout`` (a restarted server); else a TransportError naming the
-        robot and the command that serves it. Blocks: called between trees, never from a tick."""
+        robot and the command that serves it (``timeout``: the client's ``rejoin_timeout``). Blocks:
+        called between trees, never from a tick."""
+        timeout = self.rejoin_timeout if timeout is None else timeout
         robot = self.routes.get(action)
         if robot is None:
             return None

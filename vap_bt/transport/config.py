@@ -38,6 +38,7 @@ from __future__ import annotations
 import argparse
 import errno
 import json
+import math
 import os
 import re
 import socket
@@ -58,6 +59,12 @@ LEASE_MS = 2000
 KEEP_ALIVE = 4  # keep-alives per lease period
 #: how long :func:`open_session` waits for the configured peers to answer
 PEER_TIMEOUT_S = 5.0
+#: how long a camera request may take (rendering included): ``--camera-timeout``
+CAMERA_TIMEOUT_S = 30.0
+#: how long the executive waits for a vanished skill server's robot to be served again (a
+#: ``vap-bt serve`` restarted by hand or by a supervisor is up in a few seconds) before it gives
+#: up: ``--rejoin-timeout``
+REJOIN_TIMEOUT_S = 30.0
 
 
 @dataclass(frozen=True)
@@ -82,6 +89,10 @@ class TransportSettings:
     connect: tuple[str, ...] = ()
     config_file: str | None = None
     peer_timeout: float = PEER_TIMEOUT_S
+    #: how long a camera (or world-side VLM) request may take, and how long the executive waits for
+    #: a vanished skill server's robot to be served again (client.py's defaults)
+    camera_timeout: float = CAMERA_TIMEOUT_S
+    rejoin_timeout: float = REJOIN_TIMEOUT_S
     mode: str = "peer"
     peer: Peer = Peer()  # who the connect endpoints should reach, for the line said when they do not
 
@@ -236,8 +247,8 @@ def _short(exc: BaseException) -> str:
 
 def add_transport_arguments(parser: argparse.ArgumentParser, *, default_listen: bool,
                             default_endpoint: str = DEFAULT_ENDPOINT, listen_help: str = "",
-                            connect_help: str = "") -> None:
-    """The Zenoh options every command that opens a session shares."""
+                            connect_help: str = "") -> argparse._ArgumentGroup:
+    """The Zenoh options every command that opens a session shares (their group is returned)."""
     g = parser.add_argument_group("zenoh transport")
     hint = f" (default: {default_endpoint} when nothing else is given)" if default_listen else ""
     g.add_argument("--listen", action="append", default=[], metavar="ENDPOINT",
@@ -248,6 +259,28 @@ def add_transport_arguments(parser: argparse.ArgumentParser, *, default_listen: 
                    help="a zenoh JSON5 config used as is (router, TLS, user/password)")
     g.add_argument("--peer-timeout", type=float, default=PEER_TIMEOUT_S, metavar="S",
                    help=f"seconds to wait for configured peers (default {PEER_TIMEOUT_S:g})")
+    return g
+
+
+def add_executive_waits(group) -> None:
+    """The executive's own waits on parts it reaches (``vap-bt run --connect``): how long a frame
+    may take to come, and how long a robot may go without a skill server."""
+    group.add_argument("--camera-timeout", type=_seconds, default=CAMERA_TIMEOUT_S, metavar="S",
+                       help=f"seconds a camera or world-side VLM request may take (default {CAMERA_TIMEOUT_S:g})")
+    group.add_argument("--rejoin-timeout", type=_seconds, default=REJOIN_TIMEOUT_S, metavar="S",
+                       help="seconds to wait for a vanished skill server's robot to be served again before "
+                            f"the episode ends 'transport down' (default {REJOIN_TIMEOUT_S:g})")
+
+
+def _seconds(text: str) -> float:
+    """An argparse type: a finite number of seconds above 0 (argparse names the option)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value) or value <= 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds above 0")
+    return value
 
 
 def settings_from_args(args: argparse.Namespace, *, default_listen: bool,
@@ -255,8 +288,8 @@ def settings_from_args(args: argparse.Namespace, *, default_listen: bool,
     listen = tuple(args.listen)
     if default_listen and not (args.listen or args.connect or args.zenoh_config):
         listen = (default_endpoint,)
-    return TransportSettings(listen=listen, connect=tuple(args.connect),
-                             config_file=args.zenoh_config, peer_timeout=args.peer_timeout, mode=mode)
+    return TransportSettings(listen=listen, connect=tuple(args.connect), config_file=args.zenoh_config,
+                             peer_timeout=args.peer_timeout, mode=mode, **_waits(args))
 
 
 def part_settings(args: argparse.Namespace) -> TransportSettings:
@@ -264,4 +297,11 @@ def part_settings(args: argparse.Namespace) -> TransportSettings:
     ``--connect`` (default :data:`SIM_ENDPOINT`), or a peer when it ``--listen``s too."""
     connect = tuple(args.connect) or (() if args.zenoh_config else (SIM_ENDPOINT,))
     return TransportSettings(listen=tuple(args.listen), connect=connect, config_file=args.zenoh_config,
-                             peer_timeout=args.peer_timeout, mode="peer" if args.listen else "client", peer=SIM)
+                             peer_timeout=args.peer_timeout, mode="peer" if args.listen else "client", peer=SIM,
+                             **_waits(args))
+
+
+def _waits(args: argparse.Namespace) -> dict[str, float]:
+    """The executive's waits, where the command has them (:func:`add_executive_waits`)."""
+    return {"camera_timeout": getattr(args, "camera_timeout", CAMERA_TIMEOUT_S),
+            "rejoin_timeout": getattr(args, "rejoin_timeout", REJOIN_TIMEOUT_S)}

@@ -38,10 +38,11 @@ class ConnectedTransport:
                 raise InputError("--connect", f"the world at {self.where} runs task {info.get('task')!r}, "
                                               f"not {task_name!r}")
             routes = plugins.routes(plugins.discover_skills())
-            self.client = ZenohSkillClient(self._session, routes)
+            self.client = ZenohSkillClient(self._session, routes, rejoin_timeout=settings.rejoin_timeout)
             self._wait_for_servers(sorted(set(routes.values())), settings.peer_timeout)
-            self.robot = ZenohRobot(self._session, CAMERA_ROBOT)
-            self.vlm_client = ZenohVLM(self._session, CAMERA_ROBOT, info.get("vlm")) if world_side_vlm else None
+            self.robot = ZenohRobot(self._session, CAMERA_ROBOT, settings.camera_timeout)
+            self.vlm_client = (ZenohVLM(self._session, CAMERA_ROBOT, info.get("vlm"), settings.camera_timeout)
+                               if world_side_vlm else None)
         except BaseException:
             self._session.close()
             raise
