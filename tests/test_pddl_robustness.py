@@ -55,6 +55,17 @@ def test_ipc_domains_that_ended_in_unified_plannings_grounder_run_end_to_end(cli
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
 
 
+def test_a_goal_of_atoms_without_arguments_is_looked_at_and_settled(cli, tmp_path):
+    """movie's goal is seven 0-ary atoms (``(have-chips)``). The goal check took every 0-ary atom
+    for one about the hand (the household's ``hand_empty``), which no move shows anew, so each
+    stayed on one view — never enough to claim a goal — and the run looked until its time ran out."""
+    code, summary, _ = run(cli, tmp_path, IPC / "movie" / "domain.pddl", IPC / "movie" / "problem.pddl")
+    assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
+    report = load_json((tmp_path / "r.json").read_text())
+    looked = {e["predicate"] for e in report["goal_evidence"]["looked"]}
+    assert {"have-chips", "movie-rewound", "counter-at-zero"} <= looked, report["goal_evidence"]
+
+
 def test_a_type_and_an_object_of_one_name_are_told_apart(cli, tmp_path):
     code, summary, _ = run(cli, tmp_path, DOMAINS / "clash-domain.pddl", DOMAINS / "clash-p1.pddl")
     assert code == 0 and summary["success"] and summary["goal_satisfied"], summary["reason"]
@@ -132,3 +143,57 @@ def test_a_variable_glued_to_the_word_before_it_is_read_as_fast_downward_reads_i
     refuel = task.knowledge.instances.candidates("refuel")
     assert {args[0] for args in refuel} == {"plane1"}  # (aircraft ?a) read, and pruning by it
     assert dialect.problem_text("(at plane1?c)") == "(at plane1 ?c)"
+
+
+def test_more_action_instances_than_the_limit_leave_planning_to_fast_downward():
+    """caldera-sat18's smb_copy, all of whose preconditions are fluents, has 13.7 million
+    candidate instances: enumerating them for the in-process search held the episode 32 s before
+    its first action, and grounding them never ended. Beyond the limit the count stops at once
+    and replanning is Fast Downward's."""
+    from vap_bt.domain.grounding import TooManyInstances
+
+    task = load_task(DOMAINS / "gripper-domain.pddl", DOMAINS / "gripper-p4.pddl")
+    assert len(ground(task).actions) > 5
+    with pytest.raises(TooManyInstances, match="more than 5 action instances"):
+        ground(task, instance_limit=5)
+    caldera = load_task(IPC / "caldera-sat18-adl" / "domain.pddl", IPC / "caldera-sat18-adl" / "problem.pddl")
+    assert len(caldera.knowledge.instances.candidates("smb_copy", limit=100)) == 101  # stops at the limit
+    planner = Planner(caldera, ground_eagerly=True)
+    assert planner.grounded is None  # too many: no in-process search, and no wait for it
+
+
+def test_the_problem_handed_to_unified_planning_lists_no_false_atom():
+    """unified-planning's ``initial_values`` builds every false ground atom too (7 s on
+    maintenance-sat14, once in its quantifiers remover and again in its PDDL writer for every
+    Fast Downward call). The problems vap_bt hands it report only the explicit values, and plans
+    come out as before."""
+    task = load_task(IPC / "maintenance-sat14-adl" / "domain.pddl", IPC / "maintenance-sat14-adl" / "problem.pddl")
+    problem = task.to_up()
+    true_atoms = [k for k, v in problem.initial_values.items() if k.type.is_bool_type() and v.is_true()]
+    assert len(true_atoms) == len(task.init)
+    assert not [k for k, v in problem.initial_values.items() if k.type.is_bool_type() and v.is_false()]
+    assert len(problem.initial_values) <= 2 * len(task.init)  # the full state would be thousands more
+    assert len(task.up_problem.explicit_initial_values) == len(task.init)  # the parsed problem is left as it was
+    plan = Planner(task).plan()
+    assert task.validate(plan.actions)
+
+
+def test_a_cost_aware_search_that_runs_out_of_time_hands_over_to_lama_first(monkeypatch):
+    """data-network-sat18: LAMA's cost-aware greedy search ran out of the 60 s, where lama-first
+    (cost-blind) plans in a second. The cost-aware search has a third of the time; then lama-first."""
+    from vap_bt.domain import planner as planner_mod
+
+    task = load_task(IPC / "elevators-opt08-strips" / "domain.pddl", IPC / "elevators-opt08-strips" / "problem.pddl")
+    assert task.knowledge.has_costs
+    calls, real = [], planner_mod.Planner._fast_downward_with
+
+    def cost_aware_gives_up(self, task, params, timeout):
+        calls.append((bool(params), round(timeout, 3)))
+        if params:
+            raise PlanningTimeout("cost-aware search: no plan in time")
+        return real(self, task, params, timeout)
+
+    monkeypatch.setattr(planner_mod.Planner, "_fast_downward_with", cost_aware_gives_up)
+    plan = Planner(task, fd_timeout_s=30.0).plan()
+    assert calls == [(True, 10.0), (False, 20.0)]
+    assert plan.engine == "fast-downward" and task.validate(plan.actions)

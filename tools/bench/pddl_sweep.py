@@ -111,9 +111,12 @@ def vap_bt_run(domain: Path, problem: Path) -> dict:
     steps = None
     if done.returncode in (0, 1):
         try:
-            steps = json.loads(done.stdout).get("plan_length")
+            summary = json.loads(done.stdout)
         except ValueError:
-            pass
+            summary = {}
+        steps = summary.get("actions_executed")  # a count in the summary (the report lists them)
+        if done.returncode == 1:
+            message = summary.get("reason", message)  # why the goal was not reached, not the table's last line
     return {"outcome": outcome, "run_s": round(seconds, 2), "exit": done.returncode, "message": message[:300],
             "steps": steps}
 

@@ -55,6 +55,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.errors import TransportError
 from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
+from vap_bt.scene.belief import HAND_PREDICATES
 
 #: success is claimed on a goal atom only when the sufficient views for it are at least this many
 #: times, and this many more than, the views that voted against it. The ratio: a model wrong about
@@ -128,8 +129,11 @@ class ActivePerception(py_trees.decorators.Decorator):
     def _in_hand(self) -> bool:
         """Whether the check is about the hand or what belief has in it: the wrist camera moves
         with the hand, so no move of the base shows it better (the gripper's feel decides what
-        the first view could not)."""
-        return not self.atom.args or Atom("holding", self.atom.args[:1]) in self.ctx.graph.facts
+        the first view could not). Another domain's 0-ary atoms (movie's ``have-chips``) are about
+        the scene, which a move does show anew."""
+        if not self.atom.args:
+            return self.atom.predicate in HAND_PREDICATES
+        return Atom("holding", self.atom.args[:1]) in self.ctx.graph.facts
 
     def _decide(self, exhausted: bool) -> Status:
         v = verdict(self._evidence(), exhausted)

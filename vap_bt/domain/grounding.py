@@ -1,8 +1,9 @@
 """Grounding for the search: every action instance the rigid facts allow, as sparse matrices.
 
 Replanning happens over and over with the same objects and a different initial state, so the
-grounded task is built once per object set and reused. Instances come from unified-planning's
-grounder (:mod:`vap_bt.domain.instances`, which prunes parameters by static fluents); the rigid
+grounded task is built once per object set and reused — unless the rigid facts leave more than
+:data:`INSTANCE_LIMIT` instances, when replanning is Fast Downward's alone. Instances come from
+:mod:`vap_bt.domain.instances` (which prunes parameters by the rigid facts); the rigid
 facts — atoms of predicates no action changes — are then substituted into each precondition and
 effect condition (:func:`~vap_bt.domain.formula.assume`), which drops the instances they rule out.
 Fluent facts of the initial state are never used: the executive replans from corrected belief.
@@ -30,12 +31,19 @@ import numpy as np
 from scipy import sparse
 
 from vap_bt.domain.atoms import Atom, Literal
-from vap_bt.domain.formula import FALSE, TRUE, Formula, assume, dnf
+from vap_bt.domain.formula import FALSE, TRUE, Formula, FormulaTooLarge, assume, dnf
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.domain.task import PlanningTask
 
 #: at most this many disjuncts per precondition or effect condition (beyond: Fast Downward only)
 DNF_LIMIT = 4096
+#: at most this many action instances (beyond: Fast Downward only). The in-process search grounds
+#: every instance the rigid facts allow, where Fast Downward's translator grounds only what is
+#: reachable: caldera-sat18's smb_copy, whose preconditions are all fluents, has 13.7 million
+#: candidates, enumerating which took 32 s before the first action; a household task has a few
+#: hundred, the largest IPC domain that ran in the sweep about a thousand. A count, not a time, so
+#: that one seed always plans the same way on any machine
+INSTANCE_LIMIT = 20_000
 
 IdSet = frozenset[int]
 
@@ -87,20 +95,33 @@ class GroundedTask:
         return frozenset((state - (delete - add)) | add)
 
 
-def ground(task: PlanningTask, limit: int = DNF_LIMIT) -> GroundedTask:
+class TooManyInstances(FormulaTooLarge):
+    """More action instances than the in-process search takes (:data:`INSTANCE_LIMIT`)."""
+
+
+def ground(task: PlanningTask, limit: int = DNF_LIMIT, instance_limit: int = INSTANCE_LIMIT) -> GroundedTask:
     """Raises :class:`~vap_bt.domain.formula.FormulaTooLarge` when a precondition has more than
-    ``limit`` disjuncts after the rigid facts are substituted."""
+    ``limit`` disjuncts after the rigid facts are substituted, :class:`TooManyInstances` (one of
+    them) when the rigid facts leave more than ``instance_limit`` action instances."""
     k = task.knowledge
     rigid = frozenset(a for a in task.init if k.is_rigid(a.predicate))
 
     def known(atom: Atom) -> bool | None:
         return (atom in rigid) if k.is_rigid(atom.predicate) else None
 
+    left = instance_limit
+    candidates: dict[str, list[tuple[str, ...]]] = {}
+    for name in k.schemas:
+        candidates[name] = k.instances.candidates(name, limit=left)
+        left -= len(candidates[name])
+        if left < 0:
+            raise TooManyInstances(f"more than {instance_limit} action instances ({name} alone: "
+                                   f"{len(candidates[name])}+)")
     actions: list[GroundAction] = []
     rows: list[tuple[int, tuple[Literal, ...]]] = []
     effects: list[tuple[frozenset[Atom], frozenset[Atom], list]] = []
     for name in k.schemas:
-        for args in sorted(k.instances.candidates(name)):
+        for args in sorted(candidates[name]):
             a = k.ground(name, args)
             disjuncts = _dnf(a.precondition, known, limit)
             if not disjuncts:

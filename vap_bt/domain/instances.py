@@ -27,6 +27,7 @@ costs 1.
 
 from __future__ import annotations
 
+import itertools
 import threading
 from dataclasses import dataclass
 from typing import Iterator
@@ -63,7 +64,8 @@ class UPInstances:
         from unified_planning.model.walkers import Simplifier
 
         if has_quantifiers:
-            problem = QuantifiersRemover().compile(problem, CompilationKind.QUANTIFIERS_REMOVING).problem
+            problem = QuantifiersRemover().compile(explicit_initial_state(problem.clone()),
+                                                   CompilationKind.QUANTIFIERS_REMOVING).problem
         self.problem = problem
         self._actions = {a.name: a for a in problem.actions}
         self._templates = {a.name: _template(a) for a in problem.actions}
@@ -88,12 +90,14 @@ class UPInstances:
         """The problem's goal, quantifiers removed."""
         return conjunction([from_up(g) for g in self.problem.goals])
 
-    def candidates(self, name: str) -> list[tuple[str, ...]]:
-        """Argument tuples of action ``name`` that the rigid facts do not rule out."""
+    def candidates(self, name: str, limit: int | None = None) -> list[tuple[str, ...]]:
+        """Argument tuples of action ``name`` that the rigid facts do not rule out; with ``limit``,
+        at most ``limit + 1`` of them (enough to tell that there are more than ``limit``)."""
         t = self._templates[name]
         required = [l.atom for l in _split(t.precondition)[0]
                     if l.positive and l.atom.predicate in self._rigid]
-        return list(_join(t.params, [sorted(s) for s in self._allowed[name]], required, self._rigid_facts))
+        found = _join(t.params, [sorted(s) for s in self._allowed[name]], required, self._rigid_facts)
+        return list(found if limit is None else itertools.islice(found, limit + 1))
 
     def ground(self, name: str, args: tuple[str, ...]) -> GroundAction:
         action, allowed = self._actions[name], self._allowed[name]
@@ -174,6 +178,39 @@ def _join(params: tuple[str, ...], domains: list[list[str]], required: list[Atom
         binding.pop(params[i], None)
 
     yield from extend(0)
+
+
+def explicit_initial_state(problem):
+    """``problem`` itself, made to report only its explicit initial values as ``initial_values``.
+
+    unified-planning's ``initial_values`` builds the value of every ground fluent, false ones
+    included — tens of thousands of expressions on an IPC problem (7 s on maintenance-sat14's
+    smallest, each time its quantifiers remover copies a problem and each time its PDDL writer
+    writes one for Fast Downward) — and stores them among the explicit values as it goes. Both
+    callers need no false atom: every predicate of a parsed problem defaults to false, and the
+    writer prints only true atoms and numbers. Numeric fluents keep their defaults (few: costs)."""
+    base = type(problem)
+    if base not in _EXPLICIT:
+        # a subclass with no fields of its own, so that the problem's class can be swapped for it
+        _EXPLICIT[base] = type(f"Explicit{base.__name__}", (base,),
+                               {"__slots__": (), "initial_values": property(_explicit_values)})
+    problem.__class__ = _EXPLICIT[base]
+    return problem
+
+
+_EXPLICIT: dict[type, type] = {}
+
+
+def _explicit_values(problem) -> dict:
+    from unified_planning.model.fluent import get_all_fluent_exp
+
+    values = dict(problem.explicit_initial_values)
+    for f in problem.fluents:
+        if not f.type.is_bool_type():
+            for exp in get_all_fluent_exp(problem, f):
+                if exp not in values and (v := problem.initial_value(exp)) is not None:
+                    values[exp] = v
+    return values
 
 
 def initial_atoms(problem) -> frozenset[Atom]:

@@ -147,8 +147,9 @@ class Instantiator(Protocol):
 
     def ground(self, name: str, args: tuple[str, ...]) -> GroundAction: ...
 
-    def candidates(self, name: str) -> list[tuple[str, ...]]:
-        """Argument tuples of ``name`` worth grounding (rigid facts rule the others out)."""
+    def candidates(self, name: str, limit: int | None = None) -> list[tuple[str, ...]]:
+        """Argument tuples of ``name`` worth grounding (rigid facts rule the others out); with
+        ``limit``, at most ``limit + 1`` of them."""
 
 
 @dataclass

@@ -53,10 +53,12 @@ class PlanningTask:
         """This task as a unified-planning problem (for Fast Downward and the validator)."""
         from unified_planning.shortcuts import Not
 
+        from vap_bt.domain.instances import explicit_initial_state
+
         base = self.up_problem
         if base is None:
             raise ValueError("this task was not read from PDDL; no unified-planning problem to rebuild")
-        problem = base.clone()
+        problem = explicit_initial_state(base.clone())
         problem.clear_goals()
         fluents = {f.name: f for f in problem.fluents}
         objs = {o.name: o for o in problem.all_objects}
