@@ -59,6 +59,15 @@ class RelationDetector:
     def __init__(self, model: DetectorModel, knowledge: DomainKnowledge, objects: dict[str, str], seed: int = 0) -> None:
         self.model, self.knowledge, self.objects, self.seed = model, knowledge, objects, seed
         self.rooms = frozenset(o for o, t in objects.items() if t == "room")
+        self._index: _TruthIndex | None = None
+
+    def _indexed(self, truth: frozenset[Atom]) -> "_TruthIndex":
+        """``truth`` indexed by object, built once per state: a frame reports on every item it
+        shows against the same truth, and scanning it per item and per pair cost 97 % of an
+        IPC episode with a thousand facts (caldera: 180 of 204 s)."""
+        if self._index is None or self._index.truth is not truth:
+            self._index = _TruthIndex(truth)
+        return self._index
 
     def report(self, record: CaptureRecord, item: str, truth: frozenset[Atom], room: str | None) -> tuple[Atom, ...]:
         """The relations reported with ``item``'s detection in the frame ``record`` describes;
@@ -77,8 +86,7 @@ class RelationDetector:
 
     def _where(self, record: CaptureRecord, seen: Observability, item: str, truth: frozenset[Atom],
                room: str | None) -> Atom | None:
-        true = next((a for a in sorted(truth) if a.predicate in PLACES and a.args and a.args[0] == item
-                     and self._fits(a)), None)
+        true = next((a for a in self._indexed(truth).places.get(item, ()) if self._fits(a)), None)
         if true is None:
             return None
         if self._reads_yes(record, seen, true):
@@ -105,13 +113,15 @@ class RelationDetector:
 
     def _candidates(self, record: CaptureRecord, item: str, truth: frozenset[Atom]) -> list[Atom]:
         """The blocking and reachable atoms a geometric test would decide about ``item``."""
-        held = {a.args[0] for a in truth if a.predicate == "holding" and a.args}
-        if item in held:
+        index = self._indexed(truth)
+        if item in index.held:
             return []
         out = [a for a in (Atom("reachable", (item,)),) if self._fits(a)]
-        rests = _supports(item, truth)
-        for b in sorted(o for o, v in record.visibility.items() if v > 0.0 and o != item and o not in held):
-            if rests & _supports(b, truth):
+        if "blocking" not in self.knowledge.predicates:
+            return out
+        rests = index.supports.get(item, set())
+        for b in sorted(o for o, v in record.visibility.items() if v > 0.0 and o != item and o not in index.held):
+            if rests & index.supports.get(b, set()):
                 out += [a for a in (Atom("blocking", (b, item)), Atom("blocking", (item, b))) if self._fits(a)]
         return out
 
@@ -133,5 +143,19 @@ class RelationDetector:
             x in self.objects and self.knowledge.is_subtype(self.objects[x], t) for x, t in zip(atom.args, sig))
 
 
-def _supports(obj: str, truth: frozenset[Atom]) -> set[str]:
-    return {a.args[1] for a in truth if a.predicate in ("on", "inside") and len(a.args) == 2 and a.args[0] == obj}
+class _TruthIndex:
+    """One state's facts by object: where each thing rests (``places``, sorted as the state's
+    atoms sort), what it stands on or is in (``supports``), and what the hand holds."""
+
+    def __init__(self, truth: frozenset[Atom]) -> None:
+        self.truth = truth
+        self.places: dict[str, list[Atom]] = {}
+        self.supports: dict[str, set[str]] = {}
+        self.held: set[str] = set()
+        for a in sorted(truth):
+            if a.predicate in PLACES and a.args:
+                self.places.setdefault(a.args[0], []).append(a)
+            if a.predicate in ("on", "inside") and len(a.args) == 2:
+                self.supports.setdefault(a.args[0], set()).add(a.args[1])
+            if a.predicate == "holding" and a.args:
+                self.held.add(a.args[0])

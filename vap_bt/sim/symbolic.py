@@ -231,7 +231,11 @@ class SymbolicWorld:
                                      fingers=self._fingers(), picture=f"sym-view-{self._view}",
                                      labels={o: class_of(o) for o in vis})
         self.captures.add(self._record)
-        return Frame(frame_id, float(self._tick), tuple(self._detect(o, shown) for o in shown), rgb=card, aim=self._aim,
+        # how a detection names the others (the frame's "#k", the map's things by name), and the
+        # truth its relations are read from: both built once per frame, not once per detection
+        refs = {o: reference(k) for k, o in enumerate(shown)} | {o: o for o in self._map.static_names()}
+        truth = frozenset(self.atoms)
+        return Frame(frame_id, float(self._tick), tuple(self._detect(o, refs, truth) for o in shown), rgb=card, aim=self._aim,
                      stand=f"view-{self._view}")
 
     def goto_view(self, view: Viewpoint) -> bool:
@@ -283,7 +287,7 @@ class SymbolicWorld:
         """Seeds a detector draw about ``obj`` in the current view."""
         return f"{self.seed}|{self._view}|{obj}"
 
-    def _detect(self, obj: str, shown: list[str]) -> Detection:
+    def _detect(self, obj: str, refs: dict[str, str], truth: frozenset[Atom]) -> Detection:
         """``obj`` as a robot's detector reports it: its class (:mod:`vap_bt.robot.labels`) and
         where it is — naming itself ``""``, the frame's other detections ``"#k"``, and the map's
         things (rooms, floors, furniture, doors) by name; what it could name in no such way, it
@@ -292,19 +296,19 @@ class SymbolicWorld:
         if piece is not None or door is not None:
             rel = tuple(Atom("in_room", (obj, r)) for r in ((piece.room,) if piece else door.rooms))
         else:
-            rel = self._report(obj)
-        mapped = self._map.static_names()
-        refs = {o: reference(k) for k, o in enumerate(shown)}
-        refs.update({o: o for o in mapped})
-        refs[obj] = SELF
-        return Detection(label_of(obj, self._map),
-                         relations=tuple(Atom(a.predicate, tuple(refs[x] for x in a.args)) for a in rel
-                                         if all(x in refs for x in a.args)))
+            rel = self._report(obj, truth)
 
-    def _report(self, obj: str) -> tuple[Atom, ...]:
+        def ref(x: str) -> str | None:
+            return SELF if x == obj else refs.get(x)
+
+        return Detection(label_of(obj, self._map),
+                         relations=tuple(Atom(a.predicate, tuple(ref(x) for x in a.args)) for a in rel
+                                         if all(ref(x) is not None for x in a.args)))
+
+    def _report(self, obj: str, truth: frozenset[Atom]) -> tuple[Atom, ...]:
         """What the relation detector says of an item in the frame being taken (its errors:
         :mod:`vap_bt.sim.relation_reports`)."""
-        return self.relation_detector.report(self._record, obj, frozenset(self.atoms), self._robot_room())
+        return self.relation_detector.report(self._record, obj, truth, self._robot_room())
 
     # -- robot interfaces: body and map ----------------------------------------------------------
 
