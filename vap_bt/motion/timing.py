@@ -18,9 +18,6 @@ from __future__ import annotations
 import logging
 
 import numpy as np
-import toppra as ta
-import toppra.algorithm as algo
-import toppra.constraint as constraint
 
 from vap_bt.motion.limits import Limits
 from vap_bt.motion.trajectory import Trajectory
@@ -93,6 +90,10 @@ def time_path(
     gridpoints: int | None = None,
 ) -> Trajectory:
     """Fastest rest-to-rest trajectory through ``waypoints`` (K, dof), sampled every ``dt`` s."""
+    import toppra as ta  # on first use: its 2 s (matplotlib with it) are no cost to a run that moves no arm
+    import toppra.algorithm as algo
+    import toppra.constraint as constraint
+
     waypoints = np.asarray(waypoints, dtype=float)
     path_q = _dedupe(waypoints)
     if len(path_q) < 2:

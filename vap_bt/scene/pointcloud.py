@@ -30,9 +30,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import open3d as o3d
+
+if TYPE_CHECKING:
+    import open3d as o3d
 
 from vap_bt.robot.frame import Detection, Frame
 
@@ -85,6 +88,8 @@ def backproject(depth: np.ndarray, mask: np.ndarray, intrinsics: tuple[float, fl
                 camera_pose: np.ndarray, max_range: float, max_pixels: int | None = None) -> o3d.geometry.PointCloud:
     """Points (map frame) of the pixels in ``mask`` with a depth in (0, ``max_range``]; with
     ``max_pixels``, a mask larger than that is sampled every ``stride`` pixels in both axes."""
+    import open3d as o3d  # on first use: a run without depth never pays its 2 s
+
     box = _crop(mask)
     if box is None:
         return o3d.geometry.PointCloud()
@@ -130,6 +135,8 @@ def spacing(cloud: o3d.geometry.PointCloud, params: CloudParams) -> float:
 
 def keep_clusters(cloud: o3d.geometry.PointCloud, params: CloudParams) -> o3d.geometry.PointCloud:
     """The largest DBSCAN cluster and those at least ``keep_share`` of it; noise dropped."""
+    import open3d as o3d  # on first use: a run without depth never pays its 2 s
+
     eps = params.cluster_eps_spacings * spacing(cloud, params)
     labels = np.asarray(cloud.cluster_dbscan(eps, params.cluster_min_points))
     sizes = np.bincount(labels[labels >= 0])
@@ -141,6 +148,8 @@ def keep_clusters(cloud: o3d.geometry.PointCloud, params: CloudParams) -> o3d.ge
 
 def clean(cloud: o3d.geometry.PointCloud, params: CloudParams) -> o3d.geometry.PointCloud:
     """Voxel downsampling, statistical outlier removal, then DBSCAN (see the module docstring)."""
+    import open3d as o3d  # on first use: a run without depth never pays its 2 s
+
     cloud = downsample(cloud, params)
     if len(cloud.points) > params.outlier_neighbors:  # too few points have no statistics
         cloud, _ = cloud.remove_statistical_outlier(params.outlier_neighbors, params.outlier_std)

@@ -30,9 +30,12 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-import open3d as o3d
+
+if TYPE_CHECKING:  # open3d (2 s to import) is needed only for the type names here
+    import open3d as o3d
 
 from vap_bt.robot.frame import Frame
 from vap_bt.scene.pointcloud import CloudParams, downsample, frame_clouds
