@@ -104,7 +104,11 @@ def _interrupted_when(progress: str, tmp_path) -> tuple[subprocess.Popen, str, s
     long enough for a signal to land in them."""
     argv = [sys.executable, "-m", "vap_bt.cli", "run", str(TREES / "collect_cup.yaml"), "--world", "symbolic",
             "--vlm", "sim-http", "--vlm-latency", "0.3", "--report", str(tmp_path / "r.json")]
-    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    # as from a terminal: SIGINT at its default. A child inherits an ignored SIGINT, and Python
+    # then installs no KeyboardInterrupt handler; in the full suite something earlier in a worker
+    # (not found) left it ignored, and both runs went on past their Ctrl-C
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         seen = []
         for line in p.stderr:

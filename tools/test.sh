@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The test suite: sets up if needed, then runs every test (slow ones included), one pytest-xdist
 # worker per core (VAP_BT_TEST_WORKERS to change it; 0 runs in this process).
+# One file per worker, the files with the most slow tests first (tests/conftest.py), so that
+# the long process tests do not end the run on one worker while the other idles.
 # pytest exits 5 when it collects no test; that is a failure here, never a silent pass.
 set -uo pipefail
 cd "$(dirname "$0")/.."
