@@ -177,6 +177,20 @@ def test_held_object_drops_during_navigation(tmp_path, action):
     cup = w.truth.center("cup")
     assert abs(cup[0] - (x - 0.6)) < 0.35  # it fell half way, not at the start or the end
     assert kinds(w) == ["held_object_drops_during_navigation"]
+    assert w.injected()[0].affected == ("cup",)  # what fell, not the place the robot went to
+    w.close()
+
+
+def test_a_navigation_drop_drawn_while_the_hand_is_empty_is_no_situation(tmp_path):
+    """The fault campaign counted such draws as faults — affecting ``floor_kitchen``, the find's
+    first argument — and scored whether the executive "detected" them: nothing happened to detect."""
+    w = house(tmp_path, forced("find", "held_object_drops_during_navigation"))
+    d = w.drivers
+    x, y, yaw = d.base.pose()
+    w.begin_action("find", ("floor_kitchen", "counter", "kitchen"))
+    assert d.base.follow([(x - 0.3, y, yaw), (x - 1.2, y, yaw)], 0.8, never).completed
+    w.end_action()
+    assert w.injected() == [] and holds(w, "hand_empty", "on(cup, counter)")
     w.close()
 
 

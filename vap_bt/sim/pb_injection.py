@@ -3,8 +3,10 @@
 Skills plan and move the robot through the drivers (:mod:`pb_drivers`); the world does not know
 how. What it is told — a sim-only hook, never part of a real robot — is which action a goal is:
 :meth:`Injection.begin` when the goal starts, :meth:`Injection.end` when it ends. ``begin`` draws
-from :class:`~vap_bt.sim.situations.SituationModel` exactly once per action, records the draw (:class:`InjectedSituation`, the
-oracle's ``injected()``), and arms the drawn row. From then on the situation happens in the
+from :class:`~vap_bt.sim.situations.SituationModel` exactly once per action and arms the drawn row; it is
+recorded (:class:`InjectedSituation`, the oracle's ``injected()``) with what it affects — a row
+that drops a held item when the item falls (the item: a drop drawn while the hand holds nothing
+never happens and is not recorded), any other row when drawn (the action's first argument). From then on the situation happens in the
 hardware, never by rewriting the truth:
 
 ===============================================  ================================================
@@ -90,6 +92,7 @@ class _Active:
     action: str
     args: tuple[str, ...]
     spec: SituationSpec | None
+    step: int = 0
     drop: _Drop | None = None
     slip_from: tuple[Thing, float] | None = None  # the handle's thing and joint value at the grip
     paths: int = 0  # base paths started during the action
@@ -121,9 +124,9 @@ class Injection:
     def begin(self, action: str, args: tuple[str, ...], step: int) -> None:
         """Draw for ``action`` (once), record it, and arm it."""
         spec = self.situations.draw(action) if action in {s.action for s in self.situations.table} else None
-        if spec is not None:
-            self.log.append(InjectedSituation(action, tuple(args), spec.kind, step))
-        self.active = a = _Active(action, tuple(args), spec)
+        if spec is not None and spec.drops is None:  # a drop is recorded when, and if, it happens
+            self.log.append(InjectedSituation(action, tuple(args), spec.kind, step, tuple(args[:1])))
+        self.active = a = _Active(action, tuple(args), spec, step)
         if spec is not None and spec.drops is not None:
             if action in ("grasp", "takeout"):
                 a.drop = _Drop("lift")
@@ -218,8 +221,11 @@ class Injection:
         self.lost_grip()
 
     def _let_go(self) -> None:
+        a, item = self.active, self._held_item()
         self.slip(self.robot.grip)
-        self.active.drop = None
+        if a.spec is not None and item is not None:  # what fell: the thing the executive should find
+            self.log.append(InjectedSituation(a.action, a.args, a.spec.kind, a.step, (item.name,)))
+        a.drop = None
 
     def _ghost(self, body: int, link: int | None) -> None:
         g = _Ghost(body, link)
