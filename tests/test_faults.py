@@ -101,7 +101,7 @@ def test_a_small_campaign_records_every_disturbance_kind_and_prints_its_table(tm
 def test_the_watchdog_counts_an_episode_past_its_budget_as_a_hang_and_goes_on():
     task = TREES / "collect_cup.yaml"
     # 0.3 s is less than the worker's first session takes to build (grounding, Fast Downward)
-    jobs = [faults.Job(str(task), "collect_cup", seed, "symbolic", 1.0, 0.0, budget)
+    jobs = [faults.Job(str(task), "collect_cup", seed, "symbolic", 1.0, 0.0, budget, None)
             for seed, budget in ((0, 0.3), (1, 120.0))]
     rows: list = []
     faults.run_campaign(jobs, 1, rows.append)

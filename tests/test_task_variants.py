@@ -60,8 +60,9 @@ def test_perception_corrects_a_wrong_prior_and_the_goal_is_reached(name):
     """Without injected situations every seed reaches the goal, and the survey sees the wrongly
     placed item wherever a view can show it (the detector misses one object in twenty). At most
     one seed may reach it without claiming it: vlm-2 reads states poorly, and a goal atom whose
-    views stay mixed is not claimed (``GOAL_MARGIN``; halve_egg_knife_on_counter seed 2: views of
-    an egg that was cut kept disagreeing whether it was sliced). A claim the world denies is never
+    views stay mixed is not claimed (the claim's bound, :mod:`vap_bt.perception.evidence`;
+    halve_egg_knife_on_counter seed 2: views of an egg that was cut kept disagreeing whether it
+    was sliced). A claim the world denies is never
     allowed."""
     seen = unclaimed = 0
     for r, wrong, survey in episodes(name, injection=False):

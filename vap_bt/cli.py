@@ -121,7 +121,7 @@ def _run(args, stdout) -> int:
                               sensors=args.sensors,
                               early_stop=args.early_stop or None, protocol=args.protocol,
                               viewpoints=args.viewpoints, vlm=args.vlm, vlm_url=args.vlm_url,
-                              second_look=False if args.one_look else None,
+                              second_look=False if args.one_look else None, claim_risk=args.claim_risk,
                               vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction,
                               vlm_latency=args.vlm_latency, vlm_logprobs=False if args.no_logprobs else None)
     check_config(task, cfg)  # bad options in one line, before the first progress line
@@ -200,6 +200,17 @@ def _compiled_tree(args):
                            camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
                            budget=task.options.budget, profile=task.profile)
     return compile_plan(ctx, plan.actions, planning.goal, planning.knowledge)
+
+
+def _risk(text: str) -> float:
+    """An argparse type: a probability strictly between 0 and 0.5 (argparse names the option)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = -1.0
+    if not 0.0 < value < 0.5:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a probability between 0 and 0.5")
+    return value
 
 
 def _write(text: str, output: str | None) -> None:
@@ -330,6 +341,10 @@ def build_parser() -> argparse.ArgumentParser:
     sr.add_argument("--one-look", action="store_true",
                     help="believe the first settled view of a surprise or a goal, as the paper's Alg. 2 does "
                          "(default: a second view from a new picture first)")
+    sr.add_argument("--claim-risk", type=_risk, metavar="P",
+                    help="the accepted chance of claiming a goal atom that does not hold: views are weighed by "
+                         "the VLM's calibration until the odds reach (1 - P)/P (default 0.05; "
+                         "docs/perception.md, 'Looking again')")
     sr.add_argument("--max-replans", type=int, help=f"replans an episode may make (default {MAX_REPLANS})")
     sr.add_argument("--planner", choices=["fast-downward", "search"], help="engine of the first plan")
     sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",

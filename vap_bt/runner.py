@@ -32,6 +32,7 @@ from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
 from vap_bt.perception.backends.base import HttpVLM, StopWhenSilent
 from vap_bt.perception.goal_parsing import GoalParse, GoalParser
+from vap_bt.perception.evidence import CLAIM_RISK
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
@@ -93,6 +94,8 @@ class RunConfig:
     viewpoints: str = "vlm"  # where to look from next: vlm | greedy
     #: a surprise or a goal value needs a second agreeing view (False: the paper's first settled view)
     second_look: bool = True
+    #: the accepted chance of claiming a goal atom that does not hold (vap_bt.perception.evidence)
+    claim_risk: float = CLAIM_RISK
     unseen: str = "look"  # an unsettled precondition: look | go_on | stop
     goal: str | None = None  # a goal in words (--goal), parsed by the VLM after the survey
     parse_instruction: bool = False  # parse the task file's instruction: even when it has goal: atoms
@@ -383,7 +386,7 @@ class Session:
                                      max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
                                      tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
                                      protocol=protocol, viewpoints=cfg.viewpoints, threads=remote,
-                                     second_look=cfg.second_look)
+                                     second_look=cfg.second_look, claim_risk=cfg.claim_risk)
         progress = self.progress
         if self.recorder is not None:  # progress lines go to the recording's log as well
             progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
@@ -555,7 +558,8 @@ class Session:
             "ticks": out.ticks,
             "vlm_queries": vlm.total if vlm is not None else 0,
             "verifications": verifications,
-            "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints},
+            "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints,
+                         "claim_risk": cfg.claim_risk, "calibration": dict(ctx.calibration.source)},
             "unchecked": [u.to_json() for u in ctx.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],
             "wall_s": round(wall, 4),

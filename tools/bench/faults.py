@@ -29,7 +29,7 @@ episodes it holds. The table is printed in markdown.
 
     python tools/bench/faults.py [--episodes 1000] [--world symbolic|pybullet] [--vlm-noise 1]
                                  [--disturbance 0.5] [--budget-s 120] [--jobs 1] [--first-seed 0]
-                                 [--jsonl PATH] [--table-only]
+                                 [--claim-risk P] [--jsonl PATH] [--table-only]
 
 ``--world pybullet`` runs the same campaign in the pybullet household (default 50 episodes,
 budget 900 s each): the same disturbances as its scripted ones.
@@ -72,6 +72,7 @@ class Job:
     vlm_noise: float
     disturbance: float
     budget_s: float
+    claim_risk: float | None  # None: the executive's default (lines written before it say nothing)
 
 
 @dataclass
@@ -141,7 +142,8 @@ def _session(job: Job, sessions: dict):
         task = taskfile.load(job.task_file)
         # the executive's own clean end comes well before the watchdog's
         cfg = RunConfig.from_task(task, world=job.world, injection=True, vlm_noise=job.vlm_noise,
-                                  disturbance=job.disturbance, max_seconds=job.budget_s / 2)
+                                  disturbance=job.disturbance, max_seconds=job.budget_s / 2,
+                                  claim_risk=job.claim_risk)
         sessions[job.task_file] = Session(task, cfg)
     return sessions[job.task_file]
 
@@ -331,7 +333,7 @@ def _commit() -> str:
 def load_rows(path: Path) -> list[EpisodeRow]:
     if not path.exists():
         return []
-    return [EpisodeRow(**json.loads(line)) for line in path.read_text().splitlines() if line.strip()]
+    return [EpisodeRow(**{"claim_risk": None, **json.loads(line)}) for line in path.read_text().splitlines() if line.strip()]
 
 
 def make_jobs(args, paths: list[Path]) -> list[Job]:
@@ -339,7 +341,7 @@ def make_jobs(args, paths: list[Path]) -> list[Job]:
 
     names = [taskfile.load(p).name for p in paths]
     return [Job(str(paths[i % len(paths)]), names[i % len(paths)], args.first_seed + i, args.world, args.vlm_noise,
-                args.disturbance, args.budget_s) for i in range(args.episodes)]
+                args.disturbance, args.budget_s, args.claim_risk) for i in range(args.episodes)]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -351,6 +353,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--budget-s", type=float, help="wall-clock budget per episode (default 120 s symbolic, 900 s pybullet)")
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--first-seed", type=int, default=0)
+    ap.add_argument("--claim-risk", type=float, help="the executive's accepted chance of a false claim per goal atom "
+                                                      "(default: its own, vap_bt.perception.evidence.CLAIM_RISK)")
     ap.add_argument("--tasks", help="comma-separated task names (default: every file in trees/)")
     ap.add_argument("--jsonl", help="one line per episode; resumed if it exists (default docs/figures/faults_<world>_<commit>.jsonl)")
     ap.add_argument("--table-only", action="store_true", help="print the table of --jsonl, run nothing")

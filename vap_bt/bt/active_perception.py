@@ -17,10 +17,12 @@ when no direction is left, or the check is about the hand or what it holds (the 
 moves with the hand: no base move shows it better), the views so far are all there are. Beyond
 the paper (``ctx.second_look``, on by default): a *surprise* — a value against the plan's
 expectation — and a *goal* value need a second view from a different picture that agrees (its
-answers consistent, sufficient or not; for a goal atom found to hold, two settled views, or one
-and two more agreeing) while the
-budget allows a move, since a model's errors are shared by every question about one picture; a goal
-atom that the budget leaves with fewer settled views is unsettled (success is never claimed on one). With
+answers consistent, sufficient or not) while the budget allows a move, since a model's errors
+are shared by every question about one picture; for a goal atom found as the goal wants it the
+views' log odds, each view weighed by the backend's measured calibration, must also reach the
+claim's bound (:mod:`vap_bt.perception.evidence`: a sequential probability-ratio test whose
+chance of claiming an atom that does not hold is about ``ctx.claim_risk``, 5 %). A goal atom
+that the budget leaves short of it is unsettled (success is not claimed on it). With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
 atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
 way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper
@@ -54,18 +56,10 @@ from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.errors import TransportError
+from vap_bt.perception.evidence import claim_threshold
 from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
 from vap_bt.scene.belief import HAND_PREDICATES
 
-#: success is claimed on a goal atom only when the sufficient views for it are at least this many
-#: times, and this many more than, the views that voted against it. The ratio: a model wrong about
-#: one relation in most pictures of it can outvote the truth by one (cut_lemon seed 3 with
-#: injection: four views "sliced", three "not", of a lemon the knife never cut). The difference:
-#: views of one worth each move the odds by one likelihood ratio apiece, so few views must not win
-#: by one either (symbolic cut_lemon seed 13: two "sliced" and one "not" of a lemon a blade failed
-#: to split). A narrow vote leaves the goal unconfirmed: no success is claimed that the views do
-#: not clearly show
-GOAL_MARGIN = 2
 
 
 class ActivePerception(py_trees.decorators.Decorator):
@@ -140,8 +134,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         if v is not None and v.outcome != "unsettled" and self._look_twice(v.value):
             if not exhausted:
                 v = None  # one picture is one draw of the model's errors: another view before believing it
-            elif self.phase == "goal" and v.value:
-                v = Verdict(v.value, "unsettled")  # success is never claimed on one view
+            elif self.phase == "goal" and v.value == self.verify.expected:
+                v = Verdict(v.value, "unsettled")  # success is never claimed on views short of the bound
         if v is None:
             r = self.rounds[-1]
             question = r.questions[0] if r.questions else self.ctx.profile.questions(self.atom, 1)[0]
@@ -167,10 +161,12 @@ class ActivePerception(py_trees.decorators.Decorator):
         it), when the context asks for second looks. A model's errors belong to the picture — its
         five paraphrases can agree and be wrong — so only another view is a second opinion
         (docs/perception.md): one more view that showed the atom's objects and whose answers
-        agreed on the same value, sufficient or not — and for a goal atom found to hold, on which
-        success will be claimed, two views the model judged sufficient, or one and two more whose
-        answers agreed — and, when any view voted against it, :data:`GOAL_MARGIN` times as many,
-        and as many more, sufficient views for it as views against. An atom in doubt
+        agreed on the same value, sufficient or not — and for a goal atom found as the goal
+        wants it, on which success will be claimed, that and views whose log odds reach the
+        claim's bound (:mod:`vap_bt.perception.evidence`: every view weighed by the backend's
+        calibration, views against included, so that a model weak on a relation must show it
+        more often; the chance of claiming an atom that does not hold stays about
+        ``ctx.claim_risk``). An atom in doubt
         (``ctx.doubted``: a precondition of an action that failed when it last ran) is treated as
         a surprise even when confirmed: the failure is evidence against it (an oven the survey
         took for open, into which no arm pose reaches)."""
@@ -179,12 +175,10 @@ class ActivePerception(py_trees.decorators.Decorator):
             return False
         rounds = distinct(self._evidence())
         voted = votes(rounds)
-        agreeing, against = voted.count(value), sum(v != value for v in voted)
-        if self.phase == "goal" and value:  # success is claimed on it: two views judged sufficient, or one and two more agreeing
-            settled = sum(r.settled and r.vote == value for r in rounds)
-            enough = settled >= 2 or settled >= 1 and agreeing >= 3
-            return not (enough and (against == 0 or settled >= GOAL_MARGIN * against
-                                    and settled - against >= GOAL_MARGIN))
+        agreeing = voted.count(value)
+        if self.phase == "goal" and value == self.verify.expected:  # success is claimed on it
+            odds = self.ctx.calibration.log_odds(self.atom.predicate, rounds)
+            return agreeing < 2 or (odds if value else -odds) < claim_threshold(self.ctx.claim_risk)
         return agreeing < 2
 
     def _evidence(self) -> list[Round]:

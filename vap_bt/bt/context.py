@@ -16,6 +16,7 @@ from typing import Callable, Literal
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.bt.inflight import InlineExecutor
+from vap_bt.perception.evidence import CLAIM_RISK, Calibration, default_calibration
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.verification import Round, VoteSettings
@@ -239,6 +240,10 @@ class ExecutionContext:
     viewpoints: ViewpointStrategy = field(default_factory=ViewpointStrategy)
     #: a surprise or a goal value needs a second agreeing view from another picture (beyond the paper)
     second_look: bool = True
+    #: what each kind of view weighs (the backend's calibration) and the accepted chance of
+    #: claiming a goal atom that does not hold (:mod:`vap_bt.perception.evidence`)
+    calibration: Calibration = field(default_factory=default_calibration)
+    claim_risk: float = CLAIM_RISK
     #: preconditions the camera could not make out however often the robot looked again: it acts on
     #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
     on_belief: set[Atom] = field(default_factory=set)

@@ -59,6 +59,7 @@ from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
+from vap_bt.perception.evidence import CLAIM_RISK
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import PlanningTimeout, UnsolvableError
 from vap_bt.perception.profile import PerceptionProfile, resolve
@@ -107,6 +108,8 @@ class ExecutiveSettings:
     #: a surprise or a goal value needs a second settled view from a new picture (beyond the
     #: paper's Alg. 2, which takes the first: see vap_bt.bt.active_perception)
     second_look: bool = True
+    #: the accepted chance of claiming a goal atom that does not hold (vap_bt.perception.evidence)
+    claim_risk: float = CLAIM_RISK
     #: work in flight on a thread pool (a remote model or robot); False: done at once, in-process
     threads: bool = False
 
@@ -207,7 +210,7 @@ class Executive:
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
-                               second_look=self.s.second_look,
+                               second_look=self.s.second_look, claim_risk=self.s.claim_risk,
                                verified=Verified(self.s.protocol.reuse), executor=executor,
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
