@@ -72,8 +72,9 @@ class ActivePerception(py_trees.decorators.Decorator):
         self.verify = child
         self.rounds: list[Round] = []
         self.moves = 0
-        self._job: Future | None = None  # the viewpoint answer, then the move, in flight
-        self._stage = "look"
+        self._job: Future | None = None  # the viewpoint answer, the move or the gripper's word, in flight
+        self._stage = "look"  # look | choose | move | feel
+        self._verdict: Verdict | None = None  # the views' verdict while the gripper is asked
 
     @property
     def atom(self):
@@ -111,6 +112,8 @@ class ActivePerception(py_trees.decorators.Decorator):
             return self._weigh()
         if self._stage == "choose":
             return self._chosen()
+        if self._stage == "feel":
+            return self._body_answered()
         return self._moved()
 
     def _weigh(self) -> Status:
@@ -144,7 +147,26 @@ class ActivePerception(py_trees.decorators.Decorator):
                 return self._move(nxt)
             self._job, self._stage = self.ctx.submit(self.ctx.vlm.ask, nxt, self.verify.observation), "choose"
             return Status.RUNNING
-        felt = self.ctx.felt(self.ctx.graph, self.atom)
+        if self.ctx.feels(self.atom):  # the gripper may overrule: ask it, and wait without blocking
+            self._verdict = v
+            self._job, self._stage = self.ctx.submit(self.ctx.felt, self.ctx.graph, self.atom), "feel"
+            return self._body_answered()  # done at once in process: no tick spent waiting
+        return self._conclude(v, None)
+
+    def _body_answered(self) -> Status:
+        if not self._job.done():
+            return Status.RUNNING
+        try:
+            felt = self._job.result()
+        except TransportError:  # the robot's state service is gone: the episode ends
+            raise
+        except Exception:  # noqa: BLE001 - no word from the body: the camera's verdict stands
+            felt = None
+        self._job = None
+        return self._conclude(self._verdict, felt)
+
+    def _conclude(self, v: Verdict, felt: bool | None) -> Status:
+        """The check's outcome from the views' verdict and the body's word (None: it has none)."""
         if v.outcome == "unsettled":
             if felt is not None:  # the camera could not tell; the gripper can
                 return self._feel(felt)

@@ -230,6 +230,9 @@ class ExecutionContext:
     #: what the body itself says of an atom the camera could not settle (the gripper of
     #: ``holding``/``hand_empty``), or None: proprioception decides where looking could not
     felt: Callable[[SceneGraph, Atom], bool | None] = lambda graph, atom: None
+    #: whether the body may say anything of an atom at all (asking it is a query to the robot's
+    #: state service: behaviours ask it in flight, and only where it may answer)
+    feels: Callable[[Atom], bool] = lambda atom: True
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
     #: names no detector ever finds (the map's rooms and floors): never "missing" from a view

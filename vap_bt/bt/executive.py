@@ -208,7 +208,7 @@ class Executive:
         executor = make_executor(self.s.threads)
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt,
+                               aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
                                verified=Verified(self.s.protocol.reuse), executor=executor,
@@ -720,17 +720,21 @@ class Executive:
         g = self.builder.geometry
         return g is not None and self.misses.at(name, g.centroid(name))
 
+    @staticmethod
+    def _feels(atom: Atom) -> bool:
+        """Whether the gripper can say anything of ``atom``: ``holding(x)`` and ``hand_empty``."""
+        return (atom.predicate, len(atom.args)) in (("hand_empty", 0), ("holding", 1))
+
     def _felt(self, graph: SceneGraph, atom: Atom) -> bool | None:
         """Proprioception's word on ``holding(x)`` and ``hand_empty``: the gripper reports whether
-        its fingers closed on something; which thing it is, is belief's."""
+        its fingers closed on something; which thing it is, is belief's. A query to the robot's
+        state service: behaviours ask it in flight (``ctx.submit``), never from ``update()``."""
+        if not self._feels(atom):
+            return None
         holding = self.body.state().gripper_holding
         if holding is None:
             return None
-        if atom.predicate == "hand_empty" and not atom.args:
-            return not holding
-        if atom.predicate == "holding" and len(atom.args) == 1:
-            return holding and atom in graph.facts
-        return None
+        return (not holding) if atom.predicate == "hand_empty" else (holding and atom in graph.facts)
 
     def _in_hand(self, graph: SceneGraph) -> set[str]:
         """What belief holds, while the gripper feels something between its fingers."""

@@ -15,14 +15,22 @@ back, as for any effect found missing) and the replan does it again. A tool lost
 not do the work, and a model asked afterwards is no second chance to believe it did: cut_lemon
 seed 0 with injection claimed a lemon "sliced" on two views from nearly one spot, after the knife
 fell before the stroke and the first views had said "not sliced".
+
+Asking the gripper is a query to the robot's state service, which can be slow or gone: the
+question is work in flight (``ctx.submit``), polled each tick and cancelled on a halt, like a
+camera frame or a VLM answer — ``update()`` never waits for it.
 """
 
 from __future__ import annotations
+
+from concurrent.futures import Future
 
 import py_trees
 from py_trees.common import Status
 
 from vap_bt.bt.context import ExecutionContext, Situation
+from vap_bt.bt.inflight import cancel_all
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.scene.belief import ROBOT_PREDICATES
 
@@ -33,19 +41,37 @@ class FeelHand(py_trees.behaviour.Behaviour):
     def __init__(self, ctx: ExecutionContext, action: GroundAction, step: int) -> None:
         super().__init__(name="feel hand")
         self.ctx, self.action, self.step = ctx, action, step
+        self._job: Future | None = None
+
+    def initialise(self) -> None:
+        graph, held = self.ctx.graph, sorted(a for a in self.ctx.graph.facts if a.predicate == "holding")
+        self._job = self.ctx.submit(self._lost, graph, held) if held else None
+
+    def _lost(self, graph, held: list[Atom]) -> Atom | None:
+        """The first held atom the gripper denies (runs in flight: each answer is a query)."""
+        return next((atom for atom in held if self.ctx.felt(graph, atom) is False), None)
 
     def update(self) -> Status:
-        for atom in sorted(a for a in self.ctx.graph.facts if a.predicate == "holding"):
-            if self.ctx.felt(self.ctx.graph, atom) is False:
-                lost_its_tool = atom.args[0] in self.action.args and not self._moves_robot()
-                if lost_its_tool:  # a value judged of its effects is not reused (the lean protocol)
-                    self.ctx.verified.distrust({a for a in self.action.may_add if a.predicate != "holding"})
-                self.ctx.situation = Situation("effect", self.action if lost_its_tool else None,
-                                               self.step if lost_its_tool else self.step + 1, atom, True, False,
-                                               f"the gripper holds nothing after {self.action}")
-                self.ctx.progress(f"    situation: the gripper holds nothing after {self.action}")
-                return Status.FAILURE
-        return Status.SUCCESS
+        if self._job is None:
+            return Status.SUCCESS
+        if not self._job.done():
+            return Status.RUNNING
+        atom = self._job.result()  # a TransportError (the state service gone) ends the episode
+        if atom is None:
+            return Status.SUCCESS
+        lost_its_tool = atom.args[0] in self.action.args and not self._moves_robot()
+        if lost_its_tool:  # a value judged of its effects is not reused (the lean protocol)
+            self.ctx.verified.distrust({a for a in self.action.may_add if a.predicate != "holding"})
+        self.ctx.situation = Situation("effect", self.action if lost_its_tool else None,
+                                       self.step if lost_its_tool else self.step + 1, atom, True, False,
+                                       f"the gripper holds nothing after {self.action}")
+        self.ctx.progress(f"    situation: the gripper holds nothing after {self.action}")
+        return Status.FAILURE
+
+    def terminate(self, new_status: Status) -> None:
+        if new_status == Status.INVALID:
+            cancel_all([self._job])
+        self._job = None
 
     def _moves_robot(self) -> bool:
         """Whether the action changes where the robot is or what it has in view (a navigation

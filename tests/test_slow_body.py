@@ -1,0 +1,91 @@
+"""A slow robot-state service never makes a tick slow: asking the gripper is work in flight.
+
+The executive asks the robot's state service whether the fingers closed on something (FeelHand
+after every action that leaves belief holding something; a check about the hand before it
+settles). Over Zenoh that is a query a busy or distant robot may take long to answer; py_trees'
+rule is that ``update()`` never waits, so the question is submitted and polled like a camera
+frame or a VLM answer.
+"""
+
+from __future__ import annotations
+
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import py_trees
+import pytest
+from py_trees.common import Status
+
+from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.feel_hand import FeelHand
+from vap_bt.domain.atoms import Atom
+from vap_bt.runner import RunConfig, Session
+from vap_bt.scene.graph import SceneGraph
+from vap_bt.sim.symbolic import SymbolicWorld
+from vap_bt.taskfile import load
+
+from conftest import TREES
+
+#: the longest a tick may take (the issue's bound) and how slow the state service is made here
+TICK_BOUND_S = 0.05
+SLOW_S = 0.4
+
+
+def test_feel_hand_asks_the_gripper_in_flight_and_waits_without_blocking():
+    task = load(TREES / "collect_cup.yaml")
+    action = task.planning.knowledge.ground("navigate", ("living_room", "kitchen", "door_lk", "cup"))
+    asked = []
+
+    def felt(graph, atom):
+        asked.append(atom)
+        time.sleep(SLOW_S)
+        return False  # the hand came back empty
+
+    with ThreadPoolExecutor(2) as pool:
+        ctx = ExecutionContext(graph=SceneGraph.of_facts({Atom("holding", ("cup",))}), vlm=None, camera=None,
+                               skills=None, felt=felt, executor=pool)
+        node = FeelHand(ctx, action, 3)
+        t0 = time.perf_counter()
+        node.tick_once()
+        assert node.status == Status.RUNNING and time.perf_counter() - t0 < TICK_BOUND_S
+        while node.status == Status.RUNNING:
+            t = time.perf_counter()
+            node.tick_once()
+            assert time.perf_counter() - t < TICK_BOUND_S
+            time.sleep(0.01)
+    assert node.status == Status.FAILURE and asked == [Atom("holding", ("cup",))]
+    assert ctx.situation.atom == Atom("holding", ("cup",)) and ctx.situation.observed is False
+
+
+@pytest.mark.slow
+def test_a_slow_robot_state_service_never_makes_a_tick_take_longer_than_50_ms(monkeypatch):
+    """A whole episode over Zenoh (the default transport) against a robot whose state service
+    takes 0.4 s to answer: it still succeeds, and no tick of its trees takes 50 ms."""
+    real_state, calls = SymbolicWorld.state, []
+
+    def slow_state(self):
+        calls.append(time.perf_counter())
+        time.sleep(SLOW_S)
+        return real_state(self)
+
+    ticks: list[float] = []
+    real_tick = py_trees.trees.BehaviourTree.tick
+
+    def timed_tick(self, *args, **kwargs):
+        t0 = time.perf_counter()
+        try:
+            return real_tick(self, *args, **kwargs)
+        finally:
+            ticks.append(time.perf_counter() - t0)
+
+    task = load(TREES / "collect_cup.yaml")
+    session = Session(task, RunConfig.from_task(task, world="symbolic", transport="zenoh", injection=False))
+    try:
+        monkeypatch.setattr(SymbolicWorld, "state", slow_state)
+        monkeypatch.setattr(py_trees.trees.BehaviourTree, "tick", timed_tick)
+        r = session.episode(0)
+    finally:
+        session.close()
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+    assert len(calls) >= 3 and ticks  # the gripper was asked during the trees, which were ticked
+    assert max(ticks) < TICK_BOUND_S, sorted(ticks)[-5:]
