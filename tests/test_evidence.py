@@ -56,7 +56,7 @@ def test_the_calibration_file_says_where_it_comes_from_and_kept_the_campaigns_se
 def _walk(cal: Calibration, predicate: str, truth: bool, rng: random.Random, cap: int) -> bool:
     """Views drawn from the calibration's own frequencies for ``truth``, weighed until the claim's
     bound is reached (True) or the cap or a strong contrary value ends the walk."""
-    row = cal._row(predicate)
+    row = cal.row(predicate)
     freq = [row.get(k, (0, 0))[0 if truth else 1] for k in VIEW_KINDS]
     bound, odds = claim_threshold(CLAIM_RISK), 0.0
     for _ in range(cap):

@@ -92,6 +92,19 @@ def test_replan_of_a_seen_state_comes_from_the_cache():
     assert planner.replan(task.init).actions == first.actions
 
 
+def test_a_cached_plan_is_the_one_the_same_engine_would_find_afresh():
+    """A warm session's planner must plan as a fresh one would: Fast Downward's first plan of a
+    state is no answer to a replan from it (the in-process search's, found afresh), or an
+    episode's plans would depend on the episodes run before it in the same worker."""
+    task = load(TREES / "boil_water.yaml").planning
+    warm = Planner(task)
+    warm.plan()
+    again = warm.replan(task.init)
+    assert again.engine != "cache"
+    assert again.actions == Planner(task).replan(task.init).actions
+    assert warm.replan(task.init).engine == "cache" and warm.plan().engine == "cache"
+
+
 def test_fast_downward_runs_side_by_side_in_one_folder(tmp_path):
     """Fast Downward's driver puts its translated task in the working directory by default: two
     planners at once from one folder searched each other's task (the task benchmark's workers

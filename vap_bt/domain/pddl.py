@@ -25,7 +25,7 @@ from vap_bt.errors import InputError
 
 def _reader():
     from unified_planning.io import PDDLReader
-    from unified_planning.shortcuts import get_environment
+    from unified_planning.environment import get_environment  # not .shortcuts: it imports every engine (1 s)
 
     env = get_environment()
     env.credits_stream = None  # keep stdout for our own progress and reports

@@ -100,6 +100,9 @@ class Planner:
     ground_eagerly: bool = False
     _grounded: GroundedTask | None = field(default=None, init=False, repr=False)
     _too_large: bool = field(default=False, init=False, repr=False)
+    #: plans found, keyed by the engine path (Fast Downward alone, or the in-process search first),
+    #: the state and the goal: a cached plan is the one a fresh planner would find there, so an
+    #: episode's plans do not depend on which episodes a warm session ran before it
     _cache: dict = field(default_factory=dict, init=False, repr=False)
 
     @property
@@ -117,11 +120,12 @@ class Planner:
         """A first plan from ``state`` (default: the task's initial state)."""
         task = self.task.with_state(state if state is not None else self.task.init, goal)
         t0 = time.perf_counter()
-        key = (task.init, task.goal)
+        fd_only = self.first_engine == "fast-downward"
+        key = ("fast-downward" if fd_only else "search", task.init, task.goal)
         if key in self._cache:
             return Plan(list(self._cache[key]), "cache", time.perf_counter() - t0)
-        found = self._fast_downward(task) if self.first_engine == "fast-downward" else self._search_or_fd(task)
-        plan = self._accept(task, *found, t0)
+        found = self._fast_downward(task) if fd_only else self._search_or_fd(task)
+        plan = self._accept(key, task, *found, t0)
         if self.ground_eagerly:
             _ = self.grounded
         return plan
@@ -135,10 +139,10 @@ class Planner:
             suffix = self._shortest_valid_suffix(task, previous)
             if suffix is not None:
                 return Plan(suffix, "reuse", time.perf_counter() - t0)
-        key = (task.init, task.goal)
+        key = ("search", task.init, task.goal)
         if key in self._cache:
             return Plan(list(self._cache[key]), "cache", time.perf_counter() - t0)
-        return self._accept(task, *self._search_or_fd(task), t0)
+        return self._accept(key, task, *self._search_or_fd(task), t0)
 
     # -- engines -------------------------------------------------------------------------------
 
@@ -203,7 +207,7 @@ class Planner:
             raise PlanningTimeout(f"Fast Downward found no plan for {task.name} within {self.fd_timeout_s:g} s")
         raise UnsolvableError(f"Fast Downward found no plan for {task.name}: {result.status.name}")
 
-    def _accept(self, task: PlanningTask, actions: list[GroundAction], engine: str, t0: float) -> Plan:
+    def _accept(self, key: tuple, task: PlanningTask, actions: list[GroundAction], engine: str, t0: float) -> Plan:
         if not task.validate(actions):
             raise RuntimeError(f"{engine} returned a plan that does not reach the goal: {[str(a) for a in actions]}")
         verdict = validation.validate(task, actions)
@@ -213,7 +217,7 @@ class Planner:
         if verdict.cost is not None and verdict.cost != sum(a.cost for a in actions):
             raise RuntimeError(f"unified-planning costs the {engine} plan {verdict.cost}, "
                                f"our grounding {sum(a.cost for a in actions)}")
-        self._cache[(task.init, task.goal)] = tuple(actions)
+        self._cache[key] = tuple(actions)
         return Plan(actions, engine, time.perf_counter() - t0)
 
 

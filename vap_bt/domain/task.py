@@ -51,8 +51,6 @@ class PlanningTask:
 
     def to_up(self):
         """This task as a unified-planning problem (for Fast Downward and the validator)."""
-        from unified_planning.shortcuts import Not
-
         from vap_bt.domain.instances import explicit_initial_state
 
         base = self.up_problem
@@ -69,7 +67,7 @@ class PlanningTask:
             problem.set_initial_value(fluents[a.predicate](*(objs[x] for x in a.args)), True)
         for l in self.goal:
             exp = fluents[l.atom.predicate](*(objs[x] for x in l.atom.args))
-            problem.add_goal(exp if l.positive else Not(exp))
+            problem.add_goal(exp if l.positive else problem.environment.expression_manager.Not(exp))
         return problem
 
     def validate(self, plan: list[GroundAction]) -> bool:

@@ -61,7 +61,9 @@ class Calibration:
     counts: Mapping[str, Mapping[str, tuple[int, int]]]
     source: Mapping[str, object] = field(default_factory=dict)
 
-    def _row(self, predicate: str) -> Mapping[str, tuple[int, int]]:
+    def row(self, predicate: str) -> Mapping[str, tuple[int, int]]:
+        """The counts ``predicate``'s views are weighed by: its own, or the pooled ones when it
+        has fewer than :data:`MIN_VIEWS` of either truth."""
         row = self.counts.get(predicate)
         if row is not None and min(sum(t for t, _ in row.values()), sum(f for _, f in row.values())) >= MIN_VIEWS:
             return row
@@ -74,7 +76,7 @@ class Calibration:
     def weight(self, predicate: str, kind: str) -> float:
         """The log likelihood ratio of a view of ``kind``, for the atom holding (add-one-half
         smoothing: a kind never seen with one truth is rare with it, not impossible)."""
-        row = self._row(predicate)
+        row = self.row(predicate)
         true_n, false_n = sum(t for t, _ in row.values()), sum(f for _, f in row.values())
         t, f = row.get(kind, (0, 0))
         return math.log((t + 0.5) / (true_n + 1)) - math.log((f + 0.5) / (false_n + 1))

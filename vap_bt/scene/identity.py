@@ -54,7 +54,6 @@ from dataclasses import dataclass, replace
 from typing import Callable, Mapping
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.camera import Aim, Viewpoint
@@ -313,6 +312,8 @@ class Identifier:
                 c = self._cost(dets[k], points[k], known[n], self.vocabulary.get(n), names, strict)
                 if c is not None:
                     cost[i, j] = c
+        from scipy.optimize import linear_sum_assignment  # on first use: scipy.optimize costs 0.6 s at start-up
+
         rows, cols = linear_sum_assignment(cost)
         for i, j in zip(rows, cols):
             if cost[i, j] < _GATED:
