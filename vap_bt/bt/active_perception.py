@@ -61,7 +61,6 @@ from vap_bt.perception.verification import Round, Verdict, choice, distinct, tar
 from vap_bt.scene.belief import HAND_PREDICATES
 
 
-
 class ActivePerception(py_trees.decorators.Decorator):
     """Look again, from elsewhere, until a check's views decide (budget K)."""
 
