@@ -112,6 +112,18 @@ def test_every_help_example_is_a_real_command_line(command):
         assert all((ROOT / w).is_file() for w in named), line
 
 
+@pytest.mark.parametrize("command", ["plan", "run", "export", "tree", "skills", "serve", "sim"])
+def test_every_argument_of_every_command_is_explained_in_plain_text(command):
+    """``--help`` gives each positional and option a line of text, and shows no reStructuredText
+    (``sim --help`` printed its module docstring's double back-quotes)."""
+    from vap_bt.cli import build_parser
+
+    parser = build_parser()
+    command_parser = parser._subparsers._group_actions[0].choices[command]
+    assert [a.dest for a in command_parser._actions if not a.help] == []
+    assert "``" not in command_parser.format_help()
+
+
 def test_top_level_help_shows_examples(cli):
     code, out, _ = cli("--help")
     assert code == 0 and "examples:\n  vap-bt run trees/collect_cup.yaml" in out

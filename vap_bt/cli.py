@@ -213,6 +213,17 @@ def _risk(text: str) -> float:
     return value
 
 
+def _task_arguments(p: argparse.ArgumentParser) -> None:
+    """What a command runs or compiles (run, export, tree): a task file, or a PDDL domain and
+    problem, and which checks its tree has."""
+    p.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
+    p.add_argument("--domain", help="a PDDL domain file, instead of a task file (with --problem)")
+    p.add_argument("--problem", help="a PDDL problem file, instead of a task file (with --domain)")
+    p.add_argument("--verify", choices=["both", "pre", "eff", "none"],
+                   help="which checks the tree has: preconditions and effects, one of them, or none (the "
+                        "closed-world baseline); default the task file's options.verify, else both")
+
+
 def _write(text: str, output: str | None) -> None:
     if output:
         Path(output).write_text(text)
@@ -280,9 +291,10 @@ def build_parser() -> argparse.ArgumentParser:
     sp = sub.add_parser("plan", help="print a plan for a PDDL domain and problem", **_examples(
         "vap-bt plan tests/domains/gripper-domain.pddl tests/domains/gripper-p4.pddl",
         "vap-bt plan tests/domains/blocksworld-domain.pddl tests/domains/blocksworld-p6.pddl --engine search"))
-    sp.add_argument("domain")
-    sp.add_argument("problem")
-    sp.add_argument("--engine", choices=["fast-downward", "search"], default="fast-downward")
+    sp.add_argument("domain", help="the PDDL domain file")
+    sp.add_argument("problem", help="the PDDL problem file")
+    sp.add_argument("--engine", choices=["fast-downward", "search"], default="fast-downward",
+                    help="Fast Downward through unified-planning (default), or the in-process greedy search")
     sp.set_defaults(func=cmd_plan)
 
     sr = sub.add_parser("run", help="run a task (or a PDDL problem) end to end", **_examples(
@@ -299,14 +311,12 @@ def build_parser() -> argparse.ArgumentParser:
                     "3 no plan exists from what the robot saw, 4 transport down, 5 the planner ran\n"
                     "out of time, 130 interrupted (Ctrl-C: the report so far and the summary are still\n"
                     "written).")
-    sr.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
-    sr.add_argument("--domain")
-    sr.add_argument("--problem")
+    _task_arguments(sr)
     sr.add_argument("--world", choices=["symbolic", "pybullet"],
                     help="the world to run in (default: the task file's world:; the household's task files "
                          "say pybullet)")
-    sr.add_argument("--seed", type=int, default=0)
-    sr.add_argument("--verify", choices=["both", "pre", "eff", "none"])
+    sr.add_argument("--seed", type=int, default=0, help="the episode's seed: the world's, the simulated VLM's and "
+                                                         "the injection's draws (default 0)")
     sr.add_argument("--budget", type=int, help="viewpoint budget K")
     sr.add_argument("--vlm", choices=["sim", "sim-http", "openai", "gemini"],
                     help="sim (default, offline): the world-side simulated VLM; sim-http: the same model behind a "
@@ -371,10 +381,7 @@ def build_parser() -> argparse.ArgumentParser:
     se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML", **_examples(
         "vap-bt export trees/collect_cup.yaml -o tree.xml",
         "vap-bt export trees/pick_plate.yaml --verify eff"))
-    se.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
-    se.add_argument("--domain")
-    se.add_argument("--problem")
-    se.add_argument("--verify", choices=["both", "pre", "eff", "none"])
+    _task_arguments(se)
     se.add_argument("-o", "--output", help="write the XML here instead of stdout")
     se.set_defaults(func=cmd_export)
 
@@ -384,10 +391,7 @@ def build_parser() -> argparse.ArgumentParser:
         "vap-bt tree trees/boil_water.yaml --format xml --verify eff   # BehaviorTree.CPP v4 XML"),
         description="Plans from the task file's stated initial state (planning only: no world runs, "
                     "nothing is perceived) and prints the tree the executive would start with.")
-    st.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
-    st.add_argument("--domain")
-    st.add_argument("--problem")
-    st.add_argument("--verify", choices=["both", "pre", "eff", "none"])
+    _task_arguments(st)
     st.add_argument("--format", choices=["ascii", "dot", "xml"], default="ascii",
                     help="ascii (default) and dot: py_trees' own display; xml: the BehaviorTree.CPP v4 export")
     st.add_argument("-o", "--output", help="write the tree here instead of stdout")
@@ -421,7 +425,7 @@ def _add_transport_commands(sub) -> None:
         "vap-bt serve --robot ur5e --world remote                 # in another shell",
         "vap-bt serve --robot base --world remote                 # in a third",
         "vap-bt run trees/boil_water.yaml --connect tcp/127.0.0.1:7447"),
-        description=sim_host.__doc__.split("\n\n")[0])
+        description=sim_host.__doc__.split("\n\n")[0].replace("``", ""))  # the docstring's RST, as plain text
     sim_host.add_sim_arguments(sm)
     sm.set_defaults(func=sim_host.run_sim)
 

@@ -50,7 +50,7 @@ def add_serve_arguments(p: argparse.ArgumentParser) -> None:
                    help="symbolic, pybullet, remote (the world of a running `vap-bt sim`, reached at --connect, "
                         "default tcp/127.0.0.1:7447), or package.module:factory (default symbolic)")
     p.add_argument("--task", help="task file the symbolic/pybullet world is built from")
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--seed", type=int, default=0, help="the world's first seed (a run resets it to its own)")
     p.add_argument("--world-arg", action="append", default=[], metavar="KEY=VALUE",
                    help="keyword argument for a package.module:factory world; repeatable")
     p.add_argument("--name", help="server name in the liveliness token (one robot only)")

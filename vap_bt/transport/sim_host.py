@@ -111,7 +111,7 @@ def run_sim(args: argparse.Namespace) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m vap_bt.transport.sim_host``: the sim command on its own."""
-    parser = argparse.ArgumentParser(prog="vap-bt sim", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="vap-bt sim", description=__doc__.splitlines()[0].replace("``", ""))
     add_sim_arguments(parser)
     args = parser.parse_args(argv)
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
