@@ -9,6 +9,7 @@ frame or a VLM answer.
 
 from __future__ import annotations
 
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 
@@ -60,15 +61,27 @@ def test_feel_hand_asks_the_gripper_in_flight_and_waits_without_blocking():
 @pytest.mark.slow
 def test_a_slow_robot_state_service_never_makes_a_tick_take_longer_than_50_ms(monkeypatch):
     """A whole episode over Zenoh (the default transport) against a robot whose state service
-    takes 0.4 s to answer: it still succeeds, and no tick of its trees takes 50 ms."""
-    real_state, calls = SymbolicWorld.state, []
+    takes 0.4 s to answer: it still succeeds, no tick asks the state service itself (every query
+    leaves from a worker thread while the tree goes on), and ticks stay under 50 ms — all of them
+    but for what the machine's load alone does: in one full-suite run a single tick took 0.52 s
+    with no query in it (two xdist workers busy with pybullet), so the bound is on the 99th
+    percentile, and a tick that asked the service (0.4 s and more before this) fails outright."""
+    from vap_bt.transport.client import ZenohRobot
+
+    real_state, served = SymbolicWorld.state, []
 
     def slow_state(self):
-        calls.append(time.perf_counter())
+        served.append(time.perf_counter())
         time.sleep(SLOW_S)
         return real_state(self)
 
-    ticks: list[float] = []
+    real_query, asked = ZenohRobot.state, []
+
+    def query(self):
+        asked.append((threading.get_ident(), time.perf_counter()))
+        return real_query(self)
+
+    ticks: list[tuple[int, float, float]] = []
     real_tick = py_trees.trees.BehaviourTree.tick
 
     def timed_tick(self, *args, **kwargs):
@@ -76,16 +89,20 @@ def test_a_slow_robot_state_service_never_makes_a_tick_take_longer_than_50_ms(mo
         try:
             return real_tick(self, *args, **kwargs)
         finally:
-            ticks.append(time.perf_counter() - t0)
+            ticks.append((threading.get_ident(), t0, time.perf_counter()))
 
     task = load(TREES / "collect_cup.yaml")
     session = Session(task, RunConfig.from_task(task, world="symbolic", transport="zenoh", injection=False))
     try:
         monkeypatch.setattr(SymbolicWorld, "state", slow_state)
+        monkeypatch.setattr(ZenohRobot, "state", query)
         monkeypatch.setattr(py_trees.trees.BehaviourTree, "tick", timed_tick)
         r = session.episode(0)
     finally:
         session.close()
     assert r["success"] and r["goal_satisfied"], r["reason"]
-    assert len(calls) >= 3 and ticks  # the gripper was asked during the trees, which were ticked
-    assert max(ticks) < TICK_BOUND_S, sorted(ticks)[-5:]
+    assert len(served) >= 3 and ticks  # the gripper was asked during the trees, which were ticked
+    in_tick = [(t, q) for t, q in asked for thread, t0, t1 in ticks if thread == t and t0 <= q <= t1]
+    assert in_tick == [], "a tick asked the robot-state service itself"
+    durations = sorted(t1 - t0 for _, t0, t1 in ticks)
+    assert durations[int(0.99 * (len(durations) - 1))] < TICK_BOUND_S, durations[-5:]
