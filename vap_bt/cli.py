@@ -425,7 +425,7 @@ def _add_transport_commands(sub) -> None:
         "vap-bt serve --robot ur5e --world remote                 # in another shell",
         "vap-bt serve --robot base --world remote                 # in a third",
         "vap-bt run trees/boil_water.yaml --connect tcp/127.0.0.1:7447"),
-        description=sim_host.__doc__.split("\n\n")[0].replace("``", ""))  # the docstring's RST, as plain text
+        description=sim_host.DESCRIPTION)
     sim_host.add_sim_arguments(sm)
     sm.set_defaults(func=sim_host.run_sim)
 

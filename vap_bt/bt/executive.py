@@ -59,9 +59,9 @@ from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
-from vap_bt.perception.evidence import CLAIM_RISK
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import PlanningTimeout, UnsolvableError
+from vap_bt.perception.evidence import CLAIM_RISK
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.viewpoints import ViewpointStrategy

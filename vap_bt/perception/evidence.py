@@ -41,7 +41,6 @@ CLAIM_RISK = 0.05
 #: 30, but the predicate's own — the pooled ratios mix a model's strong existence questions with
 #: its weak state ones, and would weigh a rarely false ``filled`` as if it were ``inview``
 MIN_VIEWS = 30
-POOLED = "*"
 
 
 def view_kind(r: Round) -> str | None:
@@ -60,6 +59,9 @@ class Calibration:
 
     counts: Mapping[str, Mapping[str, tuple[int, int]]]
     source: Mapping[str, object] = field(default_factory=dict)
+    #: each predicate's log likelihood ratios, worked out on first use (a goal check weighs every
+    #: view it has, each tick it decides)
+    _weights: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def row(self, predicate: str) -> Mapping[str, tuple[int, int]]:
         """The counts ``predicate``'s views are weighed by: its own, or the pooled ones when it
@@ -73,19 +75,27 @@ class Calibration:
         return {k: (sum(r.get(k, (0, 0))[0] for r in self.counts.values()),
                     sum(r.get(k, (0, 0))[1] for r in self.counts.values())) for k in VIEW_KINDS}
 
+    def weights(self, predicate: str) -> Mapping[str, float]:
+        """The log likelihood ratio of each view kind, for an atom of ``predicate`` holding
+        (add-one-half smoothing: a kind never seen with one truth is rare with it, not impossible)."""
+        if predicate not in self._weights:
+            row = self.row(predicate)
+            true_n, false_n = sum(t for t, _ in row.values()), sum(f for _, f in row.values())
+            self._weights[predicate] = {
+                k: math.log((t + 0.5) / (true_n + 1)) - math.log((f + 0.5) / (false_n + 1))
+                for k, (t, f) in ((k, row.get(k, (0, 0))) for k in VIEW_KINDS)}
+        return self._weights[predicate]
+
     def weight(self, predicate: str, kind: str) -> float:
-        """The log likelihood ratio of a view of ``kind``, for the atom holding (add-one-half
-        smoothing: a kind never seen with one truth is rare with it, not impossible)."""
-        row = self.row(predicate)
-        true_n, false_n = sum(t for t, _ in row.values()), sum(f for _, f in row.values())
-        t, f = row.get(kind, (0, 0))
-        return math.log((t + 0.5) / (true_n + 1)) - math.log((f + 0.5) / (false_n + 1))
+        """The log likelihood ratio of a view of ``kind`` (see :meth:`weights`)."""
+        return self.weights(predicate)[kind]
 
     def log_odds(self, predicate: str, rounds: Iterable[Round]) -> float:
         """The log odds that an atom of ``predicate`` holds, from even, given its views (rounds
         of one stand count once: the same picture is the same draw)."""
+        w = self.weights(predicate)
         kinds = (view_kind(r) for r in distinct(list(rounds)))
-        return sum(self.weight(predicate, k) for k in kinds if k is not None)
+        return sum(w[k] for k in kinds if k is not None)
 
     @classmethod
     def load(cls, path: Path = CALIBRATION) -> "Calibration":

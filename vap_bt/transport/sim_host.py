@@ -38,6 +38,9 @@ from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.world_hooks import ActionHookServer
 from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
 
+#: the command's one-line description for ``--help``: this docstring's first line, as plain text
+DESCRIPTION = __doc__.split("\n\n")[0].replace("``", "")
+
 
 def add_sim_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("task", help="task file whose household to build (trees/*.yaml)")
@@ -111,7 +114,7 @@ def run_sim(args: argparse.Namespace) -> int:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m vap_bt.transport.sim_host``: the sim command on its own."""
-    parser = argparse.ArgumentParser(prog="vap-bt sim", description=__doc__.splitlines()[0].replace("``", ""))
+    parser = argparse.ArgumentParser(prog="vap-bt sim", description=DESCRIPTION)
     add_sim_arguments(parser)
     args = parser.parse_args(argv)
     logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
