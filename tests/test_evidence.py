@@ -8,13 +8,16 @@ import random
 
 import pytest
 
+from vap_bt.domain.atoms import Atom
 from vap_bt.perception.evidence import (
-    CLAIM_RISK, MIN_VIEWS, VIEW_KINDS, Calibration, claim_threshold, default_calibration, view_kind)
-from vap_bt.perception.verification import Round
+    CLAIM_RISK, MIN_VIEWS, VIEW_KINDS, Calibration, claim_threshold, default_calibration, view_kind, view_kinds)
+from vap_bt.perception.verification import Round, located
+from vap_bt.robot.frame import SELF, Detection, Frame, reference
 
 
-def rnd(vote: bool | None, consistent: bool, sufficient: bool | None, stand=None, unshown=()) -> Round:
-    return Round(view="f", vote=vote, consistent=consistent, sufficient=sufficient, stand=stand, unshown=unshown)
+def rnd(vote: bool | None, consistent: bool, sufficient: bool | None, stand=None, unshown=(), where=None) -> Round:
+    return Round(view="f", vote=vote, consistent=consistent, sufficient=sufficient, stand=stand, unshown=unshown,
+                 located=where)
 
 
 def test_a_view_is_settled_consistent_or_split_with_its_majority():
@@ -24,6 +27,45 @@ def test_a_view_is_settled_consistent_or_split_with_its_majority():
     assert view_kind(rnd(False, False, None)) == "split_no"
     assert view_kind(rnd(None, False, None)) is None  # no usable answer
     assert view_kind(rnd(True, True, True, unshown=("cup",))) is None  # the detector did not find the cup
+
+
+def test_a_view_also_gives_what_its_detector_said_of_where_the_item_rests():
+    assert view_kinds(rnd(True, True, True, where=False)) == ("settled_yes", "located_no")
+    assert view_kinds(rnd(None, False, None, where=True)) == ("located_yes",)
+    assert view_kinds(rnd(False, True, None)) == ("consistent_no",)
+
+
+def _frame(*relations_of_wood) -> Frame:
+    """wood1 and an open basket in view; the detector put wood1 where ``relations_of_wood`` say."""
+    return Frame("f", 0.0, (Detection("wood", relations=relations_of_wood, name="wood1"),
+                            Detection("basket", name="basket")))
+
+
+def test_the_detector_locates_an_item_only_among_places_the_frame_shows():
+    inside = Atom("inside", ("wood1", "basket"))
+    assert located(_frame(Atom("inside", (SELF, reference(1)))), inside) is True
+    floor = (Atom("on", (SELF, "floor_storage")), Atom("in_room", (SELF, "storage")))
+    assert located(_frame(*floor), inside) is False
+    assert located(_frame(*floor), Atom("on", ("wood1", "floor_storage")), frozenset({"floor_storage"})) is True
+    assert located(_frame(Atom("in_room", (SELF, "storage"))), inside) is None  # no place reported
+    assert located(_frame(Atom("holding", (SELF,))), inside) is False  # in the hand is elsewhere
+    alone = Frame("f", 0.0, (Detection("wood", relations=floor, name="wood1"),))
+    assert located(alone, inside) is None  # the basket is not in view: "not inside" would be no reading
+    assert located(_frame(*floor), Atom("sliced", ("wood1",))) is None  # not a location
+
+
+def test_the_detectors_reports_are_weighed_within_their_own_group():
+    """A calibration counts answers and reports apart: each kind's frequency is of its own group,
+    so adding reports leaves what the answers weigh unchanged."""
+    answers = {"settled_yes": (300, 100), "settled_no": (100, 300)}
+    plain = Calibration({"inside": answers})
+    both = Calibration({"inside": {**answers, "located_yes": (900, 10), "located_no": (20, 200)}})
+    assert both.weight("inside", "settled_yes") == pytest.approx(plain.weight("inside", "settled_yes"))
+    assert both.weight("inside", "located_yes") == pytest.approx(math.log(900.5 / 921) - math.log(10.5 / 211))
+    assert both.weight("inside", "located_no") < -2
+    assert plain.weight("inside", "located_yes") == 0.0  # never counted: weighs nothing
+    # a goal view whose answers say yes while the detector says elsewhere is evidence against
+    assert both.log_odds("inside", [rnd(True, True, True, where=False)]) < 0
 
 
 def test_a_predicate_counted_too_rarely_takes_the_pooled_ratios():

@@ -2,8 +2,8 @@
 
 Runs seeded symbolic episodes of every task (Table II injection on, the simulated VLM at its
 calibrated model, disturbances as in the fault campaign) and counts, per predicate, every view
-a check took — its kind (:func:`vap_bt.perception.evidence.view_kind`: settled, consistent or
-split, yes or no) — against the world's truth for that check. The counts are what the executive
+a check took — its kinds (:func:`vap_bt.perception.evidence.view_kinds`: settled, consistent or
+split, yes or no; and where the frame's detector put the item, for a location atom) — against the world's truth for that check. The counts are what the executive
 weighs views by when it claims a goal (:mod:`vap_bt.perception.evidence`); they are written to
 ``vap_bt/perception/calibration.yaml`` with the command, commit, seeds and model version that
 produced them. The seeds start at 10000 by default: disjoint from the fault campaign's (0-999), so
@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from tools.progress import Progress  # noqa: E402
-from vap_bt.perception.evidence import CALIBRATION, Calibration, view_kind  # noqa: E402
+from vap_bt.perception.evidence import CALIBRATION, Calibration, view_kinds  # noqa: E402
 from vap_bt.perception.verification import Round  # noqa: E402
 
 _SESSIONS: dict = {}
@@ -48,10 +48,9 @@ def _views(job: tuple[str, int]) -> list[tuple[str, str, bool]]:
         if v.get("truth") is None:  # unsettled checks too: leaving them out would keep only the lucky views
             continue
         for r in v["rounds"]:
-            kind = view_kind(Round(view=r["view"], vote=r["vote"], consistent=r["consistent"],
-                                   sufficient=r["sufficient"], unshown=tuple(r.get("unshown", ()))))
-            if kind is not None:
-                out.append((v["predicate"].split("(")[0], kind, bool(v["truth"])))
+            view = Round(view=r["view"], vote=r["vote"], consistent=r["consistent"], sufficient=r["sufficient"],
+                         unshown=tuple(r.get("unshown", ())), located=r.get("located"))
+            out.extend((v["predicate"].split("(")[0], kind, bool(v["truth"])) for kind in view_kinds(view))
     return out
 
 
@@ -84,7 +83,7 @@ def main(argv: list[str] | None = None) -> int:
                         + cal.to_yaml(), encoding="utf-8")
     print(f"wrote {args.out}", file=sys.stderr)
     for p in sorted(counts):
-        ws = "  ".join(f"{k} {cal.weight(p, k):+.2f}" for k in ("settled_yes", "settled_no"))
+        ws = "  ".join(f"{k} {cal.weight(p, k):+.2f}" for k in ("settled_yes", "settled_no", "located_yes", "located_no"))
         print(f"{p:12s} {ws}")
     return 0
 

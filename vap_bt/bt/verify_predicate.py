@@ -27,7 +27,8 @@ from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.errors import TransportError
-from vap_bt.perception.verification import Round, RoundAsker, shown_plainly, sufficiency_query, unshown, yes_no
+from vap_bt.perception.verification import (Round, RoundAsker, located, shown_plainly, sufficiency_query, unshown,
+                                           yes_no)
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
 
@@ -126,6 +127,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         return self._finish(r)
 
     def _finish(self, r: Round) -> Status:
+        r.located = located(self.observation, self.atom, self.ctx.undetectable)
         self.round = r
         self.feedback_message = f"vote={r.vote} consistent={r.consistent} sufficient={r.sufficient}"
         return self._status(r)

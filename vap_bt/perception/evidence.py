@@ -18,6 +18,14 @@ that bound from the views of an atom that does *not* hold is about ``α`` (:data
 the per-atom risk of a false claim, however weak the model is on that relation. A weak model
 costs views, not false claims. A predicate counted too rarely to trust its own ratios (fewer than
 :data:`MIN_VIEWS` views of either truth) takes the pooled counts of every predicate.
+
+Wald's bound assumes the views independent, and one model's views of one atom are not: a thing
+that fell beside a basket looks "inside" to the model from every nearby stand (its errors belong
+to the relation as much as to the picture). A second sensor with errors of its own is what breaks
+that: where the frame's detector reports where an item rests (:func:`~vap_bt.perception.
+verification.located`), each view also weighs that report — ``located_yes`` or ``located_no``,
+calibrated the same way against the truth, in a group of its own (its frequencies are of reports,
+not of votes).
 """
 
 from __future__ import annotations
@@ -33,6 +41,11 @@ from vap_bt.perception.verification import Round, distinct
 
 #: the six kinds of a view that voted (see the module docstring), in the calibration file's order
 VIEW_KINDS = ("settled_yes", "consistent_yes", "split_yes", "split_no", "consistent_no", "settled_no")
+#: what the frame's relation detector said of a location atom, where it said anything
+LOCATED_KINDS = ("located_yes", "located_no")
+#: every kind, by the group its frequencies are taken within
+GROUPS = (VIEW_KINDS, LOCATED_KINDS)
+KINDS = VIEW_KINDS + LOCATED_KINDS
 #: the calibration measured for the simulated model (and the default for any backend)
 CALIBRATION = Path(__file__).with_name("calibration.yaml")
 #: the accepted chance of claiming a goal atom that does not hold, per atom (see the module docstring)
@@ -44,12 +57,19 @@ MIN_VIEWS = 30
 
 
 def view_kind(r: Round) -> str | None:
-    """What one view said, as a calibration kind; None for a view that voted nothing (no usable
-    answer, or the detector did not find the atom's objects)."""
+    """What one view's answers said, as a calibration kind; None for a view that voted nothing
+    (no usable answer, or the detector did not find the atom's objects)."""
     if r.vote is None or r.unshown:
         return None
     strength = "settled" if r.settled else "consistent" if r.consistent else "split"
     return f"{strength}_{'yes' if r.vote else 'no'}"
+
+
+def view_kinds(r: Round) -> tuple[str, ...]:
+    """Every kind one view gives: its answers' (:func:`view_kind`) and its detector's report."""
+    answers = view_kind(r)
+    return (*(() if answers is None else (answers,)),
+            *(() if r.located is None else (f"located_{'yes' if r.located else 'no'}",)))
 
 
 @dataclass(frozen=True)
@@ -66,24 +86,35 @@ class Calibration:
     def row(self, predicate: str) -> Mapping[str, tuple[int, int]]:
         """The counts ``predicate``'s views are weighed by: its own, or the pooled ones when it
         has fewer than :data:`MIN_VIEWS` of either truth."""
-        row = self.counts.get(predicate)
-        if row is not None and min(sum(t for t, _ in row.values()), sum(f for _, f in row.values())) >= MIN_VIEWS:
-            return row
-        return self.pooled()
+        return self.group_row(predicate, VIEW_KINDS)
 
-    def pooled(self) -> dict[str, tuple[int, int]]:
+    def group_row(self, predicate: str, group: tuple[str, ...]) -> dict[str, tuple[int, int]]:
+        """The counts of one group of kinds for ``predicate``: its own, or the pooled ones when it
+        has fewer than :data:`MIN_VIEWS` of either truth in that group."""
+        own = self.counts.get(predicate, {})
+        row = {k: own[k] for k in group if k in own}
+        if row and min(sum(t for t, _ in row.values()), sum(f for _, f in row.values())) >= MIN_VIEWS:
+            return row
+        return self.pooled(group)
+
+    def pooled(self, group: tuple[str, ...] = VIEW_KINDS) -> dict[str, tuple[int, int]]:
         return {k: (sum(r.get(k, (0, 0))[0] for r in self.counts.values()),
-                    sum(r.get(k, (0, 0))[1] for r in self.counts.values())) for k in VIEW_KINDS}
+                    sum(r.get(k, (0, 0))[1] for r in self.counts.values())) for k in group}
 
     def weights(self, predicate: str) -> Mapping[str, float]:
-        """The log likelihood ratio of each view kind, for an atom of ``predicate`` holding
-        (add-one-half smoothing: a kind never seen with one truth is rare with it, not impossible)."""
+        """The log likelihood ratio of each kind, for an atom of ``predicate`` holding, within its
+        group (add-one-half smoothing: a kind never seen with one truth is rare with it, not
+        impossible); a group never counted weighs nothing."""
         if predicate not in self._weights:
-            row = self.row(predicate)
-            true_n, false_n = sum(t for t, _ in row.values()), sum(f for _, f in row.values())
-            self._weights[predicate] = {
-                k: math.log((t + 0.5) / (true_n + 1)) - math.log((f + 0.5) / (false_n + 1))
-                for k, (t, f) in ((k, row.get(k, (0, 0))) for k in VIEW_KINDS)}
+            weights = {}
+            for group in GROUPS:
+                row = self.group_row(predicate, group)
+                true_n, false_n = sum(t for t, _ in row.values()), sum(f for _, f in row.values())
+                for k in group:
+                    t, f = row.get(k, (0, 0))
+                    weights[k] = (math.log((t + 0.5) / (true_n + 1)) - math.log((f + 0.5) / (false_n + 1))
+                                  if true_n and false_n else 0.0)
+            self._weights[predicate] = weights
         return self._weights[predicate]
 
     def weight(self, predicate: str, kind: str) -> float:
@@ -94,8 +125,7 @@ class Calibration:
         """The log odds that an atom of ``predicate`` holds, from even, given its views (rounds
         of one stand count once: the same picture is the same draw)."""
         w = self.weights(predicate)
-        kinds = (view_kind(r) for r in distinct(list(rounds)))
-        return sum(w[k] for k in kinds if k is not None)
+        return sum(w[k] for r in distinct(list(rounds)) for k in view_kinds(r))
 
     @classmethod
     def load(cls, path: Path = CALIBRATION) -> "Calibration":
@@ -104,7 +134,8 @@ class Calibration:
         return cls(counts, data.get("source", {}))
 
     def to_yaml(self) -> str:
-        counts = {p: {k: list(row.get(k, (0, 0))) for k in VIEW_KINDS} for p, row in sorted(self.counts.items())}
+        counts = {p: {k: list(row.get(k, (0, 0))) for k in KINDS if k in row or k in VIEW_KINDS}
+                  for p, row in sorted(self.counts.items())}
         return (yaml.safe_dump({"source": dict(self.source)}, sort_keys=False, width=1000)
                 + yaml.safe_dump({"counts": counts}, sort_keys=False, default_flow_style=None))
 
