@@ -18,7 +18,8 @@ The page counts as having loaded the recording when the viewer's own state
 timeline reaches the recording's last tick. The tree view counts as drawn when the tree panel's
 pixels carry the status colours the recording holds at the shown tick: green only at the end,
 and the orange running path at a tick in the middle — which is also the screenshot saved as
-``docs/live-view.png`` (shown in ``docs/viz.md``).
+``docs/live-view.png`` (shown in ``docs/viz.md``) when ``VAP_BT_UPDATE_SCREENSHOTS=1`` — a test run
+otherwise keeps its pictures in its own temporary folder, and a clone stays as it was checked out.
 """
 
 from __future__ import annotations
@@ -59,7 +60,12 @@ TREE_CONTENT = (2, 60, 858, 848)
 TREE_PANEL = (0, 60, 850, 800)
 #: the collapsed time panel's strip at the bottom of the window: a click there sets the time
 TIME_STRIP_Y = HEIGHT - 14
-SCREENSHOT = ROOT / "docs" / "live-view.png"
+#: where the screenshots docs/viz.md shows are refreshed from (only on request: see the docstring)
+UPDATE_SCREENSHOTS = os.environ.get("VAP_BT_UPDATE_SCREENSHOTS") == "1"
+
+
+def _shot_path(name: str, tmp: Path) -> Path:
+    return (ROOT / "docs" if UPDATE_SCREENSHOTS else tmp) / name
 LOAD_TIMEOUT_S = 240
 
 
@@ -339,7 +345,7 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         assert abs(shown - target) <= 0.05 * last_tick, (shown, target)
         assert any(i.count(".") >= 2 for i in drawing["ids"]), f"no action is spread out at tick {shown}"
         assert Status.RUNNING in drawing["statuses"] and Status.SUCCESS in drawing["statuses"]
-        middle = _shot(page, SCREENSHOT)
+        middle = _shot(page, _shot_path("live-view.png", tmp_path))
         green, orange = _ink(middle, Status.SUCCESS), _ink(middle, Status.RUNNING)
         assert orange > 100, f"the running path's orange labels are not drawn ({orange} px)"
         assert green > 100, f"the finished actions' green labels are not drawn ({green} px)"
@@ -371,7 +377,7 @@ def test_a_20_action_plan_is_drawn_whole_in_the_tree_panel(tmp_path):
     drawn = tree_rows(read(rrd))
     assert [d["tick"] for d in drawn] == list(range(1, 21))
     with viewer(rrd, 20, tmp_path) as page:
-        shot = _shot(page, ROOT / "docs" / "live-view-20.png")
+        shot = _shot(page, _shot_path("live-view-20.png", tmp_path))
     # the drawing at tick 20 (a19 open): its orange running path and 19 green finished actions
     orange, green = _ink(shot, Status.RUNNING), _ink(shot, Status.SUCCESS)
     assert orange > 100 and green > 1000, (orange, green)

@@ -4,7 +4,7 @@
 ; the second list.remove raises "ValueError: list.remove(x): x not in list". The IPC driverlog
 ; and elevators domains hit it (their drive/move actions have two static preconditions on one
 ; parameter). vap_bt grounds its own instances (vap_bt/domain/instances.py); the test
-; tests/test_domain.py::test_unified_plannings_grounder_still_fails_on_the_reproducer tells when
+; tests/test_pddl_robustness.py::test_unified_plannings_grounder_still_fails_on_the_reproducer tells when
 ; upstream has fixed it.
 (define (domain up-grounder)
   (:requirements :strips :typing)

@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from tools.progress import Progress  # noqa: E402
-from vap_bt.perception.evidence import CALIBRATION, Calibration, view_kinds  # noqa: E402
+from vap_bt.perception.evidence import CALIBRATION, LOCATED_KINDS, Calibration, view_kinds  # noqa: E402
 from vap_bt.perception.verification import Round  # noqa: E402
 
 _SESSIONS: dict = {}
@@ -83,7 +83,8 @@ def main(argv: list[str] | None = None) -> int:
                         + cal.to_yaml(), encoding="utf-8")
     print(f"wrote {args.out}", file=sys.stderr)
     for p in sorted(counts):
-        ws = "  ".join(f"{k} {cal.weight(p, k):+.2f}" for k in ("settled_yes", "settled_no", "located_yes", "located_no"))
+        shown = ("settled_yes", "settled_no", *(LOCATED_KINDS if any(k in counts[p] for k in LOCATED_KINDS) else ()))
+        ws = "  ".join(f"{k} {cal.weight(p, k):+.2f}" for k in shown)
         print(f"{p:12s} {ws}")
     return 0
 
