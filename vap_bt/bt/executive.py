@@ -56,6 +56,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
 from vap_bt.bt.inflight import make_executor
+from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
@@ -387,7 +388,7 @@ class Executive:
 
     def _tree(self, ctx: ExecutionContext, plan: Plan) -> py_trees.trees.BehaviourTree:
         ctx.goal_evidence = None  # a claim rests on the new tree's own goal checks
-        return py_trees.trees.BehaviourTree(compile_plan(ctx, plan.actions, self.task.goal, self.task.knowledge))
+        return PlanTree(compile_plan(ctx, plan.actions, self.task.goal, self.task.knowledge))
 
     # -- perception ----------------------------------------------------------------------------
 
