@@ -194,3 +194,14 @@ def test_without_world_a_household_task_runs_in_pybullet_and_json_stays_clean():
     assert summary["world"] == "pybullet" and p.returncode == (0 if summary["success"] and summary["goal_satisfied"]
                                                                else EXIT_GOAL_NOT_REACHED), p.stderr[-2000:]
     assert summary["actions_executed"] > 0
+
+
+def test_the_pybullet_world_loads_without_pybullets_banner():
+    """pybullet's C extension prints "pybullet build time: …" on standard error when imported,
+    below anything ``-q`` controls; the world's modules import it quietly (vap_bt/sim/pb.py)."""
+    def stderr_of(code: str) -> str:
+        return subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                              timeout=60, check=True).stderr
+
+    assert "build time" in stderr_of("import pybullet")  # what the quiet import keeps off
+    assert stderr_of("import vap_bt.sim.pybullet_world; print('loaded')") == ""

@@ -24,9 +24,9 @@ from dataclasses import dataclass
 
 import cv2
 import numpy as np
-import pybullet as pb
 
 from robots.config import Camera
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_robot import quat_of
 
 #: m short of a doorway's plane a pixel's depth may end and still count as seen through it

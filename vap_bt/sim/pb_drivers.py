@@ -54,13 +54,13 @@ from collections.abc import Callable, Iterator
 from typing import Protocol
 
 import numpy as np
-import pybullet as pb
 
 from vap_bt.motion.limits import base_limits
 from vap_bt.motion.tracking import point_to_point
 from vap_bt.robot.drivers import Cancelled, GripperState, JointState, JointTrajectory, MotionResult
 from vap_bt.robot.frame import Frame
 from vap_bt.sim.localization import Localization
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_injection import Injection
 from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_scene import Hinge, Scene, Thing

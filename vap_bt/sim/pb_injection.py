@@ -52,8 +52,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
-import pybullet as pb
 
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_robot import Grip, Robot
 from vap_bt.sim.pb_scene import Scene, Thing
 from vap_bt.sim.situations import SituationModel, SituationSpec

@@ -15,9 +15,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import pybullet as pb
 
 import robots
+from vap_bt.sim.pb import pb
 
 
 @dataclass

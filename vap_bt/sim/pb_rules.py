@@ -37,9 +37,9 @@ import math
 from typing import Protocol
 
 import numpy as np
-import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_catalog import Catalog
 from vap_bt.sim.pb_robot import Robot
 from vap_bt.sim.pb_scene import Scene, Thing, make_item_body, tap_outlet

@@ -23,8 +23,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import pybullet as pb
 
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_catalog import Catalog, Color, FurnitureKind, ItemKind
 from vap_bt.sim.pb_layout import DoorPlan, FurniturePlan, ItemPlan, ScenePlan
 

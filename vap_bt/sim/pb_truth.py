@@ -34,9 +34,9 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_camera import box_corners
 from vap_bt.sim.pb_catalog import Catalog
 from vap_bt.sim.pb_robot import Robot

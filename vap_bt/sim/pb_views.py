@@ -31,9 +31,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import pybullet as pb
 
 from vap_bt.sim.captures import ObjectView
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_camera import Render
 
 #: m above an item's lowest point at which its contact line is sampled

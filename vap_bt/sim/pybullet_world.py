@@ -38,7 +38,6 @@ import math
 import threading
 
 import numpy as np
-import pybullet as pb
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.camera import Aim
@@ -54,6 +53,7 @@ from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.disturbances import HALF_OPEN, HALF_SHUT, MOVED, SHUT, DisturbanceModel
 from vap_bt.sim.localization import Localization, LocalizationModel
 from vap_bt.sim.oracle import FunctionOracle
+from vap_bt.sim.pb import pb
 from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, look_pose, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_drivers import Drivers
