@@ -205,3 +205,20 @@ def test_the_pybullet_world_loads_without_pybullets_banner():
 
     assert "build time" in stderr_of("import pybullet")  # what the quiet import keeps off
     assert stderr_of("import vap_bt.sim.pybullet_world; print('loaded')") == ""
+
+
+def test_the_readme_documents_every_exit_code_the_command_line_uses():
+    """Each EXIT_* code of vap_bt.errors is stated in the README's paragraph on exit codes, with
+    the words it is known by (a code changed in one place and not the other fails here)."""
+    import re
+
+    from vap_bt import errors
+
+    text = " ".join((ROOT / "README.md").read_text().split())
+    paragraph = text[text.index("Exit codes:"):][:1200]
+    meaning = {"EXIT_OK": "success", "EXIT_GOAL_NOT_REACHED": "goal not reached", "EXIT_BAD_INPUT": "bad input",
+               "EXIT_UNSOLVABLE": "no plan exists", "EXIT_TRANSPORT": "transport down",
+               "EXIT_PLANNING_TIMEOUT": "the planner ran out of time", "EXIT_INTERRUPTED": "interrupted"}
+    assert set(meaning) == {n for n in dir(errors) if n.startswith("EXIT_")}
+    for name, words in meaning.items():
+        assert re.search(rf"\b{getattr(errors, name)} {re.escape(words)}", paragraph), (name, words)
