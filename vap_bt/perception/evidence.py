@@ -22,10 +22,10 @@ costs views, not false claims. A predicate counted too rarely to trust its own r
 Wald's bound assumes the views independent, and one model's views of one atom are not: a thing
 that fell beside a basket looks "inside" to the model from every nearby stand (its errors belong
 to the relation as much as to the picture). A second sensor with errors of its own is what breaks
-that: where the frame's detector reports where an item rests (:func:`~vap_bt.perception.
-verification.located`), each view also weighs that report — ``located_yes`` or ``located_no``,
-calibrated the same way against the truth, in a group of its own (its frequencies are of reports,
-not of votes).
+that: where the frame's detector reports where an item rests
+(:func:`~vap_bt.perception.verification.located`), each view also weighs that report —
+``located_yes`` or ``located_no``, calibrated the same way against the truth, in a group of its
+own (its frequencies are of reports, not of votes).
 """
 
 from __future__ import annotations
