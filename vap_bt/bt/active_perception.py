@@ -20,8 +20,8 @@ expectation — and a *goal* value need a second view from a different picture t
 answers consistent, sufficient or not) while the budget allows a move, since a model's errors
 are shared by every question about one picture; for a goal atom found as the goal wants it the
 views' log odds, each view weighed by the backend's measured calibration (and, for where a thing
-rests, by what the frame's detector reported of it), must also reach the claim's bound (:mod:`vap_bt.perception.evidence`: a sequential probability-ratio test whose
-chance of claiming an atom that does not hold is about ``ctx.claim_risk``, 5 %). A goal atom
+rests, by what the frame's detector reported of it), must also reach the claim's bound
+(:mod:`vap_bt.perception.evidence`: a sequential probability-ratio test whose chance of claiming an atom that does not hold is about ``ctx.claim_risk``, 5 %). A goal atom
 that the budget leaves short of it is unsettled (success is not claimed on it). With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
 atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
