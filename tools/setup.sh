@@ -28,7 +28,7 @@ if [ ! -f "$stamp" ] || [ pyproject.toml -nt "$stamp" ]; then
   echo "setup: installing the project and its dependencies into .venv (first time takes a few minutes)" >&2
   .venv/bin/python -m pip install -q --upgrade pip 2>&1 | grep -v '^WARNING: Location' || true
   .venv/bin/python -m pip install -q -e '.[test]' 2>&1 | grep -vE '^WARNING: Location|^\s*$' || true
-  .venv/bin/python -c "import vap_bt, skills, robots, py_trees, zenoh, unified_planning, pybullet, pinocchio" \
+  .venv/bin/python -c "import vap_bt, skills, robots, py_trees, zenoh, unified_planning, vap_bt.sim.pb, pinocchio" \
     || { echo "setup: the installation is incomplete" >&2; exit 1; }
   touch "$stamp"
 fi
