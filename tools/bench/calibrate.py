@@ -3,8 +3,9 @@
 Runs seeded symbolic episodes of every task (Table II injection on, the simulated VLM at its
 calibrated model, disturbances as in the fault campaign) and counts, per predicate, every view
 a check took — its kinds (:func:`vap_bt.perception.evidence.view_kinds`: settled, consistent or
-split, yes or no; and where the frame's detector put the item, for a location atom) — against the world's truth for that check. The counts are what the executive
-weighs views by when it claims a goal (:mod:`vap_bt.perception.evidence`); they are written to
+split, yes or no; and where the frame's detector put the item, for a location atom) — against
+the world's truth for that check. The counts are what the executive weighs views by when it
+claims a goal (:mod:`vap_bt.perception.evidence`); they are written to
 ``vap_bt/perception/calibration.yaml`` with the command, commit, seeds and model version that
 produced them. The seeds start at 10000 by default: disjoint from the fault campaign's (0-999), so
 the campaign tests what the calibration did not see.

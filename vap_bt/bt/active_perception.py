@@ -21,8 +21,9 @@ answers consistent, sufficient or not) while the budget allows a move, since a m
 are shared by every question about one picture; for a goal atom found as the goal wants it the
 views' log odds, each view weighed by the backend's measured calibration (and, for where a thing
 rests, by what the frame's detector reported of it), must also reach the claim's bound
-(:mod:`vap_bt.perception.evidence`: a sequential probability-ratio test whose chance of claiming an atom that does not hold is about ``ctx.claim_risk``, 5 %). A goal atom
-that the budget leaves short of it is unsettled (success is not claimed on it). With
+(:mod:`vap_bt.perception.evidence`: a sequential probability-ratio test whose chance of claiming
+an atom that does not hold is about ``ctx.claim_risk``, 5 %). A goal atom that the budget leaves
+short of it is unsettled (success is not claimed on it). With
 the budget spent and nothing decided, a value stands only if at least two views that showed the
 atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
 way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper

@@ -23,6 +23,7 @@ from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.vlm import VLM, Answer, Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 from vap_bt.robot.frame import Frame
+from vap_bt.scene.graph import supports
 from vap_bt.scene.identity import named_relations
 
 
@@ -69,7 +70,8 @@ class Round:
                 "direction": self.direction, "moved": self.moved, **({"refused": list(self.refused)} if self.refused else {}),
                 **({"unshown": list(self.unshown)} if self.unshown else {}),
                 **({"sufficient_by": self.sufficient_by} if self.sufficient_by == "detector" else {}),
-                "identified": dict(self.identified), **({"located": self.located} if self.located is not None else {})}
+                "identified": dict(self.identified),
+                **({"located": self.located} if self.located is not None else {})}
 
 
 def objects_of(atom: Atom) -> tuple[str, ...]:
@@ -86,25 +88,20 @@ def unshown(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()
     return tuple(o for o in objects_of(atom) if o not in found and o not in undetectable)
 
 
-#: the atoms a relation detector reports on: where an item rests
-LOCATED_PREDICATES = ("on", "inside")
-
-
 def located(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()) -> bool | None:
     """Where the frame's relation detector (a world that reports relations with its detections:
     :attr:`~vap_bt.robot.frame.Detection.relations`) put the item of a location atom: True if at
     the atom's place, False if at another, None when it reported none — or when the frame does
     not show the place itself, since a detector can only choose among the places in view (an
     item beside a basket out of the picture would always read "not inside")."""
-    if atom.predicate not in LOCATED_PREDICATES or unshown(frame, atom, undetectable):
+    if not supports(atom) or unshown(frame, atom, undetectable):
         return None
     item = atom.args[0]
-    for k, d in enumerate(frame.detections):
-        if d.name == item:
-            places = [a for a in named_relations(frame, k) if a.predicate in (*LOCATED_PREDICATES, "holding")
-                      and a.args[0] == item]
-            return (atom in places) if places else None
-    return None
+    k = frame.identified().get(item)  # None: a thing of the map, never detected
+    if k is None:
+        return None
+    places = [a for a in named_relations(frame, k) if (supports(a) or a.predicate == "holding") and a.args[0] == item]
+    return (atom in places) if places else None
 
 
 def shown_plainly(frame: Frame, atom: Atom, undetectable: frozenset[str], least_share: float,

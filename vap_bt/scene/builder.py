@@ -31,7 +31,7 @@ from vap_bt.domain.knowledge import DomainKnowledge
 from vap_bt.robot.camera import Aim, Camera, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
-from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph, SceneObject
+from vap_bt.scene.graph import LOCATION_PREDICATES, SUPPORT_PREDICATES, SceneGraph, SceneObject, supports
 from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN, Believed, named_relations
 from vap_bt.skill import Hint
 
@@ -39,7 +39,6 @@ from vap_bt.skill import Hint
 KEEP_FRAMES = 3
 #: the relations the builder establishes about items (by geometry, or from a relation detector)
 GEOMETRIC_PREDICATES = LOCATION_PREDICATES | {"blocking", "reachable", "near"}
-SUPPORT_PREDICATES = ("on", "inside")
 
 # -- where the sweep looks from (metres, radians); a view that cannot be reached is skipped --------
 #: base centre to the front face of a piece of furniture when looking at it, and again closer
@@ -414,7 +413,7 @@ class SceneGraphBuilder:
             if door is not None:
                 rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"} & set(door.rooms)
                 return self._door_view(door, sorted(rooms)[0] if rooms else door.rooms[0])
-            support = [a.args[1] for a in sorted(graph.location(name)) if _supports(a)]
+            support = [a.args[1] for a in sorted(graph.location(name)) if supports(a)]
             if not support:
                 break
             name = support[0]
@@ -458,7 +457,7 @@ class SceneGraphBuilder:
         if name in self._static:
             return name
         for a in sorted(graph.location(name)):
-            if _supports(a):
+            if supports(a):
                 return self.place_of(graph, a.args[1], depth + 1)
         return None
 
@@ -472,7 +471,7 @@ class SceneGraphBuilder:
         what."""
         out = []
         for n in names:
-            loc = sorted(a for a in graph.location(n) if _supports(a))
+            loc = sorted(a for a in graph.location(n) if supports(a))
             on = next((a.args[1] for a in loc if a.predicate != "inside"), None)
             inside = next((a.args[1] for a in loc if a.predicate == "inside"), None)
             b = self.believed(graph, n)
@@ -499,7 +498,7 @@ class SceneGraphBuilder:
             seen = self.observed(name)
             if any(a.args and a.args[0] == name and a.predicate in LOCATION_PREDICATES for a in seen):
                 loc = {a for a in seen if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == name}
-        place = next((a for a in sorted(loc) if _supports(a)), None)
+        place = next((a for a in sorted(loc) if supports(a)), None)
         room = next((a.args[1] for a in sorted(loc) if a.predicate == "in_room" and len(a.args) == 2), None)
         if place is None and room is None:
             return None
@@ -542,7 +541,7 @@ class SceneGraphBuilder:
         if obj is not None and obj.centroid is not None and obj.located == frozenset(graph.location(name)):
             return obj.centroid
         for a in sorted(graph.location(name)):
-            if _supports(a):
+            if supports(a):
                 return self._place_point(a) or self.point_of(graph, a.args[1], depth + 1)
         return self._map_point(name)
 
@@ -579,7 +578,3 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
-def _supports(atom: Atom) -> bool:
-    """``atom`` puts its first argument on or in its second (another domain's ``on ?c`` of one
-    argument — a car on the ferry — names no support to look at)."""
-    return atom.predicate in SUPPORT_PREDICATES and len(atom.args) == 2

@@ -29,6 +29,14 @@ from vap_bt.domain.knowledge import GroundAction
 #: Predicates that say where an object is; an object's location is the set of these atoms whose
 #: first argument is the object. ``hand_empty`` follows from ``holding``.
 LOCATION_PREDICATES = frozenset({"on", "inside", "in_room", "holding"})
+#: the location predicates that put an object on or in another
+SUPPORT_PREDICATES = ("on", "inside")
+
+
+def supports(atom: Atom) -> bool:
+    """``atom`` puts its first argument on or in its second (another domain's ``on ?c`` of one
+    argument — a car on the ferry — names no support to look at)."""
+    return atom.predicate in SUPPORT_PREDICATES and len(atom.args) == 2
 
 Source = Literal["map", "perceived", "prior"]
 
