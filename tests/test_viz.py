@@ -8,6 +8,7 @@ tick, the verification text, situations, belief, and (pybullet) the camera image
 from __future__ import annotations
 
 import os
+import re
 import socket
 import subprocess
 import sys
@@ -124,6 +125,9 @@ def test_tree_drawing_per_tick_folds_what_is_not_running(recorded):
         assert all(b.rsplit(".", 1)[0] == a for a, b in d["edges"])
     first, last = drawn[0], drawn[-1]
     assert first["labels"][0].startswith("▶ plan") and first["statuses"][0] == Status.RUNNING
+    # the root counts the plan's actions as the event log (and the command line) does
+    said = next(t for t in texts(rows, "/events/plan") if t.startswith("plan: ")).split("\n")[0]
+    assert first["labels"][0].split("\n")[0] == f"▶ plan · {said.removeprefix('plan: ')}", (first["labels"][0], said)
     assert any(i.count(".") >= 2 for i in first["ids"]), "the running first action is spread out"
     # the tick the effect check failed: the failing action stays open, its check marked ✗
     failed = next(d for d in drawn if d["statuses"][0] == Status.FAILURE)
@@ -156,8 +160,14 @@ def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
     first = ctx.verifications[0].rounds[0]
     assert all(f"Q: {q} → {'yes' if a else 'no'}" in rounds[0] for q, a in zip(first.questions, first.answers))
     assert "vote yes" in rounds[0]
+    # each round's page, whole, among the pages of checks in progress and of verdicts
     pages = [r["TextDocument:text"][0] for r in rows["/verification/round"]]
-    assert len(pages) == len(rounds) and first.questions[0] in pages[0]
+    done = [p for p in pages if "- view sufficient: " in p]
+    assert len(done) == len(rounds) and first.questions[0] in done[0]
+    verdicts = [p for p in pages if p.startswith("# ") and "** (observed " in p.splitlines()[2]]
+    assert len(verdicts) == len(ctx.verifications)
+    for page, v in zip(verdicts, ctx.verifications):
+        assert page.splitlines()[0] == f"# {'' if v.expected else 'not '}{v.atom}" and f": **{v.outcome}**" in page
     sit = texts(rows, "/events/situations")
     assert len(sit) == len(outcome.situations) == 1
     assert str(outcome.situations[0].atom) in sit[0] and rows["/events/situations"][0]["TextLog:level"] == ["WARN"]
@@ -170,6 +180,42 @@ def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
     assert any(t.startswith("survey: ") for t in texts(rows, "/events/plan"))
     levels = {r["TextLog:text"][0].split(":")[0]: r["TextLog:level"][0] for r in rows["/events/plan"]}
     assert levels["replan #1"] == "WARN" and levels["plan"] == "INFO", "a replan is a warning"
+
+
+def running_check(drawing: dict) -> str | None:
+    """The atom of the check the drawing highlights (the running path's leaf, when it is a
+    check: its label's first line is ``▶ <atom>`` and it has no shown children), else None."""
+    ids = drawing["ids"]
+    running = [(i, l) for i, l, st in zip(ids, drawing["labels"], drawing["statuses"]) if st == Status.RUNNING]
+    leaves = [(i, l) for i, l in running if not any(j.startswith(i + ".") for j in ids)]
+    label = leaves[-1][1].split("\n")[0][2:] if leaves else None
+    other = label is None or label.startswith(("execute ", "apply effects", "goal check")) or re.match(r"a\d+: ", label)
+    return None if other else label
+
+
+def test_the_verification_page_names_the_check_the_tree_highlights_at_every_tick(recorded):
+    """The panels in step: at every tick where the tree highlights a check, the verification
+    page shown at that tick (the last one logged at or before it) is that check's page, and
+    the page of a check in progress says what it is doing."""
+    _, _, rows = recorded
+    pages = [(r["tick"], r["TextDocument:text"][0]) for r in rows["/verification/round"]]
+    drawings = tree_rows(rows)
+    ticks = sorted({d["tick"] for d in drawings} | {t for t, _ in pages})
+    checked = 0
+    for tick in ticks:
+        drawing = [d for d in drawings if d["tick"] <= tick][-1]
+        atom = running_check(drawing)
+        if atom is None:
+            continue
+        shown = [p for t, p in pages if t <= tick]
+        assert shown, f"tick {tick}: the tree highlights {atom} and the page is empty"
+        assert shown[-1].splitlines()[0] == f"# {atom}", (tick, atom, shown[-1][:200])
+        checked += 1
+    assert checked > 10, "the episode should highlight checks at many ticks"
+    doing = [p for _, p in pages if "**now:** " in p]
+    assert any("**now:** moving to the next viewpoint" in p for p in doing)
+    assert any(re.search(r"\*\*now:\*\* asking the model: [1-4] of 5 answered", p) for p in doing), \
+        "answers should be seen arriving one by one"
 
 
 def test_belief_is_logged_when_it_changes(recorded):

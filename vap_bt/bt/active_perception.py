@@ -80,6 +80,12 @@ class ActivePerception(py_trees.decorators.Decorator):
     def atom(self):
         return self.verify.atom
 
+    @property
+    def stage(self) -> str:
+        """What the check is doing: ``look`` (its child runs), ``choose`` (asking where to look
+        next), ``move`` (going there) or ``feel`` (asking the gripper)."""
+        return self._stage
+
     def initialise(self) -> None:
         self.rounds, self.moves, self._job, self._stage = [], 0, None, "look"
         self._refused: set[str] = set()  # directions this check could not move to

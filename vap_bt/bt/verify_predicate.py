@@ -19,6 +19,7 @@ decorator to weigh.
 from __future__ import annotations
 
 from concurrent.futures import Future
+from dataclasses import dataclass, field
 
 import py_trees
 from py_trees.common import Status
@@ -31,6 +32,16 @@ from vap_bt.perception.verification import (Round, RoundAsker, located, shown_pl
                                            yes_no)
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
+
+
+@dataclass(frozen=True)
+class RoundProgress:
+    """Where a round in flight stands, for whoever watches: its stage and the answers so far."""
+
+    stage: str  # idle | capturing | asking | judging the view | done
+    questions: tuple[str, ...] = ()
+    #: answers in by question index (None: the model abstained); a question not in it is pending
+    answers: dict[int, bool | None] = field(default_factory=dict)
 
 
 class VerifyPredicate(py_trees.behaviour.Behaviour):
@@ -53,6 +64,18 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         self._answers, self._sufficiency, self._plain = {}, None, False
         self._frame = self.ctx.submit(self.ctx.camera.capture, self.ctx.aim(self.ctx.graph, self.atom.args))
         self.feedback_message = "capturing"
+
+    def progress(self) -> RoundProgress:
+        """The round so far (read by the live view between ticks; changes nothing)."""
+        if self.round is not None:
+            return RoundProgress("done", tuple(self.round.questions), dict(enumerate(self.round.answers)))
+        if self._frame is not None:
+            return RoundProgress("capturing")
+        if self._asker is not None:
+            return RoundProgress("asking", tuple(self._asker.questions), dict(self._asker.answers))
+        if self._voted is not None:
+            return RoundProgress("judging the view", tuple(self._voted.questions), dict(enumerate(self._voted.answers)))
+        return RoundProgress("idle")
 
     def update(self) -> Status:
         if self._frame is not None:

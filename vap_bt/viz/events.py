@@ -56,15 +56,66 @@ def round_text(phase: str, action: str, atom: Atom, expected: bool, r: Round, vi
     return "\n".join([f"{head}: " + "; ".join(facts), *qa])
 
 
+def _page_head(phase: str, action: str, atom: Atom, expected: bool, where: str) -> list[str]:
+    return [f"# {'' if expected else 'not '}{atom}", "", f"*{phase}* check of **{action}**, {where}", ""]
+
+
+def _qa_table(questions, answers: dict[int, bool | None], pending: str) -> list[str]:
+    """The questions with the answers in so far; ``pending`` stands where none is (yet)."""
+    return ["| # | question | answer |", "|---|---|---|",
+            *(f"| {i + 1} | {q} | {yes_no(answers[i]) if i in answers else pending} |" for i, q in enumerate(questions))]
+
+
 def round_markdown(phase: str, action: str, atom: Atom, expected: bool, r: Round) -> str:
-    lines = [f"# {'' if expected else 'not '}{atom}", "",
-             f"*{phase}* check of **{action}**, view {r.view}", "",
-             "| # | question | answer |", "|---|---|---|"]
-    lines += [f"| {i + 1} | {q} | {yes_no(a)} |" for i, (q, a) in enumerate(zip(r.questions, r.answers))]
+    lines = _page_head(phase, action, atom, expected, f"view {r.view}")
+    lines += _qa_table(r.questions, dict(enumerate(r.answers)), "not asked")
     lines += ["", f"- vote: **{yes_no(r.vote)}** ({'consistent' if r.consistent else 'inconsistent'})",
               f"- view sufficient: {yes_no(r.sufficient)}"]
     if r.direction is not None:
         lines.append(f"- next viewpoint: {r.direction}" + ("" if r.moved else " (could not move there)") + _refused(r))
+    return "\n".join(lines)
+
+
+#: what a check in progress is doing, by its stage (ActivePerception) or its round's (VerifyPredicate)
+DOING = {"capturing": "capturing a frame …", "asking": "asking the model …", "judging the view":
+         "asking whether the view is sufficient …", "choose": "asking the model where to look from …",
+         "move": "moving to the next viewpoint …", "feel": "asking the gripper …",
+         "done": "weighing the views so far …", "idle": "about to look …"}
+
+
+def check_markdown(phase: str, action: str, atom: Atom, expected: bool, views: int, budget: int, stage: str,
+                   questions=(), answers: dict[int, bool | None] | None = None, last: Round | None = None) -> str:
+    """The page of a check while it runs: which view of how many, what it is doing now, and the
+    questions of the round in flight with the answers as they arrive (else the last round's)."""
+    lines = _page_head(phase, action, atom, expected, f"view {views + (stage in ('capturing', 'asking', 'judging the view'))}"
+                                                     f" (budget K={budget} moves)")
+    answers = answers or {}
+    doing = DOING.get(stage, stage)
+    if stage == "asking":
+        doing = f"asking the model: {len(answers)} of {len(questions)} answered"
+    lines += [f"**now:** {doing}", ""]
+    if questions:
+        lines += _qa_table(questions, answers, "…")
+    elif last is not None:
+        lines += _last_view(last)
+    return "\n".join(lines)
+
+
+def _last_view(r: Round) -> list[str]:
+    return [f"last view ({r.view}):", "", *_qa_table(r.questions, dict(enumerate(r.answers)), "not asked"), "",
+            f"- vote: **{yes_no(r.vote)}**, view sufficient: {yes_no(r.sufficient)}"]
+
+
+def verdict_markdown(v: Verification, situation: Situation | None = None) -> str:
+    """The page of a check once it is decided: its verdict, then its last round."""
+    want = "" if v.expected else "not "
+    views = len(v.rounds)
+    lines = [f"# {want}{v.atom}", "", f"*{v.phase}* check of **{v.action}**: **{v.outcome}** (observed "
+             f"{str(v.value).lower()}) after {views} view{'s' * (views != 1)}, {v.to_json()['queries']} queries", ""]
+    if situation is not None:
+        lines += [f"⚠ {situation_text(situation)}", ""]
+    if v.rounds:
+        lines += _last_view(v.rounds[-1])
     return "\n".join(lines)
 
 

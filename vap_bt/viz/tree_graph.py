@@ -195,6 +195,11 @@ class TreeGraph:
         return tuple((b.status, b.feedback_message, len(b.rounds) if isinstance(b, ActivePerception) else 0)
                      for b in self.behaviours)
 
+    def actions(self) -> int:
+        """The plan's actions (the root's other children are the goal's checks): the count the
+        command line prints."""
+        return sum(isinstance(b, ExecuteSkill) for b in self.behaviours)
+
     def open_child(self) -> int | None:
         """Index of the root's child that is spread out: the running one, else the failed one."""
         kids = self.root.children
@@ -212,7 +217,7 @@ class TreeGraph:
         kids = list(root.children)
         labels = [label_of(c, folded=i != opened) for i, c in enumerate(kids)]
         column_w = max((size_of(l)[0] for l in labels), default=0.0)
-        root_label = label_of(root) + (f" · {len(kids)} steps" if kids else "")
+        root_label = label_of(root) + f" · {plural(self.actions(), 'action')}"
         d.node("0", root_label, root.status, 0.0, 0.0, None)
         y, h_prev = 0.0, size_of(root_label)[1]
         for i, (child, label) in enumerate(zip(kids, labels)):
@@ -252,6 +257,10 @@ class TreeGraph:
                 d.node(f"{child_id}.{j}", g_label, g.status, x, gy, child_id)
                 h_prev = h
             x_left += width + GAP_X
+
+
+def plural(n: int, word: str) -> str:
+    return f"{n} {word}{'s' * (n != 1)}"
 
 
 def status_of_colour(rgb: tuple[int, int, int]) -> Status:

@@ -16,9 +16,14 @@ tick costs only what is new, and logs only what changed:
 * the events (``events/*``), in the order the tree ran them: plan and replan, action start and
   result, each round of looking with its questions and answers, each settled verification, each
   situation, each change of belief;
-* the image of each round (``world/camera/*``) when the observation has pixels, paired exactly
-  with its round because a ``VerifyPredicate`` keeps the observation it voted on until it runs
-  again; with the round's question/answer page (``verification/round``);
+* the image of each round (``world/camera/*``) when the observation has pixels, logged the tick
+  it arrives and paired exactly with its round because a ``VerifyPredicate`` keeps the
+  observation it voted on until it runs again;
+* the page of the check (``verification/round``) in step with the tree: at every tick the page
+  names the check the tree highlights (the running ``ActivePerception``) and says what it is
+  doing — capturing, asking with the answers as they arrive, judging the view, choosing or moving
+  to the next viewpoint — and is logged last in the tick, after the page of any round that ended
+  and the verdict of any check that was decided in it (with the situation, when it is one);
 * the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes) at the start of an
   episode and whenever it changed;
 * counters as time series (``stats/vlm_queries``, ``stats/replans``): the VLM queries of the
@@ -128,6 +133,7 @@ class TreeRecorder:
             self._text(L.EV_SITUATIONS, ev.situation_text(ctx.situation), ev.WARN)
         if pending_changes:
             self._log_belief(ctx, pending_changes[-1])
+        self._log_running_check()
         self._log_tree(new_tree)
 
     # ---- free-form notes and the end ----------------------------------------------------------
@@ -165,6 +171,9 @@ class TreeRecorder:
         self._replans = -1
         self._situation: Situation | None = None
         self._seen: set[int] = set()
+        self._view_of: dict[int, int] = {}  # id of a frame -> its number on the ``view`` timeline
+        self._running_check: ActivePerception | None = None
+        self._page_signature: tuple | None = None
         self._keep: list[object] = []  # strong references, so that ids in _seen are never reused
 
     def _begin_episode(self, ctx: ExecutionContext) -> None:
@@ -217,8 +226,13 @@ class TreeRecorder:
         """Log what ``node`` and its subtree did this tick, in the order the tree ran it."""
         if isinstance(node, ExecuteSkill) and node.handle is not None and self._first(node.handle):
             self._text(L.EV_ACTIONS, ev.action_start_text(node.step, str(node.action)))
-        if isinstance(node, VerifyPredicate) and node.round is not None and self._first(node.round):
-            self._log_round(node)
+        if isinstance(node, VerifyPredicate):
+            if node.observation is not None and self._first(node.observation):
+                self._log_frame(node.observation)
+            if node.round is not None and self._first(node.round):
+                self._log_round(node)
+        if isinstance(node, ActivePerception) and node.status == Status.RUNNING:
+            self._running_check = node  # the deepest one the walk meets is the one the tree highlights
         for child in node.children:
             self._walk(child, actions, verifications, applied)
         if isinstance(node, ExecuteSkill):
@@ -235,27 +249,53 @@ class TreeRecorder:
                      and v.action == action)
             if v is not None:
                 self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
+                situation = node.ctx.situation if v.outcome == "contradicted" else None
+                self._page(ev.verdict_markdown(v, situation))
+
+    def _log_frame(self, obs) -> None:
+        """The image of a round, logged the tick it arrives (paired with its round by identity)."""
+        if not (self.images and has_pixels(obs)):
+            return
+        self.views += 1
+        self._view_of[id(obs)] = self.views
+        self.stream.set_time(L.VIEW, sequence=self.views)
+        classes = segment_classes(obs)
+        names = {d.mask_id: d.name or f"({d.label})" for d in obs.detections if d.mask_id >= 0}
+        if classes is not None and names != self._classes:
+            self._classes = names
+            self.stream.log(f"{L.WORLD}/camera/segmentation", classes, static=True)
+        for path, archetype in camera_entities(obs):
+            self.stream.log(path, archetype)
 
     def _log_round(self, node: VerifyPredicate) -> None:
         parent = node.parent if isinstance(node.parent, ActivePerception) else None
         phase = parent.phase if parent else "check"
         action = (str(parent.action) if parent.action else "goal") if parent else "?"
-        obs = node.observation
-        view_no = None
-        if self.images and has_pixels(obs):
-            self.views += 1
-            view_no = self.views
-            self.stream.set_time(L.VIEW, sequence=self.views)
-            classes = segment_classes(obs)
-            names = {d.mask_id: d.name or f"({d.label})" for d in obs.detections if d.mask_id >= 0}
-            if classes is not None and names != self._classes:
-                self._classes = names
-                self.stream.log(f"{L.WORLD}/camera/segmentation", classes, static=True)
-            for path, archetype in camera_entities(obs):
-                self.stream.log(path, archetype)
+        view_no = self._view_of.get(id(node.observation))
         self._text(L.EV_ROUNDS, ev.round_text(phase, action, node.atom, node.expected, node.round, view_no))
-        self.stream.log(L.ROUND_PAGE, rr.TextDocument(
-            ev.round_markdown(phase, action, node.atom, node.expected, node.round), media_type=rr.MediaType.MARKDOWN))
+        self._page(ev.round_markdown(phase, action, node.atom, node.expected, node.round))
+
+    def _log_running_check(self) -> None:
+        """The page of the check the tree highlights, whenever what it shows changed: its view,
+        what it is doing, and the questions of the round in flight with the answers so far —
+        logged last in the tick, so at every tick the page names the atom the tree highlights."""
+        check, self._running_check = self._running_check, None
+        if check is None:
+            return
+        p = check.verify.progress() if check.stage == "look" else None
+        stage = p.stage if p is not None else check.stage
+        signature = (id(check), len(check.rounds), stage, tuple(sorted(p.answers.items())) if p else ())
+        if signature == self._page_signature:
+            return
+        action = str(check.action) if check.action else "goal"
+        self._page(ev.check_markdown(check.phase, action, check.atom, check.verify.expected, len(check.rounds),
+                                     check.ctx.budget, stage, p.questions if p and stage != "done" else (),
+                                     p.answers if p else None, check.rounds[-1] if check.rounds else None))
+        self._page_signature = signature
+
+    def _page(self, markdown: str) -> None:
+        self.stream.log(L.ROUND_PAGE, rr.TextDocument(markdown, media_type=rr.MediaType.MARKDOWN))
+        self._page_signature = None
 
     def _log_belief(self, ctx: ExecutionContext, change, where: str = "") -> None:
         self.stream.log(L.SCENE_FACTS, facts_document(ctx.graph, change, where))
