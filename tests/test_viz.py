@@ -170,6 +170,8 @@ def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
         assert page.splitlines()[0] == f"# {'' if v.expected else 'not '}{v.atom}" and f": **{v.outcome}**" in page
     sit = texts(rows, "/events/situations")
     assert len(sit) == len(outcome.situations) == 1
+    kind = outcome.situations[0].kind  # plotted by kind, on axes of its own
+    assert [r["Scalars:scalars"][0] for r in rows[f"/stats/situations/{kind}"]] == [1.0]
     assert str(outcome.situations[0].atom) in sit[0] and rows["/events/situations"][0]["TextLog:level"] == ["WARN"]
     actions = texts(rows, "/events/actions")
     assert sum("start" in a for a in actions) == len(ctx.actions)
@@ -228,22 +230,30 @@ def test_belief_is_logged_when_it_changes(recorded):
     assert all(f"`{a}`" in final for a in outcome.graph.facts)
     graph = rows["/scene/graph"][-1]
     assert "cup" in graph["GraphNodes:node_ids"] and "on(cup, counter)" in graph["GraphNodes:node_ids"]
-    assert {"first": "cup", "second": "on(cup, counter)"} in graph["GraphEdges:edges"]
+    # laid out: the cup hangs from the counter by a labelled edge, counter — on — cup
+    edges = {(e["first"], e["second"]) for e in graph["GraphEdges:edges"]}
+    assert {("counter", "on(cup, counter)"), ("on(cup, counter)", "cup")} <= edges
+    assert len(graph["GraphNodes:positions"]) == len(graph["GraphNodes:node_ids"])
 
 
 def test_episodes_of_one_session_share_a_timeline(symbolic, tmp_path):
     path = tmp_path / "two.rrd"
     with TreeRecorder.open(f"save {path}") as rec:
-        first = run(symbolic, 0, rec)
-        second = run(symbolic, SEED_WITH_REPLAN, rec)
+        symbolic.recorder = rec
+        first_report, first = symbolic.episode(0), symbolic.last_outcome
+        second_report, second = symbolic.episode(SEED_WITH_REPLAN), symbolic.last_outcome
     rows = read(path)
     assert [t.split(":")[0] for t in texts(rows, "/events/plan") if t.startswith("episode")] == [
         "episode 1", "episode 2"]
     ticks = [r["tick"] for r in rows["/tree"]]
     assert ticks == sorted(ticks) and ticks[-1] == first.ticks + second.ticks
+    # the queries plot ends on the count the command line prints, summed over the episodes
     queries = [r["Scalars:scalars"][0] for r in rows["/stats/vlm_queries"]]
-    assert queries == sorted(queries) and queries[-1] == sum(
-        v.to_json()["queries"] for o in (first, second) for v in o.context.verifications)
+    assert queries == sorted(queries) and queries[-1] == first_report["vlm_queries"] + second_report["vlm_queries"]
+    # the queries of each action's checks, one bar per checked action: the checks' queries (the
+    # surveys' and the search's are in the total only)
+    bars = rows["/stats/queries_per_action"][-1]["BarChart:values"][0]["buffer"]
+    assert sum(bars) == sum(v.to_json()["queries"] for v in second.context.verifications)
 
 
 @pytest.mark.slow

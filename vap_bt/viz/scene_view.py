@@ -5,10 +5,8 @@ Three views of it, each complete on its own:
 
 * **facts** — a markdown document, the atoms grouped by predicate, with the change that led to
   this state (its cause and the atoms added and removed) on top;
-* **graph** — objects are nodes; a relation over two or more objects is a small node named for
-  its predicate, linked from its first argument to the others (``cup → on → counter``), so the
-  predicate survives where a bare edge would lose it; a property of one object is written into
-  that object's label; facts about no object (``hand_empty``) label one node of their own;
+* **graph** — laid out by :mod:`~vap_bt.viz.scene_graph`: rooms with what they hold, each thing
+  under what it rests on or in, relations as labelled edges, properties in the labels;
 * **boxes** — objects whose perception gave an axis-aligned box (the pybullet world) as 3-D boxes
   in the world frame, next to the camera.
 """
@@ -22,11 +20,6 @@ import rerun as rr
 from vap_bt.domain.atoms import Atom
 from vap_bt.scene.graph import Change, SceneGraph
 
-#: node id of the node that carries facts about no object
-STATE_NODE = "(state)"
-OBJECT_COLOUR = (70, 130, 200)
-RELATION_COLOUR = (200, 200, 200)
-STATE_COLOUR = (120, 90, 160)
 
 
 def facts_markdown(facts: set[Atom] | frozenset[Atom], change: Change | None = None, where: str = "") -> str:
@@ -48,34 +41,6 @@ def facts_markdown(facts: set[Atom] | frozenset[Atom], change: Change | None = N
 
 def facts_document(graph: SceneGraph, change: Change | None = None, where: str = "") -> rr.TextDocument:
     return rr.TextDocument(facts_markdown(graph.facts, change, where), media_type=rr.MediaType.MARKDOWN)
-
-
-def facts_graph(graph: SceneGraph) -> tuple[rr.GraphNodes, rr.GraphEdges]:
-    names = set(graph.objects) | {x for a in graph.facts for x in a.args}
-    props: dict[str, list[str]] = defaultdict(list)
-    nullary: list[str] = []
-    rel_ids, rel_labels, edges = [], [], []
-    for a in sorted(graph.facts):
-        if not a.args:
-            nullary.append(a.predicate)
-        elif len(a.args) == 1:
-            props[a.args[0]].append(a.predicate)
-        else:
-            rid = str(a)
-            rel_ids.append(rid)
-            rel_labels.append(a.predicate)
-            edges.append((a.args[0], rid))
-            edges += [(rid, x) for x in a.args[1:]]
-    obj_ids = sorted(names)
-    obj_labels = [n + (f"\n[{', '.join(props[n])}]" if props[n] else "") for n in obj_ids]
-    ids, labels = obj_ids + rel_ids, obj_labels + rel_labels
-    colours = [OBJECT_COLOUR] * len(obj_ids) + [RELATION_COLOUR] * len(rel_ids)
-    if nullary:
-        ids.append(STATE_NODE)
-        labels.append(", ".join(nullary))
-        colours.append(STATE_COLOUR)
-    return (rr.GraphNodes(ids, labels=labels, colors=colours, show_labels=True),
-            rr.GraphEdges(edges, graph_type="directed"))
 
 
 def object_boxes(graph: SceneGraph) -> rr.Boxes3D | None:

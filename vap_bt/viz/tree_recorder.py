@@ -26,8 +26,9 @@ tick costs only what is new, and logs only what changed:
   and the verdict of any check that was decided in it (with the situation, when it is one);
 * the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes) at the start of an
   episode and whenever it changed;
-* counters as time series (``stats/vlm_queries``, ``stats/replans``): the VLM queries of the
-  settled verifications so far, and the replans, whenever they grow.
+* plots (``stats/*``), each on its own axes: the VLM queries so far, every one the metered
+  model answered (the count the command line prints), the queries of each action's checks as a
+  bar chart, the replans, and the situations by kind — each logged when it grows.
 
 Timelines: ``tick`` (the executive's tick, counted on across the episodes of a session so time
 never runs backwards), ``time`` (wall clock) and ``view`` (images logged so far: several rounds
@@ -52,7 +53,8 @@ from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.viz import events as ev
 from vap_bt.viz import layout as L
 from vap_bt.viz.observation_view import camera_entities, has_pixels, segment_classes
-from vap_bt.viz.scene_view import facts_document, facts_graph, object_boxes
+from vap_bt.viz import scene_graph
+from vap_bt.viz.scene_view import facts_document, object_boxes
 from vap_bt.viz.sink import OpenRecording, SinkSpec, open_recording
 from vap_bt.viz.tree_graph import TreeGraph, TreeView
 from vap_bt.viz.tree_text import tree_document
@@ -74,8 +76,11 @@ class TreeRecorder:
         self._graph: TreeGraph | None = None
         self._signature: tuple | None = None
         self._view: TreeView | None = None
-        self.queries = 0  # VLM queries of the settled verifications (``stats/vlm_queries``)
-        self._tree_bounds: tuple[float, float, float, float] | None = None
+        self.queries = 0  # VLM queries so far (``stats/vlm_queries``), the session's finished episodes too
+        self._queries_before = 0  # those of the finished episodes
+        self._situations: dict[str, int] = {}  # situations by kind, so far (``stats/situations/<kind>``)
+        #: each graph view's visible area so far (``tree``, ``scene``): see :meth:`_fit_views`
+        self._bounds: dict[str, tuple[float, float, float, float]] = {}
         self._reset_indices()
         self._classes = None
 
@@ -123,14 +128,15 @@ class TreeRecorder:
             self._text(L.EV_ACTIONS, *ev.action_result_text(entry))
         for v in verifications:
             self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
-        if self._n_verifications > n_before:
-            self.queries += sum(v.to_json()["queries"] for v in ctx.verifications[n_before:])
-            self.stream.log(L.STATS_QUERIES, rr.Scalars(self.queries))
+        self._log_queries(ctx)
         for c in applied:
             self._text(L.EV_BELIEF, ev.change_text(c))
         if ctx.situation is not None and ctx.situation is not self._situation:
             self._situation = ctx.situation
             self._text(L.EV_SITUATIONS, ev.situation_text(ctx.situation), ev.WARN)
+            kind = ctx.situation.kind
+            self._situations[kind] = self._situations.get(kind, 0) + 1
+            self.stream.log(f"{L.STATS_SITUATIONS}/{kind}", rr.Scalars(self._situations[kind]))
         if pending_changes:
             self._log_belief(ctx, pending_changes[-1])
         self._log_running_check()
@@ -144,6 +150,8 @@ class TreeRecorder:
 
     def close(self) -> None:
         """Flush and close the sink (a saved file gets its footer; a served stream ends)."""
+        if self._ctx is not None:  # queries asked after the last tick (a last look at the goal)
+            self._log_queries(self._ctx)
         self.recording.close()
 
     def serve_until_interrupted(self, say=print) -> None:
@@ -174,10 +182,14 @@ class TreeRecorder:
         self._view_of: dict[int, int] = {}  # id of a frame -> its number on the ``view`` timeline
         self._running_check: ActivePerception | None = None
         self._page_signature: tuple | None = None
+        #: VLM queries of each action's checks, by (plan, step) in the order they ran
+        self._per_action: dict[tuple[int, int], int] = {}
         self._keep: list[object] = []  # strong references, so that ids in _seen are never reused
 
     def _begin_episode(self, ctx: ExecutionContext) -> None:
         if self._ctx is not None:
+            self._log_queries(self._ctx)
+            self._queries_before = self.queries
             self._offset += self._last_tick
         self._ctx, self._tree, self._graph, self._signature, self._view = ctx, None, None, None, None
         self._reset_indices()
@@ -197,18 +209,22 @@ class TreeRecorder:
         plan = [str(b.action) for b in self._graph.behaviours if isinstance(b, ExecuteSkill)]
         self._text(L.EV_PLAN, ev.plan_text(plan, self._replans), ev.WARN if self._replans else ev.INFO)
         self.stream.log(L.STATS_REPLANS, rr.Scalars(self._replans))
-        self._fit_tree_view(self._graph.extent())
+        self._fit_views(tree=self._graph.extent())
 
-    def _fit_tree_view(self, extent: tuple[float, float, float, float]) -> None:
-        """Send the layout again with the tree view's bounds grown to hold ``extent`` — only when
-        they grow, so the zoom of a session changes seldom (sending a layout resets the viewer's)."""
-        old = self._tree_bounds
-        if old is not None and old[0] <= extent[0] and old[1] <= extent[1] and old[2] >= extent[2] \
-                and old[3] >= extent[3]:
-            return
-        self._tree_bounds = extent if old is None else (min(old[0], extent[0]), min(old[1], extent[1]),
-                                                         max(old[2], extent[2]), max(old[3], extent[3]))
-        self.stream.send_blueprint(L.blueprint(self._tree_bounds), make_active=True, make_default=True)
+    def _fit_views(self, **extents: tuple[float, float, float, float]) -> None:
+        """Send the layout again with a graph view's visible area (``tree``, ``scene``) grown to
+        hold the given extent — only when one grows, so the zoom of a session changes seldom
+        (sending a layout resets the viewer's)."""
+        grown = False
+        for view, extent in extents.items():
+            old = self._bounds.get(view)
+            new = extent if old is None else (min(old[0], extent[0]), min(old[1], extent[1]),
+                                              max(old[2], extent[2]), max(old[3], extent[3]))
+            grown |= new != old
+            self._bounds[view] = new
+        if grown:
+            self.stream.send_blueprint(L.blueprint(self._bounds.get("tree"), self._bounds.get("scene")),
+                                       make_active=True, make_default=True)
 
     def _log_tree(self, new_tree: bool) -> None:
         """The drawing and the text, each only when it changed since the last tick."""
@@ -251,6 +267,9 @@ class TreeRecorder:
                 self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
                 situation = node.ctx.situation if v.outcome == "contradicted" else None
                 self._page(ev.verdict_markdown(v, situation))
+                key = (self._replans, node.step)
+                self._per_action[key] = self._per_action.get(key, 0) + v.to_json()["queries"]
+                self.stream.log(L.STATS_PER_ACTION, rr.BarChart(list(self._per_action.values())))
 
     def _log_frame(self, obs) -> None:
         """The image of a round, logged the tick it arrives (paired with its round by identity)."""
@@ -299,7 +318,20 @@ class TreeRecorder:
 
     def _log_belief(self, ctx: ExecutionContext, change, where: str = "") -> None:
         self.stream.log(L.SCENE_FACTS, facts_document(ctx.graph, change, where))
-        self.stream.log(L.SCENE_GRAPH, *facts_graph(ctx.graph))
+        drawing = scene_graph.draw(ctx.graph)
+        self.stream.log(L.SCENE_GRAPH, drawing.nodes(), drawing.links())
+        self._fit_views(scene=drawing.bounds())
+
+    def _log_queries(self, ctx: ExecutionContext) -> None:
+        """The VLM queries so far, when they grew: the metered model's count — every query of the
+        episode, surveys and viewpoint questions too, the count the command line prints — or,
+        for a model nobody meters, the queries of the settled checks."""
+        total = getattr(ctx.vlm, "total", None)
+        if total is None:
+            total = sum(v.to_json()["queries"] for v in ctx.verifications)
+        if self._queries_before + total != self.queries:
+            self.queries = self._queries_before + total
+            self.stream.log(L.STATS_QUERIES, rr.Scalars(self.queries))
 
     def _text(self, path: str, text: str, level: str = ev.INFO) -> None:
         self.stream.log(path, rr.TextLog(text, level=level))
