@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what vap_bt needs on a fresh Debian machine, and nothing twice:
 # Debian packages (libusb-1.0-0 for open3d, libgomp1 for the solvers, chromium for the browser
-# test of the rerun web viewer, which Playwright drives but cannot download here), a virtual
+# test of the rerun web viewer, which Playwright drives but cannot download here; tesseract-ocr, with
+# which that test reads what the viewer's panels say), a virtual
 # environment in .venv, and the project with its test extras (editable, so `vap-bt` runs this checkout).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,6 +11,7 @@ need_apt=()
 ldconfig -p | grep -q 'libusb-1.0.so.0' || need_apt+=(libusb-1.0-0)
 ldconfig -p | grep -q 'libgomp.so.1' || need_apt+=(libgomp1)
 [ -x /usr/bin/chromium ] || need_apt+=(chromium)
+[ -x /usr/bin/tesseract ] || need_apt+=(tesseract-ocr)
 if [ ${#need_apt[@]} -gt 0 ]; then
   echo "setup: installing Debian packages: ${need_apt[*]}" >&2
   SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"

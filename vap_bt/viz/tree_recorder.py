@@ -52,7 +52,7 @@ from vap_bt.bt.execute_skill import ExecuteSkill
 from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.viz import events as ev
 from vap_bt.viz import layout as L
-from vap_bt.viz.observation_view import camera_entities, has_pixels, segment_classes
+from vap_bt.viz.observation_view import camera_entities, has_pixels
 from vap_bt.viz import scene_graph
 from vap_bt.viz.scene_view import facts_document, object_boxes
 from vap_bt.viz.sink import OpenRecording, SinkSpec, open_recording
@@ -82,7 +82,6 @@ class TreeRecorder:
         #: each graph view's visible area so far (``tree``, ``scene``): see :meth:`_fit_views`
         self._bounds: dict[str, tuple[float, float, float, float]] = {}
         self._reset_indices()
-        self._classes = None
 
     @classmethod
     def open(cls, sink: SinkSpec | str | Sequence[str], name: str | None = None, images: bool = True) -> "TreeRecorder":
@@ -278,11 +277,6 @@ class TreeRecorder:
         self.views += 1
         self._view_of[id(obs)] = self.views
         self.stream.set_time(L.VIEW, sequence=self.views)
-        classes = segment_classes(obs)
-        names = {d.mask_id: d.name or f"({d.label})" for d in obs.detections if d.mask_id >= 0}
-        if classes is not None and names != self._classes:
-            self._classes = names
-            self.stream.log(f"{L.WORLD}/camera/segmentation", classes, static=True)
         for path, archetype in camera_entities(obs):
             self.stream.log(path, archetype)
 
