@@ -9,10 +9,9 @@ verifications and belief changes it has logged, and which rounds and goals it ha
 tick costs only what is new, and logs only what changed:
 
 * the tree (``tree``): the drawing of :mod:`~vap_bt.viz.tree_graph` (nodes, positions, status
-  colours, edges) whenever it differs from the last one logged, and beside it (``tree_text``)
-  the whole tree in words with status marks (:mod:`~vap_bt.viz.tree_text`) whenever a status,
-  feedback message or view count changed — unchanged ticks log nothing, which keeps a tick cheap
-  (the check is one pass over the nodes' statuses);
+  colours, edges) whenever it differs from the last one logged, and with it (``tree_text``)
+  the whole tree in words with status marks (:mod:`~vap_bt.viz.tree_text`) — unchanged ticks log
+  nothing, which keeps a tick cheap (the check is one pass over the nodes' statuses);
 * the events (``events/*``), in the order the tree ran them: plan and replan, action start and
   result, each round of looking with its questions and answers, each settled verification, each
   situation, each change of belief;
@@ -226,7 +225,9 @@ class TreeRecorder:
                                        make_active=True, make_default=True)
 
     def _log_tree(self, new_tree: bool) -> None:
-        """The drawing and the text, each only when it changed since the last tick."""
+        """The drawing, and with it the text, only when the drawing changed since the last tick:
+        a skill's progress changes a feedback message on most ticks, and the text — the whole
+        tree, a few kilobytes — logged on each of those was a third of a recording's bytes."""
         signature = self._graph.signature()
         if not new_tree and signature == self._signature:
             return
@@ -234,8 +235,8 @@ class TreeRecorder:
         view = self._graph.view()
         if view != self._view:
             self.stream.log(L.TREE, view.nodes(), view.links())
+            self.stream.log(L.TREE_TEXT, tree_document(self._graph.root))
             self._view = view
-        self.stream.log(L.TREE_TEXT, tree_document(self._graph.root))
 
     def _walk(self, node, actions: list[dict], verifications: list, applied: list) -> None:
         """Log what ``node`` and its subtree did this tick, in the order the tree ran it."""
