@@ -58,6 +58,8 @@ WIDTH, HEIGHT = 1920, 1080
 #: log): its drawing area (inside the borders, under the title bar), and a box within it for counting ink
 TREE_CONTENT = (2, 60, 858, 848)
 TREE_PANEL = (0, 60, 850, 800)
+#: the verification panel (the middle column, 9/20 to 14/20 of the width, its upper half, under its title bar)
+VERIFICATION_PANEL = (868, 60, 1340, 520)
 #: the collapsed time panel's strip at the bottom of the window: a click there sets the time
 TIME_STRIP_Y = HEIGHT - 14
 #: where the screenshots docs/viz.md shows are refreshed from (only on request: see the docstring)
@@ -113,10 +115,11 @@ def test_the_recording_holds_the_final_tree_a_frame_and_a_verifications_question
     image = cv2.imdecode(np.frombuffer(bytes(frames[0]["EncodedImage:blob"][0]), np.uint8), cv2.IMREAD_COLOR)
     (w, h), = next(r["Pinhole:resolution"] for r in boil.rows["/world/camera"] if r.get("Pinhole:resolution"))
     assert image.shape == (int(h), int(w), 3) and image.std() > 10
-    # the questions and answers of the first verification: its page holds the paper's paraphrases
-    # for the atom, each with the answer the report recorded, then the vote and view sufficiency
+    # the questions and answers of the first verification: the page of its first round (after the
+    # pages of the check in progress) holds the paper's paraphrases for the atom, each with the
+    # answer the report recorded, then the vote and view sufficiency
     v = rep["verifications"][0]
-    page = boil.rows["/verification/round"][0]["TextDocument:text"][0]
+    page = next(p for r in boil.rows["/verification/round"] for p in r["TextDocument:text"] if "\n- vote: " in p)
     questions = household_profile().questions(Atom.parse(v["predicate"]), 5)
     answers = v["rounds"][0]["answers"]
     assert page.startswith(f"# {v['predicate']}") and f"check of **{v['action']}**" in page
@@ -330,17 +333,7 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         # flight (the middle of that stretch), set by clicking the time strip, whose pixel-to-tick
         # scale is read off two calibration clicks
         target = _skill_in_flight(boil.rows)
-        xs, ticks = (0.3 * WIDTH, 0.7 * WIDTH), []
-        for x in xs:
-            page.mouse.click(x, TIME_STRIP_Y)
-            time.sleep(1.0)
-            ticks.append(ViewerState.read(page).current[1])
-        assert ticks[1] > ticks[0], f"clicking the time strip did not move the time: {ticks}"
-        x = xs[0] + (target - ticks[0]) * (xs[1] - xs[0]) / (ticks[1] - ticks[0])
-        page.mouse.click(x, TIME_STRIP_Y)
-        page.mouse.move(WIDTH / 2, HEIGHT / 2)
-        time.sleep(3.0)
-        shown = ViewerState.read(page).current[1]
+        shown = _scrub(page, target)
         drawing = _drawing_at(boil.rows, shown)
         assert abs(shown - target) <= 0.05 * last_tick, (shown, target)
         assert any(i.count(".") >= 2 for i in drawing["ids"]), f"no action is spread out at tick {shown}"
@@ -353,6 +346,88 @@ def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
         # the camera panel shows the frame of the current verification, not an empty view
         camera = middle[60:400, 1350:1640, :3]
         assert camera.std() > 20, "the camera panel is blank"
+        _the_verification_panel_follows_the_tree(page, boil.rows, tmp_path)
+
+
+def _scrub(page, target: int) -> int:
+    """Set the viewer's time to about ``target`` by clicking the time strip, whose pixel-to-tick
+    scale is read off two calibration clicks; returns the tick the viewer then shows."""
+    xs, ticks = (0.3 * WIDTH, 0.7 * WIDTH), []
+    for x in xs:
+        page.mouse.click(x, TIME_STRIP_Y)
+        time.sleep(1.0)
+        ticks.append(ViewerState.read(page).current[1])
+    assert ticks[1] > ticks[0], f"clicking the time strip did not move the time: {ticks}"
+    x = xs[0] + (target - ticks[0]) * (xs[1] - xs[0]) / (ticks[1] - ticks[0])
+    page.mouse.click(x, TIME_STRIP_Y)
+    page.mouse.move(WIDTH / 2, HEIGHT / 2)
+    time.sleep(3.0)
+    return ViewerState.read(page).current[1]
+
+
+def _check_stretches(rows: dict) -> list[tuple[int, int, str]]:
+    """(first tick, last tick, atom) of each stretch of ticks during which the tree highlights one
+    check — what the viewer shows from a drawing's tick up to the next drawing's."""
+    from test_viz import running_check
+
+    drawings = tree_rows(rows)
+    out: list[tuple[int, int, str]] = []
+    for d, nxt in zip(drawings, [*drawings[1:], None]):
+        atom, end = running_check(d), (nxt["tick"] - 1 if nxt else d["tick"])
+        if atom is None:
+            continue
+        if out and out[-1][2] == atom and out[-1][1] + 1 == d["tick"]:
+            out[-1] = (out[-1][0], end, atom)
+        else:
+            out.append((d["tick"], end, atom))
+    return out
+
+
+def read_text(image: np.ndarray, box) -> str:
+    """What tesseract reads in ``box`` of a screenshot: enlarged three times (the viewer's text is
+    12-14 px, small for it) and made dark on light (the viewer's theme is light on dark)."""
+    import cv2
+
+    x0, y0, x1, y1 = box
+    grey = cv2.cvtColor(np.ascontiguousarray(image[y0:y1, x0:x1, :3]), cv2.COLOR_RGB2GRAY)
+    grey = cv2.resize(grey, None, fx=3, fy=3, interpolation=cv2.INTER_CUBIC)
+    if grey.mean() < 128:
+        grey = 255 - grey
+    ok, png = cv2.imencode(".png", grey)
+    done = subprocess.run(["tesseract", "stdin", "stdout", "--psm", "6"], input=png.tobytes(), capture_output=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr.decode()[-500:]
+    return done.stdout.decode(errors="replace")
+
+
+def _letters(text: str) -> str:
+    return re.sub(r"[^a-z0-9]", "", text.lower())
+
+
+def _named(text: str, atom: str) -> float:
+    """How well the best line of ``text`` reads as ``atom`` (1.0: letter for letter; OCR drops
+    underscores and brackets, so only letters and digits are compared)."""
+    from difflib import SequenceMatcher
+
+    lines = [_letters(l) for l in text.splitlines() if _letters(l)]
+    return max((SequenceMatcher(None, _letters(atom), l).ratio() for l in lines), default=0.0)
+
+
+def _the_verification_panel_follows_the_tree(page, rows: dict, tmp_path: Path) -> None:
+    """Scrubbed to the middle of the longest stretch during which the tree highlights one check,
+    the verification panel names that check's atom — read off the screen by OCR, and read better
+    as that atom than as any other check's of the episode."""
+    first, last, atom = max(_check_stretches(rows), key=lambda st: st[1] - st[0])
+    shown = _scrub(page, (first + last) // 2)
+    highlighted = next((a for f, l, a in _check_stretches(rows) if f <= shown <= l), None)
+    assert highlighted is not None, f"scrubbed to tick {shown}, where the tree highlights no check ({first}..{last})"
+    shot = _shot(page, _shot_path("live-view-check.png", tmp_path))
+    assert _ink(shot, Status.RUNNING) > 50, "the highlighted path is not drawn"
+    text = read_text(shot, VERIFICATION_PANEL)
+    atoms = {a for _, _, a in _check_stretches(rows)}
+    scores = {a: _named(text, a) for a in atoms}
+    best = max(scores, key=scores.get)
+    assert scores[highlighted] >= 0.8 and best == highlighted, (shown, highlighted, scores, text[:400])
 
 
 @pytest.mark.slow

@@ -23,8 +23,9 @@ tick costs only what is new, and logs only what changed:
   doing — capturing, asking with the answers as they arrive, judging the view, choosing or moving
   to the next viewpoint — and is logged last in the tick, after the page of any round that ended
   and the verdict of any check that was decided in it (with the situation, when it is one);
-* the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes) at the start of an
-  episode and whenever it changed;
+* the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes — beside the last
+  frame's depth, lifted to points in the 3-D view) at the start of an episode and whenever it
+  changed;
 * plots (``stats/*``), each on its own axes: the VLM queries so far, every one the metered
   model answered (the count the command line prints), the queries of each action's checks as a
   bar chart, the replans, and the situations by kind — each logged when it grows.
@@ -197,9 +198,6 @@ class TreeRecorder:
         self._text(L.EV_PLAN, f"episode {self.episodes}: {len(ctx.graph.facts)} facts believed, "
                               f"verification {ctx.mode.name}, K={ctx.budget}")
         self._log_belief(ctx, None, where="initial survey")
-        boxes = object_boxes(ctx.graph)
-        if boxes is not None:
-            self.stream.log(L.OBJECT_BOXES, boxes)
 
     def _new_tree(self, tree: py_trees.trees.BehaviourTree) -> None:
         self._tree, self._graph = tree, TreeGraph.of(tree.root)
@@ -316,6 +314,9 @@ class TreeRecorder:
         drawing = scene_graph.draw(ctx.graph)
         self.stream.log(L.SCENE_GRAPH, drawing.nodes(), drawing.links())
         self._fit_views(scene=drawing.bounds())
+        boxes = object_boxes(ctx.graph)  # belief's boxes, beside the last frame's points in 3-D
+        if boxes is not None:
+            self.stream.log(L.OBJECT_BOXES, boxes)
 
     def _log_queries(self, ctx: ExecutionContext) -> None:
         """The VLM queries so far, when they grew: the metered model's count — every query of the
