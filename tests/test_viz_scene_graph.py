@@ -17,7 +17,7 @@ pytest.importorskip("rerun")
 
 from vap_bt.domain.atoms import Atom  # noqa: E402
 from vap_bt.scene.graph import SceneGraph  # noqa: E402
-from vap_bt.viz.scene_graph import ROBOT, draw  # noqa: E402
+from vap_bt.viz.scene_graph import ROBOT, draw, labelled  # noqa: E402
 from vap_bt.viz.tree_graph import size_of  # noqa: E402
 
 FACTS = """in_room(counter, kitchen) in_room(cabinet, kitchen) in_room(cup, kitchen) inside(cup, cabinet)
@@ -61,9 +61,12 @@ def test_what_rests_on_a_thing_hangs_from_it_by_a_labelled_edge():
     # the robot is in its room, holding the knife; the fact about nothing is in its label
     assert {("kitchen", "robot_in(kitchen)"), ("robot_in(kitchen)", ROBOT), (ROBOT, "holding(knife)"),
             ("holding(knife)", "knife")} <= edges
-    assert label[ROBOT] == "robot [hand_empty]"
+    assert label[ROBOT] == "robot\n[hand_empty]"
     # properties are in their object's label
-    assert label["cabinet"] == "cabinet [closed, openable]" and label["counter"] == "counter [clear]"
+    assert label["cabinet"] == "cabinet\n[closed, openable]" and label["counter"] == "counter\n[clear]"
+    # long lists wrap under the name, no line wider than the name or 18 characters
+    wrapped = labelled("cup", ["fillable", "filled", "heated", "reachable"])
+    assert wrapped == "cup\n[fillable, filled,\nheated, reachable]" and max(map(len, wrapped.split("\n"))) <= 18
 
 
 def test_every_fact_is_shown_once():

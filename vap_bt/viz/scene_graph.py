@@ -9,12 +9,13 @@ as :mod:`~vap_bt.viz.tree_graph` does for the behaviour tree, so that nothing ov
   location atom says the hand has it (``holding(cup)``), else its room (``in_room``). Rooms are
   the roots, drawn top to bottom; the robot hangs in the room belief puts it in (``robot_in``).
 * the forest is laid out **sideways**: a node sits on the row of its first child, its children
-  stacked below in the next column; every leaf has a row of its own, so no two labels share
-  one. Between a node's column and its children's, a small grey node carries the relation's
+  stacked below in the next column; every leaf has a row of its own (as tall as the row's
+  tallest label), so no two labels share one. Between a node's column and its children's, a small grey node carries the relation's
   name — rerun cannot label an edge, so the edge is split at a label: ``cabinet — inside — cup``.
   Belonging to a room needs no label: the grouping says it.
-* **properties** (one-argument facts) are written into their object's label —
-  ``cabinet [closed, openable]`` — and facts about nothing (``hand_empty``) into the robot's.
+* **properties** (one-argument facts) are written into their object's label, under its name —
+  ``cabinet`` / ``[closed, openable]`` — and facts about nothing (``hand_empty``) into the robot's;
+  the lines are kept short, since one long label widens a column and shrinks the whole drawing.
 * every other relation (a door ``in_room`` of a second room, ``connected(a, b)``) is a grey
   node in a last column on its first argument's row, linked to each of its arguments.
 
@@ -40,6 +41,8 @@ OBJECT_COLOUR = (70, 130, 200)
 ROOM_COLOUR = (40, 60, 110)
 ROBOT_COLOUR = (120, 90, 160)
 RELATION_COLOUR = (150, 150, 150)
+#: properties are wrapped under an object's name to lines of this many characters (or the name's)
+PROPERTY_CHARS = 18
 
 
 @dataclass(frozen=True)
@@ -114,10 +117,9 @@ def draw(graph: SceneGraph) -> SceneDrawing:
             others.append(a)
     nodes = {r: _Node(r, r, ROOM_COLOUR) for r in rooms}
     for n in names:
-        nodes[n] = _Node(n, n + (f" [{', '.join(props[n])}]" if props[n] else ""), OBJECT_COLOUR)
+        nodes[n] = _Node(n, labelled(n, props[n]), OBJECT_COLOUR)
     if ROBOT in parent or any(p == ROBOT for p, _ in parent.values()) or robot_props:
-        label = "robot" + (f" [{', '.join(robot_props)}]" if robot_props else "")
-        nodes[ROBOT] = _Node(ROBOT, label, ROBOT_COLOUR)
+        nodes[ROBOT] = _Node(ROBOT, labelled("robot", robot_props), ROBOT_COLOUR)
     roots = []
     for n in sorted(nodes, key=lambda k: (k not in rooms, k)):
         p, fact = parent.get(n, (None, None))
@@ -128,6 +130,22 @@ def draw(graph: SceneGraph) -> SceneDrawing:
         else:
             roots.append(nodes[n])
     return _layout(roots, others)
+
+
+def labelled(name: str, properties: list[str]) -> str:
+    """The name, then its properties in brackets on lines no wider than the name (or
+    :data:`PROPERTY_CHARS`): the panel is narrow, and a long line would shrink the whole drawing."""
+    if not properties:
+        return name
+    width, lines = max(len(name), PROPERTY_CHARS), [""]
+    for p in properties:
+        word = p + ","
+        if lines[-1] and len(lines[-1]) + 1 + len(word) + (len(lines) == 1) > width:  # the first line has "["
+            lines.append("")
+        lines[-1] = f"{lines[-1]} {word}".strip()
+    lines[0] = "[" + lines[0]
+    lines[-1] = lines[-1][:-1] + "]"
+    return "\n".join([name, *lines])
 
 
 def _ancestors(parent: dict, node: str) -> list[str]:
@@ -147,59 +165,56 @@ def _descends(parent: dict, start: str, node: str) -> bool:
 
 
 def _layout(roots: list[_Node], others: list[Atom]) -> SceneDrawing:
-    by_depth: dict[int, list[_Node]] = defaultdict(list)
+    """Columns by depth (objects, then the labels of the edges to their children), rows by a
+    walk of the forest: a node on its first child's row, a leaf on a row of its own, each row as
+    tall as its tallest label."""
+    order: list[tuple[_Node, int, int, str | None]] = []  # (node, depth, row, parent id) in walk order
+    rows = 0
 
-    def collect(node: _Node, depth: int) -> None:
-        by_depth[depth].append(node)
+    def walk(node: _Node, depth: int, up: str | None) -> None:
+        nonlocal rows
+        order.append((node, depth, rows, up))
+        if not node.children:
+            rows += 1
         for c in node.children:
-            collect(c, depth + 1)
+            walk(c, depth + 1, node.id)
 
     for r in roots:
-        collect(r, 0)
-    depth_of = {id(n): d for d, ns in by_depth.items() for n in ns}
-    widths = {d: max(size_of(n.label)[0] for n in ns) for d, ns in by_depth.items()}
-    rel_w = {d: max((size_of(c.relation)[0] for n in ns for c in n.children if c.relation), default=0.0)
-             for d, ns in by_depth.items()}
+        walk(r, 0, None)
+    depths = {d for _, d, _, _ in order}
+    widths = {d: max(size_of(n.label)[0] for n, nd, _, _ in order if nd == d) for d in depths}
+    rel_w = {d: max((size_of(n.relation)[0] for n, nd, _, _ in order if nd == d + 1 and n.relation), default=0.0)
+             for d in depths}
     x_obj, x_rel, x = {}, {}, 0.0
-    for d in sorted(widths):
+    for d in sorted(depths):
         x_obj[d] = x + widths[d] / 2
         x += widths[d] + GAP_X
         x_rel[d] = x + rel_w[d] / 2
         x += (rel_w[d] + GAP_X) if rel_w[d] else 0.0
+    heights = [size_of("x")[1]] * max(rows, 1)
+    for n, _, row, _ in order:
+        heights[row] = max(heights[row], size_of(n.label)[1])
+    tops = [sum(heights[:k]) + k * GAP_Y for k in range(len(heights))]
+    y_row = [t + h / 2 for t, h in zip(tops, heights)]
     ids, labels, positions, colours, edges = [], [], [], [], []
-    row_h = max(size_of("x")[1], *(size_of(n.label)[1] for ns in by_depth.values() for n in ns)) + GAP_Y
-    row = 0
     y_of: dict[str, float] = {}
-
-    def place(node: _Node, up: str | None) -> None:
-        nonlocal row
-        d = depth_of[id(node)]
-        y = row * row_h
-        ids.append(node.id), labels.append(node.label), positions.append((x_obj[d], y)), colours.append(node.colour)
-        y_of[node.id] = y
-        if up is not None:
+    for node, d, row, up in order:
+        ids.append(node.id), labels.append(node.label), positions.append((x_obj[d], y_row[row]))
+        colours.append(node.colour)
+        y_of[node.id] = y_row[row]
+        if up is not None and node.relation:  # the edge's label: a node of its own between the columns
+            ids.append(node.atom), labels.append(node.relation), colours.append(RELATION_COLOUR)
+            positions.append((x_rel[d - 1], y_row[row]))
+            edges += [(up, node.atom), (node.atom, node.id)]
+        elif up is not None:
             edges.append((up, node.id))
-        if not node.children:
-            row += 1
-        for c in node.children:
-            via = node.id
-            if c.relation:  # the edge's label: a node of its own between the columns, on the child's row
-                rel_id = c.atom
-                ids.append(rel_id), labels.append(c.relation), colours.append(RELATION_COLOUR)
-                positions.append((x_rel[d], row * row_h))
-                edges.append((node.id, rel_id))
-                via = rel_id
-            place(c, via)
-
-    for r in roots:
-        place(r, None)
-    x_last = x + GAP_X
+    x_last, below = x + GAP_X, (tops[-1] + heights[-1] + GAP_Y if order else 0.0)
     for a in others:  # everything else: a grey node on its first argument's row, linked to each
-        rel_id = str(a)
-        ids.append(rel_id), labels.append(a.predicate), colours.append(RELATION_COLOUR)
-        positions.append((x_last + size_of(a.predicate)[0] / 2, y_of.get(a.args[0], row * row_h)))
-        if a.args[0] not in y_of:
-            row += 1
-        edges.append((a.args[0], rel_id))
-        edges += [(rel_id, arg) for arg in a.args[1:]]
+        ids.append(str(a)), labels.append(a.predicate), colours.append(RELATION_COLOUR)
+        y = y_of.get(a.args[0])
+        if y is None:
+            y, below = below + size_of("x")[1] / 2, below + size_of("x")[1] + GAP_Y
+        positions.append((x_last + size_of(a.predicate)[0] / 2, y))
+        edges.append((a.args[0], str(a)))
+        edges += [(str(a), arg) for arg in a.args[1:]]
     return SceneDrawing(tuple(ids), tuple(labels), tuple(positions), tuple(colours), tuple(edges))
