@@ -4,8 +4,9 @@
 :class:`~vap_bt.transport.server.SkillServer` for each robot asked for (default: every robot that
 has a skill plugin), all bound to that world through a :class:`LockedWorld`, so one simulator is
 shared safely by the arm's and the base's skills. It prints one ``ready`` line on stdout once
-everything is declared and runs until SIGINT or SIGTERM. ``python -m vap_bt.transport.serve``
-does the same without the ``vap-bt`` wrapper.
+everything is declared, logs each goal on stderr (accepted, throttled
+feedback, result, cancel: :mod:`~vap_bt.transport.server`) and runs until SIGINT or SIGTERM.
+``python -m vap_bt.transport.serve`` does the same without the ``vap-bt`` wrapper.
 
 With ``--world remote`` the skills bind to a robot whose world runs in ``vap-bt sim``
 (:class:`~vap_bt.transport.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
@@ -27,12 +28,15 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import signal
 import sys
 import threading
+import time
 
 from vap_bt import plugins
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, VapBtError
+from vap_bt.transport import server as server_module
 from vap_bt.transport.config import add_transport_arguments, open_session, part_settings, settings_from_args
 from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
@@ -60,6 +64,7 @@ def add_serve_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run_serve(args: argparse.Namespace) -> int:
+    _show_goal_log()
     entries = [e for e in plugins.discover_skills() if e.name not in set(args.exclude_skill)]
     table = plugins.skill_table(entries)
     robots = _robots(args.robot, table)
@@ -186,6 +191,32 @@ def _robots(asked: list[str], table: dict[str, plugins.SkillEntry]) -> list[str]
             raise InputError("--robot", f"no skill plugin is bound to robot {robot!r} "
                                         f"(robots with skills: {', '.join(available) or 'none'})")
     return sorted(set(asked)) or available
+
+
+class _ServerLog(logging.StreamHandler):
+    """The skill servers' log lines on stderr as ``vap-bt serve: [t] …`` (``warning: …`` and worse
+    say so), ``t`` the monotonic clock the runner's reports and the sim's lines count in."""
+
+    def __init__(self) -> None:
+        super().__init__(sys.stderr)
+        self.setFormatter(logging.Formatter("vap-bt serve: [%(clock).3f] %(level)s%(message)s"))
+
+    def emit(self, record: logging.LogRecord) -> None:
+        record.clock = time.perf_counter()
+        record.level = f"{record.levelname.lower()}: " if record.levelno > logging.INFO else ""
+        super().emit(record)
+
+
+def _show_goal_log() -> None:
+    """The skill servers' goal lines (INFO: accepted, feedback, result, cancel) on stderr, however
+    quiet the rest of the logging is (once per process, in this format only)."""
+    logger = logging.getLogger(server_module.__name__)
+    for old in [h for h in logger.handlers if isinstance(h, _ServerLog)]:
+        logger.removeHandler(old)
+    logger.addHandler(_ServerLog())
+    logger.propagate = False
+    if logger.getEffectiveLevel() > logging.INFO:
+        logger.setLevel(logging.INFO)
 
 
 def _on_signals(stop: threading.Event) -> None:
