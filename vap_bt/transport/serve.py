@@ -4,7 +4,8 @@
 :class:`~vap_bt.transport.server.SkillServer` for each robot asked for (default: every robot that
 has a skill plugin), all bound to that world through a :class:`LockedWorld`, so one simulator is
 shared safely by the arm's and the base's skills. It prints one ``ready`` line on stdout once
-everything is declared, logs each goal on stderr (accepted, throttled
+everything is declared (``vap-bt serve: ready: ur5e skills [close, cut, …] with the camera, on
+zenoh (connected to tcp/127.0.0.1:7447)``), logs each goal on stderr (accepted, throttled
 feedback, result, cancel: :mod:`~vap_bt.transport.server`) and runs until SIGINT or SIGTERM.
 ``python -m vap_bt.transport.serve`` does the same without the ``vap-bt`` wrapper.
 
@@ -37,13 +38,16 @@ import time
 from vap_bt import plugins
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, VapBtError
 from vap_bt.transport import server as server_module
-from vap_bt.transport.config import add_transport_arguments, open_session, part_settings, settings_from_args
+from vap_bt.transport.config import (add_transport_arguments, describe, open_session, part_settings,
+                                     settings_from_args)
 from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
 from vap_bt.transport.world_factory import make_world, parse_world_args
 
 #: ``--world remote``: the robot of a world that ``vap-bt sim`` hosts
 REMOTE = "remote"
+#: how the one line on stdout that says everything is declared begins (``vap-bt launch`` waits for it)
+READY = "vap-bt serve: ready"
 
 
 def add_serve_arguments(p: argparse.ArgumentParser) -> None:
@@ -143,9 +147,9 @@ def _serve_until_stopped(session, servers: list[SkillServer], settings, stop: _S
         for server in servers:
             started.append(server.start())
         _on_signals(stop.event)
-        where = ", ".join(settings.listen) or f"(connected to {', '.join(settings.connect) or 'the configured router'})"
-        hosted = "; ".join(f"{s.robot}: {' '.join(sorted(s.skills))}" for s in servers)
-        print(f"vap-bt serve: ready on {where} — {hosted}", flush=True)
+        hosted = "; ".join(f"{s.robot} skills [{', '.join(sorted(s.skills))}]"
+                           f"{' with the camera' if s.camera is not None else ''}" for s in servers)
+        print(f"{READY}: {hosted}, on zenoh ({describe(settings)})", flush=True)
         while not stop.event.wait(0.5):  # short waits keep Ctrl-C responsive
             pass
     except KeyboardInterrupt:

@@ -33,7 +33,7 @@ import time
 from vap_bt import plugins
 from vap_bt.errors import EXIT_OK, InputError, VapBtError
 from vap_bt.transport import keys
-from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, open_session, settings_from_args
+from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, describe, open_session, settings_from_args
 from vap_bt.transport.drivers import DriverServer
 from vap_bt.transport.embedded import CAMERA_ROBOT
 from vap_bt.transport.locked_world import LockedWorld
@@ -42,6 +42,8 @@ from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
 
 #: the command's one-line description for ``--help``: this docstring's first line, as plain text
 DESCRIPTION = __doc__.split("\n\n")[0].replace("``", "")
+#: how the one line on stdout that says everything is declared begins (``vap-bt launch`` waits for it)
+READY = "vap-bt sim: ready"
 
 
 def add_sim_arguments(p: argparse.ArgumentParser) -> None:
@@ -99,10 +101,9 @@ def run_sim(args: argparse.Namespace) -> int:
             signal.signal(signal.SIGTERM, lambda *_: stop.set())
         # last: whoever sees the sim's token (`vap-bt parts`) finds everything above there
         token = session.liveliness().declare_token(keys.part("sim", keys.instance(task.name, session.zid())))
-        where = ", ".join(settings.listen) or f"the endpoints {settings.config_file} names"
-        print(f"vap-bt sim: ready on {where} — {task.name}, seed {cfg.seed}, injection "
-              f"{'on' if cfg.injection else 'off'}; drivers of {', '.join(robots)}; vlm on {CAMERA_ROBOT}",
-              flush=True)
+        print(f"{READY}: world {task.name} (seed {cfg.seed}, injection {'on' if cfg.injection else 'off'}) with "
+              f"drivers of {' and '.join(robots)}, the simulated VLM on {CAMERA_ROBOT} and the oracle, on zenoh "
+              f"({describe(settings)})", flush=True)
         while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
             pass
     except KeyboardInterrupt:
