@@ -36,7 +36,7 @@ import threading
 import time
 
 from vap_bt import plugins
-from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, VapBtError
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, TransportError, VapBtError
 from vap_bt.transport import server as server_module
 from vap_bt.transport.config import (add_transport_arguments, describe, open_session, part_settings,
                                      settings_from_args)
@@ -93,7 +93,7 @@ def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
     """Skills over a robot whose world is ``vap-bt sim``'s (:class:`RemoteRobot`); the camera
     robot's server hosts the camera service, built on the same kit as its skills."""
     from vap_bt.runner import make_camera
-    from vap_bt.transport.drivers import HostWatch
+    from vap_bt.transport.drivers import HostWatch, host_token_key
     from vap_bt.transport.embedded import CAMERA_ROBOT
     from vap_bt.transport.remote_robot import RemoteRobot
 
@@ -116,8 +116,16 @@ def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
                for robot, body in bodies.items()]
     stop = _Stop()
     sim = ", ".join(settings.connect) or "the configured router"
-    watches = [HostWatch(session, robot, lambda robot=robot: stop.world_gone(sim, robot)) for robot in bodies]
-    return _serve_until_stopped(session, servers, settings, stop, closing=[*watches, *bodies.values()])
+    watches = {robot: HostWatch(session, robot, lambda robot=robot: stop.world_gone(sim, robot)) for robot in bodies}
+    closing = [*watches.values(), *bodies.values()]
+    for robot, watch in watches.items():  # ready means a lost sim is noticed: its tokens are known
+        if not watch.seen.wait(settings.peer_timeout):
+            for thing in closing:
+                thing.close()
+            session.close()
+            raise TransportError(f"the sim at {sim} serves robot {robot}'s drivers but its liveliness token "
+                                 f"({host_token_key(robot)}) did not come within {settings.peer_timeout:g} s")
+    return _serve_until_stopped(session, servers, settings, stop, closing=closing)
 
 
 class _Stop:
