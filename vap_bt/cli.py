@@ -9,6 +9,7 @@
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
 ``vap-bt sim TASK.yaml``             host the pybullet world, its drivers, the simulated VLM and the oracle
 ``vap-bt run TASK.yaml --connect EP`` run the executive against a sim and skill servers already running
+``vap-bt launch FILE.yaml``          start a connected set-up's parts (sim, servers, executive) as one
 ``vap-bt parts``                     list the parts alive on the Zenoh network and the goals in flight
 
 Exit codes are documented in :mod:`vap_bt.errors`: 0 success, 1 goal not reached, 2 bad input,
@@ -430,7 +431,17 @@ def _add_transport_commands(sub) -> None:
     sim_host.add_sim_arguments(sm)
     sm.set_defaults(func=sim_host.run_sim)
 
-    from vap_bt.transport import census
+    from vap_bt.transport import census, launch
+
+    examples = _examples("vap-bt launch examples/launch/boil_water.yaml   # sim, arm, base, executive; Ctrl-C ends",
+                         "vap-bt launch examples/launch/boil_water.yaml --endpoint tcp/127.0.0.1:7450",
+                         "vap-bt parts                                    # in another shell, while it runs")
+    la = sub.add_parser("launch", help="start a connected set-up's parts from a launch file, stop them together",
+                        description=launch.__doc__.split("\n\n")[0].replace("``", ""),
+                        epilog=f"{launch.SCHEMA}\n\n{examples['epilog']}",
+                        formatter_class=argparse.RawDescriptionHelpFormatter)
+    launch.add_launch_arguments(la)
+    la.set_defaults(func=launch.run_launch)
 
     pa = sub.add_parser("parts", help="list the parts alive on the Zenoh network and the goals in flight",
                         description=census.__doc__.split("\n\n")[0].replace("``", ""), **_examples(
