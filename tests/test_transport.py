@@ -6,6 +6,9 @@ mocked. Process-level failures (SIGKILL, SIGSTOP) are in test_transport_process.
 
 from __future__ import annotations
 
+import logging
+import math
+import re
 import struct
 import time
 
@@ -91,6 +94,9 @@ def test_cancel_reaches_the_skill(net):
     world.duration, world.steps = 5.0, 100
     handle = client.send_goal("grasp", ("cup", "table"))
     assert handle.wait_answered(2) is GoalState.ACTIVE
+    # accepted is not begun: a cancel that overtakes the worker ends the goal before the skill
+    # runs (about 2 % of the time on a loaded machine); its first feedback says it has begun
+    wait_until(lambda: handle.feedback() is not None, 2)
     handle.cancel()
     assert handle.wait(2) is GoalState.CANCELED
     assert "stopped by cancel" in handle.result().message
@@ -175,3 +181,58 @@ def test_two_robots_do_not_see_each_others_goals():
         c1.close()
         s1.close()
         s2.close()
+
+
+SERVER_LOG = "vap_bt.transport.server"
+
+
+def _goal_lines(caplog, goal_id: str) -> list[str]:
+    return [r.getMessage() for r in caplog.records if r.name == SERVER_LOG and f" {goal_id} " in r.getMessage()]
+
+
+def test_each_goal_is_logged_one_line_per_event_its_feedback_at_most_once_a_second(net, caplog):
+    """Accepted, then feedback — the first sample at once, then at most a line a second, saying how
+    many samples it skipped — then the result: each line names robot, goal id, action and skill."""
+    world, _, client, _ = net
+    world.duration, world.steps = 2.2, 44  # "started", then a feedback sample every 50 ms
+    caplog.set_level(logging.INFO, logger=SERVER_LOG)
+    t0 = time.monotonic()
+    handle = client.send_goal("grasp", ("cup", "table"))
+    assert handle.wait(10) is GoalState.SUCCEEDED
+    elapsed = time.monotonic() - t0
+    name = f"ur5e goal {handle.goal_id} grasp(cup, table) [Performed_grasp]"
+    wait_until(lambda: any(" succeeded after " in line for line in _goal_lines(caplog, handle.goal_id)), 2)
+    lines = _goal_lines(caplog, handle.goal_id)
+    feedback = [line for line in lines if line.startswith(f"{name}: feedback ")]
+    assert lines[0] == f"{name}: accepted" and len(lines) == len(feedback) + 2, lines
+    assert re.fullmatch(rf"{re.escape(name)}: succeeded after \d+\.\d\d s: grasp done", lines[-1]), lines[-1]
+    assert feedback[0] == f"{name}: feedback 0% grasp(cup, table) started"  # the skill's first sample
+    assert 2 <= len(feedback) <= 1 + math.ceil(elapsed), feedback  # 45 samples in 2.2 s: about 3 lines
+    skipped = [int(re.search(r"\((\d+) more samples? since the last line\)$", line)[1]) for line in feedback[1:]]
+    assert len(feedback) + sum(skipped) <= 45 and all(n > 0 for n in skipped), feedback
+
+
+def test_a_goal_in_flight_has_a_liveliness_token_and_rejections_and_cancels_are_logged(net, caplog):
+    """``vap-bt parts`` sees a running goal by its token; a goal the busy arm refuses, the cancel
+    and the result are each one line."""
+    from vap_bt.transport import census
+
+    world, _, client, s_cli = net
+    world.duration, world.steps = 5.0, 100
+    caplog.set_level(logging.INFO, logger=SERVER_LOG)
+    handle = client.send_goal("grasp", ("cup", "table"))
+    assert handle.wait_answered(2) is GoalState.ACTIVE
+    key = keys.goal_alive("ur5e", "arm", "grasp", handle.goal_id)
+    wait_until(lambda: census.snapshot(s_cli, 1.0)[1] == [census.Goal("ur5e", "arm", "grasp", handle.goal_id, key)], 3)
+    busy = client.send_goal("open", ("fridge",))
+    assert busy.wait(2) is GoalState.REJECTED
+    handle.cancel()
+    assert handle.wait(3) is GoalState.CANCELED
+    wait_until(lambda: census.snapshot(s_cli, 1.0)[1] == [], 3)  # withdrawn once the result is out
+    name = f"ur5e goal {handle.goal_id} grasp(cup, table) [Performed_grasp]"
+    lines = [line for line in _goal_lines(caplog, handle.goal_id) if ": feedback " not in line]
+    assert lines == [f"{name}: accepted", f"{name}: cancel requested", lines[-1]]
+    assert re.fullmatch(rf"{re.escape(name)}: canceled after \d+\.\d\d s: grasp stopped by cancel", lines[-1])
+    assert _goal_lines(caplog, busy.goal_id) == [
+        f"ur5e goal {busy.goal_id} open(fridge): rejected: resource 'arm' of robot ur5e is busy with goal "
+        f"{handle.goal_id}; send open again when it has ended"]

@@ -9,6 +9,8 @@
 ``vap-bt serve --robot R``           host a robot's skills over Zenoh
 ``vap-bt sim TASK.yaml``             host the pybullet world, its drivers, the simulated VLM and the oracle
 ``vap-bt run TASK.yaml --connect EP`` run the executive against a sim and skill servers already running
+``vap-bt launch FILE.yaml``          start a connected set-up's parts (sim, servers, executive) as one
+``vap-bt parts``                     list the parts alive on the Zenoh network and the goals in flight
 
 Exit codes are documented in :mod:`vap_bt.errors`: 0 success, 1 goal not reached, 2 bad input,
 3 no plan, 4 transport down, 5 the planner ran out of time, 130 interrupted (Ctrl-C; a run still
@@ -428,6 +430,26 @@ def _add_transport_commands(sub) -> None:
         description=sim_host.DESCRIPTION)
     sim_host.add_sim_arguments(sm)
     sm.set_defaults(func=sim_host.run_sim)
+
+    from vap_bt.transport import census, launch
+
+    examples = _examples("vap-bt launch examples/launch/boil_water.yaml   # sim, arm, base, executive; Ctrl-C ends",
+                         "vap-bt launch examples/launch/boil_water.yaml --endpoint tcp/127.0.0.1:7450",
+                         "vap-bt parts                                    # in another shell, while it runs")
+    la = sub.add_parser("launch", help="start a connected set-up's parts from a launch file, stop them together",
+                        description=launch.__doc__.split("\n\n")[0].replace("``", ""),
+                        epilog=f"{launch.SCHEMA}\n\n{examples['epilog']}",
+                        formatter_class=argparse.RawDescriptionHelpFormatter)
+    launch.add_launch_arguments(la)
+    la.set_defaults(func=launch.run_launch)
+
+    pa = sub.add_parser("parts", help="list the parts alive on the Zenoh network and the goals in flight",
+                        description=census.__doc__.split("\n\n")[0].replace("``", ""), **_examples(
+        "vap-bt parts                                      # the sim's router at tcp/127.0.0.1:7447",
+        "vap-bt parts --connect tcp/127.0.0.1:7450 --json",
+        "vap-bt parts --watch                              # parts and goals as they come and go"))
+    census.add_parts_arguments(pa)
+    pa.set_defaults(func=census.run_parts)
 
 
 

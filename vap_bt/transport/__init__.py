@@ -8,6 +8,8 @@
 * :mod:`.server`     — :class:`SkillServer`: hosts one robot's skills and its camera.
 * :mod:`.client`     — :class:`ZenohSkillClient` / :class:`ZenohCamera`.
 * :mod:`.serve`      — the ``vap-bt serve`` and ``vap-bt skills`` commands.
+* :mod:`.launch`     — ``vap-bt launch``: a connected set-up's parts started and stopped as one.
+* :mod:`.census`     — ``vap-bt parts``: the parts and goals on the network, from liveliness.
 
 Behaviours only see the :class:`~vap_bt.skill.SkillClient` and :class:`~vap_bt.skill.Camera`
 protocols, so they cannot tell the two paths apart.

@@ -97,6 +97,20 @@ class TransportSettings:
     peer: Peer = Peer()  # who the connect endpoints should reach, for the line said when they do not
 
 
+def describe(settings: TransportSettings) -> str:
+    """Where a session sits on the network, in words for a ``ready`` line: ``router listening on
+    tcp/…``, ``connected to tcp/…``, both, or the file that configures it."""
+    said = []
+    if settings.listen:
+        said.append(f"{'router ' if settings.mode == 'router' and not settings.config_file else ''}"
+                    f"listening on {', '.join(settings.listen)}")
+    if settings.connect:
+        said.append(f"connected to {', '.join(settings.connect)}")
+    if settings.config_file:
+        said.append(f"as {settings.config_file} configures it")
+    return ", ".join(said) or "on no endpoint"
+
+
 def build_config(settings: TransportSettings) -> zenoh.Config:
     """The :class:`zenoh.Config` for ``settings``; a bad file is one TransportError."""
     if settings.config_file:

@@ -10,7 +10,10 @@ server the camera service — and the executive only connects (to the sim's rout
 
 Before the episode starts it makes sure every part is there: the world's oracle answers (and
 runs this task), and every robot the skill plugins route to has a live skill server; otherwise
-one :class:`~vap_bt.errors.TransportError` (exit 4) names what is missing.
+one :class:`~vap_bt.errors.TransportError` (exit 4) names every robot without one, the endpoint
+it looked at, and the command that starts each missing server there. Once they are all there the
+executive declares its own liveliness token, ``vap/part/executive/<task>-<pid>-<zid>``, so that
+``vap-bt parts`` lists it beside the others.
 """
 
 from __future__ import annotations
@@ -19,8 +22,9 @@ import time
 
 from vap_bt import plugins
 from vap_bt.errors import InputError, TransportError
+from vap_bt.transport import keys
 from vap_bt.transport.client import ZenohRobot, ZenohSkillClient, ZenohVLM
-from vap_bt.transport.config import TransportSettings, open_session
+from vap_bt.transport.config import SIM_ENDPOINT, TransportSettings, open_session
 from vap_bt.transport.embedded import CAMERA_ROBOT
 from vap_bt.transport.world_services import RemoteWorld
 
@@ -40,6 +44,8 @@ class ConnectedTransport:
             routes = plugins.routes(plugins.discover_skills())
             self.client = ZenohSkillClient(self._session, routes, rejoin_timeout=settings.rejoin_timeout)
             self._wait_for_servers(sorted(set(routes.values())), settings.peer_timeout)
+            self._token = self._session.liveliness().declare_token(
+                keys.part("executive", keys.instance(task_name, self._session.zid())))
             self.robot = ZenohRobot(self._session, CAMERA_ROBOT, settings.camera_timeout)
             self.vlm_client = (ZenohVLM(self._session, CAMERA_ROBOT, info.get("vlm"), settings.camera_timeout)
                                if world_side_vlm else None)
@@ -56,9 +62,18 @@ class ConnectedTransport:
         while missing := [r for r in robots if not self.client.servers(r)]:
             if time.monotonic() > deadline:
                 self.client.close()
-                raise TransportError(f"no skill server for robot(s) {', '.join(missing)} is up at {self.where} "
-                                     f"within {timeout:g} s (start `vap-bt serve --robot {missing[0]} --world remote`)")
+                starts = " and ".join(f"`vap-bt serve --robot {r} --world remote{self._reach}`" for r in missing)
+                raise TransportError(f"no skill server of robot{'s' * (len(missing) > 1)} {', '.join(missing)} is "
+                                     f"up at {self.where} within {timeout:g} s: start {starts}")
             time.sleep(0.02)
+
+    @property
+    def _reach(self) -> str:
+        """The options that make a skill server reach the sim this executive reached: none for the
+        default endpoint, nor for a ``--zenoh-config`` (the servers' file is not the executive's)."""
+        if self.settings.connect == (SIM_ENDPOINT,):
+            return ""
+        return "".join(f" --connect {ep}" for ep in self.settings.connect)
 
     def describe(self) -> dict:
         """For the report: where the parts were."""
@@ -66,6 +81,7 @@ class ConnectedTransport:
                 "servers": {r: sorted(self.client.servers(r)) for r in sorted(set(self.client.routes.values()))}}
 
     def close(self) -> None:
+        self._token.undeclare()
         self.client.close()
         self.robot.close()
         if self.vlm_client is not None:

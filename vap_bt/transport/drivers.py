@@ -214,17 +214,21 @@ def _motion_reply(r: MotionResult) -> DriverReply:
 
 class HostWatch:
     """Calls ``on_lost`` when ``robot``'s driver host withdraws its token (it stopped, died or hung
-    past the lease); a host that has not declared one by now is never reported."""
+    past the lease). Zenoh tells a subscriber of the loss only of a token it was told of, and the
+    history that tells it comes a round trip after the subscriber: :attr:`seen` is set once it
+    has, and a host lost before that is never reported (so wait for it before relying on this)."""
 
     def __init__(self, session: zenoh.Session, robot: str, on_lost: Callable[[], None]) -> None:
         self._on_lost = on_lost
-        # with history: zenoh tells a subscriber of the loss only of tokens it was told of
+        self.seen = threading.Event()
         self._subscriber = session.liveliness().declare_subscriber(host_token_key(robot), self._on_sample,
                                                                    history=True)
 
     def _on_sample(self, sample: zenoh.Sample) -> None:
         if sample.kind == zenoh.SampleKind.DELETE:
             self._on_lost()
+        else:
+            self.seen.set()
 
     def close(self) -> None:
         self._subscriber.undeclare()

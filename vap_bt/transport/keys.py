@@ -15,19 +15,30 @@ other's goals (a client subscribes to its robots' namespaces only)::
     vap/<robot>/world/action          queryable: ActionEvent -> ActionAck (sim only: which action
                                       a goal is, for Table II injection; see world_hooks)
     vap/<robot>/alive/<server>        liveliness token of a running skill server
+    vap/<robot>/alive/<server>/goal/<action>/<id>
+                                      liveliness token of a goal that server runs: declared when
+                                      it starts, withdrawn when its result is out (``vap-bt parts``)
+    vap/part/<kind>/<name>            liveliness token of a part that is no one robot's: the sim
+                                      (``sim``), an executive run with ``--connect`` (``executive``)
     vap/world/oracle/<verb>           queryable: OracleQuery -> OracleReply (sim only: the truth
                                       the runner scores its report by; see world_services)
 
 Robot, action, server and goal names are single key chunks: no ``/`` and none of Zenoh's
-wildcard or reserved characters, checked here once so that a bad name is one clear error.
+wildcard or reserved characters, checked here once so that a bad name is one clear error. The
+robot names ``world`` and ``part`` are taken by the keys above. A goal's token nests under its
+server's, one chunk deeper than ``alive/*``, so a client watching its robots' servers never sees
+goals come and go.
 """
 
 from __future__ import annotations
 
+import os
 import re
 
 ROOT = "vap"
 _CHUNK = re.compile(r"^[A-Za-z0-9_.\-]+$")
+#: every key of the project: what ``vap-bt parts`` asks the liveliness tokens of
+EVERYTHING = f"{ROOT}/**"
 
 
 def chunk(kind: str, name: str) -> str:
@@ -87,6 +98,23 @@ def alive(robot: str, server: str) -> str:
 
 def all_alive(robot: str) -> str:
     return f"{ROOT}/{chunk('robot', robot)}/alive/*"
+
+
+def goal_alive(robot: str, server: str, action: str, goal_id: str) -> str:
+    """The liveliness token of a goal in flight on ``server``."""
+    return f"{alive(robot, server)}/goal/{chunk('action', action)}/{chunk('goal', goal_id)}"
+
+
+def part(kind: str, name: str) -> str:
+    """The liveliness token of a part that is no one robot's (``sim``, ``executive``)."""
+    return f"{ROOT}/part/{chunk('part kind', kind)}/{chunk('part', name)}"
+
+
+def instance(label: str, zid: object) -> str:
+    """A name for this process's part, unique on the network: ``label-pid-zid`` (the first 8
+    characters of the Zenoh session's id tell apart two machines' equal pids); what ``label``
+    has that a key chunk cannot hold becomes ``_``."""
+    return f"{re.sub(r'[^A-Za-z0-9_.-]', '_', label) or 'part'}-{os.getpid()}-{str(zid)[:8]}"
 
 
 def last_chunks(key: str, n: int) -> list[str]:

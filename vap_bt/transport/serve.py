@@ -4,8 +4,10 @@
 :class:`~vap_bt.transport.server.SkillServer` for each robot asked for (default: every robot that
 has a skill plugin), all bound to that world through a :class:`LockedWorld`, so one simulator is
 shared safely by the arm's and the base's skills. It prints one ``ready`` line on stdout once
-everything is declared and runs until SIGINT or SIGTERM. ``python -m vap_bt.transport.serve``
-does the same without the ``vap-bt`` wrapper.
+everything is declared (``vap-bt serve: ready: ur5e skills [close, cut, …] with the camera, on
+zenoh (connected to tcp/127.0.0.1:7447)``), logs each goal on stderr (accepted, throttled
+feedback, result, cancel: :mod:`~vap_bt.transport.server`) and runs until SIGINT or SIGTERM.
+``python -m vap_bt.transport.serve`` does the same without the ``vap-bt`` wrapper.
 
 With ``--world remote`` the skills bind to a robot whose world runs in ``vap-bt sim``
 (:class:`~vap_bt.transport.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
@@ -27,19 +29,25 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import signal
 import sys
 import threading
+import time
 
 from vap_bt import plugins
-from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, VapBtError
-from vap_bt.transport.config import add_transport_arguments, open_session, part_settings, settings_from_args
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, TransportError, VapBtError
+from vap_bt.transport import server as server_module
+from vap_bt.transport.config import (add_transport_arguments, describe, open_session, part_settings,
+                                     settings_from_args)
 from vap_bt.transport.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
 from vap_bt.transport.world_factory import make_world, parse_world_args
 
 #: ``--world remote``: the robot of a world that ``vap-bt sim`` hosts
 REMOTE = "remote"
+#: how the one line on stdout that says everything is declared begins (``vap-bt launch`` waits for it)
+READY = "vap-bt serve: ready"
 
 
 def add_serve_arguments(p: argparse.ArgumentParser) -> None:
@@ -60,6 +68,7 @@ def add_serve_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run_serve(args: argparse.Namespace) -> int:
+    _show_goal_log()
     entries = [e for e in plugins.discover_skills() if e.name not in set(args.exclude_skill)]
     table = plugins.skill_table(entries)
     robots = _robots(args.robot, table)
@@ -84,7 +93,7 @@ def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
     """Skills over a robot whose world is ``vap-bt sim``'s (:class:`RemoteRobot`); the camera
     robot's server hosts the camera service, built on the same kit as its skills."""
     from vap_bt.runner import make_camera
-    from vap_bt.transport.drivers import HostWatch
+    from vap_bt.transport.drivers import HostWatch, host_token_key
     from vap_bt.transport.embedded import CAMERA_ROBOT
     from vap_bt.transport.remote_robot import RemoteRobot
 
@@ -107,8 +116,16 @@ def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
                for robot, body in bodies.items()]
     stop = _Stop()
     sim = ", ".join(settings.connect) or "the configured router"
-    watches = [HostWatch(session, robot, lambda robot=robot: stop.world_gone(sim, robot)) for robot in bodies]
-    return _serve_until_stopped(session, servers, settings, stop, closing=[*watches, *bodies.values()])
+    watches = {robot: HostWatch(session, robot, lambda robot=robot: stop.world_gone(sim, robot)) for robot in bodies}
+    closing = [*watches.values(), *bodies.values()]
+    for robot, watch in watches.items():  # ready means a lost sim is noticed: its tokens are known
+        if not watch.seen.wait(settings.peer_timeout):
+            for thing in closing:
+                thing.close()
+            session.close()
+            raise TransportError(f"the sim at {sim} serves robot {robot}'s drivers but its liveliness token "
+                                 f"({host_token_key(robot)}) did not come within {settings.peer_timeout:g} s")
+    return _serve_until_stopped(session, servers, settings, stop, closing=closing)
 
 
 class _Stop:
@@ -138,9 +155,9 @@ def _serve_until_stopped(session, servers: list[SkillServer], settings, stop: _S
         for server in servers:
             started.append(server.start())
         _on_signals(stop.event)
-        where = ", ".join(settings.listen) or f"(connected to {', '.join(settings.connect) or 'the configured router'})"
-        hosted = "; ".join(f"{s.robot}: {' '.join(sorted(s.skills))}" for s in servers)
-        print(f"vap-bt serve: ready on {where} — {hosted}", flush=True)
+        hosted = "; ".join(f"{s.robot} skills [{', '.join(sorted(s.skills))}]"
+                           f"{' with the camera' if s.camera is not None else ''}" for s in servers)
+        print(f"{READY}: {hosted}, on zenoh ({describe(settings)})", flush=True)
         while not stop.event.wait(0.5):  # short waits keep Ctrl-C responsive
             pass
     except KeyboardInterrupt:
@@ -186,6 +203,32 @@ def _robots(asked: list[str], table: dict[str, plugins.SkillEntry]) -> list[str]
             raise InputError("--robot", f"no skill plugin is bound to robot {robot!r} "
                                         f"(robots with skills: {', '.join(available) or 'none'})")
     return sorted(set(asked)) or available
+
+
+class _ServerLog(logging.StreamHandler):
+    """The skill servers' log lines on stderr as ``vap-bt serve: [t] …`` (``warning: …`` and worse
+    say so), ``t`` the monotonic clock the runner's reports and the sim's lines count in."""
+
+    def __init__(self) -> None:
+        super().__init__(sys.stderr)
+        self.setFormatter(logging.Formatter("vap-bt serve: [%(clock).3f] %(level)s%(message)s"))
+
+    def emit(self, record: logging.LogRecord) -> None:
+        record.clock = time.perf_counter()
+        record.level = f"{record.levelname.lower()}: " if record.levelno > logging.INFO else ""
+        super().emit(record)
+
+
+def _show_goal_log() -> None:
+    """The skill servers' goal lines (INFO: accepted, feedback, result, cancel) on stderr, however
+    quiet the rest of the logging is (once per process, in this format only)."""
+    logger = logging.getLogger(server_module.__name__)
+    for old in [h for h in logger.handlers if isinstance(h, _ServerLog)]:
+        logger.removeHandler(old)
+    logger.addHandler(_ServerLog())
+    logger.propagate = False
+    if logger.getEffectiveLevel() > logging.INFO:
+        logger.setLevel(logging.INFO)
 
 
 def _on_signals(stop: threading.Event) -> None:

@@ -9,9 +9,19 @@ own threads never run a skill). While it runs, every ``ctx.feedback`` is publish
 ``vap/<robot>/goal/<id>/cancel`` sets the goal's cancel flag, which the skill sees as
 ``ctx.cancelled()``.
 
-The server's presence is a liveliness token ``vap/<robot>/alive/<name>``, declared before any
-queryable so that a client always learns of the server before its first reply; when the process
-dies or hangs, Zenoh drops the token and clients fail that server's goals at once.
+The server's presence is a liveliness token ``vap/<robot>/alive/<name>``, declared after every
+queryable so that a client that sees it finds them all there; when the process dies or hangs,
+Zenoh drops the token and clients fail that server's goals at once. Each goal has a token of its
+own while it runs, ``vap/<robot>/alive/<name>/goal/<action>/<id>`` (declared by its worker as it
+starts, withdrawn once its result is published), which is how ``vap-bt parts`` sees the goals in
+flight: two messages per goal, nothing per feedback.
+
+Each goal is logged (INFO, this module's logger; ``vap-bt serve`` shows it) one line per event —
+accepted, rejected, cancel requested, the result — each naming the robot, the goal id, the action
+with its arguments and the skill class. Feedback is throttled: a goal's first feedback is logged,
+then at most one line per :data:`FEEDBACK_LOG_S` seconds, which says how many samples went unlogged
+since the line before (a skill that reports every control cycle writes one line a second, not
+hundreds).
 
 Given a world (or anything with the camera and body interfaces of :mod:`vap_bt.robot.camera`),
 the server also answers ``vap/<robot>/camera/{capture,view,move}`` and
@@ -23,10 +33,10 @@ becomes an error reply, never a dead server.
 from __future__ import annotations
 
 import logging
-import os
 import queue
 import threading
-from dataclasses import dataclass
+import time
+from dataclasses import dataclass, field
 from typing import Any, Callable
 
 import zenoh
@@ -55,6 +65,9 @@ from vap_bt.robot.frame import marked_frame
 
 log = logging.getLogger(__name__)
 
+#: a running goal's feedback is logged at most once per this many seconds (the first at once)
+FEEDBACK_LOG_S = 1.0
+
 
 @dataclass
 class _Goal:
@@ -62,6 +75,9 @@ class _Goal:
     skill: Skill
     args: tuple[str, ...]
     run: GoalRun
+    action: str
+    label: str  # how every log line names the goal: ``goal ID action(args) [Skill]``
+    started: float = field(default_factory=time.monotonic)
 
 
 class SkillServer:
@@ -84,7 +100,7 @@ class SkillServer:
         self.skills = dict(skills)
         self.camera = camera
         self.vlm = vlm
-        self.name = keys.chunk("server", name or f"{robot}-{os.getpid()}-{str(session.zid())[:8]}")
+        self.name = keys.chunk("server", name or keys.instance(robot, session.zid()))
         self._lock = threading.Lock()
         self._goals: dict[str, _Goal] = {}
         self._busy: dict[str, str] = {}  # resource -> goal id
@@ -161,6 +177,8 @@ class SkillServer:
         query.reply(key, encode(reply), express=True)  # no batching delay
         if accepted:  # queued only after the reply, so the client hears "accepted" first
             self._queues[goal.skill.resource].put(goal)
+        else:
+            log.info("%s goal %s %s: rejected: %s", self.robot, req.goal_id, _call(action, req.args), reason)
 
     def _admit(self, req: GoalRequest, action: str) -> "_Goal | str":
         """Register the goal and claim its resource; the rejection reason otherwise."""
@@ -182,22 +200,49 @@ class SkillServer:
                     f"resource {skill.resource!r} of robot {self.robot} is busy with goal "
                     f"{holder}; send {action} again when it has ended"
                 )
-            run = GoalRun(on_feedback=self._feedback_publisher(req.goal_id), hints=req.hints)
-            goal = self._goals[req.goal_id] = _Goal(req.goal_id, skill, tuple(req.args), run)
+            label = f"goal {req.goal_id} {_call(action, req.args)} [{type(skill).__name__}]"
+            run = GoalRun(on_feedback=self._feedback_publisher(req.goal_id, label), hints=req.hints)
+            goal = self._goals[req.goal_id] = _Goal(req.goal_id, skill, tuple(req.args), run, action, label)
             self._busy[skill.resource] = req.goal_id
         return goal
 
     def _work(self, q: "queue.SimpleQueue[_Goal | None]") -> None:
         while (goal := q.get()) is not None:
+            log.info("%s %s: accepted", self.robot, goal.label)
+            token = self._goal_token(goal)
             state, result = run_goal(goal.skill, goal.args, goal.run)
             with self._lock:  # free the resource before telling the client, so it can resend
                 self._goals.pop(goal.goal_id, None)
                 self._busy.pop(goal.skill.resource, None)
             self._publish(GoalStatus(goal.goal_id, state, goal.run.last_feedback, result, self.name))
+            log.info("%s %s: %s after %.2f s: %s", self.robot, goal.label, state.value, time.monotonic() - goal.started,
+                     result.message or "(no message)")
+            if token is not None:
+                _undeclare(token)
 
-    def _feedback_publisher(self, goal_id: str) -> Callable[[Feedback], None]:
+    def _goal_token(self, goal: _Goal) -> Any:
+        """The goal's liveliness token (None if the session is closing: the goal runs regardless)."""
+        try:
+            return self.session.liveliness().declare_token(
+                keys.goal_alive(self.robot, self.name, goal.action, goal.goal_id))
+        except zenoh.ZError as exc:
+            log.debug("no liveliness token for %s: %s", goal.label, exc)
+            return None
+
+    def _feedback_publisher(self, goal_id: str, label: str) -> Callable[[Feedback], None]:
+        logged_at: float | None = None  # when the last feedback line was logged
+        skipped = 0  # samples since then
+
         def publish(fb: Feedback) -> None:
+            nonlocal logged_at, skipped
             self._publish(GoalStatus(goal_id, GoalState.ACTIVE, fb, None, self.name))
+            now = time.monotonic()
+            if logged_at is not None and now - logged_at < FEEDBACK_LOG_S:
+                skipped += 1
+                return
+            more = f" ({skipped} more sample{'s' * (skipped > 1)} since the last line)" if skipped else ""
+            log.info("%s %s: feedback %.0f%% %s%s", self.robot, label, 100 * fb.progress, fb.text, more)
+            logged_at, skipped = now, 0
 
         return publish
 
@@ -220,6 +265,7 @@ class SkillServer:
             goal = self._goals.get(goal_id)
         if goal is not None:
             goal.run.request_cancel()
+            log.info("%s %s: cancel requested", self.robot, goal.label)
 
     # -- camera ----------------------------------------------------------------------------------
 
@@ -245,6 +291,17 @@ class SkillServer:
         req = decode(payload, VlmRequest)
         # the world-side VLM knows its camera's frames by id: the pixels need not travel back
         return self.vlm.ask(req.query, marked_frame(req.frame_id, req.identified))
+
+
+def _call(action: str, args: tuple[str, ...]) -> str:
+    return f"{action}({', '.join(map(str, args))})"
+
+
+def _undeclare(entity: Any) -> None:
+    try:
+        entity.undeclare()
+    except zenoh.ZError:  # the session closed under it: the token went with it
+        pass
 
 
 def _network_callback(fn: Callable[[Any], None]) -> zenoh.handlers.Callback:

@@ -14,8 +14,9 @@ It builds the task's household (``--seed``, ``--no-injection``) and offers, on o
 Its session is a Zenoh **router** listening on ``--listen`` (default :data:`SIM_ENDPOINT`, loopback),
 so the skill servers (``vap-bt serve --world remote``) and the executive (``vap-bt run
 --connect``) only need its address; every message between them is routed through it. Everything
-runs under the world's own lock (pybullet is not thread-safe). It prints one ``ready`` line on
-stdout once all is declared, one line on stderr per action announced (stamped
+runs under the world's own lock (pybullet is not thread-safe). Once all is declared it declares
+its own liveliness token, ``vap/part/sim/<task>-<pid>-<zid>`` (what ``vap-bt parts`` lists), and
+prints one ``ready`` line on stdout, then one line on stderr per action announced (stamped
 with the monotonic clock the runner's reports count from), and runs until SIGINT or
 SIGTERM, then withdraws everything and exits 0.
 """
@@ -31,7 +32,8 @@ import time
 
 from vap_bt import plugins
 from vap_bt.errors import EXIT_OK, InputError, VapBtError
-from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, open_session, settings_from_args
+from vap_bt.transport import keys
+from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, describe, open_session, settings_from_args
 from vap_bt.transport.drivers import DriverServer
 from vap_bt.transport.embedded import CAMERA_ROBOT
 from vap_bt.transport.locked_world import LockedWorld
@@ -40,6 +42,8 @@ from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
 
 #: the command's one-line description for ``--help``: this docstring's first line, as plain text
 DESCRIPTION = __doc__.split("\n\n")[0].replace("``", "")
+#: how the one line on stdout that says everything is declared begins (``vap-bt launch`` waits for it)
+READY = "vap-bt sim: ready"
 
 
 def add_sim_arguments(p: argparse.ArgumentParser) -> None:
@@ -86,7 +90,7 @@ def run_sim(args: argparse.Namespace) -> int:
     vlm = LockedWorld(runner.sim_vlm(task, world, cfg), world.lock)
     stop = threading.Event()
     parts: list = []
-    session = None
+    session = token = None
     try:
         session = open_session(settings)
         parts += [DriverServer(session, robot, world.drivers, shared).start() for robot in robots]
@@ -95,15 +99,18 @@ def run_sim(args: argparse.Namespace) -> int:
         parts.append(OracleServer(session, shared, WorldFacts(task.name, vlm)))
         if threading.current_thread() is threading.main_thread():
             signal.signal(signal.SIGTERM, lambda *_: stop.set())
-        where = ", ".join(settings.listen) or f"the endpoints {settings.config_file} names"
-        print(f"vap-bt sim: ready on {where} — {task.name}, seed {cfg.seed}, injection "
-              f"{'on' if cfg.injection else 'off'}; drivers of {', '.join(robots)}; vlm on {CAMERA_ROBOT}",
-              flush=True)
+        # last: whoever sees the sim's token (`vap-bt parts`) finds everything above there
+        token = session.liveliness().declare_token(keys.part("sim", keys.instance(task.name, session.zid())))
+        print(f"{READY}: world {task.name} (seed {cfg.seed}, injection {'on' if cfg.injection else 'off'}) with "
+              f"drivers of {' and '.join(robots)}, the simulated VLM on {CAMERA_ROBOT} and the oracle, on zenoh "
+              f"({describe(settings)})", flush=True)
         while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
             pass
     except KeyboardInterrupt:
         pass
     finally:
+        if token is not None:  # the sim is gone before its services are
+            token.undeclare()
         for part in reversed(parts):
             part.close()
         if session is not None:
