@@ -66,7 +66,10 @@ def boil(tmp_path_factory) -> Recorded:
     rrd, report = out / "boil_water.rrd", out / "report.json"
     cmd = [str(BIN / "vap-bt"), "run", str(TREES / "boil_water.yaml"), "--world", "pybullet", "--no-injection",
            "--rerun", "save", str(rrd), "--report", str(report), "-q"]
-    done = subprocess.run(cmd, capture_output=True, text=True, timeout=900, cwd=ROOT)
+    # this checkout's code, not the one an editable install in the environment points at (a worktree's
+    # .venv may be another checkout's)
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [str(ROOT), os.environ.get("PYTHONPATH")]))}
+    done = subprocess.run(cmd, capture_output=True, text=True, timeout=900, cwd=ROOT, env=env)
     assert done.returncode == 0, done.stderr[-2000:]
     return Recorded(rrd, read(rrd), json.loads(report.read_text()))
 
