@@ -24,6 +24,7 @@ rr = pytest.importorskip("rerun")
 
 from vap_bt.viz import SinkSpec, TreeRecorder, ViewerError  # noqa: E402
 from vap_bt.viz.tree_graph import STATUS_COLOURS  # noqa: E402
+from web_viewer import listeners  # noqa: E402
 
 RERUN = Path(sys.executable).parent / "rerun"
 #: a symbolic collect-cup episode with an effect situation and one replan (vlm_noise 0)
@@ -314,20 +315,6 @@ def test_spawn_reports_the_viewers_own_error_when_it_dies(monkeypatch):
     assert "\n" not in str(err.value) and "exited" in str(err.value)
 
 
-def _listeners(port: int) -> list[str]:
-    """Local addresses of the TCP sockets listening on ``port`` (Linux /proc)."""
-    out = []
-    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
-        if not os.path.exists(table):
-            continue
-        for line in Path(table).read_text().splitlines()[1:]:
-            local, state = line.split()[1], line.split()[3]
-            addr, p = local.rsplit(":", 1)
-            if int(p, 16) == port and state == "0A":  # LISTEN
-                out.append(addr)
-    return out
-
-
 def test_serve_listens_on_loopback_only():
     if not os.path.exists("/proc/net/tcp"):
         pytest.skip("needs Linux /proc")
@@ -338,8 +325,8 @@ def test_serve_listens_on_loopback_only():
     try:
         rec.note("hello")
         assert rec.recording.url == f"rerun+http://127.0.0.1:{port}/proxy"
-        listeners = _listeners(port)
-        assert listeners == ["0100007F"], listeners  # 127.0.0.1, and nothing else
+        found = listeners(port)
+        assert found == ["0100007F"], found  # 127.0.0.1, and nothing else
         with pytest.raises(ViewerError, match="in use"):
             TreeRecorder.open(["serve", str(port)])
     finally:
