@@ -235,6 +235,8 @@ class TreeRecorder:
             self.stream.log(L.TREE, view.nodes(), view.links())
             self.stream.log(L.TREE_TEXT, tree_document(self._graph.root))
             self._view = view
+            if new_tree:  # a new tree's first drawing goes out now, not with the next batch: a
+                self.stream.flush(timeout_sec=5.0)  # viewer reading the file draws it before the rest
 
     def _walk(self, node, actions: list[dict], verifications: list, applied: list) -> None:
         """Log what ``node`` and its subtree did this tick, in the order the tree ran it."""
