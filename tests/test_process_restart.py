@@ -17,7 +17,7 @@ pytestmark = [pytest.mark.slow, pytest.mark.timeout(600)]
 
 
 def test_a_restarted_arm_server_is_picked_up_and_the_episode_goes_on(tmp_path):
-    r = run_fault("restart", tmp_path)
+    r = run_fault("restart", tmp_path, "--seed", "1")  # seed 1: a shorter episode than the bench's seed 0
     print(r.line())
     assert "Traceback" not in r.stderr, r.stderr
     assert r.orphans == 0
