@@ -291,6 +291,19 @@ def test_pybullet_rounds_carry_their_camera_images(tmp_path):
     camera = [r for r in rows["/world/camera"] if r.get("Pinhole:image_from_camera")]
     assert len(camera) == n_rounds
     assert rows["/world/objects"] and "cup" in rows["/world/objects"][0]["Boxes3D:labels"]
+    # the fused clouds of what the builder tracks, thinned, each logged when it changed
+    clouds = {p: r for p, r in rows.items() if p.startswith("/world/clouds/")}
+    assert "/world/clouds/cup" in clouds, sorted(clouds)
+    sizes = [len(r["Points3D:positions"]) for rs in clouds.values() for r in rs if r.get("Points3D:positions")]
+    assert sizes and max(sizes) <= 600 and min(sizes) > 0
+    # the cup's cloud lies in its box (belief's geometry and the points agree)
+    cup = np.asarray(clouds["/world/clouds/cup"][-1]["Points3D:positions"])
+    assert np.linalg.norm(cup.mean(axis=0) - np.asarray(box_centre_of_cup(outcome))) < 0.1
+
+
+def box_centre_of_cup(outcome) -> tuple[float, float, float]:
+    box = outcome.graph.objects["cup"].box
+    return tuple((lo + hi) / 2 for lo, hi in zip(box[:3], box[3:]))
 
 
 def test_spawn_without_a_display_fails_with_one_clear_line(monkeypatch):

@@ -397,6 +397,8 @@ class Session:
                               on_verification=self._score_verification,
                               goal_parser=self._goal_parser, profile=self.profile)
         self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
+        if self.recorder is not None:  # the live view's 3-D scene shows the fused clouds beside the boxes
+            self.recorder.clouds = lambda: fused_clouds(executive)
         return executive, metered
 
     def build_graph(self, seed: int | None = None) -> dict:
@@ -615,3 +617,11 @@ class Session:
     def world_situations(self) -> list[dict]:
         model = getattr(self.world, "situations", None)
         return model.describe() if model is not None else []
+
+
+def fused_clouds(executive: Executive) -> dict:
+    """Each tracked object's fused cloud (map frame) as the executive's scene-graph builder holds
+    it now; empty before the first survey and in a world without depth."""
+    geometry = getattr(getattr(executive, "builder", None), "geometry", None)
+    clouds = getattr(geometry, "clouds", None)
+    return clouds() if clouds is not None else {}

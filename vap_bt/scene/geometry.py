@@ -10,12 +10,17 @@ object depends on the others' boxes.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import DomainKnowledge
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.relations import Signatures, scene_relations
 from vap_bt.scene.tracks import Tracks
+
+if TYPE_CHECKING:
+    import numpy as np
 
 
 class PointCloudGeometry:
@@ -54,6 +59,10 @@ class PointCloudGeometry:
     def box(self, name: str) -> tuple[float, ...] | None:
         t = self.tracks.get(name)
         return None if t is None else t.box
+
+    def clouds(self) -> dict[str, "np.ndarray"]:
+        """Each tracked object's fused cloud, (N, 3) points in the map frame (for the live view)."""
+        return {t.name: t.points for t in self.tracks}
 
     def missing(self, frame: Frame, min_pixels: int = 0) -> list[str]:
         """Tracked objects the frame should have shown and did not (see :meth:`Tracks.missing`)."""

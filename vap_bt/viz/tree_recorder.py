@@ -23,9 +23,10 @@ tick costs only what is new, and logs only what changed:
   doing — capturing, asking with the answers as they arrive, judging the view, choosing or moving
   to the next viewpoint — and is logged last in the tick, after the page of any round that ended
   and the verdict of any check that was decided in it (with the situation, when it is one);
-* the belief (``scene/facts``, ``scene/graph``, and ``world/objects`` boxes — beside the last
-  frame's depth, lifted to points in the 3-D view) at the start of an episode and whenever it
-  changed;
+* the belief (``scene/facts``, ``scene/graph``, ``world/objects`` boxes and, where the runner
+  hands the recorder the scene-graph builder's fused clouds (:attr:`TreeRecorder.clouds`),
+  ``world/clouds/<object>`` — beside the last frame's depth, lifted to points in the 3-D view)
+  at the start of an episode and whenever it changed;
 * plots (``stats/*``), each on its own axes: the VLM queries so far, every one the metered
   model answered (the count the command line prints), the queries of each action's checks as a
   bar chart, the replans, and the situations by kind — each logged when it grows.
@@ -39,8 +40,9 @@ the first tick of the new tree are logged at that first tick, before its events.
 from __future__ import annotations
 
 import time
-from typing import Sequence
+from typing import Callable, Sequence
 
+import numpy as np
 import py_trees
 import rerun as rr
 from py_trees.common import Status
@@ -58,6 +60,10 @@ from vap_bt.viz.scene_view import facts_document, object_boxes
 from vap_bt.viz.sink import OpenRecording, SinkSpec, open_recording
 from vap_bt.viz.tree_graph import TreeGraph, TreeView
 from vap_bt.viz.tree_text import tree_document
+
+
+#: points per object's fused cloud in a recording, at most (a cloud is thinned evenly to it)
+CLOUD_POINTS = 600
 
 
 class TreeRecorder:
@@ -81,6 +87,10 @@ class TreeRecorder:
         self._situations: dict[str, int] = {}  # situations by kind, so far (``stats/situations/<kind>``)
         #: each graph view's visible area so far (``tree``, ``scene``): see :meth:`_fit_views`
         self._bounds: dict[str, tuple[float, float, float, float]] = {}
+        #: where the fused point clouds come from (name -> (N, 3) map-frame points), if anywhere:
+        #: the runner points it at the executive's scene-graph builder
+        self.clouds: Callable[[], dict[str, np.ndarray]] | None = None
+        self._cloud_signatures: dict[str, tuple] = {}
         self._reset_indices()
 
     @classmethod
@@ -319,6 +329,24 @@ class TreeRecorder:
         boxes = object_boxes(ctx.graph)  # belief's boxes, beside the last frame's points in 3-D
         if boxes is not None:
             self.stream.log(L.OBJECT_BOXES, boxes)
+        self._log_clouds()
+
+    def _log_clouds(self) -> None:
+        """Each object's fused cloud whose points changed since it was last logged (at most
+        :data:`CLOUD_POINTS` of them: enough to see a shape, little beside the images); a cloud
+        the builder dropped is cleared."""
+        clouds = self.clouds() if self.clouds is not None else {}
+        for name in set(self._cloud_signatures) - set(clouds):
+            self.stream.log(f"{L.CLOUDS}/{name}", rr.Clear(recursive=False))
+            del self._cloud_signatures[name]
+        for name, points in clouds.items():
+            points = np.asarray(points, dtype=np.float32)
+            signature = (len(points), points[:1].tobytes(), points[-1:].tobytes())
+            if self._cloud_signatures.get(name) == signature:
+                continue
+            self._cloud_signatures[name] = signature
+            step = max(1, -(-len(points) // CLOUD_POINTS))
+            self.stream.log(f"{L.CLOUDS}/{name}", rr.Points3D(points[::step], radii=0.004))
 
     def _log_queries(self, ctx: ExecutionContext) -> None:
         """The VLM queries so far, when they grew: the metered model's count — every query of the
