@@ -64,8 +64,10 @@ def blueprint(tree_bounds: tuple[float, float, float, float] | None = None,
                 rrb.GraphView(origin=TREE, name="behaviour tree", visual_bounds=_area(tree_bounds)),
                 rrb.Tabs(
                     rrb.TextLogView(origin=EVENTS, name="events"),
+                    # wrapped: a running skill's line (name, mark, progress) reaches 120 characters,
+                    # wider than the column in a 1920-px window; a wrapped line loses nothing
                     rrb.TextDocumentView(origin=TREE_TEXT, name="tree (py_trees)", format_options=rrb.archetypes
-                                         .TextDocumentFormat(monospace=True, word_wrap=False)),
+                                         .TextDocumentFormat(monospace=True, word_wrap=True)),
                 ),
                 row_shares=[4, 1],
             ),
