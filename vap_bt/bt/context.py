@@ -90,12 +90,16 @@ class Verification:
     rounds: list[Round]
     basis: Basis
 
+    @property
+    def queries(self) -> int:
+        """The VLM queries this check asked: each round's answers, its view-sufficiency question
+        when the model was asked it, and its viewpoint question when one followed."""
+        return sum(len(r.answers) + (r.sufficient_by == "model") + (r.direction is not None) for r in self.rounds)
+
     def to_json(self) -> dict:
         return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
                 "expected": self.expected, "value": self.value, "outcome": self.outcome, "basis": self.basis,
-                "views": len(self.rounds), "queries": sum(len(r.answers) + (r.sufficient_by == "model")
-                                                          + (r.direction is not None) for r in self.rounds),
-                "rounds": [r.to_json() for r in self.rounds]}
+                "views": len(self.rounds), "queries": self.queries, "rounds": [r.to_json() for r in self.rounds]}
 
 
 @dataclass(frozen=True)

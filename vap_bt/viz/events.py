@@ -109,9 +109,7 @@ def _last_view(r: Round) -> list[str]:
 def verdict_markdown(v: Verification, situation: Situation | None = None) -> str:
     """The page of a check once it is decided: its verdict, then its last round."""
     want = "" if v.expected else "not "
-    views = len(v.rounds)
-    lines = [f"# {want}{v.atom}", "", f"*{v.phase}* check of **{v.action}**: **{v.outcome}** (observed "
-             f"{str(v.value).lower()}) after {views} view{'s' * (views != 1)}, {v.to_json()['queries']} queries", ""]
+    lines = [f"# {want}{v.atom}", "", f"*{v.phase}* check of **{v.action}**: {_settled(v, f'**{v.outcome}**')}", ""]
     if situation is not None:
         lines += [f"⚠ {situation_text(situation)}", ""]
     if v.rounds:
@@ -124,12 +122,15 @@ def _refused(r: Round) -> str:
     return f" after {', '.join(r.refused)} could not be reached" if r.refused else ""
 
 
+def _settled(v: Verification, outcome: str) -> str:
+    """``confirmed (observed true) after 2 views, 12 queries``, the outcome as given."""
+    views = len(v.rounds)
+    return f"{outcome} (observed {str(v.value).lower()}) after {views} view{'s' * (views != 1)}, {v.queries} queries"
+
+
 def verification_text(v: Verification) -> tuple[str, str]:
     want = "" if v.expected else "not "
-    views = len(v.rounds)
-    queries = v.to_json()["queries"]
-    text = (f"{v.phase} {v.action}: {want}{v.atom} {v.outcome} (observed {str(v.value).lower()}) "
-            f"after {views} view{'s' * (views != 1)}, {queries} queries")
+    text = f"{v.phase} {v.action}: {want}{v.atom} {_settled(v, v.outcome)}"
     return text, (WARN if v.outcome == "contradicted" else INFO)
 
 

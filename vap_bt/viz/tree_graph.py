@@ -36,6 +36,7 @@ which it fitted the first drawing and cuts off a later, wider one.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import py_trees
 import rerun as rr
@@ -195,10 +196,11 @@ class TreeGraph:
         return tuple((b.status, b.feedback_message, len(b.rounds) if isinstance(b, ActivePerception) else 0)
                      for b in self.behaviours)
 
-    def actions(self) -> int:
-        """The plan's actions (the root's other children are the goal's checks): the count the
-        command line prints."""
-        return sum(isinstance(b, ExecuteSkill) for b in self.behaviours)
+    @cached_property
+    def actions(self) -> tuple[ExecuteSkill, ...]:
+        """The plan's actions, in order (the root's other children are the goal's checks): the
+        count the command line prints. The structure never changes, so it is counted once."""
+        return tuple(b for b in self.behaviours if isinstance(b, ExecuteSkill))
 
     def open_child(self) -> int | None:
         """Index of the root's child that is spread out: the running one, else the failed one."""
@@ -217,7 +219,7 @@ class TreeGraph:
         kids = list(root.children)
         labels = [label_of(c, folded=i != opened) for i, c in enumerate(kids)]
         column_w = max((size_of(l)[0] for l in labels), default=0.0)
-        root_label = label_of(root) + f" · {plural(self.actions(), 'action')}"
+        root_label = label_of(root) + f" · {plural(len(self.actions), 'action')}"
         d.node("0", root_label, root.status, 0.0, 0.0, None)
         y, h_prev = 0.0, size_of(root_label)[1]
         for i, (child, label) in enumerate(zip(kids, labels)):

@@ -212,7 +212,7 @@ class TreeRecorder:
     def _new_tree(self, tree: py_trees.trees.BehaviourTree) -> None:
         self._tree, self._graph = tree, TreeGraph.of(tree.root)
         self._replans += 1
-        plan = [str(b.action) for b in self._graph.behaviours if isinstance(b, ExecuteSkill)]
+        plan = [str(b.action) for b in self._graph.actions]
         self._text(L.EV_PLAN, ev.plan_text(plan, self._replans), ev.WARN if self._replans else ev.INFO)
         self.stream.log(L.STATS_REPLANS, rr.Scalars(self._replans))
         self._fit_views(tree=self._graph.extent())
@@ -278,7 +278,7 @@ class TreeRecorder:
                 situation = node.ctx.situation if v.outcome == "contradicted" else None
                 self._page(ev.verdict_markdown(v, situation))
                 key = (self._replans, node.step)
-                self._per_action[key] = self._per_action.get(key, 0) + v.to_json()["queries"]
+                self._per_action[key] = self._per_action.get(key, 0) + v.queries
                 self.stream.log(L.STATS_PER_ACTION, rr.BarChart(list(self._per_action.values())))
 
     def _log_frame(self, obs) -> None:
@@ -340,13 +340,12 @@ class TreeRecorder:
             self.stream.log(f"{L.CLOUDS}/{name}", rr.Clear(recursive=False))
             del self._cloud_signatures[name]
         for name, points in clouds.items():
-            points = np.asarray(points, dtype=np.float32)
-            signature = (len(points), points[:1].tobytes(), points[-1:].tobytes())
+            signature = (len(points), points[:1].tobytes(), points[-1:].tobytes())  # before any copy
             if self._cloud_signatures.get(name) == signature:
                 continue
             self._cloud_signatures[name] = signature
             step = max(1, -(-len(points) // CLOUD_POINTS))
-            self.stream.log(f"{L.CLOUDS}/{name}", rr.Points3D(points[::step], radii=0.004))
+            self.stream.log(f"{L.CLOUDS}/{name}", rr.Points3D(np.asarray(points[::step], dtype=np.float32), radii=0.004))
 
     def _log_queries(self, ctx: ExecutionContext) -> None:
         """The VLM queries so far, when they grew: the metered model's count — every query of the
@@ -354,7 +353,7 @@ class TreeRecorder:
         for a model nobody meters, the queries of the settled checks."""
         total = getattr(ctx.vlm, "total", None)
         if total is None:
-            total = sum(v.to_json()["queries"] for v in ctx.verifications)
+            total = sum(v.queries for v in ctx.verifications)
         if self._queries_before + total != self.queries:
             self.queries = self._queries_before + total
             self.stream.log(L.STATS_QUERIES, rr.Scalars(self.queries))
