@@ -58,7 +58,7 @@ def tree_for(task, actions, mode: str):
 @pytest.fixture
 def cli(capsys):
     """Run ``vap-bt`` in this process; returns (exit code, stdout, stderr)."""
-    from vap_bt.cli import main
+    from vap_bt.app.cli import main
 
     def run(*argv: str):
         code = main([str(a) for a in argv])

@@ -21,7 +21,7 @@ from skills.kit import kit_for
 from skills.views import ViewService
 from vap_bt import plugins
 from vap_bt.skill import GoalState, Hint
-from vap_bt.transport.inprocess import InProcessSkillClient
+from vap_bt.app.inprocess import InProcessSkillClient
 
 TREES = Path(__file__).resolve().parents[1] / "trees"
 

@@ -155,7 +155,7 @@ def test_no_object_the_executive_holds_can_reach_the_oracle():
     no oracle: its senses are Zenoh clients."""
     from vap_bt import taskfile
     from vap_bt.bt.executive import Executive
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
     from vap_bt.sim.oracle import FunctionOracle
     from vap_bt.sim.symbolic import SymbolicWorld
 
@@ -244,3 +244,21 @@ def test_the_relation_thresholds_are_not_the_oracles():
     from vap_bt.scene.relations import THRESHOLDS, Thresholds
 
     assert THRESHOLDS == Thresholds() and {k: getattr(THRESHOLDS, k) for k in values} == values
+
+
+def test_the_composition_root_is_imported_from_the_command_line_only():
+    """:mod:`vap_bt.app` wires the parts together; no part imports it back (no arrow up; ``python -m vap_bt``
+    is its door), and
+    the wire (:mod:`vap_bt.transport`) knows neither the parts' wiring nor the tree."""
+    below = [p for p in files("vap_bt") if "vap_bt/app" not in str(p) and p.name != "__main__.py"]
+    offenders = {str(p.relative_to(ROOT)): sorted(m for m in module_imports(p)
+                                                  if m == "vap_bt.app" or m.startswith("vap_bt.app."))
+                 for p in below}
+    assert below
+    assert not {k: v for k, v in offenders.items() if v}
+    wire = {str(p.relative_to(ROOT)): sorted(m for m in module_imports(p)
+                                             if any(m == r or m.startswith(r + ".")
+                                                    for r in ("vap_bt.app", "vap_bt.bt", "vap_bt.sim", "vap_bt.viz")))
+            for p in files("vap_bt/transport")}
+    assert files("vap_bt/transport")
+    assert not {k: v for k, v in wire.items() if v}

@@ -36,7 +36,7 @@ def test_noisy_episodes_give_an_interval_that_holds_the_pooled_difference():
 def test_the_bench_counts_what_the_report_counts_and_reused_values_not_at_all():
     """A lean episode's figures: verified and correct are the report's (values looked at or felt),
     the per-relation accuracy only what was looked at; the reused values apart, in neither."""
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
     from vap_bt.taskfile import load
 
     task = load(ROOT / "trees" / "collect_cup.yaml")

@@ -36,7 +36,7 @@ def test_installed_command_reports_errors_without_traceback(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("name: t\ndomain: ../domains/household.pddl\nscene: {rooms: [a]}\ngoal: ['hand_empty']\n")
     exe = ROOT / ".venv" / "bin" / "vap-bt"
-    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt.cli"]
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt"]
     p = subprocess.run([*cmd, "run", str(bad)], capture_output=True, text=True, timeout=120)
     assert p.returncode == EXIT_BAD_INPUT
     assert "field scene.robot" in p.stderr and "Traceback" not in p.stderr

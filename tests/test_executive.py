@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.taskfile import load
 
 from conftest import DOMAINS, HOUSEHOLD_TASKS, LITERATURE, TREES, load_json

@@ -13,7 +13,7 @@ import pytest
 
 from tools.bench import faults
 from vap_bt.domain.atoms import Atom
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.sim.disturbances import HALF_SHUT, KINDS, MOVED, SHUT, Disturbance, DisturbanceModel
 from vap_bt.sim.symbolic import SymbolicWorld
 from vap_bt.taskfile import load

@@ -23,7 +23,7 @@ import yaml
 
 from plugin_fixtures.zenoh_net import endpoint, free_port, session
 from tools.bench.process_faults import Part, alive_in, start, vap_bt
-from vap_bt.transport import census, launch, serve, sim_host
+from vap_bt.app import census, launch, serve, sim_host
 
 pytestmark = pytest.mark.timeout(600)
 

@@ -14,7 +14,7 @@ import time
 import pytest
 
 from conftest import TREES
-from vap_bt.runner import EpisodeInterrupted, RunConfig, Session
+from vap_bt.app.runner import EpisodeInterrupted, RunConfig, Session
 from vap_bt.sim.symbolic import SymbolicWorld
 from vap_bt.taskfile import load
 

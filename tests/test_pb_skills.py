@@ -164,7 +164,7 @@ def test_an_item_held_from_above_goes_into_the_oven_leaned():
     rides over the hand and strikes the face above the opening). heat_pie's seed 4 takes the pie
     off the counter from above; upright, every placein stopped on the blocked arm and the episode
     ended stuck. Leaned in, the pie is let go tilted and settles inside."""
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
     from vap_bt.taskfile import load
 
     task = load(TREES / "heat_pie.yaml")

@@ -26,7 +26,7 @@ from vap_bt.domain.grounding import ground
 from vap_bt.domain.pddl import load_task
 from vap_bt.domain.planner import Planner
 from vap_bt.domain.requirements import Source
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.symbolic import SymbolicWorld
 

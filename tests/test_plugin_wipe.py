@@ -20,7 +20,7 @@ from driver_scripts import kitchen, world_of
 from conftest import ROOT
 from vap_bt import plugins
 from vap_bt.skill import GoalState
-from vap_bt.transport.inprocess import InProcessSkillClient
+from vap_bt.app.inprocess import InProcessSkillClient
 
 pytestmark = [pytest.mark.slow, pytest.mark.timeout(240)]
 

@@ -19,7 +19,7 @@ from vap_bt import plugins
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import GoalState, Skill, SkillResult, WorldActionSkill
 from vap_bt.robot.camera import Aim
-from vap_bt.transport.inprocess import InProcessRobot, InProcessSkillClient
+from vap_bt.app.inprocess import InProcessRobot, InProcessSkillClient
 
 BUILTIN = {"navigate": "base", "find": "base", "grasp": "ur5e", "takeout": "ur5e", "placein": "ur5e",
            "placeon": "ur5e", "open": "ur5e", "close": "ur5e", "turnon": "ur5e", "cut": "ur5e",

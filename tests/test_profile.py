@@ -14,7 +14,7 @@ from vap_bt.domain.pddl import load_task
 from vap_bt.errors import InputError
 from vap_bt.perception import profile as profiles
 from vap_bt.perception.paraphrase import template_paraphrases, template_problem
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.scene.graph import SceneGraph
 
 from conftest import DOMAINS, HOUSEHOLD, TREES, household_profile
@@ -257,7 +257,7 @@ def test_the_survey_asks_open_only_where_the_profile_sources_it_from_the_vlm(tmp
 
 
 def test_the_runner_lets_a_writing_vlm_write_and_keeps_the_task_profile_otherwise():
-    from vap_bt.runner import make_profile
+    from vap_bt.app.runner import make_profile
     from vap_bt.sim.sim_vlm import SimVLM
 
     task = taskfile.from_spec(taskfile.TaskFile(name="ferry", domain=str(FERRY[0]), problem=str(FERRY[1])),

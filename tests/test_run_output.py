@@ -34,7 +34,7 @@ def table(out: str) -> dict[str, str]:
 
 def test_the_household_task_files_run_in_pybullet_and_a_pddl_problem_runs_symbolic():
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig
+    from vap_bt.app.runner import RunConfig
 
     from vap_bt.yaml_file import read_model
 
@@ -102,7 +102,7 @@ def _interrupted_when(progress: str, tmp_path) -> tuple[subprocess.Popen, str, s
     process, its stdout and its stderr. The simulated VLM answers over HTTP a little slowly (the
     sim-http endpoint, 0.3 s an answer), so that the survey's questions and an action's checks last
     long enough for a signal to land in them."""
-    argv = [sys.executable, "-m", "vap_bt.cli", "run", str(TREES / "collect_cup.yaml"), "--world", "symbolic",
+    argv = [sys.executable, "-m", "vap_bt", "run", str(TREES / "collect_cup.yaml"), "--world", "symbolic",
             "--vlm", "sim-http", "--vlm-latency", "0.3", "--report", str(tmp_path / "r.json")]
     # as from a terminal: SIGINT at its default. A child inherits an ignored SIGINT, and Python
     # then installs no KeyboardInterrupt handler; in the full suite something earlier in a worker
@@ -151,7 +151,7 @@ def test_ctrl_c_at_any_moment_writes_the_whole_report_and_the_table(progress, ph
 
 def test_ctrl_c_while_the_world_starts_still_writes_the_whole_report(cli, tmp_path, monkeypatch):
     """Before any episode: the world, skills and transport coming up (phase ``starting``)."""
-    from vap_bt import runner
+    from vap_bt.app import runner
 
     def interrupted(task, cfg):
         raise KeyboardInterrupt
@@ -187,7 +187,7 @@ def test_without_world_a_household_task_runs_in_pybullet_and_json_stays_clean():
     """The installed command, as a script calls it: no --world, so the task file's pybullet; stdout
     is exactly the JSON (pybullet's own start-up line goes to stderr)."""
     exe = ROOT / ".venv" / "bin" / "vap-bt"
-    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt.cli"]
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt"]
     p = subprocess.run([*cmd, "run", str(TREES / "collect_cup.yaml"), "--no-injection", "--transport", "inproc",
                         "--json", "-q"], capture_output=True, text=True, timeout=600, cwd=ROOT)
     summary = json.loads(p.stdout)

@@ -14,7 +14,7 @@ from vap_bt.bt.executive import sweep_order
 from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.robot.labels import label_of
 from vap_bt.scene.builder import SceneGraphBuilder
 from vap_bt.scene.graph import SceneGraph

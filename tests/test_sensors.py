@@ -161,7 +161,7 @@ def test_the_robot_reports_and_is_commanded_in_its_believed_frame():
 def test_a_run_has_exact_sensors_unless_it_asks_for_the_real_ones():
     """``RunConfig.sensors`` (``vap-bt run --sensors``) builds the pybullet world with the models
     on or off; every report prints them (``world.depth_noise``, ``world.localization``)."""
-    from vap_bt.runner import RunConfig, make_world
+    from vap_bt.app.runner import RunConfig, make_world
     from vap_bt.taskfile import load
     from skill_runs import TREES
 

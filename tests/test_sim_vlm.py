@@ -226,7 +226,7 @@ def test_judges_the_instance_the_executive_marked():
 
     from vap_bt.perception.verification import Round
     from vap_bt.robot.frame import marked_frame
-    from vap_bt.runner import Session
+    from vap_bt.app.runner import Session
 
     truth = {Atom("on", ("bottle2", "counter")): True, Atom("on", ("bottle1", "counter")): False}
     oracle = FunctionOracle(lambda a: truth.get(a, False), lambda: [])

@@ -28,7 +28,7 @@ from vap_bt.perception.backends.reply import TokenChoice, option_confidence
 from vap_bt.perception.verification import sufficiency_query, viewpoint_query
 from vap_bt.perception.vlm import MeteredVLM, Query
 from vap_bt.robot.frame import Frame
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.sim.captures import CaptureLog, CaptureRecord, frame_card
 from vap_bt.sim.chat_completions import exact_logprobs
 from vap_bt.sim.oracle import FunctionOracle

@@ -20,7 +20,7 @@ from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.feel_hand import FeelHand
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.domain.atoms import Atom
-from vap_bt.runner import RunConfig, Session
+from vap_bt.app.runner import RunConfig, Session
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.symbolic import SymbolicWorld
 from vap_bt.taskfile import load

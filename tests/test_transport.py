@@ -215,7 +215,7 @@ def test_each_goal_is_logged_one_line_per_event_its_feedback_at_most_once_a_seco
 def test_a_goal_in_flight_has_a_liveliness_token_and_rejections_and_cancels_are_logged(net, caplog):
     """``vap-bt parts`` sees a running goal by its token; a goal the busy arm refuses, the cancel
     and the result are each one line."""
-    from vap_bt.transport import census
+    from vap_bt.app import census
 
     world, _, client, s_cli = net
     world.duration, world.steps = 5.0, 100

@@ -2,7 +2,7 @@
 
 SIGKILL closes the TCP link, so the server's liveliness token vanishes at once (goal ABORTED
 within 0.5 s). SIGSTOP keeps the socket open; only the link lease (2 s by default) tells, so the
-goal must fail within 3 s. The server is ``python -m vap_bt.transport.serve`` over the facts
+goal must fail within 3 s. The server is ``python -m vap_bt.app.serve`` over the facts
 world, exactly as ``vap-bt serve`` runs.
 """
 

@@ -88,7 +88,7 @@ def help_examples(argv: list[str]) -> list[str]:
     import contextlib
     import io
 
-    from vap_bt.cli import main
+    from vap_bt.app.cli import main
 
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
@@ -102,7 +102,7 @@ def test_every_help_example_is_a_real_command_line(command):
     and PDDL files it names are in the checkout, so it runs from a fresh clone."""
     import shlex
 
-    from vap_bt.cli import build_parser
+    from vap_bt.app.cli import build_parser
 
     for line in help_examples([command]):
         words = shlex.split(line.split("#")[0].split(">")[0].split("|")[0])
@@ -116,7 +116,7 @@ def test_every_help_example_is_a_real_command_line(command):
 def test_every_argument_of_every_command_is_explained_in_plain_text(command):
     """``--help`` gives each positional and option a line of text, and shows no reStructuredText
     (``sim --help`` printed its module docstring's double back-quotes)."""
-    from vap_bt.cli import build_parser
+    from vap_bt.app.cli import build_parser
 
     parser = build_parser()
     command_parser = parser._subparsers._group_actions[0].choices[command]

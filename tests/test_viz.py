@@ -33,7 +33,7 @@ SEED_WITH_REPLAN = 8
 
 def session(world: str = "symbolic"):
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     task = taskfile.load(TREES / "collect_cup.yaml")
     return Session(task, RunConfig.from_task(task, world=world, transport="inproc", vlm_noise=0.0))
@@ -367,6 +367,6 @@ def test_bad_sink_words_are_input_errors(words):
 
 def test_viz_is_the_only_room_that_imports_rerun():
     """The executive stays rerun-free: importing it must not pull rerun in."""
-    code = ("import sys; import vap_bt.runner, vap_bt.bt.executive; "
+    code = ("import sys; import vap_bt.app.runner, vap_bt.bt.executive; "
             "assert 'rerun' not in sys.modules, 'rerun imported by the executive'")
     subprocess.run([sys.executable, "-c", code], check=True, cwd=ROOT, timeout=120)

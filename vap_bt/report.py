@@ -12,7 +12,7 @@ a sense gave at the time (:func:`verification_counts`); a value reused from an e
 counted apart and never as verified.
 
 A run stopped by Ctrl-C, at whatever moment, writes the same report with what was known by then
-(:class:`vap_bt.runner.EpisodeInterrupted`): the same keys, so that a reader needs no second
+(:class:`vap_bt.app.runner.EpisodeInterrupted`): the same keys, so that a reader needs no second
 schema; ``interrupted`` says it was stopped and ``phase`` what the episode was doing.
 """
 

@@ -108,7 +108,7 @@ class WorldActionSkill(Skill):
     :class:`~vap_bt.world.ActionOutcome` into a :class:`SkillResult`. It stands in for a plugin
     whose world lacks what the plugin needs (:meth:`Skill.binds`), under the plugin's own action,
     robot and resource (:func:`vap_bt.plugins.instantiate`), and for the domain actions no plugin
-    implements (:func:`vap_bt.runner.make_skills`). A world with drivers (the pybullet one)
+    implements (:func:`vap_bt.app.runner.make_skills`). A world with drivers (the pybullet one)
     performs nothing: its actions are the skills' motions.
     """
 

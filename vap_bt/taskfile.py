@@ -16,7 +16,7 @@ the task file. Every mistake is reported once, with the file and the field or li
     perception: my_household.perception.yaml   # optional; default: the one beside the domain
 
 A task with an ``instruction:`` and no ``goal:`` has its goal parsed from the words by a real VLM
-after the robot's survey (:mod:`vap_bt.perception.goal_parsing`; see :func:`vap_bt.runner.goal_words`
+after the robot's survey (:mod:`vap_bt.perception.goal_parsing`; see :func:`vap_bt.app.runner.goal_words`
 for when words are parsed); offline, with the simulated VLM, such a task cannot run.
 
 Two parts say different things to different readers. ``scene:`` is the world a simulator builds:

@@ -36,7 +36,7 @@ _SESSIONS: dict = {}
 def _views(job: tuple[str, int]) -> list[tuple[str, str, bool]]:
     """(predicate, view kind, truth) for every view of one episode."""
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     path, seed = job
     if path not in _SESSIONS:

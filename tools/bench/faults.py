@@ -136,7 +136,7 @@ def outcome_of(success: bool, satisfied: bool) -> str:
 
 def _session(job: Job, sessions: dict):
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     if job.task_file not in sessions:
         task = taskfile.load(job.task_file)

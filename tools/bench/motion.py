@@ -177,7 +177,7 @@ def bench_episode(args: argparse.Namespace) -> list[Row]:
     from pathlib import Path
 
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     root = Path(__file__).resolve().parents[2]
     sys.path.insert(0, str(root))

@@ -95,7 +95,7 @@ def fast_downward(domain: Path, problem: Path) -> dict:
 
 def vap_bt_run(domain: Path, problem: Path) -> dict:
     """The executive's run of the problem within RUN_LIMIT_S, sorted into one outcome."""
-    cmd = [sys.executable, "-m", "vap_bt.cli", "run", "--domain", str(domain), "--problem", str(problem),
+    cmd = [sys.executable, "-m", "vap_bt", "run", "--domain", str(domain), "--problem", str(problem),
            "--world", "symbolic", "--vlm-noise", "0", "--no-injection", "--seed", "0", "--json", "-q"]
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     t0 = time.perf_counter()

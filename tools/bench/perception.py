@@ -104,7 +104,7 @@ def run(unit: Unit) -> dict:
 
 def _run(unit: Unit) -> dict:
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     task = taskfile.load(ROOT / "trees" / f"{unit.task}.yaml")
     cfg = RunConfig.from_task(task, world=unit.world, vlm=unit.vlm, transport="inproc", vlm_noise=1.0,

@@ -76,7 +76,7 @@ def _capture(self, payload):
         time.sleep(0.5)
     return answer(self, payload)
 server.SkillServer._capture = _capture
-from vap_bt.cli import main
+from vap_bt.app.cli import main
 sys.exit(main(sys.argv[2:]))
 """
 
@@ -116,11 +116,11 @@ class Part:
 
 
 def vap_bt(*args: str) -> list[str]:
-    return [sys.executable, "-m", "vap_bt.cli", *args]
+    return [sys.executable, "-m", "vap_bt", *args]
 
 
 def start(tmp: Path, name: str, argv: list[str]) -> Part:
-    """``argv`` in its own process group, from the checkout's root (so ``-m vap_bt.cli`` and ``-c``
+    """``argv`` in its own process group, from the checkout's root (so ``-m vap_bt`` and ``-c``
     import this checkout's vap_bt), its output in ``tmp/NAME.out`` and ``.err``."""
     out, err = tmp / f"{name}.out", tmp / f"{name}.err"
     with out.open("w") as o, err.open("w") as e:

@@ -46,7 +46,7 @@ def episode(job: tuple[str, bool, int, str, str]) -> dict:
     of its report."""
     path, injection, seed, protocol, sensors = job
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     task = taskfile.load(path)
     t0 = time.perf_counter()

@@ -33,7 +33,7 @@ from vap_bt import taskfile  # noqa: E402
 from vap_bt.domain import validation  # noqa: E402
 from vap_bt.domain.grounding import ground  # noqa: E402
 from vap_bt.domain.planner import Planner  # noqa: E402
-from vap_bt.runner import RunConfig, Session  # noqa: E402
+from vap_bt.app.runner import RunConfig, Session  # noqa: E402
 from tools.progress import Progress  # noqa: E402
 
 

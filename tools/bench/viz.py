@@ -27,7 +27,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests"))
 
 from vap_bt import taskfile  # noqa: E402
-from vap_bt.runner import RunConfig, Session  # noqa: E402
+from vap_bt.app.runner import RunConfig, Session  # noqa: E402
 from vap_bt.viz import TreeRecorder  # noqa: E402
 from tools.progress import Progress  # noqa: E402
 

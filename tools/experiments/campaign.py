@@ -40,7 +40,7 @@ def main(argv: list[str] | None = None) -> int:
     root = Path(args.code).resolve()
     sys.path.insert(0, str(root))
     from vap_bt import taskfile
-    from vap_bt.runner import RunConfig, Session
+    from vap_bt.app.runner import RunConfig, Session
 
     paths = sorted((root / "trees").glob("*.yaml"))
     total = len(paths) * args.seeds

@@ -27,7 +27,7 @@ import numpy as np  # noqa: E402
 
 from vap_bt import taskfile  # noqa: E402
 from vap_bt.report import versions  # noqa: E402
-from vap_bt.runner import RunConfig, Session  # noqa: E402
+from vap_bt.app.runner import RunConfig, Session  # noqa: E402
 from tools.progress import Progress  # noqa: E402
 
 MODES = ("both", "eff", "pre", "none")

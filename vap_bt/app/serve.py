@@ -7,10 +7,10 @@ shared safely by the arm's and the base's skills. It prints one ``ready`` line o
 everything is declared (``vap-bt serve: ready: ur5e skills [close, cut, …] with the camera, on
 zenoh (connected to tcp/127.0.0.1:7447)``), logs each goal on stderr (accepted, throttled
 feedback, result, cancel: :mod:`~vap_bt.transport.server`) and runs until SIGINT or SIGTERM.
-``python -m vap_bt.transport.serve`` does the same without the ``vap-bt`` wrapper.
+``python -m vap_bt.app.serve`` does the same without the ``vap-bt`` wrapper.
 
 With ``--world remote`` the skills bind to a robot whose world runs in ``vap-bt sim``
-(:class:`~vap_bt.transport.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
+(:class:`~vap_bt.app.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
 server is then a client of the sim's router (``--connect``, default ``tcp/127.0.0.1:7447``), and
 the camera robot's server (``ur5e``) hosts the camera service on the skills' own kit. Such a
 server lives and dies with its sim: when the sim's driver token vanishes (the sim stopped, died
@@ -40,9 +40,9 @@ from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, T
 from vap_bt.transport import server as server_module
 from vap_bt.transport.config import (add_transport_arguments, describe, open_session, part_settings,
                                      settings_from_args)
-from vap_bt.transport.locked_world import LockedWorld
+from vap_bt.app.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
-from vap_bt.transport.world_factory import make_world, parse_world_args
+from vap_bt.app.world_factory import make_world, parse_world_args
 
 #: ``--world remote``: the robot of a world that ``vap-bt sim`` hosts
 REMOTE = "remote"
@@ -92,10 +92,10 @@ def run_serve(args: argparse.Namespace) -> int:
 def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
     """Skills over a robot whose world is ``vap-bt sim``'s (:class:`RemoteRobot`); the camera
     robot's server hosts the camera service, built on the same kit as its skills."""
-    from vap_bt.runner import make_camera
+    from vap_bt.app.runner import make_camera
     from vap_bt.transport.drivers import HostWatch, host_token_key
-    from vap_bt.transport.embedded import CAMERA_ROBOT
-    from vap_bt.transport.remote_robot import RemoteRobot
+    from vap_bt.app.embedded import CAMERA_ROBOT
+    from vap_bt.app.remote_robot import RemoteRobot
 
     for option, given in (("--task", args.task), ("--world-arg", args.world_arg)):
         if given:
@@ -248,7 +248,7 @@ def _print_table(rows: list[dict[str, str]]) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m vap_bt.transport.serve``: the serve command on its own."""
+    """``python -m vap_bt.app.serve``: the serve command on its own."""
     parser = argparse.ArgumentParser(prog="vap-bt serve", description=__doc__.splitlines()[0])
     add_serve_arguments(parser)
     args = parser.parse_args(argv)

@@ -114,7 +114,7 @@ def _recording_text(recorder) -> str | None:
 
 def _run(args, stdout) -> int:
     from vap_bt.perception.goal_parsing import GoalParseError
-    from vap_bt.runner import EpisodeInterrupted, RunConfig, Session, check_config
+    from vap_bt.app.runner import EpisodeInterrupted, RunConfig, Session, check_config
 
     task = _load_run_task(args)
     cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
@@ -169,7 +169,7 @@ def _run(args, stdout) -> int:
 
 
 def _remote_settings(args):
-    """``--connect``/``--zenoh-config``: the parts run elsewhere (:mod:`vap_bt.transport.connected`)."""
+    """``--connect``/``--zenoh-config``: the parts run elsewhere (:mod:`vap_bt.app.connected`)."""
     if not (args.connect or args.zenoh_config):
         if args.listen:
             raise InputError("--listen", "only with --connect (the executive then listens there as a Zenoh peer); "
@@ -405,7 +405,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _add_transport_commands(sub) -> None:
     try:
-        from vap_bt.transport import serve
+        from vap_bt.app import serve
     except ImportError:  # the transport room is optional for plan/run
         return
     if hasattr(serve, "add_skills_arguments"):
@@ -419,7 +419,7 @@ def _add_transport_commands(sub) -> None:
             "vap-bt serve --robot base --robot ur5e --world pybullet --task trees/boil_water.yaml"))
         serve.add_serve_arguments(sv)
         sv.set_defaults(func=serve.run_serve)
-    from vap_bt.transport import sim_host
+    from vap_bt.app import sim_host
 
     sm = sub.add_parser("sim", help="host the pybullet world, its drivers, the simulated VLM and the oracle over Zenoh",
                         **_examples(
@@ -431,7 +431,7 @@ def _add_transport_commands(sub) -> None:
     sim_host.add_sim_arguments(sm)
     sm.set_defaults(func=sim_host.run_sim)
 
-    from vap_bt.transport import census, launch
+    from vap_bt.app import census, launch
 
     examples = _examples("vap-bt launch examples/launch/boil_water.yaml   # sim, arm, base, executive; Ctrl-C ends",
                          "vap-bt launch examples/launch/boil_water.yaml --endpoint tcp/127.0.0.1:7450",

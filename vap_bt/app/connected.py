@@ -25,7 +25,7 @@ from vap_bt.errors import InputError, TransportError
 from vap_bt.transport import keys
 from vap_bt.transport.client import ZenohRobot, ZenohSkillClient, ZenohVLM
 from vap_bt.transport.config import SIM_ENDPOINT, TransportSettings, open_session
-from vap_bt.transport.embedded import CAMERA_ROBOT
+from vap_bt.app.embedded import CAMERA_ROBOT
 from vap_bt.transport.world_services import RemoteWorld
 
 

@@ -45,7 +45,8 @@ def parse_world_args(pairs: list[str]) -> dict[str, str]:
 def _builtin(name: str, task: str | None, seed: int) -> Any:
     if not task:
         raise InputError("--task", f"the {name} world needs a task file (e.g. trees/collect_cup.yaml)")
-    from vap_bt import runner, taskfile  # the executive's own wiring, so serve and run agree
+    from vap_bt import taskfile
+    from vap_bt.app import runner  # the executive's own wiring, so serve and run agree
 
     loaded = taskfile.load(task)
     return runner.make_world(loaded, runner.RunConfig.from_task(loaded, world=name, seed=seed))

@@ -35,8 +35,8 @@ from vap_bt.errors import EXIT_OK, InputError, VapBtError
 from vap_bt.transport import keys
 from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, describe, open_session, settings_from_args
 from vap_bt.transport.drivers import DriverServer
-from vap_bt.transport.embedded import CAMERA_ROBOT
-from vap_bt.transport.locked_world import LockedWorld
+from vap_bt.app.embedded import CAMERA_ROBOT
+from vap_bt.app.locked_world import LockedWorld
 from vap_bt.transport.world_hooks import ActionHookServer
 from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
 
@@ -76,7 +76,8 @@ def _say(what: str) -> None:
 
 
 def run_sim(args: argparse.Namespace) -> int:
-    from vap_bt import runner, taskfile
+    from vap_bt import taskfile
+    from vap_bt.app import runner
 
     task = taskfile.load(args.task)
     if task.spec.scene is None:
@@ -120,7 +121,7 @@ def run_sim(args: argparse.Namespace) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m vap_bt.transport.sim_host``: the sim command on its own."""
+    """``python -m vap_bt.app.sim_host``: the sim command on its own."""
     parser = argparse.ArgumentParser(prog="vap-bt sim", description=DESCRIPTION)
     add_sim_arguments(parser)
     args = parser.parse_args(argv)

@@ -344,15 +344,15 @@ class Session:
         if self.endpoint is not None:  # the served model reads questions in the words the executive asks
             self.endpoint.read_questions(self.profile, self.task.planning)
         if self.cfg.transport == "zenoh" and self._connected is None:
-            from vap_bt.transport.embedded import EmbeddedTransport
+            from vap_bt.app.embedded import EmbeddedTransport
 
             self._embedded = EmbeddedTransport(self.world, self.skills,
                                                vlm=self.vlm if self._world_side_vlm else None, camera_for=make_camera)
 
     def _connect(self) -> None:
-        """The world, skill servers and simulated VLM of other processes (:mod:`vap_bt.transport.connected`);
+        """The world, skill servers and simulated VLM of other processes (:mod:`vap_bt.app.connected`);
         the world is only the runner's, to reset and score by."""
-        from vap_bt.transport.connected import ConnectedTransport
+        from vap_bt.app.connected import ConnectedTransport
 
         if self.cfg.world != "pybullet" or self.cfg.transport != "zenoh" or self.cfg.vlm == "sim-http":
             raise InputError("--connect", "the parts `vap-bt sim` and `vap-bt serve --world remote` host are a "
@@ -462,7 +462,7 @@ class Session:
             e = self._embedded
             return e.client, e.robot, e.vlm_client if self._world_side_vlm else self.vlm
         if self.cfg.transport == "inproc":
-            from vap_bt.transport.inprocess import InProcessRobot, InProcessSkillClient
+            from vap_bt.app.inprocess import InProcessRobot, InProcessSkillClient
 
             return InProcessSkillClient(self.skills), InProcessRobot(make_camera(self.world)), self.vlm
         raise ValueError(f"unknown transport {self.cfg.transport!r}")

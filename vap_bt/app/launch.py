@@ -27,7 +27,7 @@ another.
 Each part is told where to meet the others: a ``sim`` part ``--listen ENDPOINT``, the others
 ``--connect ENDPOINT`` — the part's own ``endpoint``, else ``vap-bt launch --endpoint``, else the
 file's, else the sim's default — unless its arguments already say where (``--listen``,
-``--connect``, ``--zenoh-config``). The parts run ``python -m vap_bt.cli`` with this Python, in
+``--connect``, ``--zenoh-config``). The parts run ``python -m vap_bt`` with this Python, in
 the directory launch was started in, so relative paths in their arguments are relative to it.
 Everything a launch is — schema, processes, output, stopping — is here, and none of the parts'
 code is imported: launch drives them by their command lines only.
@@ -274,7 +274,7 @@ class Launcher:
     # -- starting --------------------------------------------------------------------------------
 
     def _start(self, part: PartSpec) -> _Child:
-        argv = [sys.executable, "-m", "vap_bt.cli", part.command, *part.args]
+        argv = [sys.executable, "-m", "vap_bt", part.command, *part.args]
         if not part.says_where():
             argv += ["--listen" if part.command == "sim" else "--connect", part.endpoint or self.endpoint]
         proc = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,

@@ -19,7 +19,7 @@ from typing import Any, Callable
 from vap_bt.skill import Skill
 from vap_bt.transport.client import ZenohRobot, ZenohSkillClient, ZenohVLM
 from vap_bt.transport.config import TransportSettings, open_session
-from vap_bt.transport.locked_world import LockedWorld
+from vap_bt.app.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
 
 

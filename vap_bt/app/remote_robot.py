@@ -3,7 +3,7 @@
 Motion skills bind to anything that offers the robot's drivers, its ``state()`` and its
 ``site_map()`` (:func:`skills.kit.has_drivers`); a simulated world also takes the sim-only action
 hook (``begin_action``/``end_action``). :class:`RemoteRobot` is that object over Zenoh, for a world
-hosted by ``vap-bt sim`` (:mod:`vap_bt.transport.sim_host`): the drivers and body are a
+hosted by ``vap-bt sim`` (:mod:`vap_bt.app.sim_host`): the drivers and body are a
 :class:`~vap_bt.transport.drivers.RemoteDrivers`, the hook a
 :class:`~vap_bt.transport.world_hooks.ZenohActionHooks`. The skills — and the camera service built
 on the same kit — cannot tell it from the world itself; a real robot's driver host would serve
