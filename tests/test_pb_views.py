@@ -14,7 +14,8 @@ import pytest
 from vap_bt import taskfile
 from vap_bt.domain.atoms import Atom
 from vap_bt.sim import pb_views
-from vap_bt.sim.pb_camera import look_pose, render
+from vap_bt.motion.se3 import look_pose
+from vap_bt.sim.pb_camera import render
 
 from conftest import TREES
 

@@ -487,7 +487,8 @@ def render_own(pb, cid, eye, target) -> tuple[np.ndarray, np.ndarray, np.ndarray
 def render_project(pb, cid, eye, target):
     """The same through the project's renderer, as the pybullet world's camera produces frames."""
     from robots.config import RobotConfig
-    from vap_bt.sim.pb_camera import look_pose, render
+    from vap_bt.motion.se3 import look_pose
+    from vap_bt.sim.pb_camera import render
 
     camera = RobotConfig.from_yaml(ROOT / "robots" / "mobile_ur5e.yaml").camera.for_sim()
     r = render(cid, look_pose(eye, target), camera)

@@ -128,18 +128,33 @@ def performed_by_world(action: str, world: Any, robot: str = "sim", resource: st
     return cls(world)
 
 
-class GoalHandle(Protocol):
-    """A goal in flight, as the executive sees it."""
+class GoalHandle:
+    """A goal in flight, as the executive sees it: its state, its latest feedback, its result,
+    and a way to cancel it (ROS actions' goal handle).
 
-    goal_id: str
+    The one base of every transport's handle: the in-process client's goals have ended before
+    their handle exists (:class:`vap_bt.app.inprocess` builds it finished), a Zenoh goal's state
+    is filled in by its status and liveliness callbacks (:class:`vap_bt.transport.client.
+    ZenohGoalHandle` also reads its accept/reject reply when asked, and sends cancels)."""
 
-    def state(self) -> GoalState: ...
+    def __init__(self, goal_id: str, state: GoalState = GoalState.PENDING, result: SkillResult | None = None,
+                 feedback: Feedback | None = None) -> None:
+        self.goal_id = goal_id
+        self._state = state
+        self._result = result
+        self._feedback = feedback
 
-    def feedback(self) -> Feedback | None: ...
+    def state(self) -> GoalState:
+        return self._state
 
-    def result(self) -> SkillResult | None: ...
+    def feedback(self) -> Feedback | None:
+        return self._feedback
 
-    def cancel(self) -> None: ...
+    def result(self) -> SkillResult | None:
+        return self._result
+
+    def cancel(self) -> None:
+        """Ask the goal to stop; a goal that has already ended has nothing to cancel."""
 
 
 class SkillClient(Protocol):

@@ -31,7 +31,8 @@ from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.scene.relations import Signatures, scene_relations
 from vap_bt.scene.tracks import Tracks
-from vap_bt.sim.pb_camera import look_pose, render
+from vap_bt.motion.se3 import look_pose
+from vap_bt.sim.pb_camera import render
 from vap_bt.sim.pybullet_world import PybulletWorld
 from vap_bt.taskfile import load
 

@@ -10,37 +10,14 @@ REJECTED with the same reason the Zenoh server gives.
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
 
-from vap_bt.skill import Feedback, GoalState, Hint, Skill, SkillResult
+from vap_bt.skill import GoalHandle, GoalState, Hint, Skill
 from vap_bt.transport.execution import GoalRun, run_goal, unknown_action
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.world import World
-
-
-@dataclass
-class FinishedGoal:
-    """A :class:`~vap_bt.skill.GoalHandle` whose goal has already ended."""
-
-    goal_id: str
-    _state: GoalState
-    _result: SkillResult
-    _feedback: Feedback | None = None
-
-    def state(self) -> GoalState:
-        return self._state
-
-    def feedback(self) -> Feedback | None:
-        return self._feedback
-
-    def result(self) -> SkillResult | None:
-        return self._result
-
-    def cancel(self) -> None:
-        """Nothing to cancel: the goal finished before the handle existed."""
 
 
 class InProcessSkillClient:
@@ -50,14 +27,14 @@ class InProcessSkillClient:
         self.skills = dict(skills)
         self._ids = itertools.count(1)
 
-    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> FinishedGoal:
+    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> GoalHandle:
         goal_id = f"local-{next(self._ids)}"
         skill = self.skills.get(action)
         if skill is None:
-            return FinishedGoal(goal_id, GoalState.REJECTED, unknown_action(action, self.skills))
+            return GoalHandle(goal_id, GoalState.REJECTED, unknown_action(action, self.skills))
         ctx = GoalRun(hints=tuple(hints))
         state, result = run_goal(skill, tuple(args), ctx)
-        return FinishedGoal(goal_id, state, result, ctx.last_feedback)
+        return GoalHandle(goal_id, state, result, ctx.last_feedback)  # ended before the handle exists
 
     def close(self) -> None:
         """Nothing held."""

@@ -74,19 +74,6 @@ def render(cid: int, pose: np.ndarray, camera: Camera, shadows: bool = False) ->
     return Render(rgb, metric.astype(np.float32), bodies, pose, camera, links)
 
 
-def look_pose(eye, target) -> np.ndarray:
-    """Optical-frame pose at ``eye`` looking at ``target`` with the image upright."""
-    z = np.asarray(target, float) - np.asarray(eye, float)
-    z /= np.linalg.norm(z)
-    x = np.cross(z, (0.0, 0.0, 1.0))
-    if np.linalg.norm(x) < 1e-6:  # looking straight down: any right vector
-        x = np.array([1.0, 0.0, 0.0])
-    x /= np.linalg.norm(x)
-    T = np.eye(4)
-    T[:3, 0], T[:3, 1], T[:3, 2], T[:3, 3] = x, np.cross(z, x), z, eye
-    return T
-
-
 def name_image(r: Render, names: dict[int, str], ids: dict[str, int]) -> np.ndarray:
     """Segmentation in object ids (``ids`` numbers the names), -1 for anything unnamed."""
     out = np.full(r.bodies.shape, -1, np.int32)

@@ -54,7 +54,8 @@ from vap_bt.sim.disturbances import HALF_OPEN, HALF_SHUT, MOVED, SHUT, Disturban
 from vap_bt.sim.localization import Localization, LocalizationModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.pb import pb
-from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, look_pose, mask_extents, name_image, pixel_counts, render, visibility
+from vap_bt.motion.se3 import look_pose
+from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_drivers import Drivers
 from vap_bt.sim.pb_injection import Injection

@@ -42,7 +42,7 @@ import zenoh
 
 from vap_bt import plugins
 from vap_bt.errors import TransportError
-from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
+from vap_bt.skill import Feedback, GoalHandle, GoalState, Hint, SkillResult
 from vap_bt.transport import keys
 from vap_bt.transport.config import CAMERA_TIMEOUT_S, REJOIN_TIMEOUT_S
 from vap_bt.transport.messages import (
@@ -72,7 +72,7 @@ from vap_bt.robot.state import RobotState
 ACCEPT_TIMEOUT_S = 5.0
 
 
-class ZenohGoalHandle:
+class ZenohGoalHandle(GoalHandle):
     """A goal in flight on a remote skill server.
 
     Status and liveliness callbacks update it; its accept/reject reply is read from the query's
@@ -81,14 +81,11 @@ class ZenohGoalHandle:
     """
 
     def __init__(self, client: "ZenohSkillClient", goal_id: str, robot: str, action: str) -> None:
-        self.goal_id = goal_id
+        super().__init__(goal_id)
         self.robot = robot
         self.action = action
         self.server = ""
         self._client = client
-        self._state = GoalState.PENDING
-        self._feedback: Feedback | None = None
-        self._result: SkillResult | None = None
         self._replies: Any = None  # the request's reply channel until its answer is read
         self._expires = 0.0  # monotonic time by which Zenoh closes that channel
         self._reading = threading.Lock()  # one reader of the channel at a time
@@ -97,12 +94,6 @@ class ZenohGoalHandle:
         if self._replies is not None:
             self._client._read_reply(self, 0.0)
         return self._state
-
-    def feedback(self) -> Feedback | None:
-        return self._feedback
-
-    def result(self) -> SkillResult | None:
-        return self._result
 
     def cancel(self) -> None:
         if not self._state.terminal:
