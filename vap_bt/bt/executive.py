@@ -1,9 +1,11 @@
 """The closed-loop executive (paper Algorithm 1) on a behaviour tree.
 
 One episode: look round the site and build the scene graph from what the camera sees
-(:class:`~vap_bt.scene.builder.SceneGraphBuilder`), plan, compile the plan into a tree, and tick
+(:class:`~vap_bt.scene.builder.SceneGraphBuilder`; the survey, too, is a tree of steps), plan, compile the plan into a tree, and tick
 it. When the tree fails, a behaviour has left a :class:`~vap_bt.bt.context.Situation` on the
-context; the executive handles it and swaps in a new tree:
+context; the executive handles it in a recovery tree (:mod:`vap_bt.bt.recovery`: each step a
+behaviour whose work is in flight, ticked, drawn in the live view and halted like the plan's) and
+then swaps in a new plan's tree:
 
 1. an effect that did not happen first undoes the action-driven update, so belief returns to
    what held before the action;
@@ -45,6 +47,7 @@ is left in flight.
 
 from __future__ import annotations
 
+import threading
 import time
 from collections import Counter
 from dataclasses import dataclass, field
@@ -57,6 +60,7 @@ from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
+from vap_bt.bt.recovery import Halting, Step, recovery_tree
 from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
@@ -87,6 +91,9 @@ MAX_DOUBTS = 2
 #: the perception predicate that says the robot is placed to act on a thing; a skill that failed
 #: to act from where the robot stands makes these beliefs stale, so the new plan re-approaches
 VIEW_PREDICATE = "inview"
+#: how often a recovery's tree is ticked while its step is in flight on a thread (it waits on
+#: the robot: a drive, a frame), in seconds
+RECOVERY_POLL_S = 0.02
 #: what an episode is doing, in order (``Executive.phase``): looking round, reading a goal in
 #: words, the first plan, ticking a plan's tree, and handling a situation (correcting belief,
 #: looking again, replanning)
@@ -169,8 +176,10 @@ class Executive:
                  goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None,
                  profile: PerceptionProfile | None = None) -> None:
         self.task, self.planner, self.skills, self.body, self.vlm = task, planner, skills, body, vlm
+        #: raised by a halted recovery step: its routine stops at its next camera call
+        self._halt = threading.Event()
         #: every frame is identified against belief before anything reads it (see the module docstring)
-        self.camera = IdentifyingCamera(camera, self._identify)
+        self.camera = IdentifyingCamera(Halting(camera, self._halt), self._identify)
         self.graph: SceneGraph | None = None  # belief, once the first survey has built it
         self._prior_graph = SceneGraph.of_facts(prior)  # what the task file says, until then
         self._searching: set[str] = set()  # objects being looked for: placed nowhere
@@ -205,8 +214,14 @@ class Executive:
 
     def run(self) -> EpisodeOutcome:
         self.phase = "survey"
-        graph, survey = self.perceive()
         executor = make_executor(self.s.threads)
+        try:
+            return self._run(executor)
+        finally:
+            executor.shutdown(wait=False, cancel_futures=True)
+
+    def _run(self, executor) -> EpisodeOutcome:
+        graph, survey = self._survey_in_tree(executor)
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
@@ -215,37 +230,34 @@ class Executive:
                                verified=Verified(self.s.protocol.reuse), executor=executor,
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
+        if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
+            self.phase = "goal parsing"
+            self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
+            self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
+        self.phase = "planning"
         try:
-            if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
-                self.phase = "goal parsing"
-                self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
-                self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
-            self.phase = "planning"
-            try:
-                plan = self.planner.plan(graph.state(), self.task.goal)
-            except (UnsolvableError, PlanningTimeout) as exc:
-                out.reason = f"no initial plan: {exc}"
-                out.no_initial_plan = "timeout" if isinstance(exc, PlanningTimeout) else "unsolvable"
-                return out
-            out.plans.append(plan)
-            self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
-            tree = self._tree(ctx, plan)
-            self.phase = "acting"
-            try:
-                return self._tick_until_done(tree, ctx, plan, out)
-            finally:
-                self.halt(tree)
+            plan = self.planner.plan(graph.state(), self.task.goal)
+        except (UnsolvableError, PlanningTimeout) as exc:
+            out.reason = f"no initial plan: {exc}"
+            out.no_initial_plan = "timeout" if isinstance(exc, PlanningTimeout) else "unsolvable"
+            return out
+        out.plans.append(plan)
+        self.progress(f"plan ({plan.engine}, {plan.seconds * 1000:.0f} ms): {len(plan)} actions")
+        tree = self._tree(ctx, plan)
+        self.phase = "acting"
+        try:
+            return self._tick_until_done(tree, ctx, plan, out, time.monotonic() + self.s.max_seconds)
         finally:
-            executor.shutdown(wait=False, cancel_futures=True)
+            self.halt(tree)
 
-    def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome) -> EpisodeOutcome:
+    def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome,
+                         deadline: float) -> EpisodeOutcome:
         # the tree ticked last is halted however this ends (a replan replaces the one run() built,
         # and a time budget or Ctrl-C may come while the replanned tree has a goal in flight)
         try:
             graph = out.graph
             repeats = RepeatWatch()
             doubted: Counter[Atom] = Counter()  # observations doubted because they left no plan
-            deadline = time.monotonic() + self.s.max_seconds
             while time.monotonic() < deadline:
                 tree.tick()
                 out.ticks += 1
@@ -291,9 +303,9 @@ class Executive:
                 if situation.kind == "execution" and situation.action is not None:
                     ctx.doubted |= {lit.atom for lit in situation.action.preconditions
                                     if lit.positive and lit.atom.predicate != VIEW_PREDICATE}
-                survey = self._correct(graph, situation)
-                if survey is None and times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
-                    survey = self._look_afresh(graph, situation)
+                recovered, survey = self._recover(graph, situation, times, ctx.executor, out, deadline)
+                if not recovered:
+                    break  # the time budget ran out while the robot was looking
                 if survey is not None:
                     out.surveys.append(survey)
                 try:
@@ -393,7 +405,22 @@ class Executive:
     # -- perception ----------------------------------------------------------------------------
 
     def perceive(self) -> tuple[SceneGraph, Survey]:
-        """BuildSceneGraph: sweep every room the robot can reach, then assemble the belief."""
+        """BuildSceneGraph: sweep every room the robot can reach, then assemble the belief (at
+        once, outside any tree: the benchmarks of the survey alone call this)."""
+        graph, sweep, prior_only = self._sweep_site()
+        return self._finish_survey(graph, sweep, prior_only, self._ask_states(graph))
+
+    def _survey_in_tree(self, executor) -> tuple[SceneGraph, Survey]:
+        """BuildSceneGraph as a tree the executive ticks: the sweep of every room, then the VLM
+        asked which doors and drawers are open; each step in flight, halted like any other."""
+        swept = Step("survey: sweep the rooms", self._sweep_site, executor, self._halt)
+        asked = Step("survey: ask what is open", lambda: self._ask_states(self.graph), executor, self._halt)
+        self._drive(recovery_tree("the first survey", [swept, asked]), None)
+        return self._finish_survey(*swept.result, asked.result)
+
+    def _sweep_site(self) -> tuple[SceneGraph, SweepRecord, set[str]]:
+        """The survey's sweep and the belief assembled from it (``self.graph`` from then on),
+        with the items only the task file places."""
         k = self.task.knowledge
         site_map = self.body.site_map()
         self.builder = SceneGraphBuilder(k, self.task.objects, site_map, self.geometry)
@@ -427,7 +454,12 @@ class Executive:
             if obj.centroid is not None and n not in prior_only:  # the prior's place is not where it was seen
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
         self.graph = graph
-        states = self._ask_states(graph)
+        return graph, sweep, prior_only
+
+    def _finish_survey(self, graph: SceneGraph, sweep: SweepRecord, prior_only, states: list[StateAnswer]
+                       ) -> tuple[SceneGraph, Survey]:
+        """Belief completed after the survey's questions: the closed world's defaults, the record."""
+        site_map, k = self.builder.site_map, self.task.knowledge
         graph.facts |= belief.typed(belief.closed_world_defaults(graph.facts, site_map, self.task.objects, k),
                                     k, self.task.objects)
         survey = Survey("initial", sweep, states, graph.state(), tuple(sorted(prior_only)))
@@ -501,8 +533,59 @@ class Executive:
                     graph.correct(Atom(complement, a.atom.args), not a.value)
         return answers
 
-    def _correct(self, graph: SceneGraph, s: Situation) -> Survey | None:
-        """Bring belief in line with what was observed; returns the re-survey it took, if any."""
+    def _recover(self, graph: SceneGraph, s: Situation, times: int, executor, out: EpisodeOutcome,
+                 deadline: float) -> tuple[bool, Survey | None]:
+        """Handle situation ``s`` in a recovery tree (:mod:`vap_bt.bt.recovery`) the executive
+        ticks — and the live view draws — until its steps are done: belief corrected from what was
+        observed, a look at what a check could not make out, the gripper asked, the items involved
+        re-located and, when lost, looked for; and when the same situation came back from the same
+        belief (``times``), a look round before the same plan. Returns whether it finished before
+        the time budget ran out, and the re-survey it took, if any."""
+        found: dict = {}
+        steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, self._halt)]
+        if s.kind == "unseen" and s.atom is not None:
+            steps.append(Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
+                              executor, self._halt))
+
+        def relocate() -> None:
+            found["lost"] = self._relocate_involved(graph, s, found["dropped"])
+
+        def resurvey() -> None:
+            if found["lost"]:
+                found["survey"] = self._resurvey(graph, found["lost"], worked=self._worked(s))
+            elif times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
+                found["survey"] = self._look_afresh(graph, s)
+
+        steps += [Step("feel the hand", lambda: found.__setitem__("dropped", self._feel_hand(graph, s)),
+                       executor, self._halt),
+                  Step("re-locate what it is about", relocate, executor, self._halt),
+                  Step("look for what is lost", resurvey, executor, self._halt)]
+        done = self._drive(recovery_tree(describe(s), steps), deadline, out)
+        return done, found.get("survey")
+
+    def _drive(self, tree: py_trees.trees.BehaviourTree, deadline: float | None,
+               out: EpisodeOutcome | None = None) -> bool:
+        """Tick a recovery's tree until its steps are done (drawn for the live view when ``out``
+        counts the episode's ticks); False when the time budget ran out first. Halted however it
+        ends, so no step is left in flight."""
+        if out is not None:  # drawn before its first tick: what it is about comes before what it does
+            self.on_tree(tree, out.ticks)
+        try:
+            while True:
+                tree.tick()
+                if out is not None:
+                    out.ticks += 1
+                    self.on_tree(tree, out.ticks)
+                if tree.root.status != Status.RUNNING:
+                    return True
+                if deadline is not None and time.monotonic() >= deadline:
+                    return False
+                time.sleep(RECOVERY_POLL_S)
+        finally:
+            self.halt(tree)
+
+    def _correct_belief(self, graph: SceneGraph, s: Situation) -> None:
+        """Bring belief in line with what was observed (steps 1–3 of the module docstring)."""
         self._note_miss(graph, s)
         if s.kind == "effect" and s.action is not None:
             graph.undo(s.action)
@@ -512,20 +595,18 @@ class Executive:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == VIEW_PREDICATE:
                     graph.correct(lit.atom, False)
-        if s.kind == "unseen" and s.atom is not None:
-            self._look_at(graph, s.atom.args)
-        dropped = self._feel_hand(graph, s)
+
+    def _relocate_involved(self, graph: SceneGraph, s: Situation, dropped: list[str]) -> list[str]:
+        """Re-locate the portable things the situation is about (and what the hand dropped) from
+        a fresh frame; returns those that are lost."""
         involved = tuple(dict.fromkeys((*(s.action.args if s.action else ()), *(s.atom.args if s.atom else ()),
                                         *dropped)))
         portable = [o for o in involved if self._portable(o)]
         if not portable:
-            return None
+            return []
         lost = self._relocate(graph, portable)
-        lost += [o for o in portable if o not in lost
-                 and not any(a.predicate in ("on", "inside", "holding") for a in graph.location(o))]
-        if not lost:
-            return None
-        return self._resurvey(graph, lost, worked=self._worked(s))
+        return lost + [o for o in portable if o not in lost
+                       and not any(a.predicate in ("on", "inside", "holding") for a in graph.location(o))]
 
     def _look_afresh(self, graph: SceneGraph, s: Situation) -> Survey:
         """A situation came back unchanged: re-survey for the items it is about (or round the

@@ -44,6 +44,7 @@ from py_trees.common import Status
 
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.recovery import RecoveryRoot
 
 #: text colours, readable on the viewer's light and dark themes alike
 STATUS_COLOURS: dict[Status, tuple[int, int, int]] = {
@@ -219,7 +220,9 @@ class TreeGraph:
         kids = list(root.children)
         labels = [label_of(c, folded=i != opened) for i, c in enumerate(kids)]
         column_w = max((size_of(l)[0] for l in labels), default=0.0)
-        root_label = label_of(root) + f" · {plural(len(self.actions), 'action')}"
+        root_label = label_of(root)
+        if not isinstance(root, RecoveryRoot):  # a recovery's steps are no plan's actions
+            root_label += f" · {plural(len(self.actions), 'action')}"
         d.node("0", root_label, root.status, 0.0, 0.0, None)
         y, h_prev = 0.0, size_of(root_label)[1]
         for i, (child, label) in enumerate(zip(kids, labels)):

@@ -51,6 +51,7 @@ from vap_bt.bt.apply_effects import ApplyEffects
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.context import ExecutionContext, Situation
 from vap_bt.bt.execute_skill import ExecuteSkill
+from vap_bt.bt.recovery import RecoveryRoot
 from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.viz import events as ev
 from vap_bt.viz import layout as L
@@ -116,6 +117,10 @@ class TreeRecorder:
         self._last_tick = tick
         self.stream.set_time(L.TICK, sequence=self._offset + tick)
         self.stream.set_time(L.TIME, timestamp=time.time())
+        if isinstance(tree.root, RecoveryRoot):
+            if self._ctx is not None:
+                self._log_recovery(tree)
+            return
         if ctx is None:
             return
         new_tree = tree is not self._tree
@@ -231,6 +236,23 @@ class TreeRecorder:
         if grown:
             self.stream.send_blueprint(L.blueprint(self._bounds.get("tree"), self._bounds.get("scene")),
                                        make_active=True, make_default=True)
+
+    def _log_recovery(self, tree: py_trees.trees.BehaviourTree) -> None:
+        """A recovery's tree (:mod:`vap_bt.bt.recovery`) drawn in the tree's panel while it runs,
+        and a line for it and for each step as it ends. Belief is not read here: a step's routine
+        may be changing it on another thread; its changes are logged at the next plan's first tick."""
+        new_tree = tree is not self._tree
+        if new_tree:
+            self._tree, self._graph = tree, TreeGraph.of(tree.root)
+            self._steps_done = 0
+            self._text(L.EV_PLAN, f"recovering: {tree.root.reason}", ev.WARN)
+            self._fit_views(tree=self._graph.extent())
+        steps = tree.root.children
+        done = sum(1 for c in steps if c.status == Status.SUCCESS)
+        for c in steps[self._steps_done:done]:
+            self._text(L.EV_PLAN, f"    {c.name}: done")
+        self._steps_done = max(self._steps_done, done)
+        self._log_tree(new_tree)
 
     def _log_tree(self, new_tree: bool) -> None:
         """The drawing, and with it the text, only when the drawing changed since the last tick:
