@@ -214,14 +214,15 @@ class Executive:
 
     def run(self) -> EpisodeOutcome:
         self.phase = "survey"
-        executor = make_executor(self.s.threads)
+        #: where work in flight runs: the checks' captures and questions, the recovery steps
+        self.executor = executor = make_executor(self.s.threads)
         try:
             return self._run(executor)
         finally:
             executor.shutdown(wait=False, cancel_futures=True)
 
     def _run(self, executor) -> EpisodeOutcome:
-        graph, survey = self._survey_in_tree(executor)
+        graph, survey = self._survey_in_tree()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
@@ -303,13 +304,14 @@ class Executive:
                 if situation.kind == "execution" and situation.action is not None:
                     ctx.doubted |= {lit.atom for lit in situation.action.preconditions
                                     if lit.positive and lit.atom.predicate != VIEW_PREDICATE}
-                recovered, survey = self._recover(graph, situation, times, ctx.executor, out, deadline)
+                recovered, survey = self._recover(graph, situation, times, out, deadline)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
                 if survey is not None:
                     out.surveys.append(survey)
                 try:
-                    plan = self._replan(graph, situation, plan, doubted, ctx.on_trial)
+                    plan = self._replan(graph, situation, plan, doubted, ctx.on_trial,
+                                        lambda look: self._drive(look, deadline, out))
                 except (UnsolvableError, PlanningTimeout) as exc:
                     out.reason = f"no plan after {situation.kind} situation: {exc}"
                     return out
@@ -339,7 +341,8 @@ class Executive:
         if back is not None:
             self.progress(f"    {back}")
 
-    def _replan(self, graph: SceneGraph, s: Situation, plan: Plan, doubted: Counter, on_trial: set[Atom]) -> Plan:
+    def _replan(self, graph: SceneGraph, s: Situation, plan: Plan, doubted: Counter, on_trial: set[Atom],
+                drive: Callable[[py_trees.trees.BehaviourTree], bool]) -> Plan:
         """A plan from the corrected belief. When the correction leaves none, the observation
         behind it is doubted: a camera that errs (as every real one does, and the more so about a
         relation it saw poorly) can report a fact that shuts every way to the goal — the cup "not
@@ -351,7 +354,8 @@ class Executive:
         still leaves no plan is then put on trial (``on_trial``): the action is tried against it —
         its skill fails if the camera was right, and that failure is the situation that stands.
         A check that could not see its atom, after whose look belief no longer holds what the plan
-        presumed, leaves belief as it was (no view denied it)."""
+        presumed, leaves belief as it was (no view denied it). The look a doubt takes is a
+        recovery tree, ``drive``-n like the situation's own."""
         try:
             return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
         except UnsolvableError:
@@ -370,7 +374,9 @@ class Executive:
         else:
             doubted[s.atom] += 1
             self.progress(f"    {s.atom} = {s.observed} leaves no plan: doubting it, looking again")
-            self._look_at(graph, s.atom.args)
+            look = Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
+                        self.executor, self._halt)
+            drive(recovery_tree(f"doubting {s.atom}", [look]))
         return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
 
     @staticmethod
@@ -410,11 +416,11 @@ class Executive:
         graph, sweep, prior_only = self._sweep_site()
         return self._finish_survey(graph, sweep, prior_only, self._ask_states(graph))
 
-    def _survey_in_tree(self, executor) -> tuple[SceneGraph, Survey]:
+    def _survey_in_tree(self) -> tuple[SceneGraph, Survey]:
         """BuildSceneGraph as a tree the executive ticks: the sweep of every room, then the VLM
         asked which doors and drawers are open; each step in flight, halted like any other."""
-        swept = Step("survey: sweep the rooms", self._sweep_site, executor, self._halt)
-        asked = Step("survey: ask what is open", lambda: self._ask_states(self.graph), executor, self._halt)
+        swept = Step("survey: sweep the rooms", self._sweep_site, self.executor, self._halt)
+        asked = Step("survey: ask what is open", lambda: self._ask_states(self.graph), self.executor, self._halt)
         self._drive(recovery_tree("the first survey", [swept, asked]), None)
         return self._finish_survey(*swept.result, asked.result)
 
@@ -533,7 +539,7 @@ class Executive:
                     graph.correct(Atom(complement, a.atom.args), not a.value)
         return answers
 
-    def _recover(self, graph: SceneGraph, s: Situation, times: int, executor, out: EpisodeOutcome,
+    def _recover(self, graph: SceneGraph, s: Situation, times: int, out: EpisodeOutcome,
                  deadline: float) -> tuple[bool, Survey | None]:
         """Handle situation ``s`` in a recovery tree (:mod:`vap_bt.bt.recovery`) the executive
         ticks — and the live view draws — until its steps are done: belief corrected from what was
@@ -542,6 +548,7 @@ class Executive:
         belief (``times``), a look round before the same plan. Returns whether it finished before
         the time budget ran out, and the re-survey it took, if any."""
         found: dict = {}
+        executor = self.executor
         steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, self._halt)]
         if s.kind == "unseen" and s.atom is not None:
             steps.append(Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
