@@ -30,6 +30,9 @@ EXIT_INTERRUPTED = 130  # the shell's 128 + SIGINT
 
 
 class VapBtError(Exception):
+    """An error the user can cause: the CLI prints its message and exits with ``exit_code``, never a
+    traceback."""
+
     exit_code = 1
 
 
@@ -56,6 +59,9 @@ class PlanningTimeout(VapBtError):
 
 
 class TransportError(VapBtError):
+    """A process the run needs is not there: a server that never came up or said ready, or one that went
+    away (a skill server, a VLM server, a simulator)."""
+
     exit_code = EXIT_TRANSPORT
 
 

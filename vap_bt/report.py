@@ -26,6 +26,8 @@ from pathlib import Path
 
 
 def versions() -> dict[str, str]:
+    """The installed version of Python and of each package a run's result depends on ("not installed" for
+    a missing one)."""
     out = {"python": platform.python_version()}
     for dist in ("vap-bt", "py-trees", "unified-planning", "up-fast-downward", "eclipse-zenoh", "pybullet", "pin"):
         try:
@@ -57,6 +59,7 @@ def verification_counts(verifications: list[dict]) -> dict:
 
 
 def command_line() -> str:
+    """The command that started this process, as a user would type it again (``vap-bt ...``)."""
     return " ".join(["vap-bt" if Path(sys.argv[0]).name in ("vap-bt", "cli.py") else sys.argv[0], *sys.argv[1:]])
 
 

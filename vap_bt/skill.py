@@ -23,6 +23,8 @@ ENTRY_POINT_GROUP = "vap_bt.skills"
 
 
 class GoalState(enum.Enum):
+    """A goal's state, as ROS actions name them: pending and active until it ends (:attr:`terminal`)."""
+
     PENDING = "pending"  # sent, not yet accepted
     ACTIVE = "active"  # accepted and running
     SUCCEEDED = "succeeded"
@@ -32,11 +34,15 @@ class GoalState(enum.Enum):
 
     @property
     def terminal(self) -> bool:
+        """Whether the goal has ended (succeeded, aborted, canceled or rejected) and will not change
+        again."""
         return self not in (GoalState.PENDING, GoalState.ACTIVE)
 
 
 @dataclass
 class SkillResult:
+    """How a goal ended: ``success``, a message for people and the skill's own ``data`` (JSON-able)."""
+
     success: bool
     message: str = ""
     data: dict[str, Any] = field(default_factory=dict)
@@ -71,6 +77,8 @@ class Hint:
 
 @dataclass
 class Feedback:
+    """A running goal's progress (0..1) and what it is doing now."""
+
     progress: float  # 0..1
     text: str = ""
 
@@ -97,7 +105,10 @@ class Skill(ABC):
         return True
 
     @abstractmethod
-    def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult: ...
+    def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult:
+        """Perform the action on ``args`` and say how it ended. Runs on a worker thread, blocks until
+        done, reports through ``ctx.feedback`` and returns early (unsuccessful) once ``ctx.cancelled()``
+        is true."""
 
 
 class WorldActionSkill(Skill):
@@ -160,6 +171,8 @@ class GoalHandle:
 class SkillClient(Protocol):
     """Starts goals on whatever hosts the skills (in-process or over Zenoh)."""
 
-    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> GoalHandle: ...
+    def send_goal(self, action: str, args: tuple[str, ...], hints: tuple[Hint, ...] = ()) -> GoalHandle:
+        """Start ``action(args)`` with the executive's ``hints``; returns at once with the goal's handle
+        (a rejected goal's handle says so)."""
 
     def close(self) -> None: ...

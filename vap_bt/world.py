@@ -71,16 +71,23 @@ class World(Protocol):
         nothing: skills move its robot (:mod:`vap_bt.robot.drivers`)."""
 
     # the robot interfaces (vap_bt.robot.camera.Camera and Body)
-    def capture(self, aim: Aim | None = None) -> Frame: ...
+    def capture(self, aim: Aim | None = None) -> Frame:
+        """Aim at ``aim`` (None: as the camera is) and take one frame
+        (:meth:`vap_bt.robot.camera.Camera.capture`)."""
 
     # without drivers, the world is its own camera service; with them, the skills' is
     # (skills.views.ViewService: it drives and aims, and the world only renders)
-    def goto_view(self, view: Viewpoint) -> bool: ...
+    def goto_view(self, view: Viewpoint) -> bool:
+        """Drive and aim to ``view``; False when it cannot be reached from here."""
 
-    def move_view(self, aim: Aim, direction: str) -> bool: ...
+    def move_view(self, aim: Aim, direction: str) -> bool:
+        """Move the viewpoint ``direction`` (one of ``VIEW_DIRECTIONS``) relative to ``aim``; False when
+        it cannot."""
 
     def state(self) -> RobotState: ...
 
-    def site_map(self) -> SiteMap: ...
+    def site_map(self) -> SiteMap:
+        """The map the robot is given before it looks: rooms, doors, furniture (no items, nothing that
+        changes)."""
 
     def close(self) -> None: ...

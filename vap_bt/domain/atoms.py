@@ -30,6 +30,7 @@ class Atom:
         return f"{self.predicate}({', '.join(self.args)})" if self.args else self.predicate
 
     def pddl(self) -> str:
+        """The atom in PDDL's notation, ``(on cup table)``."""
         return "(" + " ".join((self.predicate, *self.args)) + ")"
 
     @classmethod

@@ -46,6 +46,8 @@ def rewrite(src: Source) -> str:
 
 
 def blank_comments(text: str) -> str:
+    """``text`` with every ``;`` comment replaced by spaces of the same length, so that offsets and line
+    numbers still match the file."""
     return re.sub(r";[^\n]*", lambda m: " " * len(m.group(0)), text)
 
 

@@ -78,6 +78,8 @@ def _join(kind: type, parts, absorbing: Formula) -> Formula:
 
 
 def holds(f: Formula, state: frozenset[Atom] | set[Atom]) -> bool:
+    """Whether ground formula ``f`` is true in ``state`` (closed world: an atom not in the state is
+    false)."""
     if isinstance(f, Literal):
         return (f.atom in state) == f.positive
     if isinstance(f, And):

@@ -80,6 +80,8 @@ class GroundedTask:
     effects: list[_Effects]
 
     def ids(self, atoms) -> frozenset[int]:
+        """The ids of those of ``atoms`` the grounded task knows (an atom no instance mentions has none
+        and is dropped)."""
         return frozenset(self.index[a] for a in atoms if a in self.index)
 
     def successor(self, state: IdSet, a: int) -> IdSet:

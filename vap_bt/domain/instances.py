@@ -84,6 +84,7 @@ class UPInstances:
 
     @property
     def has_costs(self) -> bool:
+        """Whether the problem has an action-cost metric (without one every action costs 1)."""
         return self._metric is not None
 
     def goal(self) -> Formula:

@@ -48,6 +48,7 @@ class StateDiff:
     deleted: frozenset[Atom]
 
     def apply(self, state: frozenset[Atom] | set[Atom]) -> frozenset[Atom]:
+        """The state after the difference: ``state`` less the deleted atoms, plus the added ones."""
         return frozenset((set(state) - self.deleted) | self.added)
 
 
@@ -72,10 +73,12 @@ class GroundAction:
 
     @cached_property
     def pre_pos(self) -> frozenset[Atom]:
+        """The atoms the precondition needs true in every case."""
         return frozenset(l.atom for l in self.preconditions if l.positive)
 
     @cached_property
     def pre_neg(self) -> frozenset[Atom]:
+        """The atoms the precondition needs false in every case."""
         return frozenset(l.atom for l in self.preconditions if not l.positive)
 
     @property
@@ -90,6 +93,8 @@ class GroundAction:
 
     @cached_property
     def may_delete(self) -> frozenset[Atom]:
+        """Every atom the action deletes in some state: unconditional deletes and those of any
+        conditional effect."""
         return self.delete.union(*(e.delete for e in self.conditional))
 
     @cached_property
@@ -99,6 +104,7 @@ class GroundAction:
         return frozenset((*(l.atom for l in self.preconditions), *conds)) | self.may_add | self.may_delete
 
     def applicable(self, state: frozenset[Atom] | set[Atom]) -> bool:
+        """Whether the whole precondition (literals and formula) holds in ``state``."""
         return self.pre_pos <= state and not (self.pre_neg & state) and holds(self.condition, state)
 
     def support(self, state: frozenset[Atom] | set[Atom]) -> tuple[Literal, ...]:
@@ -119,6 +125,8 @@ class GroundAction:
         return StateDiff(frozenset(a for a in add if a not in state), frozenset(delete.intersection(state) - add))
 
     def apply(self, state: frozenset[Atom] | set[Atom]) -> frozenset[Atom]:
+        """The state after the action in ``state`` (PDDL semantics, :meth:`diff`); applicability is not
+        checked."""
         return self.diff(state).apply(state)
 
 
@@ -145,7 +153,8 @@ class ActionSchema:
 class Instantiator(Protocol):
     """Grounds action instances (see :mod:`vap_bt.domain.instances`)."""
 
-    def ground(self, name: str, args: tuple[str, ...]) -> GroundAction: ...
+    def ground(self, name: str, args: tuple[str, ...]) -> GroundAction:
+        """The action ``name`` with its parameters bound to ``args``, valid in any state."""
 
     def candidates(self, name: str, limit: int | None = None) -> list[tuple[str, ...]]:
         """Argument tuples of ``name`` worth grounding (rigid facts rule the others out); with
@@ -169,6 +178,7 @@ class DomainKnowledge:
     _ground: dict[tuple[str, tuple[str, ...]], GroundAction] = field(default_factory=dict, repr=False)
 
     def is_subtype(self, t: str, ancestor: str) -> bool:
+        """Whether type ``t`` is ``ancestor`` or descends from it (every type descends from ``object``)."""
         while t is not None:
             if t == ancestor:
                 return True
@@ -202,6 +212,8 @@ class DomainKnowledge:
         return pairs
 
     def is_rigid(self, predicate: str) -> bool:
+        """Whether no action changes ``predicate``: its atoms are map knowledge, fixed by the initial
+        state."""
         return predicate not in self.fluent_predicates
 
     def ground(self, name: str, args: tuple[str, ...]) -> GroundAction:

@@ -92,9 +92,12 @@ class Source:
 
     @classmethod
     def read(cls, path: Path | str) -> "Source":
+        """The PDDL file at ``path`` (not UTF-8: an :class:`InputError`)."""
         return cls(str(path), read_text(path))
 
     def line_of(self, pattern: str) -> int | None:
+        """The 1-based line of the first match of regex ``pattern`` outside comments (case-insensitive),
+        or None."""
         m = re.search(pattern, _without_comments(self.text), flags=re.IGNORECASE)
         return self.text.count("\n", 0, m.start()) + 1 if m else None
 

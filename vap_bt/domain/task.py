@@ -17,6 +17,9 @@ from vap_bt.domain.knowledge import DomainKnowledge, GroundAction
 
 @dataclass(frozen=True)
 class PlanningTask:
+    """One planning problem over a domain: typed objects, initial state, goal; immutable, so that each
+    replan is :meth:`with_state` of the same task."""
+
     knowledge: DomainKnowledge
     objects: dict[str, str]  # name -> type
     init: frozenset[Atom]
@@ -26,12 +29,15 @@ class PlanningTask:
     up_problem: Any = None  # the unified-planning problem this task was read from, if any
 
     def with_state(self, init: Iterable[Atom], goal: Iterable[Literal] | None = None) -> "PlanningTask":
+        """The same task from initial state ``init`` (and ``goal``, if given)."""
         return replace(self, init=frozenset(init), goal=tuple(goal) if goal is not None else self.goal)
 
     def goal_holds(self, state: frozenset[Atom] | set[Atom]) -> bool:
+        """Whether every goal literal holds in ``state``."""
         return all((l.atom in state) == l.positive for l in self.goal)
 
     def objects_of(self, type_name: str) -> list[str]:
+        """The objects of type ``type_name`` or a subtype of it, sorted."""
         k = self.knowledge
         return sorted(o for o, t in self.objects.items() if k.is_subtype(t, type_name))
 

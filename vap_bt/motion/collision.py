@@ -44,6 +44,7 @@ class SceneBoxes:
 
     @classmethod
     def empty(cls) -> SceneBoxes:
+        """No obstacles: what a chain is checked against when only its own links matter."""
         return cls(np.zeros((0, 4, 4)), np.zeros((0, 3)))
 
     @classmethod
@@ -142,6 +143,8 @@ class CollisionChecker:
         return CollisionChecker(self.kin, boxes, margin, self.scene_margins, self.attached)
 
     def in_collision(self, q: np.ndarray) -> bool:
+        """Whether the chain at joint values ``q`` touches itself, the scene boxes or the held item
+        (stops at the first contact)."""
         return bool(
             pin.computeCollisions(
                 self.kin.model, self.kin.data, self.geometry, self.data, np.asarray(q, dtype=float), True

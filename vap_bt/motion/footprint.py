@@ -32,10 +32,12 @@ class Obb:
 
     @classmethod
     def aabb(cls, lo, hi) -> "Obb":
+        """The axis-aligned box between corners ``lo`` and ``hi``."""
         lo, hi = np.asarray(lo, float), np.asarray(hi, float)
         return cls((lo + hi) / 2, np.eye(3), (hi - lo) / 2)
 
     def corners(self) -> np.ndarray:
+        """Its eight corners (8, 3), in the frame its centre is given in."""
         signs = np.array(list(itertools.product((-1, 1), repeat=3)), float)
         return self.center + (signs * self.half) @ self.R.T
 
@@ -49,6 +51,7 @@ class Obb:
         return np.all(local <= self.half + margin, axis=1)
 
     def pose(self) -> np.ndarray:
+        """Its centre and axes as a 4x4 transform."""
         T = np.eye(4)
         T[:3, :3], T[:3, 3] = self.R, self.center
         return T
@@ -114,6 +117,8 @@ def placed(local, pose) -> np.ndarray:
 
 
 def footprint(pose) -> np.ndarray:
+    """The base's rectangle (``FOOTPRINT``) in the world for base ``pose`` (x, y, yaw),
+    counter-clockwise."""
     L, W = FOOTPRINT
     return placed([(L, W), (-L, W), (-L, -W), (L, -W)], pose)
 

@@ -41,6 +41,8 @@ from vap_bt.motion.se3 import wrap_angle
 
 @dataclass(frozen=True)
 class IKOptions:
+    """Tolerances and search budget of :func:`solve`; the defaults are the arm's."""
+
     position_tolerance: float = 1e-4  # m
     orientation_tolerance: float = 1e-3  # rad
     max_iterations: int = 60  # per seed
@@ -57,6 +59,9 @@ class IKOptions:
 
 @dataclass(frozen=True)
 class IKResult:
+    """What the search found: ``q`` is the solution when ``success``, else the best configuration met,
+    with ``reason`` saying why none was accepted."""
+
     success: bool
     q: np.ndarray  # best configuration found (the solution when success)
     position_error: float  # m

@@ -84,6 +84,7 @@ class Kinematics:
 
     @property
     def dof(self) -> int:
+        """How many joints the reduced chain moves (the length of ``q``)."""
         return self.model.nq
 
     @cached_property
@@ -94,6 +95,8 @@ class Kinematics:
         return revolute & (self.upper - self.lower >= 2.0 * np.pi - 1e-9)
 
     def frame_id(self, frame: str) -> int:
+        """Pinocchio's index of the URDF frame (link or joint) named ``frame``; KeyError when the model
+        has none."""
         fid = self.model.getFrameId(frame)
         if fid >= self.model.nframes:
             raise KeyError(f"no frame {frame!r} in the model")

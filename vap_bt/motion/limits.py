@@ -26,10 +26,12 @@ class Limits:
 
     @property
     def dof(self) -> int:
+        """How many joints the limits are for."""
         return len(self.names)
 
     @classmethod
     def of(cls, group: robots.JointGroup) -> Limits:
+        """The limits of a joint group of a robot's configuration, as arrays."""
         return cls(
             names=group.joints,
             lower=np.array(group.lower),
@@ -46,8 +48,10 @@ class Limits:
 
 
 def arm_limits(robot: str = robots.DEFAULT_ROBOT) -> Limits:
+    """The arm's joint limits from ``robot``'s YAML configuration."""
     return Limits.of(robots.load_config(robot).arm)
 
 
 def base_limits(robot: str = robots.DEFAULT_ROBOT) -> Limits:
+    """The base's limits on (x, y, yaw) from ``robot``'s YAML configuration."""
     return Limits.of(robots.load_config(robot).base)

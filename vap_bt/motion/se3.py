@@ -27,6 +27,7 @@ def rpy_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:
 
 
 def make_pose(position=(0.0, 0.0, 0.0), rotation: np.ndarray | None = None) -> np.ndarray:
+    """A 4x4 transform from a translation and a 3x3 rotation (None: identity)."""
     T = np.eye(4)
     if rotation is not None:
         T[:3, :3] = rotation
@@ -49,6 +50,8 @@ def planar_pose(x: float, y: float, yaw: float) -> np.ndarray:
 
 
 def inverse(T: np.ndarray) -> np.ndarray:
+    """The inverse of the rigid transform ``T`` (transpose the rotation: cheaper and exact, unlike a
+    general matrix inverse)."""
     R, p = T[:3, :3], T[:3, 3]
     out = np.eye(4)
     out[:3, :3] = R.T

@@ -106,6 +106,8 @@ class OnlineTracker:
         self.finished = True
 
     def reset(self, position, velocity=None, acceleration=None) -> None:
+        """Start again from ``position`` (moving at ``velocity`` and ``acceleration``, zero unless given)
+        and hold it there (``finished`` until :meth:`step` is given another target)."""
         zero = np.zeros(self.limits.dof)
         self._inp = _input(
             self.limits,
@@ -165,6 +167,7 @@ def track(reference: Trajectory, limits: Limits, *, lookahead: float = 0.05, max
 
 
 def arm_tracker(dt: float = 0.01, robot: str = robots.DEFAULT_ROBOT) -> OnlineTracker:
+    """An :class:`OnlineTracker` under ``robot``'s arm limits, stepped every ``dt`` seconds."""
     return OnlineTracker(arm_limits(robot), dt)
 
 

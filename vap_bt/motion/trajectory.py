@@ -24,10 +24,12 @@ class Trajectory:
 
     @property
     def duration(self) -> float:
+        """Seconds from the first sample to the last."""
         return float(self.t[-1])
 
     @property
     def dof(self) -> int:
+        """How many joints each sample holds."""
         return self.q.shape[1]
 
     def jerk(self) -> np.ndarray:
@@ -49,11 +51,15 @@ class LimitUsage:
     position: float  # > 0 means outside [lower, upper] by that much (m or rad); <= 0 inside
 
     def within(self, tolerance: float = 1e-6, check_jerk: bool = False) -> bool:
+        """Whether velocity and acceleration (and jerk, if ``check_jerk``) stay within their limits and
+        the positions within their range, up to ``tolerance``."""
         ok = self.velocity <= 1 + tolerance and self.acceleration <= 1 + tolerance and self.position <= tolerance
         return ok and (not check_jerk or self.jerk <= 1 + tolerance)
 
 
 def limit_usage(traj: Trajectory, limits: Limits) -> LimitUsage:
+    """How close ``traj`` comes to ``limits``: per quantity, the peak over every joint and sample of
+    |value| / limit."""
     jerk = traj.jerk()
     return LimitUsage(
         velocity=float(np.max(np.abs(traj.qd) / limits.velocity)),

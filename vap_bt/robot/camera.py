@@ -63,4 +63,5 @@ class Body(Protocol):
 
     def state(self) -> RobotState: ...
 
-    def site_map(self) -> SiteMap: ...
+    def site_map(self) -> SiteMap:
+        """The map the localizer works in: rooms, doors and furniture, nothing that changes."""

@@ -47,6 +47,7 @@ class JointTrajectory:
 
     @property
     def duration(self) -> float:
+        """Seconds from the first sample to the last."""
         return float(self.times[-1])
 
 
@@ -78,14 +79,18 @@ class GripperState:
 class Arm(Protocol):
     """A joint-space arm controller."""
 
-    def joint_state(self) -> JointState: ...
+    def joint_state(self) -> JointState:
+        """The measured joint positions (rad) and velocities (rad/s)."""
 
     def tcp_pose(self) -> np.ndarray:
         """The tool centre point's pose in the map frame (4x4)."""
 
-    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> MotionResult: ...
+    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> MotionResult:
+        """Track ``trajectory`` from the current joint positions; blocks until it is done, stopped by
+        ``cancelled()`` or refused, and says which."""
 
-    def stop(self) -> None: ...
+    def stop(self) -> None:
+        """Stop the arm where it is now (decelerating within its limits)."""
 
 
 class Gripper(Protocol):
@@ -112,10 +117,13 @@ class Base(Protocol):
     def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> MotionResult:
         """Drive through ``path`` (x, y, yaw) at ``speed`` (share of the base's limits)."""
 
-    def stop(self) -> None: ...
+    def stop(self) -> None:
+        """Stop the base where it is now (zero velocity command)."""
 
 
 class WristCamera(Protocol):
     """The wrist RGB-D camera with its instance detector: one frame of what it sees now."""
 
-    def capture(self) -> Frame: ...
+    def capture(self) -> Frame:
+        """One aligned colour + depth frame with the detector's masks, in the map frame; it moves
+        nothing."""

@@ -33,6 +33,8 @@ class RoomInfo:
     bounds: tuple[float, float, float, float] | None = None
 
     def contains(self, x: float, y: float, margin: float = 0.0) -> bool:
+        """Whether (x, y) in the map frame lies in the room, at least ``margin`` m inside its walls; a
+        room without bounds contains nothing."""
         if self.bounds is None:
             return False
         x0, y0, x1, y1 = self.bounds
@@ -105,6 +107,7 @@ class FurnitureInfo:
 
     @property
     def front(self) -> tuple[float, float] | None:
+        """The unit vector (x, y) of the front's outward normal, or None without a pose."""
         if self.pose is None:
             return None
         return (math.cos(self.pose[2]), math.sin(self.pose[2]))
@@ -120,15 +123,20 @@ class SiteMap:
     facts: frozenset[Atom] = field(default_factory=frozenset)  # rigid: connects, openable, fillable, clear
 
     def room(self, name: str) -> RoomInfo | None:
+        """The room called ``name``, or None."""
         return next((r for r in self.rooms if r.name == name), None)
 
     def room_at(self, x: float, y: float) -> str | None:
+        """The room whose bounds contain (x, y) in the map frame, or None (a doorway, outside, or no
+        geometry)."""
         return next((r.name for r in self.rooms if r.contains(x, y)), None)
 
     def piece(self, name: str) -> FurnitureInfo | None:
+        """The piece of furniture called ``name``, or None."""
         return next((f for f in self.furniture if f.name == name), None)
 
     def door(self, name: str) -> DoorInfo | None:
+        """The door called ``name``, or None."""
         return next((d for d in self.doors if d.name == name), None)
 
     def floors(self) -> dict[str, str]:

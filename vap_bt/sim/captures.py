@@ -99,6 +99,8 @@ class CaptureRecord:
 
     @property
     def picture_key(self) -> str:
+        """The key the simulated VLM draws this picture's persistent errors under: the picture's
+        identity, else the pixels' hash, else the frame id."""
         return self.picture or self.image_sha1 or self.frame_id
 
     def resolve(self, name: str, identified: dict[str, int]) -> str | None:
@@ -116,6 +118,8 @@ class CaptureRecord:
         return None if None in args else Atom(atom.predicate, args)
 
     def holds(self, atom: Atom) -> bool:
+        """Whether ``atom`` held when the frame was taken: read from the oracle on first asking and
+        remembered; a first reading after the world stepped is the truth now, counted as ``late``."""
         if atom not in self._truth:
             if self.now() != self.step:
                 self.late += 1
@@ -132,6 +136,8 @@ class CaptureLog:
         self._by_image: dict[str, str] = {}  # image hash -> the latest frame id with those pixels
 
     def add(self, record: CaptureRecord) -> None:
+        """Keep ``record`` under its frame id (and its pixels' hash), forgetting the oldest beyond
+        ``size``."""
         self._records[record.frame_id] = record
         if record.image_sha1 is not None:
             self._by_image[record.image_sha1] = record.frame_id
@@ -141,6 +147,7 @@ class CaptureLog:
                 del self._by_image[old.image_sha1]
 
     def get(self, frame_id: str) -> CaptureRecord | None:
+        """The record of frame ``frame_id``, or None (too old, or never taken here)."""
         return self._records.get(frame_id)
 
     def by_image(self, sha1: str) -> CaptureRecord | None:
@@ -151,11 +158,13 @@ class CaptureLog:
         return self._records.get(frame_id) if frame_id is not None else None
 
     def clear(self) -> None:
+        """Forget every record (a world reset: frame ids start again)."""
         self._records.clear()
         self._by_image.clear()
 
     @property
     def late(self) -> int:
+        """How many truth readings the kept records made after the world had stepped (should be 0)."""
         return sum(r.late for r in self._records.values())
 
 

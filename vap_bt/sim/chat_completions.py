@@ -59,11 +59,13 @@ class BadRequest(Exception):
         self.message, self.param, self.status = message, param, status
 
     def body(self) -> dict:
+        """The JSON body to answer with (OpenAI's error shape; a 404 is a NotFoundError)."""
         kind = "NotFoundError" if self.status == 404 else "BadRequestError"
         return error_body(self.message, kind, self.param, self.status)
 
 
 def error_body(message: str, kind: str, param: str | None, code: int) -> dict:
+    """An error reply in OpenAI's shape: ``{"error": {"message", "type", "param", "code"}}``."""
     return {"error": {"message": message, "type": kind, "param": param, "code": code}}
 
 

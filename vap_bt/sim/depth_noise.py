@@ -120,6 +120,8 @@ class DepthNoiseModel:
         return np.square(z) * (self.household * self.subpixel / (self.focal_px * self.baseline))
 
     def describe(self) -> dict:
+        """The model's parameters with the derived focal length, minimum range and RMS error at 1, 2 and
+        3 m, for the report."""
         return {**asdict(self), "focal_px": round(self.focal_px, 1), "min_range": round(self.min_range, 3),
                 "rms_at_1m": round(float(self.sigma(1.0)), 4), "rms_at_2m": round(float(self.sigma(2.0)), 4),
                 "rms_at_3m": round(float(self.sigma(3.0)), 4)}

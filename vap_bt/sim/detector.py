@@ -113,6 +113,7 @@ class DetectorModel:
     relation_noise: float = 1.0
 
     def pixel_threshold(self, width: int, height: int) -> int:
+        """Fewest visible pixels for a thing to be detectable in a ``width`` x ``height`` image."""
         return max(self.min_pixels, int(self.min_fraction * width * height))
 
     def error_at(self, observability: float) -> float:
@@ -122,6 +123,8 @@ class DetectorModel:
         return cdf(-observability * probit(self.accuracy) / self.relation_noise)
 
     def describe(self) -> dict:
+        """The model's parameters, its sources, the symbolic relation-report rule and its error at a few
+        observabilities, for the report."""
         return {**asdict(self), "source": "/work/notes/perception_sources.md (sections 6, (f)); see vap_bt/sim/detector.py",
                 "relations": "symbolic: each report right iff o * probit(accuracy) + relation_noise * "
                 "(sqrt(view_correlation) e_class + sqrt(1 - view_correlation) e_atom) > 0, o the relation's "

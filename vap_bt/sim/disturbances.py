@@ -86,6 +86,7 @@ class DisturbanceModel:
         return [Disturbance(MOVED, after, target, rng.choice(places))] if places else []
 
     def describe(self) -> dict:
+        """The model's parameters, for the report."""
         return asdict(self)
 
 

@@ -74,6 +74,7 @@ class LocalizationModel:
         return self.bound * self.sigma_yaw
 
     def describe(self) -> dict:
+        """The model's parameters (yaw in degrees too), for the report."""
         return {**asdict(self), "sigma_yaw_deg": round(math.degrees(self.sigma_yaw), 3)}
 
 
@@ -146,6 +147,8 @@ class Localization:
         return self._lift() @ np.asarray(T, float)
 
     def true_T(self, T: np.ndarray) -> np.ndarray:
+        """A 4x4 pose the robot gives in its believed map frame, in the true one (the inverse of
+        :meth:`believed_T`)."""
         return np.linalg.inv(self._lift()) @ np.asarray(T, float)
 
     def _lift(self) -> np.ndarray:

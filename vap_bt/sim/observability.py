@@ -95,6 +95,8 @@ def size_quality(share: float) -> float:
 
 
 def label_of(name: str, record: CaptureRecord) -> str:
+    """The class a detector or a model reads ``name`` as in this frame (``bottle`` for bottle1); the name
+    itself when the record has none."""
     return record.labels.get(name, name)
 
 
@@ -178,12 +180,17 @@ class Observability:
     # -- how the picture shows one object ----------------------------------------------------
 
     def view(self, name: str) -> ObjectView:
+        """How the frame shows what ``name``'s relations need (contact, interior, leaf); nothing shown
+        when the record has no view of it."""
         return self.record.views.get(name, ObjectView())
 
     def seen(self, name: str) -> float:
+        """The share of ``name`` the picture shows, in [0, 1]."""
         return _seen(name, self.record)
 
     def shown(self, name: str) -> bool:
+        """Whether ``name`` counts as in the picture: a room always; else seen, and covering at least
+        :data:`SHOWN_PIXELS` in a frame with pixels."""
         if name in self.rooms:
             return True
         if self.seen(name) <= 0.0:
@@ -192,6 +199,8 @@ class Observability:
         return pixels is None or pixels >= SHOWN_PIXELS
 
     def size(self, name: str) -> float:
+        """How much ``name``'s size in the image lets a model read it (:func:`size_quality`); 1 in a
+        world without pixels."""
         if not self.record.masks:  # no pixels: the world's visibility draw stands for size too
             return 1.0
         return size_quality(self.record.masks.get(name, ((), 0.0))[1])

@@ -36,6 +36,9 @@ FILL = {"box": 0.9, "cylinder": 0.75, "sphere": 0.5, "furniture": 0.85, "door": 
 
 @dataclass(frozen=True)
 class Render:
+    """One rendered camera image: colour, depth (m), the body (and link) each pixel shows, and the
+    optical frame's pose in the world."""
+
     rgb: np.ndarray  # (H, W, 3) uint8
     depth: np.ndarray  # (H, W) float32 metres
     bodies: np.ndarray  # (H, W) int32 body id, -1 background
@@ -45,11 +48,13 @@ class Render:
 
     @property
     def intrinsics(self) -> tuple[float, float, float, float]:
+        """The pinhole intrinsics (fx, fy, cx, cy) in pixels."""
         c = self.camera
         return (c.fx, c.fy, c.cx, c.cy)
 
     @property
     def pose7(self) -> tuple[float, ...]:
+        """The optical frame's pose as position (x, y, z) and quaternion (x, y, z, w), world frame."""
         return (*map(float, self.pose[:3, 3]), *map(float, quat_of(self.pose[:3, :3])))
 
     def pixel_threshold(self) -> int:
@@ -174,6 +179,8 @@ def _edges(rows: np.ndarray, cols: np.ndarray, h: int, w: int) -> tuple[str, ...
 
 
 def pixel_counts(r: Render, names: dict[int, str]) -> dict[str, int]:
+    """How many pixels of ``r`` show each named thing (the bodies in ``names``; others, and the
+    background, are not counted)."""
     ids, counts = np.unique(r.bodies, return_counts=True)
     out: dict[str, int] = {}
     for b, n in zip(ids.tolist(), counts.tolist()):

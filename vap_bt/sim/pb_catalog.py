@@ -1,10 +1,11 @@
 """The catalogue: what each kind of furniture and item looks like, as data (``catalog.yaml``).
 
 A task file names things the way a person would (``kitchen_sink``, ``wood1``, ``garden_bench``).
-The physical world needs shapes, sizes, colours and articulations for them. :func:`kind_of`
-resolves a name to a catalogue kind — the exact name, then any word of the name (digits
-stripped), then an alias, then the generic kind of the thing's PDDL type — so that no scene needs
-code of its own and an unknown name still gets a sensible body.
+The physical world needs shapes, sizes, colours and articulations for them.
+:meth:`Catalog.furniture_kind` and :meth:`Catalog.item_kind` resolve a name to a catalogue kind —
+the exact name or its alias, then the name's words from the last (digits stripped) or their
+aliases, then the generic kind of the thing's PDDL type — so that no scene needs code of its own
+and an unknown name still gets a sensible body.
 """
 
 from __future__ import annotations
@@ -24,6 +25,9 @@ Color = tuple[float, float, float, float]
 
 @dataclass(frozen=True)
 class Cavity:
+    """The hollow of a container or sink, in its frame: ``z`` range, wall thickness, and the side it is
+    reached through."""
+
     z: tuple[float, float]
     wall: float
     open: str  # "front" | "top"
@@ -41,6 +45,7 @@ class DoorSpec:
 
     @property
     def prismatic(self) -> bool:
+        """Whether it slides (a drawer) rather than swings."""
         return self.slide is not None
 
     @property
@@ -51,6 +56,9 @@ class DoorSpec:
 
 @dataclass(frozen=True)
 class FurnitureKind:
+    """What a kind of furniture looks like: outer box ``size`` (m), colours, the optional cavity, door,
+    lamp, stand, legs and tap, and the ``standoff`` of the base when looking at it."""
+
     name: str
     type: str
     size: tuple[float, float, float]
@@ -67,6 +75,9 @@ class FurnitureKind:
 
 @dataclass(frozen=True)
 class ItemKind:
+    """What a kind of item looks like: shape and size (m; a cylinder's is (radius, height)), mass (kg),
+    colours."""
+
     name: str
     shape: str  # box | cylinder | sphere
     size: tuple[float, ...]
@@ -89,6 +100,9 @@ class ItemKind:
 
 @dataclass(frozen=True)
 class RoomStyle:
+    """How every room is built: default floor size, walls, doorway width, door colour, gap between
+    furniture."""
+
     width: float
     depth: float
     wall_height: float
@@ -103,6 +117,9 @@ class RoomStyle:
 
 @dataclass(frozen=True)
 class Catalog:
+    """Every kind of furniture and item, the room style, and the thresholds at which an articulation
+    counts as closed or open."""
+
     room: RoomStyle
     furniture: dict[str, FurnitureKind]
     items: dict[str, ItemKind]
@@ -114,9 +131,12 @@ class Catalog:
     half_filled_color: Color
 
     def furniture_kind(self, name: str, pddl_type: str) -> FurnitureKind:
+        """The kind of furniture named ``name``: the exact name, an alias, or its last word that names a
+        kind, else the generic kind of ``pddl_type``."""
         return self.furniture[_resolve(name, self.furniture, self.aliases, self.generic[pddl_type])]
 
     def item_kind(self, name: str, pddl_type: str) -> ItemKind:
+        """The kind of item named ``name``, resolved as :meth:`furniture_kind` does."""
         return self.items[_resolve(name, self.items, self.aliases, self.generic[pddl_type])]
 
 
@@ -168,6 +188,7 @@ def _item(name: str, d: dict) -> ItemKind:
 
 @cache
 def load_catalog(path: Path = CATALOG_PATH) -> Catalog:
+    """Read the catalogue (``catalog.yaml`` beside this module by default), once per path."""
     raw = yaml.safe_load(Path(path).read_text())
     r = raw["room"]
     room = RoomStyle(

@@ -103,7 +103,9 @@ class Simulation(Protocol):
     def step(self) -> None:
         """One physics step, with the rules and the injection evaluated after it."""
 
-    def capture(self, aim=None) -> Frame: ...
+    def capture(self, aim=None) -> Frame:
+        """A wrist-camera frame of the world now, with its capture record
+        (:meth:`PybulletWorld.capture`)."""
 
 
 def _hold(robot: Robot, arm: bool = True, base: bool = True) -> None:
@@ -448,4 +450,5 @@ class Drivers:
 
     @classmethod
     def of(cls, sim: Simulation) -> Drivers:
+        """The four drivers over one simulation."""
         return cls(PybulletArm(sim), PybulletGripper(sim), PybulletBase(sim), PybulletWristCamera(sim))

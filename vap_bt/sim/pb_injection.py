@@ -187,6 +187,9 @@ class Injection:
     # ------------------------------------------------------------ every physics step
 
     def step(self) -> None:
+        """After one physics step, carry out the running action's drawn situation when its moment comes:
+        a handle grip slips once the leaf has moved far enough, the held item drops once its trigger is
+        reached."""
         if self._ghosts:
             self._ghosts = [g for g in self._ghosts if not self._apart(g)]
         a = self.active

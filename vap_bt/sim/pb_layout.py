@@ -35,6 +35,8 @@ Pose2 = tuple[float, float, float]  # x, y, yaw
 
 @dataclass(frozen=True)
 class RoomPlan:
+    """A room's floor rectangle in the world (m), and its place ``index`` in the row of rooms."""
+
     name: str
     x0: float
     x1: float
@@ -43,15 +45,19 @@ class RoomPlan:
     index: int
 
     def contains(self, x: float, y: float, margin: float = 0.0) -> bool:
+        """Whether (x, y) lies on the room's floor, grown by ``margin`` m on every side."""
         return self.x0 - margin <= x <= self.x1 + margin and self.y0 - margin <= y <= self.y1 + margin
 
     @property
     def center(self) -> tuple[float, float]:
+        """The middle of the floor (x, y)."""
         return ((self.x0 + self.x1) / 2, (self.y0 + self.y1) / 2)
 
 
 @dataclass(frozen=True)
 class DoorPlan:
+    """A doorway in the wall at ``x`` between rooms ``low`` and ``high``, its leaf hinged at ``hinge_y``."""
+
     name: str
     low: str  # room on the low-x side
     high: str  # room on the high-x side
@@ -62,11 +68,15 @@ class DoorPlan:
 
     @property
     def center_y(self) -> float:
+        """The y of the doorway's middle."""
         return self.hinge_y + self.width / 2
 
 
 @dataclass(frozen=True)
 class FurniturePlan:
+    """Where a piece of furniture stands: its centre on the floor (x, y), ``yaw`` of its local frame, and
+    its initial articulation ``state`` (open, closed, None)."""
+
     name: str
     kind: FurnitureKind
     room: str
@@ -76,16 +86,19 @@ class FurniturePlan:
     state: str | None
 
     def to_world(self, local) -> np.ndarray:
+        """A point (x, y, z) in the furniture's frame, in the world."""
         c, s = math.cos(self.yaw), math.sin(self.yaw)
         lx, ly, lz = local
         return np.array([self.x + c * lx - s * ly, self.y + s * lx + c * ly, lz])
 
     def direction(self, local_xy) -> np.ndarray:
+        """A horizontal direction (x, y) in the furniture's frame, in the world (z = 0)."""
         c, s = math.cos(self.yaw), math.sin(self.yaw)
         return np.array([c * local_xy[0] - s * local_xy[1], s * local_xy[0] + c * local_xy[1], 0.0])
 
     @property
     def front(self) -> np.ndarray:
+        """The world direction its front faces (local +y)."""
         return self.direction((0.0, 1.0))
 
     def standoff(self, lateral: float = 0.0, extra: float = 0.0) -> Pose2:
@@ -97,6 +110,9 @@ class FurniturePlan:
 
 @dataclass(frozen=True)
 class ItemPlan:
+    """Where an item starts: its centre and yaw in the world, and what it is ``on`` or ``inside`` (its
+    ``support``; None on the floor or in the hand)."""
+
     name: str
     kind: ItemKind
     relation: str  # "on" | "inside" | "held"
@@ -107,6 +123,8 @@ class ItemPlan:
 
 @dataclass(frozen=True)
 class ScenePlan:
+    """The whole arrangement: every room, door, piece of furniture and item, and the robot's start pose."""
+
     rooms: dict[str, RoomPlan]
     doors: dict[str, DoorPlan]
     furniture: dict[str, FurniturePlan]
@@ -116,9 +134,11 @@ class ScenePlan:
 
     @property
     def corridor_y(self) -> float:
+        """The y of the free lane through the middle of every room, where the base drives."""
         return self.depth / 2
 
     def room_at(self, x: float, y: float) -> str | None:
+        """The room whose floor holds (x, y), or None (outside every room)."""
         for r in self.rooms.values():
             if r.contains(x, y):
                 return r.name
@@ -146,6 +166,9 @@ def _room_order(layout: Layout) -> list[str]:
 
 
 def plan_scene(layout: Layout, catalog: Catalog, seed: int = 0) -> ScenePlan:
+    """Arrange ``layout`` with the catalogue's kinds: rooms in a row joined by doors, furniture along the
+    back walls, items on, in or beside their supports, jittered by ``seed``. A door between rooms that
+    cannot be row neighbours is a ValueError."""
     rng = random.Random(seed)
     style = catalog.room
     types = layout.objects()

@@ -31,6 +31,9 @@ class Grip:
 
 
 class Robot:
+    """The robot's body in a pybullet client: joint and link indices by name, its position motors'
+    set-points (``target``, ``opening``), and the grasp it holds (``grip``)."""
+
     def __init__(self, cid: int, name: str = robots.DEFAULT_ROBOT) -> None:
         self.cid = cid
         self.cfg = robots.load_config(name)
@@ -58,13 +61,16 @@ class Robot:
 
     @property
     def base_pose(self) -> tuple[float, float, float]:
+        """The base joints now (x, y, yaw): the true pose, which only the simulation may read."""
         x, y, yaw = self.q()[:3]
         return float(x), float(y), float(yaw)
 
     def finger_q(self) -> np.ndarray:
+        """The finger joints now (m)."""
         return np.array([s[0] for s in pb.getJointStates(self.id, self.finger_joints, physicsClientId=self.cid)])
 
     def link_pose(self, link: str) -> np.ndarray:
+        """The URDF link ``link``'s pose in the world (4x4), from forward kinematics."""
         s = pb.getLinkState(self.id, self.link[link], computeForwardKinematics=True, physicsClientId=self.cid)
         T = np.eye(4)
         T[:3, :3] = np.array(pb.getMatrixFromQuaternion(s[5])).reshape(3, 3)
@@ -94,6 +100,8 @@ class Robot:
         self.command_fingers(self.opening, self.grip_force)
 
     def command_fingers(self, opening: float, force: float | None = None) -> None:
+        """Set the fingers' motors towards ``opening`` (m between the pads) with at most ``force`` N
+        (None: their full effort); they move as the simulation steps."""
         self.opening = opening
         f = force if force is not None else self.cfg.gripper.effort[0]
         pb.setJointMotorControlArray(self.id, self.finger_joints, pb.POSITION_CONTROL,
@@ -135,6 +143,7 @@ class Robot:
         return self.grip
 
     def detach(self) -> Grip | None:
+        """Remove the grasp constraint, if any, and return it (the hand lets go of what it held)."""
         g, self.grip = self.grip, None
         if g is not None:
             pb.removeConstraint(g.constraint, physicsClientId=self.cid)

@@ -91,6 +91,8 @@ class Rules:
         self.switches = [t for t in things if t.switch_link is not None]
 
     def step(self) -> None:
+        """Apply every rule to the state after one physics step: fill at a tap, press a switch, heat, cut
+        with a held knife."""
         held = self.truth.held()
         self._fill(held)
         self._press()

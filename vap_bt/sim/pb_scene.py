@@ -149,20 +149,26 @@ class Thing:
 
     @property
     def body(self) -> int:
+        """Its first body: an item's only one, a piece of furniture's carcass."""
         return self.bodies[0]
 
 
 @dataclass
 class Scene:
+    """The built household: every named thing's bodies in pybullet client ``client``, with the plan they
+    were placed by."""
+
     client: int
     plan: ScenePlan
     things: dict[str, Thing]
     walls: list[int]
 
     def by_body(self) -> dict[int, str]:
+        """The thing's name of every pybullet body id (walls have none)."""
         return {b: t.name for t in self.things.values() for b in t.bodies}
 
     def items(self) -> list[Thing]:
+        """The things that are items (free bodies), not furniture, doors or floors."""
         return [t for t in self.things.values() if t.item is not None]
 
     def hold_limits(self) -> None:
@@ -463,6 +469,8 @@ def item_shapes(cid: int, k: ItemKind, color: Color | None = None, half: bool = 
 
 def make_item_body(cid: int, k: ItemKind, position, yaw: float, color: Color | None = None, half: bool = False,
                    mass: float | None = None) -> int:
+    """A free rigid body of kind ``k`` at ``position`` (its centre, world frame), turned ``yaw`` about z;
+    ``half`` makes a half-filled look. Returns the body id."""
     col, vis = item_shapes(cid, k, color, half)
     body = pb.createMultiBody(mass if mass is not None else k.mass, col, vis, basePosition=position,
                               baseOrientation=_yaw_quat(yaw), physicsClientId=cid)
@@ -475,6 +483,8 @@ def make_item_body(cid: int, k: ItemKind, position, yaw: float, color: Color | N
 
 
 def build_scene(cid: int, plan: ScenePlan, catalog: Catalog, types: dict[str, str]) -> Scene:
+    """Build the plan in client ``cid``: rooms, walls, doors, furniture and items, each registered by
+    name with its PDDL type from ``types``."""
     things: dict[str, Thing] = {}
     walls = _build_rooms(cid, plan, catalog, things)
     for d in plan.doors.values():

@@ -53,6 +53,9 @@ SUPPORT_NORMAL = math.cos(math.radians(45.0))
 
 
 class Truth:
+    """The household atoms that hold now, decided from the physics state (the oracle of the pybullet
+    world). Each fluent predicate is a method ``_<predicate>``; rigid facts are the layout's."""
+
     def __init__(self, scene: Scene, robot: Robot, catalog: Catalog, rigid: set[Atom],
                  visible_names: Callable[[], set[str]]) -> None:
         self.scene, self.robot, self.catalog = scene, robot, catalog
@@ -64,6 +67,7 @@ class Truth:
     # ------------------------------------------------------------ geometry
 
     def aabb(self, name: str) -> tuple[float, ...]:
+        """The world-frame box (x0, y0, z0, x1, y1, z1) around every link of the thing named ``name``."""
         boxes = self.link_boxes(name)
         lo = np.min([b[:3] for b in boxes], axis=0)
         hi = np.max([b[3:] for b in boxes], axis=0)
@@ -104,6 +108,8 @@ class Truth:
         return out
 
     def center(self, name: str) -> np.ndarray:
+        """Where the thing is (world frame): an item's body origin (the mean of its pieces once sliced),
+        anything else's box centre."""
         t = self.scene.things[name]
         if t.item is not None:
             return np.mean([pb.getBasePositionAndOrientation(b, physicsClientId=self.scene.client)[0]
@@ -112,22 +118,27 @@ class Truth:
         return (np.array(a[:3]) + np.array(a[3:])) / 2
 
     def room_of_point(self, p) -> str | None:
+        """The room whose floor holds point ``p`` (its x, y), or None."""
         return self.scene.plan.room_at(float(p[0]), float(p[1]))
 
     def joint_value(self, name: str) -> float:
+        """The door or drawer joint of ``name`` now: hinge angle (rad) or slide (m)."""
         h = self.scene.things[name].hinge
         return pb.getJointState(h.body, h.joint, physicsClientId=self.scene.client)[0]
 
     def joint_fraction(self, t: Thing) -> float:
+        """How far ``t``'s door or drawer is open: 0 shut, 1 at its full travel."""
         return abs(self.joint_value(t.name)) / abs(t.hinge.full)
 
     def held(self) -> str | None:
+        """The item in the hand, or None (an empty hand, or one holding a handle)."""
         g = self.robot.grip
         return g.name if g is not None and g.link == -1 else None
 
     # ------------------------------------------------------------ predicates
 
     def holds(self, atom: Atom) -> bool:
+        """Whether ground atom ``atom`` holds now; an unknown predicate or object does not hold."""
         if atom.predicate in RIGID:
             return atom in self.rigid
         fn = getattr(self, "_" + atom.predicate, None)
@@ -310,9 +321,11 @@ class Truth:
         return f, np.array([-f[1], f[0], 0.0])
 
     def support_of(self, o: str) -> str | None:
+        """The surface or floor item ``o`` rests on now, or None (held, inside something, or falling)."""
         return self._support(o)
 
     def container_of(self, o: str) -> str | None:
+        """The container (not a sink) item ``o`` is inside now, or None."""
         for t in self.scene.things.values():
             if t.furniture is not None and t.furniture.kind.cavity is not None and t.pddl_type != "sink":
                 if self._inside(o, t.name):

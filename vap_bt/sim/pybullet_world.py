@@ -136,6 +136,8 @@ class PybulletWorld:
     # ------------------------------------------------------------ life cycle
 
     def reset(self, seed: int) -> None:
+        """Build the household afresh for ``seed`` (a new physics client): the scene plan, the robot at
+        its start, localization, truth, rules, injection and disturbances, every draw from ``seed``."""
         with self._lock:
             if self.cid >= 0:
                 pb.disconnect(self.cid)
@@ -302,6 +304,7 @@ class PybulletWorld:
         return max(cands, key=score)
 
     def injected(self) -> list[InjectedSituation]:
+        """The situations the world caused this episode (Table II or a disturbance script), in order."""
         return list(self._injected)
 
     # ------------------------------------------------------------ truth (the oracle's)

@@ -134,9 +134,12 @@ class VlmModel:
 
     @property
     def paraphrase_correlation(self) -> float:
+        """The correlation of two paraphrases' latent noise about one atom in one picture: ``r_rel +
+        r_atom``."""
         return self.relation_correlation + self.atom_correlation
 
     def describe(self) -> dict:
+        """The model's version and every parameter, for the report."""
         return {"version": MODEL_VERSION, **asdict(self), "paraphrase_correlation": self.paraphrase_correlation}
 
 
@@ -172,9 +175,11 @@ class SimVLM:
 
     @property
     def noise(self) -> float:
+        """The noise scale (1: the calibrated model, 0: an ideal reader of the picture)."""
         return self.model.noise
 
     def reseed(self, seed: int) -> None:
+        """Draw every answer from ``seed`` from now on (an episode's reset), and start a new ledger."""
         self.seed = seed
         self.ledger = []
 

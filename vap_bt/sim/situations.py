@@ -21,6 +21,9 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class SituationSpec:
+    """One row of Table II: the ``kind`` of situation ``action`` may cause, with what ``probability``,
+    whether its intended effects still happen, and what it ``drops``."""
+
     action: str
     kind: str
     probability: float
@@ -67,9 +70,12 @@ class SituationModel:
         return cls(table=(SituationSpec(spec.action, spec.kind, 1.0, spec.effect, spec.drops),), seed=seed)
 
     def reseed(self, seed: int) -> None:
+        """Restart the draws from ``seed`` (an episode's reset)."""
         self.rng = random.Random(seed)
 
     def draw(self, action: str) -> SituationSpec | None:
+        """The situation ``action`` causes this time, or None. Takes one uniform draw per call, enabled
+        or not, so that each action's draws stay the same whatever rows are on."""
         # one uniform draw per action, always taken, so that enabling or disabling rows of one
         # action does not shift the random stream of the others
         u = self.rng.random()
@@ -84,4 +90,5 @@ class SituationModel:
         return None
 
     def describe(self) -> list[dict]:
+        """The enabled rows (action, kind, probability), for the report; empty when injection is off."""
         return [{"action": s.action, "kind": s.kind, "p": s.probability} for s in self.table] if self.enabled else []

@@ -164,6 +164,7 @@ class SymbolicWorld:
         return ActionOutcome(True)
 
     def injected(self) -> list[InjectedSituation]:
+        """The situations the world caused this episode (Table II or a disturbance script), in order."""
         return list(self._injected)
 
     def _starts_from(self, ga) -> set[Atom]:

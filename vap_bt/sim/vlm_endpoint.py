@@ -104,6 +104,7 @@ class SimVLMEndpoint:
         return f"http://127.0.0.1:{self._httpd.server_address[1]}/v1"
 
     def start(self) -> "SimVLMEndpoint":
+        """Serve on a daemon thread (once; a second call does nothing); returns self."""
         if self._thread is None:
             self._thread = threading.Thread(target=self._httpd.serve_forever, kwargs={"poll_interval": 0.05},
                                             name="sim-vlm-endpoint", daemon=True)
@@ -134,6 +135,8 @@ class SimVLMEndpoint:
         self.lookup = QuestionLookup(profile, task.objects, task.knowledge)
 
     def describe(self) -> dict:
+        """Where it listens, the model it answers as, requests counted by outcome and the simulated VLM's
+        parameters, for the report."""
         with self._lock:
             counts = dict(self.counts)
         return {"url": self.url, "model": self.model, "latency_s": self.latency_s, "counts": counts,
