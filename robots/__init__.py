@@ -56,6 +56,7 @@ def urdf_path(name: str = DEFAULT_ROBOT) -> Path:
 
 
 def config_path(name: str = DEFAULT_ROBOT) -> Path:
+    """Absolute path of the robot's YAML configuration; FileNotFoundError naming the robots available."""
     return _file(name, ".yaml")
 
 

@@ -38,6 +38,8 @@ OPTICAL_FROM_BODY_RPY = (-HALF_PI, 0.0, -HALF_PI)
 
 @dataclass(frozen=True)
 class Box:
+    """A box shape of full edge lengths ``size`` (m), placed at ``xyz``/``rpy`` in its link's frame."""
+
     size: tuple[float, float, float]
     xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)
     rpy: tuple[float, float, float] = ALONG_Z
@@ -45,6 +47,9 @@ class Box:
 
 @dataclass(frozen=True)
 class Cylinder:
+    """A cylinder shape (m) along its z axis, placed at ``xyz``/``rpy`` in its link's frame
+    (:data:`ALONG_X`, :data:`ALONG_Y` lay it down)."""
+
     radius: float
     length: float
     xyz: tuple[float, float, float] = (0.0, 0.0, 0.0)
@@ -67,6 +72,9 @@ class Link:
 
 @dataclass
 class Joint:
+    """A URDF joint from ``parent`` to ``child`` at ``xyz``/``rpy``; ``limits`` (lower, upper, effort,
+    velocity) for a moving one."""
+
     name: str
     kind: str  # fixed | revolute | prismatic
     parent: str
@@ -306,6 +314,7 @@ def _camera(cfg: RobotConfig) -> tuple[list[Link], list[Joint]]:
 
 
 def urdf_text(cfg: RobotConfig) -> str:
+    """The whole URDF of the robot ``cfg`` describes (base, arm, gripper, camera), as text."""
     links: list[Link] = []
     joints: list[Joint] = []
     for part in (_base, _arm, _gripper, _camera):
@@ -328,6 +337,8 @@ def urdf_text(cfg: RobotConfig) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Write the URDF of each robot named in ``argv`` (default ``mobile_ur5e``) beside its YAML; returns
+    the exit code."""
     from robots import load_config
 
     names = (argv if argv is not None else sys.argv[1:]) or ["mobile_ur5e"]

@@ -169,6 +169,7 @@ class Camera:
 
     @property
     def vertical_fov_deg(self) -> float:
+        """The vertical field of view (degrees), from the image height and ``fy``."""
         return math.degrees(2.0 * math.atan(self.height / (2.0 * self.fy)))
 
     def at(self, width: int, height: int) -> Camera:
@@ -231,10 +232,12 @@ class RobotConfig:
 
     @property
     def tcp(self) -> str:
+        """The name of the tool centre point's frame (the gripper's)."""
         return self.gripper.tcp
 
     @classmethod
     def from_yaml(cls, path: Path) -> RobotConfig:
+        """The configuration in the YAML file at ``path`` (the URDF path resolved beside it)."""
         d = yaml.safe_load(path.read_text())
         return cls(
             name=str(d["name"]),

@@ -120,9 +120,11 @@ class Body:
         return np.array([*self.base.pose(), *self.arm.joint_state().positions])
 
     def base_pose(self) -> tuple[float, float, float]:
+        """Where the localiser puts the base now (x, y, yaw, map frame)."""
         return tuple(map(float, self.base.pose()))
 
     def base_T(self, q=None) -> np.ndarray:
+        """The base footprint frame in the map (4x4), for measured joints or the given ``q``."""
         x, y, yaw = (self.q() if q is None else q)[:3]
         return se3.planar_pose(x, y, yaw)
 
@@ -141,6 +143,7 @@ class Body:
         return B1 @ np.linalg.inv(O1) @ O0 @ np.linalg.inv(B0)
 
     def in_base(self, p) -> np.ndarray:
+        """A point given in the base footprint frame, in the map frame (as the base stands now)."""
         return (self.base_T() @ np.array([*p, 1.0]))[:3]
 
     def pose(self, frame: str = "tcp", q=None) -> np.ndarray:
@@ -148,6 +151,7 @@ class Body:
         return self.kin_mobile.fk(self.q() if q is None else q, frame)
 
     def holding(self) -> bool:
+        """Whether the gripper says its fingers stopped on something while closing."""
         return self.gripper.state().holding
 
     # -- the scene IK keeps off --------------------------------------------------------------
@@ -426,6 +430,7 @@ class Body:
                                      np.zeros((2, len(q)))))
 
     def home(self) -> None:
+        """Fold the arm to its home pose (the base stays); blocks until it gets there."""
         q = self.q()
         q[3:] = self.cfg.arm.home
         self.through([q], 0.8)

@@ -131,6 +131,9 @@ class Kit:
 
     @contextmanager
     def goal(self, ctx: GoalContext) -> Iterator["Kit"]:
+        """The kit for one goal: the goal's cancellation reaches every driver call, progress reaches its
+        feedback, and IK keeps off the map's solids (leaves where last seen). Waits while another goal of
+        this robot uses the kit; restores the idle hooks when the goal ends."""
         with self.busy:
             self._refresh()
             self.body.set_scene(self.scene.solid_boxes())  # leaves where they were last seen
@@ -172,11 +175,14 @@ class Kit:
 
     @staticmethod
     def point(hints: dict[str, Hint], name: str):
+        """The map-frame point the goal's hint for ``name`` gives, or None."""
         h = hints.get(name)
         return None if h is None or h.position is None else h.position
 
     @staticmethod
     def where(hints: dict[str, Hint], name: str) -> Where:
+        """Where the goal's hint for ``name`` believes it is (on, inside, radius); an empty
+        :class:`Where` without a hint."""
         h = hints.get(name)
         return Where() if h is None else Where(on=h.on, inside=h.inside, radius=h.radius)
 

@@ -14,6 +14,8 @@ from vap_bt.skill import Hint
 
 
 class ArmSkill(MotionSkill):
+    """A skill of the arm and gripper (the ``ur5e`` server; occupies the arm)."""
+
     robot = "ur5e"
     resource = "arm"
 

@@ -17,6 +17,8 @@ from vap_bt.skill import Hint
 
 
 class BaseSkill(MotionSkill):
+    """A skill of the mobile base (the ``base`` server; occupies the base)."""
+
     robot = "base"
     resource = "base"
 

@@ -173,6 +173,7 @@ class Navigator:
         return (x + side * dist, y, math.pi if side > 0 else 0.0)
 
     def door_point(self, door: str) -> np.ndarray:
+        """The point a look at door ``door`` aims at: its pose in the map, at ``DOOR_LOOK_HEIGHT``."""
         x, y, _ = self.scene.site.door(door).pose
         return np.array([x, y, DOOR_LOOK_HEIGHT])
 

@@ -90,6 +90,7 @@ class Correction:
 
     @classmethod
     def none(cls) -> "Correction":
+        """No correction: the map as the localiser places it."""
         return cls(0.0, 0.0, 0.0, (0.0, 0.0), 0, (), 1.0)
 
     def matrix(self) -> np.ndarray:
@@ -102,10 +103,12 @@ class Correction:
         return T
 
     def point(self, p) -> np.ndarray:
+        """A map point where the robot's frame has it."""
         T = self.matrix()
         return T[:3, :3] @ np.asarray(p, float) + T[:3, 3]
 
     def vector(self, v) -> np.ndarray:
+        """A map direction as the robot's frame has it (turned by ``dtheta``, not shifted)."""
         return self.matrix()[:3, :3] @ np.asarray(v, float)
 
     def pose(self, x: float, y: float, yaw: float) -> tuple[float, float, float]:
@@ -114,6 +117,7 @@ class Correction:
         return float(p[0]), float(p[1]), float(yaw + self.dtheta)
 
     def is_identity(self) -> bool:
+        """Whether it moves nothing (no fit was accepted, or it found no error)."""
         return self.dx == 0.0 and self.dy == 0.0 and self.dtheta == 0.0
 
     def moved(self, T: np.ndarray) -> "Correction":

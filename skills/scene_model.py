@@ -131,14 +131,17 @@ class Seen:
 
     @property
     def top(self) -> float:
+        """The height of the item's top (m, map frame)."""
         return float(self.hi[2])
 
     @property
     def bottom(self) -> float:
+        """The height of the item's bottom (m, map frame)."""
         return float(self.lo[2])
 
     @property
     def extent(self) -> np.ndarray:
+        """The box's size along x, y, z (m)."""
         return self.hi - self.lo
 
     def corners(self) -> np.ndarray:
@@ -210,17 +213,21 @@ class Furniture:
         return self.info.name
 
     def to_world(self, local) -> np.ndarray:
+        """A point (x, y, z) in the furniture's frame, in the map frame."""
         lx, ly, lz = local
         return self.origin + self.along * lx + self.front * ly + np.array([0.0, 0.0, lz])
 
     def local(self, p) -> np.ndarray:
+        """A map-frame point in the furniture's frame."""
         d = np.asarray(p, float) - self.origin
         return np.array([d @ self.along, d @ self.front, p[2]])
 
     def yaw(self) -> float:
+        """The direction its front faces (rad, map frame)."""
         return math.atan2(self.front[1], self.front[0])
 
     def outer(self) -> Obb:
+        """Its outer box (footprint by height) in the map frame."""
         R = np.column_stack([self.along, self.front, (0.0, 0.0, 1.0)])
         return Obb(self.to_world((0.0, 0.0, self.height / 2)), R, np.array([self.width, self.depth, self.height]) / 2)
 
@@ -256,6 +263,7 @@ class Furniture:
         return [Obb(face - self.front * SWITCH[1], R, np.array(SWITCH))]
 
     def top_point(self) -> np.ndarray:
+        """The middle of its top (map frame)."""
         return self.to_world((0.0, 0.0, self.height))
 
     def in_front_cavity(self, p) -> bool:
@@ -303,6 +311,8 @@ class Leaf:
         self.fitted_offset = (0.0, 0.0, 0.0)  # see :meth:`fit`
 
     def transform(self, q: float, q_from: float = 0.0):
+        """How the leaf moves from joint value ``q_from`` to ``q``: the rotation and the point map (about
+        the hinge, or along the slide) that take a leaf point at ``q_from`` to where it is at ``q``."""
         if self.art.prismatic:
             shift = self.axis * (q - q_from)
             return np.eye(3), (lambda p: np.asarray(p) + shift)
@@ -310,6 +320,7 @@ class Leaf:
         return R, (lambda p: self.origin + R @ (np.asarray(p) - self.origin))
 
     def box(self, q: float) -> Obb:
+        """The leaf's box in the map frame at joint value ``q``."""
         R, move = self.transform(q)
         return Obb(move(np.array(self.art.leaf_center)), R @ self.base, np.array(self.art.leaf_half))
 
@@ -579,9 +590,11 @@ class SceneModel:
         return min((f.sight_over_rim(p, eye_height, toward) for f in self.furniture.values()), default=math.inf)
 
     def room_at(self, x: float, y: float) -> str | None:
+        """The mapped room whose outline holds (x, y), or None."""
         return self.site.room_at(x, y)
 
     def room_center(self, room: str) -> np.ndarray:
+        """The middle of room ``room``'s outline (x, y); the room must have geometry."""
         x0, y0, x1, y1 = self.site.room(room).bounds
         return np.array([(x0 + x1) / 2, (y0 + y1) / 2])
 

@@ -49,9 +49,12 @@ class GoalContext(Protocol):
 
     hints: dict
 
-    def feedback(self, progress: float, text: str = "") -> None: ...
+    def feedback(self, progress: float, text: str = "") -> None:
+        """Report progress (0..1) and what the skill is doing now (call it now and then, not every cycle)."""
 
-    def cancelled(self) -> bool: ...
+    def cancelled(self) -> bool:
+        """Whether the goal has been asked to stop: a skill checks it between steps (a driver, every
+        control cycle) and returns early."""
 
 
 @runtime_checkable

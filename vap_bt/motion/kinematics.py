@@ -84,7 +84,6 @@ class Kinematics:
 
     @property
     def dof(self) -> int:
-        """How many joints the reduced chain moves (the length of ``q``)."""
         return self.model.nq
 
     @cached_property

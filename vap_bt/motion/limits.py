@@ -26,7 +26,6 @@ class Limits:
 
     @property
     def dof(self) -> int:
-        """How many joints the limits are for."""
         return len(self.names)
 
     @classmethod

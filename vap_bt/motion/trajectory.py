@@ -29,7 +29,6 @@ class Trajectory:
 
     @property
     def dof(self) -> int:
-        """How many joints each sample holds."""
         return self.q.shape[1]
 
     def jerk(self) -> np.ndarray:

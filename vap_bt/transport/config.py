@@ -299,6 +299,8 @@ def _seconds(text: str) -> float:
 
 def settings_from_args(args: argparse.Namespace, *, default_listen: bool,
                        default_endpoint: str = DEFAULT_ENDPOINT, mode: str = "peer") -> TransportSettings:
+    """The transport settings the command-line options in ``args`` give; with no endpoint or file given,
+    a part that must be reachable (``default_listen``) listens on ``default_endpoint``."""
     listen = tuple(args.listen)
     if default_listen and not (args.listen or args.connect or args.zenoh_config):
         listen = (default_endpoint,)

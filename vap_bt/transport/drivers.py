@@ -61,14 +61,17 @@ MOTIONS = {"arm.follow": "arm", "gripper.move": "gripper", "base.follow": "base"
 
 
 def driver_key(robot: str, call: str) -> str:
+    """The queryable of driver call ``call`` (``arm.follow``, ``state``, ...) on ``robot``."""
     return f"{keys.ROOT}/{keys.chunk('robot', robot)}/driver/{keys.chunk('driver call', call)}"
 
 
 def client_token_key(robot: str, client: str) -> str:
+    """The liveliness token of :class:`RemoteDrivers` ``client`` on ``robot``: its heartbeat."""
     return f"{keys.ROOT}/{keys.chunk('robot', robot)}/driver-client/{keys.chunk('client', client)}"
 
 
 def host_token_key(robot: str) -> str:
+    """The liveliness token of ``robot``'s :class:`DriverServer`: the robot process's heartbeat."""
     return f"{keys.ROOT}/{keys.chunk('robot', robot)}/driver-host"
 
 
@@ -94,6 +97,8 @@ class DriverServer:
         self._part_locks = {p: threading.Lock() for p in ("arm", "gripper", "base")}
 
     def start(self) -> "DriverServer":
+        """Declare every driver call, the stop subscriber and the client watch, then the host token
+        (last: whoever sees it finds every call answered); returns self."""
         quick: dict[str, Callable[[DriverCall], Any]] = {
             "arm.state": lambda c: _joint_reply(self.drivers.arm.joint_state()),
             "arm.tcp": lambda c: DriverReply({}, {"pose": np.asarray(self.drivers.arm.tcp_pose(), float)}),

@@ -39,6 +39,7 @@ class GoalRun:
         return self._cancelled
 
     def request_cancel(self) -> None:
+        """Ask the skill to stop: :meth:`cancelled` is true from now on (any thread may call it)."""
         self._cancelled = True
 
 

@@ -49,22 +49,27 @@ def chunk(kind: str, name: str) -> str:
 
 
 def skill(robot: str, action: str) -> str:
+    """The queryable that starts a goal of ``action`` on ``robot``."""
     return f"{ROOT}/{chunk('robot', robot)}/skill/{chunk('action', action)}"
 
 
 def goal_status(robot: str, goal_id: str) -> str:
+    """Where goal ``goal_id``'s feedback and result are published."""
     return f"{ROOT}/{chunk('robot', robot)}/goal/{chunk('goal', goal_id)}/status"
 
 
 def goal_cancel(robot: str, goal_id: str) -> str:
+    """Where a cancel of goal ``goal_id`` is published."""
     return f"{ROOT}/{chunk('robot', robot)}/goal/{chunk('goal', goal_id)}/cancel"
 
 
 def all_goal_status(robot: str) -> str:
+    """Every goal's status key on ``robot`` (a client's one subscription)."""
     return f"{ROOT}/{chunk('robot', robot)}/goal/*/status"
 
 
 def all_goal_cancel(robot: str) -> str:
+    """Every goal's cancel key on ``robot`` (a server's one subscription)."""
     return f"{ROOT}/{chunk('robot', robot)}/goal/*/cancel"
 
 
@@ -79,6 +84,7 @@ def body(robot: str, verb: str) -> str:
 
 
 def vlm(robot: str) -> str:
+    """The queryable of ``robot``'s world-side VLM."""
     return f"{ROOT}/{chunk('robot', robot)}/vlm/ask"
 
 
@@ -93,10 +99,12 @@ def oracle(verb: str) -> str:
 
 
 def alive(robot: str, server: str) -> str:
+    """The liveliness token of skill server ``server`` on ``robot``."""
     return f"{ROOT}/{chunk('robot', robot)}/alive/{chunk('server', server)}"
 
 
 def all_alive(robot: str) -> str:
+    """Every skill server's token on ``robot`` (not their goals', one chunk deeper)."""
     return f"{ROOT}/{chunk('robot', robot)}/alive/*"
 
 

@@ -112,6 +112,8 @@ class SkillServer:
     # -- lifecycle -------------------------------------------------------------------------------
 
     def start(self) -> "SkillServer":
+        """Start a worker thread per resource and declare every queryable, then the server's liveliness
+        token (last: a client that sees it finds them all); returns self."""
         for resource in sorted({s.resource for s in self.skills.values()}):
             self._queues[resource] = q = queue.SimpleQueue()
             t = threading.Thread(target=self._work, args=(q,), name=f"skill-{resource}", daemon=True)

@@ -37,9 +37,13 @@ ACK_TIMEOUT_S = 2.0
 class ActionHooks(Protocol):
     """Where a skill server announces its goals (a simulated world, in-process or over Zenoh)."""
 
-    def begin_action(self, action: str, args: tuple[str, ...]) -> None: ...
+    def begin_action(self, action: str, args: tuple[str, ...]) -> None:
+        """Goal ``action(args)`` starts: the world draws and arms its situation. Returns once it has,
+        before the skill's first driver command (over Zenoh: or at the timeout, with a warning)."""
 
-    def end_action(self, action: str | None = None, args: tuple[str, ...] | None = None) -> None: ...
+    def end_action(self, action: str | None = None, args: tuple[str, ...] | None = None) -> None:
+        """The goal's skill has returned, however it ended: the world ends the action (a drop still
+        pending happens now); a late call naming another action than the open one does nothing."""
 
 
 class ZenohActionHooks:

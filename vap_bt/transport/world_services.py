@@ -138,14 +138,17 @@ class RemoteOracle:
         self._ask = ask
 
     def holds(self, atom: Atom) -> bool:
+        """Whether ``atom`` holds in the world now."""
         return self._ask("holds", atoms=(atom,)).values["holds"][0]
 
     def true_atoms(self, candidates: Iterable[Atom]) -> frozenset[Atom]:
+        """Those of ``candidates`` that hold in the world now (one query for all of them)."""
         atoms = tuple(candidates)
         truth = self._ask("holds", atoms=atoms).values["holds"]
         return frozenset(a for a, t in zip(atoms, truth) if t)
 
     def injected(self) -> list[InjectedSituation]:
+        """The situations the world caused this episode, in order."""
         rows = self._ask("injected").values["injected"]
         return [InjectedSituation(r["action"], tuple(r["args"]), r["kind"], int(r["step"]), tuple(r.get("affected", ())))
                 for r in rows]
@@ -179,10 +182,13 @@ class RemoteWorld:
         return str(self.info()["name"])
 
     def reset(self, seed: int) -> None:
+        """Start the world and its VLM over from ``seed`` for an episode; blocks until the world says it
+        is done (up to ``RESET_TIMEOUT_S``)."""
         self._ask("reset", seed=int(seed), timeout=RESET_TIMEOUT_S)
         self._info = None
 
     def site_map(self) -> SiteMap:
+        """The world's site map, as its robot is given it."""
         return self._ask("site_map", expect=SiteMap)
 
     def close(self) -> None:

@@ -21,15 +21,18 @@ INFO, WARN, ERROR = "INFO", "WARN", "ERROR"
 
 
 def yes_no(value: bool | None) -> str:
+    """An answer or vote as a word: yes, no, or ? for none (an abstention)."""
     return "?" if value is None else ("yes" if value else "no")
 
 
 def plan_text(actions: list[str], replan: int) -> str:
+    """A plan as the log shows it: a header (``plan``, or ``replan #n``) and one numbered action a line."""
     head = "plan" if replan == 0 else f"replan #{replan}"
     return f"{head}: {len(actions)} actions" + ("".join(f"\n  {i}: {a}" for i, a in enumerate(actions)))
 
 
 def action_start_text(step: int, action: str) -> str:
+    """The line of action ``a<step>`` starting."""
     return f"a{step}: start {action}"
 
 
@@ -67,6 +70,8 @@ def _qa_table(questions, answers: dict[int, bool | None], pending: str) -> list[
 
 
 def round_markdown(phase: str, action: str, atom: Atom, expected: bool, r: Round) -> str:
+    """The page of one round of looking at ``atom`` (``phase`` of ``action``): its questions and answers,
+    the vote, the view's sufficiency and the next viewpoint chosen."""
     lines = _page_head(phase, action, atom, expected, f"view {r.view}")
     lines += _qa_table(r.questions, dict(enumerate(r.answers)), "not asked")
     lines += ["", f"- vote: **{yes_no(r.vote)}** ({'consistent' if r.consistent else 'inconsistent'})",
@@ -129,18 +134,21 @@ def _settled(v: Verification, outcome: str) -> str:
 
 
 def verification_text(v: Verification) -> tuple[str, str]:
+    """The line of a settled verification and its level: a contradicted expectation is a warning."""
     want = "" if v.expected else "not "
     text = f"{v.phase} {v.action}: {want}{v.atom} {_settled(v, v.outcome)}"
     return text, (WARN if v.outcome == "contradicted" else INFO)
 
 
 def situation_text(s: Situation) -> str:
+    """The line of a situation: its kind, step and action, and the observation that raised it."""
     what = f" {'' if s.expected else 'not '}{s.atom} observed {str(s.observed).lower()}" if s.atom else ""
     detail = f" ({s.detail})" if s.detail else ""
     return f"situation: {s.kind} at step {s.step}" + (f" {s.action}" if s.action else "") + what + detail
 
 
 def change_text(c: Change) -> str:
+    """The line of a change of belief: its cause, then the atoms added (+) and removed (-)."""
     added = ", ".join(f"+{a}" for a in sorted(map(str, c.added)))
     removed = ", ".join(f"-{a}" for a in sorted(map(str, c.removed)))
     return f"belief ({c.cause}): " + "; ".join(x for x in (added, removed) if x)

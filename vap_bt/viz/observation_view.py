@@ -38,6 +38,7 @@ PNG_COMPRESSION = 9
 
 
 def has_pixels(obs: Frame | None) -> bool:
+    """Whether ``obs`` carries any image (colour, depth or masks): a symbolic frame has none."""
     return obs is not None and any(x is not None for x in (obs.rgb, obs.depth, obs.masks))
 
 

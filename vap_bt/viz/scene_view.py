@@ -23,6 +23,8 @@ from vap_bt.scene.graph import Change, SceneGraph
 
 
 def facts_markdown(facts: set[Atom] | frozenset[Atom], change: Change | None = None, where: str = "") -> str:
+    """The fact sheet: every atom of ``facts`` grouped by predicate under a count, with ``change`` (its
+    cause, atoms added and removed) on top; ``where`` names the moment."""
     lines = [f"# Belief: {len(facts)} facts" + (f" ({where})" if where else ""), ""]
     if change is not None:
         lines += [f"**Last change** ({change.cause}):"]
@@ -40,6 +42,7 @@ def facts_markdown(facts: set[Atom] | frozenset[Atom], change: Change | None = N
 
 
 def facts_document(graph: SceneGraph, change: Change | None = None, where: str = "") -> rr.TextDocument:
+    """The fact sheet of ``graph`` as a rerun markdown document."""
     return rr.TextDocument(facts_markdown(graph.facts, change, where), media_type=rr.MediaType.MARKDOWN)
 
 

@@ -56,6 +56,9 @@ class ViewerError(VapBtError):
 
 @dataclass(frozen=True)
 class SinkSpec:
+    """Where a recording goes, as the command line said: ``mode`` (spawn, serve, save) with its port or
+    file."""
+
     mode: Mode
     path: Path | None = None  # save
     port: int | None = None  # serve (default 9876); spawn (default: a free port)
@@ -100,6 +103,7 @@ class OpenRecording:
 
     @property
     def hint(self) -> str:
+        """The line telling a person where the recording goes and how to look at it."""
         if self.spec.mode == "save":
             return f"rerun: recording to {self.spec.path} (open it with `rerun {self.spec.path}`)"
         if self.spec.mode == "serve":
@@ -116,6 +120,9 @@ class OpenRecording:
 
 def open_recording(spec: SinkSpec, application_id: str = "vap_bt", recording_name: str | None = None,
                    blueprint=None) -> OpenRecording:
+    """A recording stream on ``spec``'s sink, with its name and default blueprint. A directory that does
+    not exist is an :class:`InputError`; a port in use or a viewer that will not start, a
+    :class:`ViewerError`."""
     stream = rr.RecordingStream(application_id, batcher_config=FILE_BATCHING if spec.mode == "save" else None)
     if recording_name:
         stream.send_recording_name(recording_name)

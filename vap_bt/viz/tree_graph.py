@@ -83,10 +83,12 @@ class TreeView:
     edges: tuple[tuple[str, str], ...]
 
     def nodes(self) -> rr.GraphNodes:
+        """The drawing's nodes as rerun logs them: labels at their positions, coloured by status."""
         return rr.GraphNodes(list(self.ids), labels=list(self.labels), positions=list(self.positions),
                              colors=[STATUS_COLOURS[s] for s in self.statuses], show_labels=True)
 
     def links(self) -> rr.GraphEdges:
+        """The drawing's edges as rerun logs them."""
         return rr.GraphEdges(list(self.edges), graph_type="directed")
 
     def bounds(self) -> tuple[float, float, float, float]:
@@ -174,6 +176,8 @@ class TreeGraph:
 
     @classmethod
     def of(cls, root: py_trees.behaviour.Behaviour) -> "TreeGraph":
+        """The tree under ``root``, each behaviour with its path id (``0``, ``0.2``, ``0.2.1``), depth
+        first."""
         ids, behaviours = [], []
 
         def visit(node, node_id: str) -> None:
@@ -190,6 +194,7 @@ class TreeGraph:
         return self.behaviours[0]
 
     def statuses(self) -> tuple[Status, ...]:
+        """Every behaviour's status now, in :attr:`ids` order."""
         return tuple(b.status for b in self.behaviours)
 
     def signature(self) -> tuple:
@@ -265,6 +270,7 @@ class TreeGraph:
 
 
 def plural(n: int, word: str) -> str:
+    """``n`` and ``word``, with an s unless ``n`` is 1 (``3 answers``, ``1 view``)."""
     return f"{n} {word}{'s' * (n != 1)}"
 
 

@@ -111,6 +111,8 @@ class TreeRecorder:
     # ---- the executive's callback -------------------------------------------------------------
 
     def on_tree(self, tree: py_trees.trees.BehaviourTree, tick: int) -> None:
+        """The executive's per-tick callback: log what changed in ``tree`` and its context since the last
+        tick (see the module docstring), at tick ``tick``. A recovery tree's root logs its steps."""
         ctx = context_of(tree.root)
         if ctx is not None and ctx is not self._ctx:
             self._begin_episode(ctx)

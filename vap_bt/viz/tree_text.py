@@ -19,8 +19,11 @@ _ESCAPES = re.compile(r"\x1b\[[0-9;]*m")
 
 
 def tree_text(root: py_trees.behaviour.Behaviour) -> str:
+    """The whole tree under ``root`` as py_trees prints it with status marks, without terminal colour
+    codes."""
     return _ESCAPES.sub("", py_trees.display.unicode_tree(root, show_status=True))
 
 
 def tree_document(root: py_trees.behaviour.Behaviour) -> rr.TextDocument:
+    """The tree's text as a rerun plain-text document."""
     return rr.TextDocument(tree_text(root), media_type=rr.MediaType.TEXT)

@@ -94,6 +94,7 @@ def dig(data: Any, *path: str | int) -> Any:
 
 
 def options_of(query: Query) -> tuple[str, ...]:
+    """The answers a query allows, lower-cased: yes/no for a yes/no question, else its options."""
     return YES_NO if query.kind == "yesno" else tuple(o.lower() for o in query.options)
 
 
@@ -126,9 +127,11 @@ class HttpVLM:
 
     # --- what a protocol says -------------------------------------------------------------------
     def endpoint(self) -> str:
+        """The URL to POST a query to (the protocol's path under ``url``)."""
         raise NotImplementedError
 
     def auth_headers(self, api_key: str) -> dict[str, str]:
+        """The headers that carry ``api_key`` (none when it is empty), as the protocol names them."""
         raise NotImplementedError
 
     def request(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...],
@@ -139,9 +142,13 @@ class HttpVLM:
         raise NotImplementedError
 
     def read(self, data: Any) -> Reply:
+        """The reply body (parsed JSON) read as the protocol words it: text, finish reason, logprobs, or
+        why there is none."""
         raise NotImplementedError
 
     def retry_hint(self, response: httpx.Response) -> float | None:
+        """Seconds the server asks to wait before a retry, or None; the ``Retry-After`` header unless the
+        protocol has a richer hint."""
         return retry_after(response)
 
     def unreachable(self, timeout_s: float = PREFLIGHT_S) -> str | None:
@@ -298,6 +305,7 @@ class HttpVLM:
     # --- for the report -------------------------------------------------------------------------
     @property
     def dropped(self) -> tuple[str, ...]:
+        """The optional features a server refused with a 400, now left out of every request to it."""
         with self._lock:
             return tuple(sorted(self._dropped))
 
@@ -338,6 +346,8 @@ class StopWhenSilent:
         self.name = inner.name
 
     def ask(self, query: Query, frame: Frame) -> Answer:
+        """The inner backend's answer, or a :class:`~vap_bt.errors.TransportError` when its server has
+        stopped answering."""
         return self._checked(self.inner.ask(query, frame))
 
     def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:

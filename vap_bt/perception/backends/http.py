@@ -65,6 +65,7 @@ class Exchange:
     detail: str = ""  # the last failure in words
 
     def json(self) -> Any | None:
+        """The response body as JSON, or None when it is not JSON (or there was no response)."""
         try:
             return json.loads(self.text)
         except ValueError:

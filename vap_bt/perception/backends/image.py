@@ -34,6 +34,7 @@ class EncodedImage:
     mime: str = "image/png"
 
     def data_url(self) -> str:
+        """The image as a ``data:`` URL, the way OpenAI-compatible servers take an inline image."""
         return f"data:{self.mime};base64,{self.png_b64}"
 
 
@@ -63,6 +64,8 @@ class ImageCache:
         self._lock = threading.Lock()
 
     def encode(self, rgb: np.ndarray) -> EncodedImage:
+        """``rgb`` as a PNG, encoded once per distinct image (the least recently used beyond ``size``
+        forgotten); safe from many threads."""
         key = (rgb_sha1(rgb), rgb.shape) if isinstance(rgb, np.ndarray) else None
         with self._lock:
             if key in self._images:

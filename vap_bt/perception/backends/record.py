@@ -71,6 +71,8 @@ class RequestLog:
         self._on_record = on_record
 
     def add(self, record: RequestRecord) -> None:
+        """Keep ``record`` and hand it to the listener; a listener that fails is logged, never raised to
+        the caller."""
         with self._lock:
             self._records.append(record)
         if self._on_record is not None:
@@ -80,5 +82,6 @@ class RequestLog:
                 log.exception("VLM request listener failed")
 
     def records(self) -> list[RequestRecord]:
+        """Every record so far, in order (a copy: safe while queries go on)."""
         with self._lock:
             return list(self._records)
