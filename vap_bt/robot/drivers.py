@@ -90,7 +90,7 @@ class Arm(Protocol):
         ``cancelled()`` or refused, and says which."""
 
     def stop(self) -> None:
-        """Stop the arm where it is now (decelerating within its limits)."""
+        """Stop the arm's motion where it is now (a UR's ``stopJ``)."""
 
 
 class Gripper(Protocol):

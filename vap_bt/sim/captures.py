@@ -158,7 +158,7 @@ class CaptureLog:
         return self._records.get(frame_id) if frame_id is not None else None
 
     def clear(self) -> None:
-        """Forget every record (a world reset: frame ids start again)."""
+        """Forget every record (the world was reset)."""
         self._records.clear()
         self._by_image.clear()
 

@@ -183,7 +183,7 @@ class RemoteWorld:
 
     def reset(self, seed: int) -> None:
         """Start the world and its VLM over from ``seed`` for an episode; blocks until the world says it
-        is done (up to ``RESET_TIMEOUT_S``)."""
+        is done (a :class:`~vap_bt.errors.TransportError` if none answers within ``RESET_TIMEOUT_S``)."""
         self._ask("reset", seed=int(seed), timeout=RESET_TIMEOUT_S)
         self._info = None
 
