@@ -31,7 +31,9 @@ import threading
 import time
 
 from vap_bt import plugins
+from vap_bt.app.arguments import add_settings
 from vap_bt.errors import EXIT_OK, InputError, VapBtError
+from vap_bt.settings import RunConfig
 from vap_bt.transport import keys
 from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, describe, open_session, settings_from_args
 from vap_bt.transport.drivers import DriverServer
@@ -49,8 +51,7 @@ READY = "vap-bt sim: ready"
 def add_sim_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("task", help="task file whose household to build (trees/*.yaml)")
     p.add_argument("--seed", type=int, default=0, help="the world's first seed (a run resets it to its own)")
-    p.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
-    p.add_argument("--vlm-noise", type=float, help="scale of the simulated VLM's imperfections: 1 the calibrated model (default), 0 an ideal reader of the picture")
+    add_settings(p, "sim", RunConfig)  # the world's and the simulated VLM's settings a run has too
     add_transport_arguments(p, default_listen=True, default_endpoint=SIM_ENDPOINT)
 
 
@@ -82,8 +83,7 @@ def run_sim(args: argparse.Namespace) -> int:
     task = taskfile.load(args.task)
     if task.spec.scene is None:
         raise InputError(args.task, "vap-bt sim builds a household from a task file's scene:; this task has none")
-    cfg = runner.RunConfig.from_task(task, world="pybullet", seed=args.seed, vlm_noise=args.vlm_noise,
-                                     injection=False if args.no_injection else None)
+    cfg = RunConfig.from_task(task, world="pybullet", seed=args.seed, **RunConfig.given(args, "sim"))
     robots = tuple(sorted({e.robot for e in plugins.skill_table(plugins.discover_skills()).values()}))
     settings = settings_from_args(args, default_listen=True, default_endpoint=SIM_ENDPOINT, mode="router")
     world = runner.make_world(task, cfg)
