@@ -24,17 +24,22 @@ from vap_bt import taskfile
 from vap_bt.app.arguments import add_settings
 from vap_bt.app.cli import build_parser, main
 from vap_bt.errors import EXIT_BAD_INPUT
-from vap_bt.settings import (OPTIONS, TOP_LEVEL, Option, RunConfig, RunOutput, TaskOptions, TaskSource, TreeOutput,
-                             settings_fields, task_options)
-from vap_bt.settings import settings_model
+from vap_bt.settings import (OPTIONS, TOP_LEVEL, Commands, Hosting, Option, RunConfig, RunOutput, TaskOptions,
+                             TaskSource, TreeOutput, Zenoh, settings_fields, settings_model, task_options)
 
 from conftest import DOMAINS, ROOT, TREES
 
-MODELS = (RunConfig, TaskSource, RunOutput, TreeOutput)
+MODELS = (RunConfig, TaskSource, RunOutput, TreeOutput, Zenoh, Hosting, Commands)
+
+
+def commands(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:
+    """Every command's parser by name, ``vap-bt`` itself included."""
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return {"vap-bt": parser, **sub.choices}
 
 
 def subparser(parser: argparse.ArgumentParser, command: str) -> argparse.ArgumentParser:
-    return next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction)).choices[command]
+    return commands(parser)[command]
 
 
 def action_for(parser: argparse.ArgumentParser, dest: str) -> argparse.Action | None:
@@ -58,6 +63,14 @@ def test_every_setting_reaches_the_parsers_of_its_commands_with_its_help_and_cho
         literal = typing.get_args(info.annotation)
         if typing.get_origin(info.annotation) is typing.Literal:
             assert action.choices == list(literal)
+
+
+def test_every_argument_of_every_command_is_a_declared_setting():
+    """No flag is written by hand beside the declarations: each command's arguments are exactly
+    the fields declared for it."""
+    for command, parser in commands(build_parser()).items():
+        dests = {a.dest for a in parser._actions if not isinstance(a, (argparse._HelpAction, argparse._SubParsersAction))}
+        assert dests == {name for _, name, _, option in declared() if command in option.commands}, command
 
 
 @pytest.mark.parametrize("name,info,option", [(n, i, o) for _, n, i, o in declared((RunConfig,)) if o.in_task],

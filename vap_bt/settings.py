@@ -1,12 +1,11 @@
-"""The settings of a run, each declared once: its type, default, help text, validation, and where
-it may be given.
+"""The settings of a run and the arguments of every command, each declared once: its type,
+default, help text, validation, and where it may be given.
 
-A run's option used to be stated four times over — an ``argparse`` flag, a field of the runner's
-config, a field of the task file's ``options:``, a field of the executive's settings — and adding
-one meant touching all of them. Here each is one field of a pydantic dataclass: the annotation and
-``Field`` say its type, default, help text (``description``) and validation; an :class:`Option`
-beside them says which commands take it on their command line, under which flag, and whether a
-task file may state it. From these declarations derive
+An option of a run is at once a flag, a field of the runner's config, perhaps a key of a task
+file's ``options:``, and a field of the executive's settings; here it is one field of a pydantic
+dataclass: the annotation and ``Field`` say its type, default, help text (``description``) and
+bounds; an :class:`Option` beside them says which commands take it on their command line, under
+which flag, and whether a task file may state it. From these declarations derive
 
 * each command's ``argparse`` arguments (:mod:`vap_bt.app.arguments` walks the fields: flag,
   choices, type check, default and help come from here),
@@ -16,7 +15,12 @@ task file may state it. From these declarations derive
   :meth:`RunConfig.from_task` with the documented precedence: what the command line gave, over
   what the task file states, over the default,
 * the executive's settings (:class:`vap_bt.bt.executive.ExecutiveSettings`, a small frozen
-  dataclass of bt/, built from a RunConfig by the runner, so the executive depends on nothing here).
+  dataclass of bt/, built from a RunConfig by the runner: bt/ reads only defaults from here).
+
+Beside the run's settings, the other arguments commands take are declared the same way: what a
+command runs and writes (:class:`TaskSource`, :class:`RunOutput`, :class:`TreeOutput`), how it
+opens its Zenoh session (:class:`Zenoh`, read into a ``TransportSettings`` of the wire), what
+``serve`` and ``sim`` host (:class:`Hosting`), and the rest (:class:`Commands`).
 
 A new option is one field below (``tests/test_settings.py`` walks the fields and checks each
 reaches its commands' parsers, the task file's model and the run's config).
@@ -44,6 +48,21 @@ if TYPE_CHECKING:
 MAX_REPLANS = 20
 #: the accepted chance of claiming a goal atom that does not hold, per atom (vap_bt.perception.evidence)
 CLAIM_RISK = 0.05
+
+#: where ``vap-bt serve`` listens, and clients connect, unless told otherwise
+DEFAULT_ENDPOINT = "tcp/127.0.0.1:7448"
+#: where ``vap-bt sim`` (the episode's Zenoh router) listens, and its parts connect, by default
+SIM_ENDPOINT = "tcp/127.0.0.1:7447"
+#: how long a session waits for the configured peers to answer (vap_bt.transport.config.open_session)
+PEER_TIMEOUT_S = 5.0
+#: how long a camera request may take (rendering included): ``--camera-timeout``
+CAMERA_TIMEOUT_S = 30.0
+#: how long the executive waits for a vanished skill server's robot to be served again (a
+#: ``vap-bt serve`` restarted by hand or by a supervisor is up in a few seconds) before it gives
+#: up: ``--rejoin-timeout``
+REJOIN_TIMEOUT_S = 30.0
+#: how long a ``vap-bt parts`` snapshot waits for the liveliness query's answers
+SNAPSHOT_TIMEOUT_S = 2.0
 
 World = Literal["symbolic", "pybullet"]
 Verify = Literal["both", "pre", "eff", "none"]
@@ -77,6 +96,10 @@ class Option:
     expects: str | None = None
     cli_default: Any = None
     nargs: str | None = None
+    #: the titled group of ``--help`` it is listed in (None: the command's own options)
+    group: str | None = None
+    #: a name shared by flags of which one at most may be given (``--once``, ``--watch``)
+    exclusive: str | None = None
     #: the help text where a command words it otherwise than ``description`` (command -> text)
     help_for: tuple[tuple[str, str], ...] = ()
 
@@ -108,6 +131,8 @@ def _detector_default(name: str):
 
 RUN_TREE = ("run", "export", "tree")
 RUN_SIM = ("run", "sim")
+#: the commands that open a Zenoh session
+ZENOH = ("run", "serve", "sim", "parts")
 
 
 @settings_model(config=ConfigDict(extra="forbid"))
@@ -283,3 +308,87 @@ class TreeOutput:
     output: Annotated[str | None, Option("--output", ("export", "tree"), short="-o", help_for=(
         ("export", "write the XML here instead of stdout"),))] = Field(
         None, description="write the tree here instead of stdout")
+
+
+@settings_model
+class Zenoh:
+    """How a command's Zenoh session is opened (:class:`vap_bt.transport.config.TransportSettings`,
+    built from these by :func:`~vap_bt.transport.config.settings_from_args` or ``part_settings``)."""
+
+    listen: Annotated[list[str], Option("--listen", ZENOH, metavar="ENDPOINT", group="zenoh transport", help_for=(
+        ("run", "with --connect: also listen here, as a Zenoh peer; repeatable"),
+        ("serve", f"endpoint to listen on, e.g. {DEFAULT_ENDPOINT}; repeatable (default: {DEFAULT_ENDPOINT} when "
+                  "nothing else is given)"),
+        ("sim", f"endpoint to listen on, e.g. {SIM_ENDPOINT}; repeatable (default: {SIM_ENDPOINT} when nothing "
+                "else is given)")))] = Field(
+        default_factory=list, description=f"endpoint to listen on, e.g. {DEFAULT_ENDPOINT}; repeatable")
+    connect: Annotated[list[str], Option("--connect", ZENOH, metavar="ENDPOINT", group="zenoh transport", help_for=(
+        ("run", f"run against parts already running: the router of `vap-bt sim` (e.g. {SIM_ENDPOINT}) and the "
+                "skill servers of `vap-bt serve --world remote`; repeatable"),
+        ("parts", f"where to look: the router of `vap-bt sim` (default {SIM_ENDPOINT}), or any peer of the "
+                  "network; repeatable")))] = Field(
+        default_factory=list, description="endpoint of a peer or router to connect to; repeatable")
+    zenoh_config: Annotated[str | None, Option("--zenoh-config", ZENOH, metavar="FILE", group="zenoh transport")] = Field(
+        None, description="a zenoh JSON5 config used as is (router, TLS, user/password)")
+    peer_timeout: Annotated[float, Option("--peer-timeout", ZENOH, metavar="S", group="zenoh transport")] = Field(
+        PEER_TIMEOUT_S, description=f"seconds to wait for configured peers (default {PEER_TIMEOUT_S:g})")
+    # the executive's own waits on the parts it reaches (vap-bt run --connect)
+    camera_timeout: Annotated[float, Option("--camera-timeout", metavar="S", group="zenoh transport",
+                                            expects="a number of seconds above 0")] = Field(
+        CAMERA_TIMEOUT_S, gt=0, allow_inf_nan=False,
+        description=f"seconds a camera or world-side VLM request may take (default {CAMERA_TIMEOUT_S:g})")
+    rejoin_timeout: Annotated[float, Option("--rejoin-timeout", metavar="S", group="zenoh transport",
+                                            expects="a number of seconds above 0")] = Field(
+        REJOIN_TIMEOUT_S, gt=0, allow_inf_nan=False,
+        description="seconds to wait for a vanished skill server's robot to be served again before the episode "
+                    f"ends 'transport down' (default {REJOIN_TIMEOUT_S:g})")
+
+
+@settings_model
+class Hosting:
+    """What ``vap-bt serve`` and ``vap-bt sim`` host: the world they build, and (serve) which skills."""
+
+    household: Annotated[str | None, Option("household", ("sim",), metavar="task")] = Field(
+        None, description="task file whose household to build (trees/*.yaml)")
+    robot: Annotated[list[str], Option("--robot", ("serve",), metavar="ROBOT")] = Field(
+        default_factory=list, description="robot whose skills to host (ur5e, base, ...); repeatable; default: every "
+                                          "robot with a skill plugin")
+    world: Annotated[str, Option("--world", ("serve",))] = Field(
+        "symbolic", description="symbolic, pybullet, remote (the world of a running `vap-bt sim`, reached at "
+                                f"--connect, default {SIM_ENDPOINT}), or package.module:factory (default symbolic)")
+    task: Annotated[str | None, Option("--task", ("serve",))] = Field(
+        None, description="task file the symbolic/pybullet world is built from")
+    seed: Annotated[int, Option("--seed", ("serve", "sim"))] = Field(
+        0, description="the world's first seed (a run resets it to its own)")
+    world_arg: Annotated[list[str], Option("--world-arg", ("serve",), metavar="KEY=VALUE")] = Field(
+        default_factory=list, description="keyword argument for a package.module:factory world; repeatable")
+    name: Annotated[str | None, Option("--name", ("serve",))] = Field(
+        None, description="server name in the liveliness token (one robot only)")
+    exclude_skill: Annotated[list[str], Option("--exclude-skill", ("serve",), metavar="ENTRY_POINT")] = Field(
+        default_factory=list, description="ignore this skill plugin (by entry-point name); repeatable")
+
+
+@settings_model(kw_only=True)
+class Commands:
+    """The other commands' arguments: ``plan``, ``skills``, ``parts``, ``launch``, and ``vap-bt``'s own."""
+
+    verbose: Annotated[bool, Option("--verbose", ("vap-bt",), short="-v")] = Field(False, description="debug logging")
+    domain: Annotated[str, Option("domain", ("plan",))] = Field(description="the PDDL domain file")
+    problem: Annotated[str, Option("problem", ("plan",))] = Field(description="the PDDL problem file")
+    engine: Annotated[Engine, Option("--engine", ("plan",))] = Field(
+        "fast-downward", description="Fast Downward through unified-planning (default), or the in-process greedy "
+                                     "search")
+    once: Annotated[bool, Option("--once", ("parts",), exclusive="mode")] = Field(
+        False, description="one snapshot, then exit (the default)")
+    watch: Annotated[bool, Option("--watch", ("parts",), exclusive="mode")] = Field(
+        False, description="list what is there, then one line per part or goal that comes (+) or goes (-), until "
+                           "Ctrl-C")
+    timeout: Annotated[float, Option("--timeout", ("parts",), metavar="S")] = Field(
+        SNAPSHOT_TIMEOUT_S, description=f"seconds a snapshot waits for answers (default {SNAPSHOT_TIMEOUT_S:g})")
+    json: Annotated[bool, Option("--json", ("skills", "parts"), help_for=(
+        ("parts", "the snapshot as JSON ({'parts': [...], 'goals': [...]})"),))] = Field(
+        False, description="machine-readable listing")
+    file: Annotated[str, Option("file", ("launch",))] = Field(description="the launch file (YAML; the schema is below)")
+    endpoint: Annotated[str | None, Option("--endpoint", ("launch",), metavar="ENDPOINT")] = Field(
+        None, description="where the parts meet, instead of the file's endpoint: (a part's own endpoint: still "
+                          f"holds; default {SIM_ENDPOINT})")

@@ -21,12 +21,30 @@ from pydantic.fields import FieldInfo
 from vap_bt.settings import Option, settings_fields
 
 
-def add_settings(parser, command: str, *models: type) -> None:
-    """Add to ``parser`` (or an argument group) the arguments ``command`` takes from ``models``."""
+def add_settings(parser: argparse.ArgumentParser, command: str, *models: type) -> None:
+    """Add to ``parser`` the arguments ``command`` takes from ``models`` (in their titled groups)."""
+    places: dict[str, Any] = {}
     for model in models:
         for name, info, option in settings_fields(model):
             if option is not None and option.flag is not None and command in option.commands:
-                parser.add_argument(*_names(option), **_keywords(name, info, option, command))
+                place = _place(parser, option, places)
+                place.add_argument(*_names(option), **_keywords(name, info, option, command))
+
+
+def _place(parser: argparse.ArgumentParser, option: Option, places: dict[str, Any]):
+    """Where an option is added: its titled group (one per title), a mutually exclusive group
+    with its partners, or the parser itself."""
+    if option.exclusive:
+        key = f"exclusive {option.exclusive}"
+        if key not in places:
+            places[key] = parser.add_mutually_exclusive_group()
+        return places[key]
+    if option.group:
+        if option.group not in places:
+            existing = [g for g in parser._action_groups if g.title == option.group]
+            places[option.group] = existing[0] if existing else parser.add_argument_group(option.group)
+        return places[option.group]
+    return parser
 
 
 def _names(option: Option) -> tuple[str, ...]:
@@ -34,7 +52,9 @@ def _names(option: Option) -> tuple[str, ...]:
 
 
 def _keywords(name: str, info: FieldInfo, option: Option, command: str) -> dict[str, Any]:
-    kw: dict[str, Any] = {"help": option.help(command, info.description), "default": _default(info, option)}
+    kw: dict[str, Any] = {"help": option.help(command, info.description)}
+    if not info.is_required():  # a required positional takes no default
+        kw["default"] = _default(info, option)
     if option.flag.startswith("-"):
         kw["dest"] = name
     elif option.flag != name:
@@ -42,6 +62,8 @@ def _keywords(name: str, info: FieldInfo, option: Option, command: str) -> dict[
     base = _plain(info.annotation)
     if base is bool:  # given, the flag says the opposite of the default (--no-injection, --json)
         return {**kw, "action": "store_const", "const": not info.default}
+    if typing.get_origin(_optional(info.annotation)) is list and not option.nargs:
+        kw["action"] = "append"  # a repeatable flag (--connect A --connect B)
     if typing.get_origin(base) is Literal:
         kw["choices"] = list(typing.get_args(base))
     elif base in (int, float):
@@ -63,10 +85,16 @@ def _default(info: FieldInfo, option: Option) -> Any:
     return info.get_default(call_default_factory=True)
 
 
-def _plain(annotation: Any) -> Any:
-    """``X`` of ``X | None``; ``list[X]`` (a flag with nargs) as ``X``."""
+def _optional(annotation: Any) -> Any:
+    """``X`` of ``X | None``."""
     if isinstance(annotation, types.UnionType) or typing.get_origin(annotation) is typing.Union:
-        annotation = next(a for a in typing.get_args(annotation) if a is not type(None))
+        return next(a for a in typing.get_args(annotation) if a is not type(None))
+    return annotation
+
+
+def _plain(annotation: Any) -> Any:
+    """``X`` of ``X | None``; ``list[X]`` (a repeatable flag, or one with nargs) as ``X``."""
+    annotation = _optional(annotation)
     if typing.get_origin(annotation) is list:
         annotation = typing.get_args(annotation)[0]
     return annotation
@@ -79,7 +107,12 @@ def _checked(base: type, info: FieldInfo, option: Option) -> Callable[[str], Any
     adapter = TypeAdapter(typing.Annotated[base, *bounds]) if bounds else None
 
     def check(text: str):
-        value = base(text)  # a ValueError: argparse says "invalid int value: 'abc'"
+        try:
+            value = base(text)
+        except ValueError:
+            if option.expects is None:
+                raise  # argparse says "invalid int value: 'abc'"
+            raise argparse.ArgumentTypeError(f"{text!r} is not {option.expects}") from None
         if adapter is None:
             return value
         try:

@@ -252,7 +252,7 @@ def _examples(*lines: str) -> dict:
 
 def build_parser() -> argparse.ArgumentParser:
     from vap_bt.app.arguments import add_settings
-    from vap_bt.settings import RunConfig, RunOutput, TaskSource, TreeOutput
+    from vap_bt.settings import Commands, RunConfig, RunOutput, TaskSource, TreeOutput, Zenoh
 
     p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans",
                                 **_examples("vap-bt run trees/collect_cup.yaml      # in the pybullet household",
@@ -260,16 +260,13 @@ def build_parser() -> argparse.ArgumentParser:
                                             "vap-bt tree trees/collect_cup.yaml",
                                             "vap-bt run trees/boil_water.yaml --rerun save run.rrd",
                                             "vap-bt COMMAND --help   (examples for each command)"))
-    p.add_argument("-v", "--verbose", action="store_true", help="debug logging")
+    add_settings(p, "vap-bt", Commands)
     sub = p.add_subparsers(dest="command", required=True)
 
     sp = sub.add_parser("plan", help="print a plan for a PDDL domain and problem", **_examples(
         "vap-bt plan tests/domains/gripper-domain.pddl tests/domains/gripper-p4.pddl",
         "vap-bt plan tests/domains/blocksworld-domain.pddl tests/domains/blocksworld-p6.pddl --engine search"))
-    sp.add_argument("domain", help="the PDDL domain file")
-    sp.add_argument("problem", help="the PDDL problem file")
-    sp.add_argument("--engine", choices=["fast-downward", "search"], default="fast-downward",
-                    help="Fast Downward through unified-planning (default), or the in-process greedy search")
+    add_settings(sp, "plan", Commands)
     sp.set_defaults(func=cmd_plan)
 
     sr = sub.add_parser("run", help="run a task (or a PDDL problem) end to end", **_examples(
@@ -286,14 +283,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "3 no plan exists from what the robot saw, 4 transport down, 5 the planner ran\n"
                     "out of time, 130 interrupted (Ctrl-C: the report so far and the summary are still\n"
                     "written).")
-    add_settings(sr, "run", TaskSource, RunConfig)
-    from vap_bt.transport.config import SIM_ENDPOINT, add_executive_waits, add_transport_arguments
-
-    add_executive_waits(add_transport_arguments(sr, default_listen=False, connect_help=(
-        f"run against parts already running: the router of `vap-bt sim` (e.g. {SIM_ENDPOINT}) and the skill "
-        "servers of `vap-bt serve --world remote`; repeatable"),
-        listen_help="with --connect: also listen here, as a Zenoh peer; repeatable"))
-    add_settings(sr, "run", RunOutput)
+    add_settings(sr, "run", TaskSource, RunConfig, Zenoh, RunOutput)
     sr.set_defaults(func=cmd_run)
 
     se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML", **_examples(
