@@ -100,10 +100,11 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
 def test_default_configuration_is_loopback_only():
     import argparse
 
-    from vap_bt.transport.config import add_transport_arguments
+    from vap_bt.app.arguments import add_settings
+    from vap_bt.settings import Zenoh
 
     p = argparse.ArgumentParser()
-    add_transport_arguments(p, default_listen=True)
+    add_settings(p, "serve", Zenoh)
     conf = build_config(settings_from_args(p.parse_args([]), default_listen=True))
     assert json.loads(conf.get_json("listen/endpoints")) == ["tcp/127.0.0.1:7448"]
     assert json.loads(conf.get_json("connect/endpoints")) == []
@@ -116,11 +117,12 @@ def test_default_configuration_is_loopback_only():
 def test_the_executives_waits_are_options_of_run_only_and_must_be_positive(capsys):
     import argparse
 
-    from vap_bt.transport.config import (CAMERA_TIMEOUT_S, REJOIN_TIMEOUT_S, add_executive_waits,
-                                         add_transport_arguments, part_settings)
+    from vap_bt.app.arguments import add_settings
+    from vap_bt.settings import Zenoh
+    from vap_bt.transport.config import CAMERA_TIMEOUT_S, REJOIN_TIMEOUT_S, part_settings
 
     run = argparse.ArgumentParser()
-    add_executive_waits(add_transport_arguments(run, default_listen=False))
+    add_settings(run, "run", Zenoh)
     s = part_settings(run.parse_args(["--rejoin-timeout", "2.5", "--camera-timeout", "12"]))
     assert (s.rejoin_timeout, s.camera_timeout) == (2.5, 12.0)
     defaults = part_settings(run.parse_args([]))
@@ -131,5 +133,5 @@ def test_the_executives_waits_are_options_of_run_only_and_must_be_positive(capsy
         assert exit_.value.code == 2
         assert f"argument --rejoin-timeout: {bad!r} is not a number of seconds above 0" in capsys.readouterr().err
     serve = argparse.ArgumentParser()  # a server has no such waits: its settings keep the defaults
-    add_transport_arguments(serve, default_listen=True)
+    add_settings(serve, "serve", Zenoh)
     assert part_settings(serve.parse_args([])).rejoin_timeout == REJOIN_TIMEOUT_S

@@ -39,29 +39,20 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
 from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal as Lit
 from vap_bt.domain.task import PlanningTask
-from vap_bt.bt.repeats import MAX_REPLANS
 from vap_bt.errors import InputError
 from vap_bt.perception.profile import locate as locate_profile, resolve as resolve_profile
 from vap_bt.scene.layout import Layout, layout_facts
+from vap_bt.settings import TaskOptions, World, task_file_field
 from vap_bt.yaml_file import read_model
 
-Verify = Literal["both", "pre", "eff", "none"]
-
-
-class Options(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    verify: Verify = "both"
-    budget: int = Field(3, ge=0, description="viewpoint budget K of active perception")
-    paraphrases: int = Field(5, ge=1, le=5, description="N paraphrases asked per predicate")
-    max_replans: int = Field(MAX_REPLANS, ge=0, description="replans an episode may make")
-    max_seconds: float = Field(900.0, gt=0, description="the episode's budget of wall-clock time")
-    injection: bool = True  # Table II situation injection in the world
+#: what ``options:`` may say: the run's settings a task file may state, declared once with their
+#: flags (:mod:`vap_bt.settings`); a flag given on the command line overrides the file's word
+Options = TaskOptions
 
 
 class TaskFile(BaseModel):
@@ -74,8 +65,7 @@ class TaskFile(BaseModel):
     scene: Layout | None = None
     goal: list[str] | None = None
     belief: list[str] = Field(default_factory=list, description="what the user tells the robot (a prior)")
-    world: Literal["symbolic", "pybullet"] = Field(
-        "symbolic", description="the world `vap-bt run` uses unless --world says otherwise")
+    world: World = task_file_field("world")  # the world `vap-bt run` uses unless --world says otherwise
     options: Options = Field(default_factory=Options)
     perception: str | None = Field(None, description="the domain's perception profile (default: beside the domain)")
 

@@ -7,6 +7,7 @@ tree (:mod:`vap_bt.bt`), skills, the wire (:mod:`vap_bt.transport`) and the worl
 below imports it back:
 
 * :mod:`.runner`        — an episode: a task, a world, skills, robot interfaces, a VLM, the executive.
+* :mod:`.arguments`     — each command's flags, derived from the settings' declarations (:mod:`vap_bt.settings`).
 * :mod:`.inprocess`     — skills and robot interfaces in the executive's own process.
 * :mod:`.embedded`      — the default: skill servers and the executive in one command, over Zenoh.
 * :mod:`.connected`     — the executive against parts that run elsewhere (``--connect``).

@@ -31,10 +31,10 @@ import zenoh
 
 from vap_bt.errors import EXIT_OK
 from vap_bt.transport import keys
-from vap_bt.transport.config import add_transport_arguments, open_session, part_settings
+from vap_bt.app.arguments import add_settings
+from vap_bt.settings import SNAPSHOT_TIMEOUT_S, Commands, Zenoh
+from vap_bt.transport.config import open_session, part_settings
 
-#: how long a snapshot waits for the liveliness query's answers
-SNAPSHOT_TIMEOUT_S = 2.0
 #: the order kinds are listed in: the world first, the executive last
 KINDS = ("sim", "drivers", "skill server", "executive")
 
@@ -111,17 +111,7 @@ def _columns(head: list[str], rows: list[list[str]]) -> list[str]:
 
 
 def add_parts_arguments(p: argparse.ArgumentParser) -> None:
-    mode = p.add_mutually_exclusive_group()
-    mode.add_argument("--once", action="store_true", help="one snapshot, then exit (the default)")
-    mode.add_argument("--watch", action="store_true",
-                      help="list what is there, then one line per part or goal that comes (+) or goes (-), "
-                           "until Ctrl-C")
-    p.add_argument("--timeout", type=float, default=SNAPSHOT_TIMEOUT_S, metavar="S",
-                   help=f"seconds a snapshot waits for answers (default {SNAPSHOT_TIMEOUT_S:g})")
-    p.add_argument("--json", action="store_true", help="the snapshot as JSON ({'parts': [...], 'goals': [...]})")
-    add_transport_arguments(p, default_listen=False, connect_help=(
-        "where to look: the router of `vap-bt sim` (default tcp/127.0.0.1:7447), or any peer of the network; "
-        "repeatable"))
+    add_settings(p, "parts", Commands, Zenoh)
 
 
 def run_parts(args: argparse.Namespace) -> int:

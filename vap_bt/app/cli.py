@@ -117,15 +117,7 @@ def _run(args, stdout) -> int:
     from vap_bt.app.runner import EpisodeInterrupted, RunConfig, Session, check_config
 
     task = _load_run_task(args)
-    cfg = RunConfig.from_task(task, world=args.world, seed=args.seed, verify=args.verify, budget=args.budget,
-                              vlm_noise=args.vlm_noise, injection=False if args.no_injection else None,
-                              max_replans=args.max_replans, planner=args.planner, transport=args.transport,
-                              sensors=args.sensors,
-                              early_stop=args.early_stop or None, protocol=args.protocol,
-                              viewpoints=args.viewpoints, vlm=args.vlm, vlm_url=args.vlm_url,
-                              second_look=False if args.one_look else None, claim_risk=args.claim_risk,
-                              vlm_model=args.vlm_model, goal=args.goal, parse_instruction=args.parse_instruction,
-                              vlm_latency=args.vlm_latency, vlm_logprobs=False if args.no_logprobs else None)
+    cfg = RunConfig.from_task(task, **RunConfig.given(args, "run"))  # the flags over the task file's options
     check_config(task, cfg)  # bad options in one line, before the first progress line
     remote = _remote_settings(args)
     progress = _progress(args.quiet)
@@ -191,39 +183,19 @@ def _compiled_tree(args):
     from vap_bt.bt.context import ExecutionContext, VerifyMode
     from vap_bt.domain.planner import Planner
     from vap_bt.scene.graph import SceneGraph
+    from vap_bt.settings import RunConfig
 
     task = _load_run_task(args)
+    settings = RunConfig.chosen(task, **RunConfig.given(args, args.command))  # --verify over options.verify
     planning = task.planning
     if not planning.goal:
         raise InputError(f"{task.path}: field goal", "export plans goal: atoms; a goal in words is parsed only "
                                                      "by a run (vap-bt run --vlm openai|gemini)")
     plan = Planner(planning).plan()
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
-                           camera=None, skills=None, mode=VerifyMode.parse(args.verify or task.options.verify),
-                           budget=task.options.budget, profile=task.profile)
+                           camera=None, skills=None, mode=VerifyMode.parse(settings["verify"]),
+                           budget=settings["budget"], profile=task.profile)
     return compile_plan(ctx, plan.actions, planning.goal, planning.knowledge)
-
-
-def _risk(text: str) -> float:
-    """An argparse type: a probability strictly between 0 and 0.5 (argparse names the option)."""
-    try:
-        value = float(text)
-    except ValueError:
-        value = -1.0
-    if not 0.0 < value < 0.5:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a probability between 0 and 0.5")
-    return value
-
-
-def _task_arguments(p: argparse.ArgumentParser) -> None:
-    """What a command runs or compiles (run, export, tree): a task file, or a PDDL domain and
-    problem, and which checks its tree has."""
-    p.add_argument("task", nargs="?", help="task file (trees/*.yaml)")
-    p.add_argument("--domain", help="a PDDL domain file, instead of a task file (with --problem)")
-    p.add_argument("--problem", help="a PDDL problem file, instead of a task file (with --domain)")
-    p.add_argument("--verify", choices=["both", "pre", "eff", "none"],
-                   help="which checks the tree has: preconditions and effects, one of them, or none (the "
-                        "closed-world baseline); default the task file's options.verify, else both")
 
 
 def _write(text: str, output: str | None) -> None:
@@ -279,7 +251,8 @@ def _examples(*lines: str) -> dict:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from vap_bt.bt.repeats import MAX_REPLANS
+    from vap_bt.app.arguments import add_settings
+    from vap_bt.settings import Commands, RunConfig, RunOutput, TaskSource, TreeOutput, Zenoh
 
     p = argparse.ArgumentParser(prog="vap-bt", description="Behaviour-tree executive with VLM-checked PDDL plans",
                                 **_examples("vap-bt run trees/collect_cup.yaml      # in the pybullet household",
@@ -287,16 +260,13 @@ def build_parser() -> argparse.ArgumentParser:
                                             "vap-bt tree trees/collect_cup.yaml",
                                             "vap-bt run trees/boil_water.yaml --rerun save run.rrd",
                                             "vap-bt COMMAND --help   (examples for each command)"))
-    p.add_argument("-v", "--verbose", action="store_true", help="debug logging")
+    add_settings(p, "vap-bt", Commands)
     sub = p.add_subparsers(dest="command", required=True)
 
     sp = sub.add_parser("plan", help="print a plan for a PDDL domain and problem", **_examples(
         "vap-bt plan tests/domains/gripper-domain.pddl tests/domains/gripper-p4.pddl",
         "vap-bt plan tests/domains/blocksworld-domain.pddl tests/domains/blocksworld-p6.pddl --engine search"))
-    sp.add_argument("domain", help="the PDDL domain file")
-    sp.add_argument("problem", help="the PDDL problem file")
-    sp.add_argument("--engine", choices=["fast-downward", "search"], default="fast-downward",
-                    help="Fast Downward through unified-planning (default), or the in-process greedy search")
+    add_settings(sp, "plan", Commands)
     sp.set_defaults(func=cmd_plan)
 
     sr = sub.add_parser("run", help="run a task (or a PDDL problem) end to end", **_examples(
@@ -313,78 +283,13 @@ def build_parser() -> argparse.ArgumentParser:
                     "3 no plan exists from what the robot saw, 4 transport down, 5 the planner ran\n"
                     "out of time, 130 interrupted (Ctrl-C: the report so far and the summary are still\n"
                     "written).")
-    _task_arguments(sr)
-    sr.add_argument("--world", choices=["symbolic", "pybullet"],
-                    help="the world to run in (default: the task file's world:; the household's task files "
-                         "say pybullet)")
-    sr.add_argument("--seed", type=int, default=0, help="the episode's seed: the world's, the simulated VLM's and "
-                                                         "the injection's draws (default 0)")
-    sr.add_argument("--budget", type=int, help="viewpoint budget K")
-    sr.add_argument("--vlm", choices=["sim", "sim-http", "openai", "gemini"],
-                    help="sim (default, offline): the world-side simulated VLM; sim-http: the same model behind a "
-                         "local OpenAI-compatible endpoint, asked through the openai client; openai: any "
-                         "OpenAI-compatible server (key from OPENAI_API_KEY); gemini: Gemini's REST API (key from "
-                         "GEMINI_API_KEY)")
-    sr.add_argument("--vlm-latency", type=float, metavar="SECONDS",
-                    help="sim-http: seconds the endpoint adds to every answer (a model's inference time)")
-    sr.add_argument("--no-logprobs", action="store_true",
-                    help="HTTP backends: do not ask for token log-probabilities (the lean protocol then votes)")
-    sr.add_argument("--vlm-url", help="API root of the openai/gemini backend, e.g. http://127.0.0.1:8000/v1")
-    sr.add_argument("--vlm-model", help="model name for the openai/gemini backend (openai: the served model)")
-    sr.add_argument("--vlm-noise", type=float, help="scale of the simulated VLM's imperfections: 1 the calibrated model (default), 0 an ideal reader of the picture")
-    sr.add_argument("--goal", metavar="WORDS",
-                    help="the goal in words, parsed by the VLM after the survey (needs --vlm openai|gemini); "
-                         "without it the task file's goal: atoms run")
-    sr.add_argument("--parse-instruction", action="store_true",
-                    help="parse the task file's instruction: with the VLM even though it has goal: atoms "
-                         "(those are then the report's reference)")
-    sr.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
-    sr.add_argument("--sensors", choices=["exact", "real"],
-                    help="pybullet: the wrist depth camera and the base's localiser exact (default), or real: "
-                         "D435i-like depth and an AMCL-like pose error (docs/world.md)")
-    sr.add_argument("--early-stop", action="store_true", help="stop a vote once it is decided")
-    sr.add_argument("--protocol", choices=["paper", "lean"],
-                    help="how checks ask: the paper's Alg. 2 (default), or lean (early stop, questions in flight "
-                         "at once, no re-asking what nothing changed, three agreeing answers or one confident "
-                         "logprob answer where they confirm the plan, the detector's word on whether a view "
-                         "shows enough; a surprise always gets the paper's full vote)")
-    sr.add_argument("--viewpoints", choices=["vlm", "greedy"],
-                    help="where to look from next: the VLM's suggestion (default) or a fixed round (paper H2)")
-    sr.add_argument("--one-look", action="store_true",
-                    help="believe the first settled view of a surprise or a goal, as the paper's Alg. 2 does "
-                         "(default: a second view from a new picture first)")
-    sr.add_argument("--claim-risk", type=_risk, metavar="P",
-                    help="the accepted chance of claiming a goal atom that does not hold: views are weighed by "
-                         "the VLM's calibration until the odds reach (1 - P)/P (default 0.05; "
-                         "docs/perception.md, 'Looking again')")
-    sr.add_argument("--max-replans", type=int, help=f"replans an episode may make (default {MAX_REPLANS})")
-    sr.add_argument("--planner", choices=["fast-downward", "search"], help="engine of the first plan")
-    sr.add_argument("--transport", choices=["inproc", "zenoh"], default="zenoh",
-                    help="zenoh (default): skill servers in this command, reached over a loopback Zenoh link; "
-                         "inproc: skills called directly (fast campaigns)")
-    from vap_bt.transport.config import SIM_ENDPOINT, add_executive_waits, add_transport_arguments
-
-    add_executive_waits(add_transport_arguments(sr, default_listen=False, connect_help=(
-        f"run against parts already running: the router of `vap-bt sim` (e.g. {SIM_ENDPOINT}) and the skill "
-        "servers of `vap-bt serve --world remote`; repeatable"),
-        listen_help="with --connect: also listen here, as a Zenoh peer; repeatable"))
-    sr.add_argument("--report", help="write the full JSON report here")
-    sr.add_argument("--rerun", nargs="+", metavar="MODE",
-                    help="live view in rerun: 'spawn' (a local viewer), 'serve [PORT]' (gRPC on 127.0.0.1, "
-                         "default 9876), or 'save FILE.rrd'")
-    sr.add_argument("--json", action="store_true",
-                    help="print only the JSON summary on stdout, for scripts (the table goes to stderr)")
-    sr.add_argument("--full", action="store_true", help="with --json: the full report, not the summary "
-                                                        "(implies --json)")
-    sr.add_argument("-q", "--quiet", action="store_true",
-                    help="no progress lines on stderr (nor the table, with --json)")
+    add_settings(sr, "run", TaskSource, RunConfig, Zenoh, RunOutput)
     sr.set_defaults(func=cmd_run)
 
     se = sub.add_parser("export", help="plan a task and print its tree as BehaviorTree.CPP XML", **_examples(
         "vap-bt export trees/collect_cup.yaml -o tree.xml",
         "vap-bt export trees/pick_plate.yaml --verify eff"))
-    _task_arguments(se)
-    se.add_argument("-o", "--output", help="write the XML here instead of stdout")
+    add_settings(se, "export", TaskSource, RunConfig, TreeOutput)
     se.set_defaults(func=cmd_export)
 
     st = sub.add_parser("tree", help="plan a task and print its compiled tree without running it", **_examples(
@@ -393,10 +298,7 @@ def build_parser() -> argparse.ArgumentParser:
         "vap-bt tree trees/boil_water.yaml --format xml --verify eff   # BehaviorTree.CPP v4 XML"),
         description="Plans from the task file's stated initial state (planning only: no world runs, "
                     "nothing is perceived) and prints the tree the executive would start with.")
-    _task_arguments(st)
-    st.add_argument("--format", choices=["ascii", "dot", "xml"], default="ascii",
-                    help="ascii (default) and dot: py_trees' own display; xml: the BehaviorTree.CPP v4 export")
-    st.add_argument("-o", "--output", help="write the tree here instead of stdout")
+    add_settings(st, "tree", TaskSource, RunConfig, TreeOutput)
     st.set_defaults(func=cmd_tree)
 
     _add_transport_commands(sub)

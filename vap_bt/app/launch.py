@@ -49,8 +49,9 @@ from typing import IO, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
+from vap_bt.app.arguments import add_settings
 from vap_bt.errors import EXIT_INTERRUPTED, EXIT_OK, InputError, TransportError
-from vap_bt.transport.config import SIM_ENDPOINT
+from vap_bt.settings import SIM_ENDPOINT, Commands
 from vap_bt.yaml_file import read_model
 
 #: the start-up stages, in order; each part's command is one of them
@@ -382,10 +383,7 @@ class Launcher:
 
 
 def add_launch_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("file", help="the launch file (YAML; the schema is below)")
-    p.add_argument("--endpoint", metavar="ENDPOINT",
-                   help="where the parts meet, instead of the file's endpoint: (a part's own endpoint: still "
-                        f"holds; default {SIM_ENDPOINT})")
+    add_settings(p, "launch", Commands)
 
 
 def run_launch(args: argparse.Namespace) -> int:

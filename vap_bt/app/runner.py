@@ -19,26 +19,26 @@ a finished report has, filled with what happened so far (nothing yet, before the
 from __future__ import annotations
 
 import time
+import typing
 from dataclasses import asdict, dataclass, field, replace
 from typing import Any, Callable
 
 from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
-from vap_bt.bt.repeats import MAX_REPLANS
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
 from vap_bt.perception.backends import BACKENDS as HTTP_BACKENDS, make_backend
 from vap_bt.perception.backends.base import HttpVLM, StopWhenSilent
 from vap_bt.perception.goal_parsing import GoalParse, GoalParser
-from vap_bt.perception.evidence import CLAIM_RISK
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import MeteredVLM, Paraphraser
 from vap_bt.report import verification_counts, versions
 from vap_bt.scene.graph import SceneGraph
+from vap_bt.settings import RunConfig, Vlm
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.disturbances import DisturbanceModel
 from vap_bt.sim.graph_score import score_graph
@@ -58,57 +58,13 @@ class EpisodeInterrupted(KeyboardInterrupt):
 
 #: how often the tree is ticked while a goal is in flight on a skill server
 TICK_PERIOD_S = 0.002
-_DETECTOR = DetectorModel()
 #: the phase of an episode before its executive runs: the world, skills and transport coming up
 STARTING = "starting"
 
 
-@dataclass
-class RunConfig:
-    world: str = "symbolic"
-    seed: int = 0
-    verify: str = "both"
-    budget: int = 3
-    paraphrases: int = 5
-    early_stop: bool = False
-    max_replans: int = MAX_REPLANS
-    max_seconds: float = 900.0
-    injection: bool = True
-    #: the probability of a scripted disturbance per episode (a person moves a thing, pushes a
-    #: leaf shut or half shut: vap_bt.sim.disturbances); 0: none
-    disturbance: float = 0.0
-    vlm: str = "sim"  # sim (world-side, offline) | sim-http | openai | gemini (see make_vlm)
-    vlm_url: str | None = None  # openai/gemini: the API root (--vlm-url)
-    vlm_model: str | None = None  # openai/gemini: the model name (--vlm-model)
-    vlm_noise: float = 1.0
-    vlm_latency: float = 0.0  # sim-http: seconds the endpoint adds to every answer (benchmarks)
-    vlm_logprobs: bool = True  # HTTP backends: ask for token log-probabilities
-    miss_rate: float = _DETECTOR.miss_rate  # symbolic detector
-    relation_noise: float = _DETECTOR.relation_noise  # symbolic relation reports (0: exact where shown)
-    transport: str = "inproc"
-    #: pybullet: the depth camera and the localiser — exact (the renderer's depth, the true base
-    #: pose) or real (D435i-like depth, an AMCL-like error; vap_bt/sim/depth_noise.py, localization.py)
-    sensors: str = "exact"
-    planner: str = "fast-downward"
-    protocol: str = "paper"  # how checks ask (vap_bt.perception.protocol): paper | lean
-    viewpoints: str = "vlm"  # where to look from next: vlm | greedy
-    #: a surprise or a goal value needs a second agreeing view (False: the paper's first settled view)
-    second_look: bool = True
-    #: the accepted chance of claiming a goal atom that does not hold (vap_bt.perception.evidence)
-    claim_risk: float = CLAIM_RISK
-    unseen: str = "look"  # an unsettled precondition: look | go_on | stop
-    goal: str | None = None  # a goal in words (--goal), parsed by the VLM after the survey
-    parse_instruction: bool = False  # parse the task file's instruction: even when it has goal: atoms
-
-    @classmethod
-    def from_task(cls, task: Task, **overrides) -> "RunConfig":
-        o = task.options
-        base = cls(world=task.spec.world, verify=o.verify, budget=o.budget, paraphrases=o.paraphrases,
-                   max_replans=o.max_replans, max_seconds=o.max_seconds, injection=o.injection)
-        return cls(**{**asdict(base), **{k: v for k, v in overrides.items() if v is not None}})
-
-    def detector(self) -> DetectorModel:
-        return DetectorModel(miss_rate=self.miss_rate, relation_noise=self.relation_noise)
+def make_detector(cfg: RunConfig) -> DetectorModel:
+    """The symbolic world's detector, with the run's miss rate and relation noise."""
+    return DetectorModel(miss_rate=cfg.miss_rate, relation_noise=cfg.relation_noise)
 
 
 def make_world(task: Task, cfg: RunConfig) -> World:
@@ -117,7 +73,7 @@ def make_world(task: Task, cfg: RunConfig) -> World:
     if cfg.world == "symbolic":
         from vap_bt.sim.symbolic import SymbolicWorld
 
-        return SymbolicWorld(task.planning, situations, seed=cfg.seed, detector=cfg.detector(),
+        return SymbolicWorld(task.planning, situations, seed=cfg.seed, detector=make_detector(cfg),
                              disturbances=disturbances)
     if cfg.world == "pybullet":
         from vap_bt.sim.pybullet_world import PybulletWorld
@@ -155,7 +111,7 @@ def make_camera(robot) -> Any:
     return ViewService(kit_for(robot)) if has_drivers(robot) else robot
 
 
-VLMS = ("sim", "sim-http", *HTTP_BACKENDS)
+VLMS = typing.get_args(Vlm)  # sim, sim-http and each HTTP backend (tests/test_settings.py checks they match)
 
 
 def sim_vlm(task: Task, world: World, cfg: RunConfig):
@@ -223,8 +179,6 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
                                     "this task has a PDDL problem instead: run it --world symbolic")
     if cfg.sensors != "exact" and cfg.world != "pybullet":
         raise InputError("--sensors", "only the pybullet world has a depth camera and a localiser to model")
-    if cfg.vlm not in VLMS:
-        raise InputError("--vlm", f"unknown VLM backend {cfg.vlm!r} ({', '.join(VLMS)})")
     if cfg.vlm in ("sim", "sim-http") and (cfg.vlm_url or cfg.vlm_model):
         raise InputError("--vlm-url" if cfg.vlm_url else "--vlm-model",
                          f"only for a real backend (--vlm openai|gemini); the {cfg.vlm} VLM has neither")
@@ -234,8 +188,6 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
                                   "have none: run it --world pybullet, or --verify none (it then only parses goals)")
     if cfg.vlm_latency and cfg.vlm != "sim-http":
         raise InputError("--vlm-latency", "only for --vlm sim-http (the simulated VLM behind its endpoint)")
-    if not cfg.vlm_latency >= 0:
-        raise InputError("--vlm-latency", f"must be >= 0 seconds, got {cfg.vlm_latency}")
     return goal_words(task, cfg)
 
 
@@ -290,6 +242,20 @@ def make_geometry(cfg: RunConfig):
     from vap_bt.scene.geometry import PointCloudGeometry
 
     return PointCloudGeometry
+
+
+def executive_settings(cfg: RunConfig, *, remote: bool) -> ExecutiveSettings:
+    """The executive's settings, from the run's: ``remote`` when work takes time (a robot or a
+    model in another process, or behind HTTP), which is then done on threads and polled."""
+    protocol = Protocol.parse(cfg.protocol)
+    if cfg.early_stop:
+        protocol = replace(protocol, early_stop=True)
+    return ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
+                             vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
+                             max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
+                             tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
+                             protocol=protocol, viewpoints=cfg.viewpoints, threads=remote,
+                             second_look=cfg.second_look, claim_risk=cfg.claim_risk)
 
 
 @dataclass
@@ -377,16 +343,8 @@ class Session:
         metered = MeteredVLM(vlm)
         self._goal_parser = None if self.words is None else GoalParser(
             metered, self.task.planning, self.words.text, self.words.where, self.words.source)
-        protocol = Protocol.parse(cfg.protocol)
-        if cfg.early_stop:
-            protocol = replace(protocol, early_stop=True)
         remote = cfg.transport != "inproc" or not self._world_side_vlm  # work that takes time: threads
-        settings = ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
-                                     vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
-                                     max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
-                                     tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
-                                     protocol=protocol, viewpoints=cfg.viewpoints, threads=remote,
-                                     second_look=cfg.second_look, claim_risk=cfg.claim_risk)
+        settings = executive_settings(cfg, remote=remote)
         progress = self.progress
         if self.recorder is not None:  # progress lines go to the recording's log as well
             progress = lambda m: (self.progress(m), self.recorder.note(m))  # noqa: E731
@@ -403,14 +361,14 @@ class Session:
 
     def build_graph(self, seed: int | None = None) -> dict:
         """Only BuildSceneGraph: the initial survey of an episode, scored (for benchmarks)."""
-        cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
+        cfg = self.cfg if seed is None else replace(self.cfg, seed=seed)
         scores: list[dict] = []
         executive, metered = self._executive(cfg, scores)
         executive.perceive()
         return {**scores[0], "vlm_queries": metered.total}
 
     def episode(self, seed: int | None = None) -> dict:
-        cfg = self.cfg if seed is None else RunConfig(**{**asdict(self.cfg), "seed": seed})
+        cfg = self.cfg if seed is None else replace(self.cfg, seed=seed)
         t0 = time.perf_counter()
         scores: list[dict] = []
         executive = metered = None
@@ -523,7 +481,7 @@ class Session:
         goal = self.task.planning.goal if parse is None or parse.goal is None else parse.goal  # the goal pursued
         ctx = out.context
         world_name = self.world.name if self.world is not None else cfg.world
-        detector = cfg.detector() if world_name == "symbolic" else getattr(self.world, "detector", None)
+        detector = make_detector(cfg) if world_name == "symbolic" else getattr(self.world, "detector", None)
         verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications]
         return {
             "success": out.success,

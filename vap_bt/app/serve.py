@@ -36,10 +36,11 @@ import threading
 import time
 
 from vap_bt import plugins
+from vap_bt.app.arguments import add_settings
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, TransportError, VapBtError
 from vap_bt.transport import server as server_module
-from vap_bt.transport.config import (add_transport_arguments, describe, open_session, part_settings,
-                                     settings_from_args)
+from vap_bt.settings import Commands, Hosting, Zenoh
+from vap_bt.transport.config import describe, open_session, part_settings, settings_from_args
 from vap_bt.app.locked_world import LockedWorld
 from vap_bt.transport.server import SkillServer
 from vap_bt.app.world_factory import make_world, parse_world_args
@@ -51,20 +52,7 @@ READY = "vap-bt serve: ready"
 
 
 def add_serve_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--robot", action="append", default=[], metavar="ROBOT",
-                   help="robot whose skills to host (ur5e, base, ...); repeatable; "
-                        "default: every robot with a skill plugin")
-    p.add_argument("--world", default="symbolic",
-                   help="symbolic, pybullet, remote (the world of a running `vap-bt sim`, reached at --connect, "
-                        "default tcp/127.0.0.1:7447), or package.module:factory (default symbolic)")
-    p.add_argument("--task", help="task file the symbolic/pybullet world is built from")
-    p.add_argument("--seed", type=int, default=0, help="the world's first seed (a run resets it to its own)")
-    p.add_argument("--world-arg", action="append", default=[], metavar="KEY=VALUE",
-                   help="keyword argument for a package.module:factory world; repeatable")
-    p.add_argument("--name", help="server name in the liveliness token (one robot only)")
-    p.add_argument("--exclude-skill", action="append", default=[], metavar="ENTRY_POINT",
-                   help="ignore this skill plugin (by entry-point name); repeatable")
-    add_transport_arguments(p, default_listen=True)
+    add_settings(p, "serve", Hosting, Zenoh)
 
 
 def run_serve(args: argparse.Namespace) -> int:
@@ -172,7 +160,7 @@ def _serve_until_stopped(session, servers: list[SkillServer], settings, stop: _S
 
 
 def add_skills_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--json", action="store_true", help="machine-readable listing")
+    add_settings(p, "skills", Commands)
 
 
 def run_skills(args: argparse.Namespace) -> int:

@@ -31,9 +31,11 @@ import threading
 import time
 
 from vap_bt import plugins
+from vap_bt.app.arguments import add_settings
 from vap_bt.errors import EXIT_OK, InputError, VapBtError
+from vap_bt.settings import Hosting, RunConfig, Zenoh
 from vap_bt.transport import keys
-from vap_bt.transport.config import SIM_ENDPOINT, add_transport_arguments, describe, open_session, settings_from_args
+from vap_bt.transport.config import SIM_ENDPOINT, describe, open_session, settings_from_args
 from vap_bt.transport.drivers import DriverServer
 from vap_bt.app.embedded import CAMERA_ROBOT
 from vap_bt.app.locked_world import LockedWorld
@@ -47,11 +49,7 @@ READY = "vap-bt sim: ready"
 
 
 def add_sim_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("task", help="task file whose household to build (trees/*.yaml)")
-    p.add_argument("--seed", type=int, default=0, help="the world's first seed (a run resets it to its own)")
-    p.add_argument("--no-injection", action="store_true", help="turn Table II situation injection off")
-    p.add_argument("--vlm-noise", type=float, help="scale of the simulated VLM's imperfections: 1 the calibrated model (default), 0 an ideal reader of the picture")
-    add_transport_arguments(p, default_listen=True, default_endpoint=SIM_ENDPOINT)
+    add_settings(p, "sim", Hosting, RunConfig, Zenoh)  # the injection and the VLM's noise: a run's settings
 
 
 class _Announcer:
@@ -79,11 +77,10 @@ def run_sim(args: argparse.Namespace) -> int:
     from vap_bt import taskfile
     from vap_bt.app import runner
 
-    task = taskfile.load(args.task)
+    task = taskfile.load(args.household)
     if task.spec.scene is None:
-        raise InputError(args.task, "vap-bt sim builds a household from a task file's scene:; this task has none")
-    cfg = runner.RunConfig.from_task(task, world="pybullet", seed=args.seed, vlm_noise=args.vlm_noise,
-                                     injection=False if args.no_injection else None)
+        raise InputError(args.household, "vap-bt sim builds a household from a task file's scene:; this task has none")
+    cfg = RunConfig.from_task(task, world="pybullet", seed=args.seed, **RunConfig.given(args, "sim"))
     robots = tuple(sorted({e.robot for e in plugins.skill_table(plugins.discover_skills()).values()}))
     settings = settings_from_args(args, default_listen=True, default_endpoint=SIM_ENDPOINT, mode="router")
     world = runner.make_world(task, cfg)

@@ -61,12 +61,11 @@ from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verifie
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.bt.recovery import Halting, Step, recovery_tree
-from vap_bt.bt.repeats import LOOK_AFRESH, MAX_REPLANS, RepeatWatch, describe, stuck
+from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, describe, stuck
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import PlanningTimeout, UnsolvableError
-from vap_bt.perception.evidence import CLAIM_RISK
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.viewpoints import ViewpointStrategy
@@ -81,6 +80,7 @@ from vap_bt.scene.identity import Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
+from vap_bt.settings import default as run_default
 from vap_bt.skill import SkillClient
 
 #: PDDL types whose objects are placed somewhere (and so can be lost track of)
@@ -100,24 +100,27 @@ RECOVERY_POLL_S = 0.02
 PHASES = ("survey", "goal parsing", "planning", "acting", "replanning")
 
 
-@dataclass
+@dataclass(frozen=True)
 class ExecutiveSettings:
+    """What the executive is told of a run's settings (built from them by the runner:
+    :func:`vap_bt.app.runner.executive_settings`); the defaults are the run's (:mod:`vap_bt.settings`)."""
+
     mode: VerifyMode = field(default_factory=VerifyMode)
-    budget: int = 3
+    budget: int = run_default("budget")
     vote: VoteSettings = field(default_factory=VoteSettings)
-    max_replans: int = MAX_REPLANS
+    max_replans: int = run_default("max_replans")
     #: the episode's budget in wall-clock seconds (the tree is ticked as fast as work completes,
     #: so ticks measure nothing; what the robot may spend is time)
-    max_seconds: float = 900.0
+    max_seconds: float = run_default("max_seconds")
     tick_period_s: float = 0.0  # sleep between ticks while a goal runs (0: in-process skills)
-    unseen: str = "look"  # what an unsettled precondition does (see vap_bt.bt.context.UnseenPolicy)
-    protocol: Protocol = field(default_factory=lambda: Protocol("paper"))
-    viewpoints: str = "vlm"  # where to look from next: the VLM's suggestion, or the greedy round
+    unseen: str = run_default("unseen")  # what an unsettled precondition does (vap_bt.bt.context.UnseenPolicy)
+    protocol: Protocol = field(default_factory=lambda: Protocol.parse(run_default("protocol")))
+    viewpoints: str = run_default("viewpoints")  # where to look from next: the VLM's suggestion, or the greedy round
     #: a surprise or a goal value needs a second settled view from a new picture (beyond the
     #: paper's Alg. 2, which takes the first: see vap_bt.bt.active_perception)
-    second_look: bool = True
+    second_look: bool = run_default("second_look")
     #: the accepted chance of claiming a goal atom that does not hold (vap_bt.perception.evidence)
-    claim_risk: float = CLAIM_RISK
+    claim_risk: float = run_default("claim_risk")
     #: work in flight on a thread pool (a remote model or robot); False: done at once, in-process
     threads: bool = False
 

@@ -16,8 +16,9 @@ never claimed on belief. A check that
 came back with a value is not cause to stop — an injected slip may well go the other way the next
 time.
 
-Replanning itself is bounded by :data:`MAX_REPLANS` (the paper sets no bound; an episode needs one
-that every situation Table II injects can use).
+Replanning itself is bounded by the run's ``max_replans`` (default
+:data:`vap_bt.settings.MAX_REPLANS`; the paper sets no bound; an episode needs one that every
+situation Table II injects can use).
 """
 
 from __future__ import annotations
@@ -27,10 +28,6 @@ from collections import Counter
 from vap_bt.bt.context import Situation
 from vap_bt.domain.atoms import Atom
 
-#: replans an episode may make by default: Table II injects up to seven situations in one
-#: pybullet episode and each may take two replans (the correction, then what it uncovers); with 10,
-#: a third of the failures with injection were episodes still recovering (docs/BENCHMARKS.md)
-MAX_REPLANS = 20
 #: the occurrence of an identical situation from an identical belief that re-surveys first
 LOOK_AFRESH = 2
 #: the occurrence of an identical failed execution (or unseen precondition) at which the episode

@@ -38,6 +38,7 @@ from typing import Iterable, Mapping
 import yaml
 
 from vap_bt.perception.verification import Round, distinct
+from vap_bt.settings import CLAIM_RISK  # a run's setting (--claim-risk), per atom (see the module docstring)
 
 #: the six kinds of a view that voted (see the module docstring), in the calibration file's order
 VIEW_KINDS = ("settled_yes", "consistent_yes", "split_yes", "split_no", "consistent_no", "settled_no")
@@ -48,8 +49,6 @@ GROUPS = (VIEW_KINDS, LOCATED_KINDS)
 KINDS = VIEW_KINDS + LOCATED_KINDS
 #: the calibration measured for the simulated model (and the default for any backend)
 CALIBRATION = Path(__file__).with_name("calibration.yaml")
-#: the accepted chance of claiming a goal atom that does not hold, per atom (see the module docstring)
-CLAIM_RISK = 0.05
 #: views of each truth a predicate needs in the calibration for ratios of its own: rough from
 #: 30, but the predicate's own — the pooled ratios mix a model's strong existence questions with
 #: its weak state ones, and would weigh a rarely false ``filled`` as if it were ``inview``

@@ -38,7 +38,6 @@ from __future__ import annotations
 import argparse
 import errno
 import json
-import math
 import os
 import re
 import socket
@@ -49,22 +48,12 @@ from pathlib import Path
 import zenoh
 
 from vap_bt.errors import TransportError
+# the endpoints and waits are options of the commands that open sessions: declared with them
+from vap_bt.settings import CAMERA_TIMEOUT_S, DEFAULT_ENDPOINT, PEER_TIMEOUT_S, REJOIN_TIMEOUT_S, SIM_ENDPOINT
 
-#: where ``vap-bt serve`` listens, and clients connect, unless told otherwise
-DEFAULT_ENDPOINT = "tcp/127.0.0.1:7448"
-#: where ``vap-bt sim`` (the episode's Zenoh router) listens, and its parts connect, by default
-SIM_ENDPOINT = "tcp/127.0.0.1:7447"
 #: link lease in ms: a peer silent this long is dropped (and its tokens with it)
 LEASE_MS = 2000
 KEEP_ALIVE = 4  # keep-alives per lease period
-#: how long :func:`open_session` waits for the configured peers to answer
-PEER_TIMEOUT_S = 5.0
-#: how long a camera request may take (rendering included): ``--camera-timeout``
-CAMERA_TIMEOUT_S = 30.0
-#: how long the executive waits for a vanished skill server's robot to be served again (a
-#: ``vap-bt serve`` restarted by hand or by a supervisor is up in a few seconds) before it gives
-#: up: ``--rejoin-timeout``
-REJOIN_TIMEOUT_S = 30.0
 
 
 @dataclass(frozen=True)
@@ -83,7 +72,8 @@ SIM = Peer("the sim", f"start `vap-bt sim TASK` first (it listens on {SIM_ENDPOI
 
 @dataclass(frozen=True)
 class TransportSettings:
-    """How to open a session; the command-line options map onto this one to one."""
+    """How to open a session; built from the command-line options (:class:`vap_bt.settings.Zenoh`)
+    by :func:`settings_from_args` or :func:`part_settings`."""
 
     listen: tuple[str, ...] = ()
     connect: tuple[str, ...] = ()
@@ -259,44 +249,6 @@ def _short(exc: BaseException) -> str:
     return " ".join(text.split())
 
 
-def add_transport_arguments(parser: argparse.ArgumentParser, *, default_listen: bool,
-                            default_endpoint: str = DEFAULT_ENDPOINT, listen_help: str = "",
-                            connect_help: str = "") -> argparse._ArgumentGroup:
-    """The Zenoh options every command that opens a session shares (their group is returned)."""
-    g = parser.add_argument_group("zenoh transport")
-    hint = f" (default: {default_endpoint} when nothing else is given)" if default_listen else ""
-    g.add_argument("--listen", action="append", default=[], metavar="ENDPOINT",
-                   help=listen_help or f"endpoint to listen on, e.g. {default_endpoint}; repeatable{hint}")
-    g.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
-                   help=connect_help or "endpoint of a peer or router to connect to; repeatable")
-    g.add_argument("--zenoh-config", metavar="FILE",
-                   help="a zenoh JSON5 config used as is (router, TLS, user/password)")
-    g.add_argument("--peer-timeout", type=float, default=PEER_TIMEOUT_S, metavar="S",
-                   help=f"seconds to wait for configured peers (default {PEER_TIMEOUT_S:g})")
-    return g
-
-
-def add_executive_waits(group) -> None:
-    """The executive's own waits on parts it reaches (``vap-bt run --connect``): how long a frame
-    may take to come, and how long a robot may go without a skill server."""
-    group.add_argument("--camera-timeout", type=_seconds, default=CAMERA_TIMEOUT_S, metavar="S",
-                       help=f"seconds a camera or world-side VLM request may take (default {CAMERA_TIMEOUT_S:g})")
-    group.add_argument("--rejoin-timeout", type=_seconds, default=REJOIN_TIMEOUT_S, metavar="S",
-                       help="seconds to wait for a vanished skill server's robot to be served again before "
-                            f"the episode ends 'transport down' (default {REJOIN_TIMEOUT_S:g})")
-
-
-def _seconds(text: str) -> float:
-    """An argparse type: a finite number of seconds above 0 (argparse names the option)."""
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value) or value <= 0:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds above 0")
-    return value
-
-
 def settings_from_args(args: argparse.Namespace, *, default_listen: bool,
                        default_endpoint: str = DEFAULT_ENDPOINT, mode: str = "peer") -> TransportSettings:
     """The transport settings the command-line options in ``args`` give; with no endpoint or file given,
@@ -318,6 +270,6 @@ def part_settings(args: argparse.Namespace) -> TransportSettings:
 
 
 def _waits(args: argparse.Namespace) -> dict[str, float]:
-    """The executive's waits, where the command has them (:func:`add_executive_waits`)."""
+    """The executive's waits, where the command has them (``vap-bt run``: :class:`vap_bt.settings.Zenoh`)."""
     return {"camera_timeout": getattr(args, "camera_timeout", CAMERA_TIMEOUT_S),
             "rejoin_timeout": getattr(args, "rejoin_timeout", REJOIN_TIMEOUT_S)}
