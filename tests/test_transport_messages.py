@@ -19,7 +19,7 @@ from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
-from vap_bt.transport.messages import CaptureRequest, ViewRequest, VlmRequest
+from vap_bt.transport.messages import CaptureRequest, DriverCall, DriverReply, ViewRequest, VlmRequest
 
 
 def test_messages_round_trip():
@@ -112,6 +112,9 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
     with pytest.raises(MessageError, match=r"malformed frame message: array is truncated \(12 bytes at 0, "
                                            r"the frame has 11\) - at `\$.rgb`"):
         decode(_body("frame", body, tail[:-1]), Frame)
+    forged = struct.pack("<QB", 0, 3) + b"|u1" + struct.pack("<B4I", 4, *(2**32 - 1,) * 4)  # ~3e38 bytes
+    with pytest.raises(MessageError, match=r"array is truncated \(340282366\d+ bytes at 0, the frame has 12\)"):
+        decode(_body("frame", {**body, "rgb": msgspec.msgpack.Ext(ARRAY_EXT, forged)}, tail), Frame)
     objects = struct.pack("<QB", 0, 2) + b"|O" + struct.pack("<BI", 1, 1)  # a pickled object is never read
     with pytest.raises(MessageError, match="not a numeric array: dtype object - at `\\$.rgb`"):
         decode(_body("frame", {**body, "rgb": msgspec.msgpack.Ext(ARRAY_EXT, objects)}, bytes(8)), Frame)
@@ -123,6 +126,18 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
     head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
     with pytest.raises(SchemaMismatch, match=f"peer speaks message schema 1, this side speaks {SCHEMA}"):
         decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
+
+
+def test_driver_arrays_round_trip_raw_and_values_stay_plain():
+    arrays = {"times": np.linspace(0.0, 1.0, 5), "positions": np.arange(35.0).reshape(5, 7)[:, ::2],
+              "none": np.zeros((0, 3), np.float32)}
+    call = DriverCall("arm.follow", "c", {"joints": ["a", "b"], "speed": np.float64(0.5)}, arrays)
+    back = decode(encode(call), DriverCall)
+    assert back.values == {"joints": ["a", "b"], "speed": 0.5} and back.arrays.keys() == arrays.keys()
+    for name, a in arrays.items():  # a strided view arrives as its values, dtype and shape kept
+        assert back.arrays[name].dtype == a.dtype and np.array_equal(back.arrays[name], a)
+        assert back.arrays[name].flags.writeable
+    assert decode(encode(DriverReply({"ok": True})), DriverReply) == DriverReply({"ok": True}, {})
 
 
 def test_odd_result_data_travels_as_plain_values():

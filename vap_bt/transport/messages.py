@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 import struct
 import threading
 from typing import Any, Callable, TypeVar
@@ -263,7 +264,7 @@ def _array_in(ext: msgspec.msgpack.Ext) -> np.ndarray:
         raise ValueError(f"bad array description: {exc}") from None
     if dtype.hasobject:
         raise ValueError(f"not a numeric array: dtype {dtype}")
-    count = int(np.prod(shape, dtype=np.int64))
+    count = math.prod(shape)  # exact: a forged shape cannot wrap around
     if offset + count * dtype.itemsize > len(tail):
         raise ValueError(f"array is truncated ({count * dtype.itemsize} bytes at {offset}, "
                          f"the frame has {len(tail)})")
@@ -355,7 +356,7 @@ def encode(msg: Any) -> bytes:
         return prefix + _ENCODER.encode(msg)
     tail = _Tail()
     body = _ENCODER.encode(arrays(msg, tail))
-    return b"".join([prefix, _U32.pack(len(body)), body, *(a.data.cast("B") for a in tail.arrays)])
+    return b"".join([prefix, _U32.pack(len(body)), body, *tail.arrays])  # contiguous arrays are buffers
 
 
 def decode(data: bytes | bytearray | memoryview, expect: type[T]) -> T:
