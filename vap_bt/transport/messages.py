@@ -361,11 +361,13 @@ def encode(msg: Any) -> bytes:
 
 def decode(data: bytes | bytearray | memoryview, expect: type[T]) -> T:
     """The message in ``data``, which must be of type ``expect``."""
-    if len(data) < _PREFIX.size or bytes(data[:4]) != MAGIC:
+    if len(data) < _PREFIX.size:
         raise MessageError("not a vap_bt message (bad magic)")
-    if data[8] == 0x7B:  # "{": a schema-1 frame
+    magic, schema, code = _PREFIX.unpack_from(data)
+    if magic != MAGIC:
+        raise MessageError("not a vap_bt message (bad magic)")
+    if code == 0x7B:  # "{": a schema-1 frame
         _legacy_schema(data)  # raises
-    _, schema, code = _PREFIX.unpack_from(data)
     if schema != SCHEMA:
         raise _mismatch(schema)
     codec = _DECODERS.get(code)
@@ -374,10 +376,10 @@ def decode(data: bytes | bytearray | memoryview, expect: type[T]) -> T:
     kind, cls, decoder = codec
     if cls is not expect:
         raise MessageError(f"expected a {_KIND_OF[expect]} message, got {kind}")
-    view = memoryview(data)[_PREFIX.size:]
     try:
         if cls not in _ARRAYS:
-            return decoder.decode(view)
+            return decoder.decode(data[_PREFIX.size:])  # small: a copy costs less than a view
+        view = memoryview(data)[_PREFIX.size:]
         (n,) = _U32.unpack_from(view)
         _reading.tail = view[_U32.size + n:]
         try:
