@@ -5,20 +5,21 @@ from __future__ import annotations
 import json
 import struct
 
+import msgspec
 import numpy as np
 import pytest
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
-from vap_bt.transport.messages import (SCHEMA, ActionAck, ActionEvent, CancelRequest, GoalReply, GoalRequest,
-                                       GoalStatus, MessageError, SchemaMismatch, decode, encode)
+from vap_bt.transport.messages import (ARRAY_EXT, KIND_CODES, SCHEMA, ActionAck, ActionEvent, CancelRequest,
+                                       GoalReply, GoalRequest, GoalStatus, MessageError, SchemaMismatch, decode, encode)
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
-from vap_bt.transport.messages import CaptureRequest, ViewRequest, VlmRequest
+from vap_bt.transport.messages import CaptureRequest, DriverCall, DriverReply, ViewRequest, VlmRequest
 
 
 def test_messages_round_trip():
@@ -71,22 +72,52 @@ def test_images_travel_as_raw_bytes_not_json():
     assert decode(encode(Frame("g", 1.0, stand="view-3")), Frame).stand == "view-3"
 
 
+def _body(kind: str, value, tail: bytes | None = None) -> bytes:
+    """A frame of ``kind`` whose msgpack body is ``value``, whatever it holds; a kind with arrays
+    (``tail`` given) has the body's length before it and the arrays' bytes after it."""
+    body = msgspec.msgpack.encode(value)
+    prefix = struct.pack("<4sIB", b"VAPB", SCHEMA, KIND_CODES[kind])
+    return prefix + body if tail is None else prefix + struct.pack("<I", len(body)) + body + tail
+
+
+def _parts(frame: bytes) -> tuple[dict, bytes]:
+    """The body and the tail of a frame with arrays."""
+    (n,) = struct.unpack_from("<I", frame, 9)
+    return msgspec.msgpack.decode(frame[13:13 + n]), frame[13 + n:]
+
+
 @pytest.mark.parametrize("frame, message", [
-    (b"", "bad magic"),
-    (b"VAPB\x05\x00\x00\x00{nope", "unreadable message header"),
-    (encode(GoalRequest("g", "a", ()))[:-3], "unreadable message header"),
+    (b"", "not a vap_bt message \\(bad magic\\)"),
+    (b"VAPB\x05\x00\x00\x00{nope", "unreadable message header"),  # a schema-1 frame, cut short
+    (encode(GoalReply("g", True))[:-3], "unreadable goal_reply message: Input data was truncated"),
+    (encode(GoalReply("g", True)) + b"\x00", "unreadable goal_reply message: .*trailing characters"),
+    (encode(GoalReply("g", True))[:9] + b"\xc1\xc1", "unreadable goal_reply message: MessagePack data is malformed"),
+    (_body("goal_reply", ["g", "yes"]), r"malformed goal_reply message: Expected `bool`, got `str` - at `\$\[1\]`"),
+    (_body("goal_reply", []), "malformed goal_reply message: Expected `array` of at least length 2"),
+    (_body("frame", {"frame_id": "f", "stamp": 0.0, "rgb": [1, 2]}, b""),
+     r"malformed frame message: expected a numeric array, got list - at `\$.rgb`"),
 ])
 def test_bad_frames_are_one_message_error(frame, message):
-    with pytest.raises(MessageError, match=message):
-        decode(frame, GoalRequest)
+    with pytest.raises(MessageError, match=message) as err:
+        decode(frame, Frame if message.startswith("malformed frame") else GoalReply)
+    assert "\n" not in str(err.value) and err.value.__cause__ is None  # one line, no chained traceback
 
 
 def test_wrong_kind_truncated_arrays_and_foreign_schema():
     with pytest.raises(MessageError, match="expected a goal_reply message, got goal_request"):
         decode(encode(GoalRequest("g", "a", ())), GoalReply)
-    obs = encode(Frame("f", 0.0, rgb=np.zeros((2, 2, 3), np.uint8)))
-    with pytest.raises(MessageError, match="array 'rgb' is truncated"):
-        decode(obs[:-1], Frame)
+    rgb = np.arange(12, dtype=np.uint8).reshape(2, 2, 3)
+    body, tail = _parts(encode(Frame("f", 0.0, rgb=rgb)))
+    assert body["rgb"].code == ARRAY_EXT and tail == rgb.tobytes()  # described in the body, raw after it
+    with pytest.raises(MessageError, match=r"malformed frame message: array is truncated \(12 bytes at 0, "
+                                           r"the frame has 11\) - at `\$.rgb`"):
+        decode(_body("frame", body, tail[:-1]), Frame)
+    forged = struct.pack("<QB", 0, 3) + b"|u1" + struct.pack("<B4I", 4, *(2**32 - 1,) * 4)  # ~3e38 bytes
+    with pytest.raises(MessageError, match=r"array is truncated \(340282366\d+ bytes at 0, the frame has 12\)"):
+        decode(_body("frame", {**body, "rgb": msgspec.msgpack.Ext(ARRAY_EXT, forged)}, tail), Frame)
+    objects = struct.pack("<QB", 0, 2) + b"|O" + struct.pack("<BI", 1, 1)  # a pickled object is never read
+    with pytest.raises(MessageError, match="not a numeric array: dtype object - at `\\$.rgb`"):
+        decode(_body("frame", {**body, "rgb": msgspec.msgpack.Ext(ARRAY_EXT, objects)}, bytes(8)), Frame)
     frame = encode(GoalReply("g", True))
     foreign = frame[:4] + struct.pack("<I", 2) + frame[8:]  # the schema field
     with pytest.raises(SchemaMismatch, match=f"peer speaks message schema 2, this side speaks {SCHEMA}"):
@@ -95,6 +126,31 @@ def test_wrong_kind_truncated_arrays_and_foreign_schema():
     head = json.dumps({"schema": 1, "kind": "goal_reply", "goal_id": "g", "accepted": True}).encode()
     with pytest.raises(SchemaMismatch, match=f"peer speaks message schema 1, this side speaks {SCHEMA}"):
         decode(b"VAPB" + struct.pack("<I", len(head)) + head, GoalReply)
+
+
+def test_driver_arrays_round_trip_raw_and_values_stay_plain():
+    arrays = {"times": np.linspace(0.0, 1.0, 5), "positions": np.arange(35.0).reshape(5, 7)[:, ::2],
+              "none": np.zeros((0, 3), np.float32)}
+    call = DriverCall("arm.follow", "c", {"joints": ["a", "b"], "speed": np.float64(0.5)}, arrays)
+    back = decode(encode(call), DriverCall)
+    assert back.values == {"joints": ["a", "b"], "speed": 0.5} and back.arrays.keys() == arrays.keys()
+    for name, a in arrays.items():  # a strided view arrives as its values, dtype and shape kept
+        assert back.arrays[name].dtype == a.dtype and np.array_equal(back.arrays[name], a)
+        assert back.arrays[name].flags.writeable
+    assert decode(encode(DriverReply({"ok": True})), DriverReply) == DriverReply({"ok": True}, {})
+
+
+def test_odd_result_data_travels_as_plain_values():
+    """A skill's result data that is not a dict of plain values still arrives, made plain."""
+    class Odd:
+        def __str__(self):
+            return "odd"
+
+    for data, plain in (([1, 2], {"value": [1, 2]}),
+                        ({3: Odd(), "a": {"b": np.float32(0.5)}}, {"3": "odd", "a": {"b": 0.5}}),
+                        ({"m": np.eye(2, dtype=np.int32)}, {"m": [[1, 0], [0, 1]]})):
+        status = GoalStatus("g", GoalState.SUCCEEDED, None, SkillResult(True, "", data))
+        assert decode(encode(status), GoalStatus).result.data == plain
 
 
 def test_default_configuration_is_loopback_only():

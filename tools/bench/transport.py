@@ -1,6 +1,14 @@
-"""Transport benchmark: goal-accept round trip over Zenoh on loopback, and BT tick overhead.
+"""Transport benchmark: the wire codec, goal-accept round trip over Zenoh on loopback, BT tick overhead.
 
     .venv/bin/python tools/bench/transport.py [--goals 1000] [--nodes 100] [--ticks 1000] [--rounds 10]
+                                              [--against OLD/messages.py] [--codec-only]
+
+0. **Wire codec.** Encode + decode of one message of each kind (goal traffic, robot state, a site
+   map, a 640x480 RGB-D frame, a frame without images, a VLM request, a driver call with a
+   trajectory), per message, and each frame's size. ``--against`` names another version of
+   ``vap_bt/transport/messages.py`` (e.g. ``git show <commit>:vap_bt/transport/messages.py``
+   saved to a file): both codecs then run on the same messages in the same process, alternating
+   in ``--rounds`` blocks, and the figure of each is the median over the blocks.
 
 1. **Goal accept round trip.** A skill server runs in its own process (spawned, so the two sides
    do not share a GIL) and hosts a no-op skill; the client sends ``--goals`` goals one after the
@@ -21,6 +29,7 @@ Figures are wall-clock on this machine; run it on an otherwise idle machine for 
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import multiprocessing
 import statistics
 import sys
@@ -139,6 +148,99 @@ def bench_ticks(client, nodes: int, ticks: int) -> list[float] | str:
     return samples
 
 
+def load_codec(path: str):
+    """Another version of the messages module, from a file, beside the current one."""
+    spec = importlib.util.spec_from_file_location("wire_against", path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module  # dataclasses look their module up
+    spec.loader.exec_module(module)
+    return module
+
+
+def codec_samples(m) -> dict[str, object]:
+    """One message of each kind that matters, built with codec module ``m``'s message classes."""
+    import numpy as np
+
+    from vap_bt.domain.atoms import Atom
+    from vap_bt.perception.vlm import Query
+    from vap_bt.robot.camera import Aim
+    from vap_bt.robot.frame import Detection, Frame
+    from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+    from vap_bt.robot.state import RobotState
+    from vap_bt.skill import Feedback, GoalState, Hint
+
+    rng = np.random.default_rng(0)
+    leaf = Articulation(False, (4.0, 1.4, 0.0), (0.0, 0.0, 1.0), (4.06, 2.2, 0.95), (1.0, 0.0, 0.0), (0.0, 0.0, 1.0),
+                        -1.57, -1.62, 1.62, (4.0, 2.0, 0.53), (0.02, 0.6, 0.5), other_side=0.125)
+    rooms = tuple(RoomInfo(f"room{i}", f"floor{i}", (4.0 * i, 0.0, 4.0 * i + 4, 4.0)) for i in range(5))
+    doors = tuple(DoorInfo(f"door{i}", (f"room{i}", f"room{i + 1}"), (4.0 * i + 4, 2.0, 0.0), 1.2, leaf)
+                  for i in range(4))
+    furniture = tuple(FurnitureInfo(f"f{i}", "cabinet", "container", f"room{i % 5}", (1.0 * i, 3.0, -1.57), (0.6, 0.5),
+                                    0.9, Cavity((0.1, 0.8), 0.02, "front"), leaf) for i in range(25))
+    facts = frozenset(Atom("connects", (f"room{i}", f"room{i + 1}", f"door{i}")) for i in range(4))
+    dets = tuple(Detection(f"thing{i}", 900, i, 0.9, (Atom("on", ("", f"f{i}")),), name=f"thing{i}") for i in range(10))
+    return {
+        "goal_request": m.GoalRequest("client-1-42", "grasp", ("cup", "table"), "client-1",
+                                      (Hint("cup", (1.0, 2.5, 0.78), on="table", radius=0.05), Hint("table"))),
+        "goal_reply": m.GoalReply("client-1-42", True, "", "ur5e"),
+        "goal_status (feedback)": m.GoalStatus("client-1-42", GoalState.ACTIVE, Feedback(0.5, "approaching"), None,
+                                               "ur5e"),
+        "goal_status (result)": m.GoalStatus("client-1-42", GoalState.SUCCEEDED, Feedback(1.0, "done"),
+                                             SkillResult(True, "grasped", {"grip": 0.04, "pose": [0.1, 0.2, 0.3]}),
+                                             "ur5e"),
+        "cancel": m.CancelRequest("client-1-42"),
+        "robot_state": RobotState(12.5, "kitchen", (1.0, 2.0, 0.3), (0.1,) * 6, (0.5, 0.1, 0.9, 0.0, 0.0, 0.0, 1.0),
+                                  0.08, False),
+        "site_map (5 rooms, 25 furniture)": SiteMap(rooms, doors, furniture, facts),
+        "frame, symbolic (10 detections)": Frame("f-1", 3.0, dets, aim=("cup",), stand="view-3"),
+        "frame, 640x480 RGB-D + masks": Frame(
+            "f-2", 3.0, dets, rgb=rng.integers(0, 255, (480, 640, 3), np.uint8),
+            depth=rng.random((480, 640), np.float32), masks=rng.integers(-1, 10, (480, 640)).astype(np.int32),
+            intrinsics=(554.0, 554.0, 320.0, 240.0), camera_pose=np.eye(4), aim=("cup",)),
+        "vlm_request": m.VlmRequest(Query("Is the cup on the table?", about=(Atom("on", ("cup", "table")),),
+                                          objects=("cup", "table")), "f-2", {"cup": 0, "table": 3}),
+        "capture": m.CaptureRequest(Aim(("cup",), (1.0, 2.5, 0.8))),
+        "driver_call (7x200 trajectory)": m.DriverCall(
+            "arm.follow", "client-1", {"joints": [f"j{i}" for i in range(7)]},
+            {"times": np.linspace(0, 4, 200), "positions": rng.random((200, 7))}),
+    }
+
+
+def bench_codec(codecs: dict[str, object], rounds: int) -> None:
+    """Encode and decode time per message and frame sizes, codecs alternating in ``rounds`` blocks.
+
+    Encoding and decoding are timed apart (in a robot they run in two processes): ``n`` encodes,
+    then ``n`` decodes of the last frame, ``n`` chosen so that a block of one kind takes ~50 ms."""
+    samples = {name: codec_samples(m) for name, m in codecs.items()}
+    times: dict[tuple[str, str], list[tuple[float, float]]] = {}
+    for _ in range(rounds):
+        for name, m in codecs.items():
+            for kind, msg in samples[name].items():
+                t0 = time.perf_counter()
+                data = m.encode(msg)
+                assert type(m.decode(data, type(msg))) is type(msg)
+                n = max(10, min(2000, int(0.05 / (time.perf_counter() - t0))))
+                t0 = time.perf_counter()
+                for _ in range(n):
+                    data = m.encode(msg)
+                t1 = time.perf_counter()
+                for _ in range(n):
+                    m.decode(data, type(msg))
+                times.setdefault((name, kind), []).append(((t1 - t0) / n, (time.perf_counter() - t1) / n))
+    names = list(codecs)
+    print(f"wire codec, per message: encode + decode = total (median of {rounds} alternating blocks), frame bytes")
+    print(f"  {'message':34s}" + "".join(f"{n:>36s}" for n in names) + ("   ratio" if len(names) == 2 else ""))
+    for kind in samples[names[0]]:
+        cells, totals = [], []
+        for name in names:
+            enc, dec = (statistics.median(t[i] for t in times[(name, kind)]) * 1e6 for i in (0, 1))
+            totals.append(enc + dec)
+            size = len(codecs[name].encode(samples[name][kind]))
+            cells.append(f"{enc:8.1f} +{dec:8.1f} ={enc + dec:8.1f} us {size:>8d} B")
+        ratio = f"   x{totals[1] / totals[0]:.2f}" if len(totals) == 2 else ""
+        print(f"  {kind:34s}" + "".join(cells) + ratio)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--goals", type=int, default=1000)
@@ -146,7 +248,19 @@ def main() -> int:
     parser.add_argument("--ticks", type=int, default=1000)
     parser.add_argument("--rounds", type=int, default=10,
                         help="blocks in which goals and bare queries alternate (default 10)")
+    parser.add_argument("--against", metavar="MESSAGES_PY",
+                        help="another version of vap_bt/transport/messages.py to compare the codec with")
+    parser.add_argument("--codec-only", action="store_true", help="measure the wire codec only")
     args = parser.parse_args()
+
+    from vap_bt.transport import messages
+
+    codecs = {"current": messages}
+    if args.against:
+        codecs = {"against": load_codec(args.against), **codecs}
+    bench_codec(codecs, args.rounds)
+    if args.codec_only:
+        return 0
 
     endpoint = f"tcp/127.0.0.1:{free_port()}"
     spawn = multiprocessing.get_context("spawn")

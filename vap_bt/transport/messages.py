@@ -2,78 +2,72 @@
 
 Each message is one *frame*::
 
-    b"VAPB" | u32 schema | u8 kind | header | array bytes ...
+    b"VAPB" | u32 schema | u8 kind | msgpack body                          (most kinds)
+    b"VAPB" | u32 schema | u8 kind | u32 body length | msgpack body | arrays   (frame, driver_*)
 
-``schema`` is :data:`SCHEMA`, bumped on any incompatible change; ``kind`` says which message it
-is (:data:`KIND_CODES`, all below 123 so that byte 8 is never ``{``, see below). All integers
-are little-endian. What the header looks like depends on
-the kind:
+``schema`` is :data:`SCHEMA`, bumped on any incompatible change; ``kind`` says which message
+follows (:data:`KIND_CODES`, all below 123 so that byte 8 is never ``{``, see below). All
+integers are little-endian. The prefix is read before the body, so a peer speaking another
+schema gets a :class:`SchemaMismatch` naming both versions, never garbage, and a frame of the
+wrong kind is refused unread.
 
-* **Goal traffic** (``goal_request``, ``goal_reply``, ``goal_status``, ``cancel``) sits on the
-  latency-critical path of every goal, so its header is a fixed binary layout that costs a few
-  microseconds to pack and unpack (JSON cost ten times that)::
+The body is MessagePack, written and read by msgspec against the message's type (the type *is*
+the schema; msgspec checks every field on the way in). The messages defined here are msgspec
+Structs sent as arrays (fields by position, no names on the wire: goal traffic costs a few
+microseconds each way); the robot's and the VLM's own dataclasses (:class:`~vap_bt.robot.frame.Frame`,
+:class:`~vap_bt.robot.state.RobotState`, :class:`~vap_bt.robot.site_map.SiteMap`,
+:class:`~vap_bt.perception.vlm.Answer`, the atoms and hints inside messages) travel as maps of
+their fields. Numeric arrays never go element by element, nor through msgpack: in the body a
+frame's images and camera pose and a driver call's arrays are msgpack extensions (code
+:data:`ARRAY_EXT`: ``u64 offset | u8 len | dtype | u8 ndim | u32 shape...``) and their raw bytes
+follow the body, copied once on each side, so a 640x480 RGB-D frame costs its pixels plus a few
+hundred bytes. Images are normalised on the way out: rgb ``uint8 (H, W, 3)``, depth
+``float32 (H, W)`` metres, instance masks ``int32 (H, W)``, the camera pose ``float64 (4, 4)``.
 
-      goal_request     strings[goal_id, action, client, hints, *args]
-      goal_reply       u8 accepted | strings[goal_id, reason, server]
-      cancel           strings[goal_id]
-      goal_status      u8 flags | f64 progress | strings[goal_id, state, server,
-                                                         feedback text, result message, result data]
-
-  where ``strings[...]`` is ``u32 count | u32 length of each, in characters | the strings'
-  UTF-8 bytes, concatenated`` (one decode for all of them); the status
-  ``flags`` are bit 0 "has feedback", bit 1 "has result", bit 2 "result succeeded"; ``state`` is
-  the :class:`~vap_bt.skill.GoalState` value; ``result data`` is JSON (empty for ``{}``); a
-  request's ``hints`` is a JSON list of :class:`~vap_bt.skill.Hint` objects (empty for none).
-* **Everything else** (robot-interface requests and replies: frames, robot state, the site map,
-  viewpoints; VLM queries and answers; errors) has
-  ``u32 length | UTF-8 JSON object`` with the message's own fields. Numeric arrays never go
-  through JSON: the header lists them as ``[name, dtype, shape]`` under ``arrays`` and their raw
-  little-endian bytes follow in that order, so a 640x480 RGB-D frame costs its pixels plus a few
-  hundred bytes. Images are normalised on the way out: rgb ``uint8 (H, W, 3)``, depth
-  ``float32 (H, W)`` metres, instance masks ``int32 (H, W)``; a frame's camera pose travels as a
-  ``float64 (4, 4)`` array.
+Plain values (``SkillResult.data``, driver and oracle values, a frame's ``extra``) must be
+JSON-friendly: numpy values become numbers and lists, and anything else is sent as its ``str``,
+so that a skill's odd return value never breaks the transport. A result whose data is not a dict
+is sent as ``{"value": data}``.
 
 Schema history: 1 — ``b"VAPB" | u32 length | JSON header (with "schema" and "kind") | arrays``
-for every kind; 2 — the layout above with string lengths in bytes; 3 — the layout above; 4 — the
-robot interfaces (frames with detections, state, map, viewpoints) and the VLM service replace
-schema 3's observations and scene snapshots; 5 — goal requests carry the executive's hints, the
-site map carries the furniture models (height, cavity, articulation, switch, tap; a door's
-articulation), the robot's drivers travel (driver calls and replies), and a simulated world has an
-action hook (``action_event``/``action_ack``) and, added later without a bump since nothing
-changed, an oracle for the runner's report (``oracle_query``/``oracle_reply``) and an aim's believed
-``place`` (a peer without it reads none and sends none). A schema-1 frame is still recognised (its byte 8, the
-start of its JSON header, is ``{``), so an old peer gets a :class:`SchemaMismatch` naming both
-versions, not garbage.
+for every kind; 2, 3 — a hand-written binary header for goal traffic and a JSON header for the
+rest; 4 — the robot interfaces (frames with detections, state, map, viewpoints) and the VLM
+service; 5 — goal hints, furniture models in the site map, the robot's drivers, a simulated
+world's action hook and oracle; 6 — the msgpack body above, same messages. A schema-1 frame is
+still recognised (its byte 8, the start of its JSON header, is ``{``), so an old peer gets a
+:class:`SchemaMismatch` naming both versions, not garbage.
 
 A frame from a peer speaking another schema raises :class:`SchemaMismatch`, which says both
-versions; anything else undecodable raises :class:`MessageError`. Neither ever shows a traceback
-to the user: servers answer with an error reply, clients turn it into a rejected goal.
-
-``SkillResult.data`` must be JSON-friendly; numpy values become lists, and anything else is sent
-as its ``str`` so that a skill's odd return value never breaks the transport.
+versions; anything else undecodable (truncated, garbage, a field of the wrong type) raises
+:class:`MessageError` in one line. Neither ever shows a traceback to the user: servers answer
+with an error reply, clients turn it into a rejected goal.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import json
+import math
 import struct
-from dataclasses import dataclass, field, fields
+import threading
 from typing import Any, Callable, TypeVar
 
+import msgspec
 import numpy as np
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
-from vap_bt.robot.frame import Detection, Frame
-from vap_bt.robot.site_map import Articulation, Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
+from vap_bt.robot.frame import Frame
+from vap_bt.robot.site_map import SiteMap
 from vap_bt.robot.state import RobotState
+from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 
-SCHEMA = 5
+SCHEMA = 6
 MAGIC = b"VAPB"
+#: the msgpack extension code of a numpy array
+ARRAY_EXT = 1
 _PREFIX = struct.Struct("<4sIB")  # magic, schema, kind
-_U32 = struct.Struct("<I")
 _LEGACY_PREFIX = struct.Struct("<4sI")  # schema 1: magic, JSON header length
 
 T = TypeVar("T")
@@ -90,8 +84,11 @@ class SchemaMismatch(MessageError):
 # -- messages ------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class GoalRequest:
+class _Message(msgspec.Struct, frozen=True, array_like=True):
+    """A message of this module: immutable, sent as an array of its fields in order."""
+
+
+class GoalRequest(_Message):
     """Start ``action(args)``; the client picks ``goal_id`` so it can listen before asking."""
 
     goal_id: str
@@ -101,8 +98,7 @@ class GoalRequest:
     hints: tuple[Hint, ...] = ()
 
 
-@dataclass(frozen=True)
-class GoalReply:
+class GoalReply(_Message):
     """The server's answer to a GoalRequest: accepted, or rejected with a reason."""
 
     goal_id: str
@@ -111,8 +107,7 @@ class GoalReply:
     server: str = ""
 
 
-@dataclass(frozen=True)
-class GoalStatus:
+class GoalStatus(_Message):
     """Published on a goal's status key: feedback while ACTIVE, then once with the result."""
 
     goal_id: str
@@ -122,75 +117,73 @@ class GoalStatus:
     server: str = ""
 
 
-@dataclass(frozen=True)
-class CancelRequest:
+class CancelRequest(_Message):
+    """Cancel the goal ``goal_id``."""
+
     goal_id: str
 
 
-@dataclass(frozen=True)
-class CaptureRequest:
+class CaptureRequest(_Message):
     """Aim the camera (None: as it is) and take a frame."""
 
     aim: Aim | None = None
 
 
-@dataclass(frozen=True)
-class ViewRequest:
+class ViewRequest(_Message):
     """Go to a viewpoint of an exploration sweep."""
 
     view: Viewpoint
 
 
-@dataclass(frozen=True)
-class MoveViewRequest:
+class MoveViewRequest(_Message):
     """Move the viewpoint ``direction`` relative to ``aim``."""
 
     aim: Aim
     direction: str
 
 
-@dataclass(frozen=True)
-class StateRequest:
+class MoveViewReply(_Message):
+    """Whether the moved viewpoint was reachable."""
+
+    reachable: bool
+
+
+class StateRequest(_Message):
     """Ask for the robot's state (proprioception and localization)."""
 
 
-@dataclass(frozen=True)
-class MapRequest:
+class MapRequest(_Message):
     """Ask for the site map."""
 
 
-@dataclass(frozen=True)
-class VlmRequest:
+class VlmRequest(_Message):
     """Ask the world-side VLM ``query`` about a frame that world's camera took; ``identified``
     is the executive's association of names to the frame's detections (which instance in the
     picture the question's names mean: a set-of-marks prompt's marks)."""
 
     query: Query
     frame_id: str
-    identified: dict = field(default_factory=dict)
+    identified: dict[str, int] = msgspec.field(default_factory=dict)
 
 
-@dataclass(frozen=True)
-class DriverCall:
+class DriverCall(_Message):
     """A call on a robot's drivers (:mod:`vap_bt.transport.drivers`): ``call`` names it
     (``arm.follow``, ``base.pose``, ...), ``client`` the caller; plain values and numeric arrays."""
 
     call: str
     client: str = ""
-    values: dict = field(default_factory=dict)
-    arrays: dict = field(default_factory=dict)
+    values: dict[str, Any] = msgspec.field(default_factory=dict)
+    arrays: dict[str, np.ndarray] = msgspec.field(default_factory=dict)
 
 
-@dataclass(frozen=True)
-class DriverReply:
+class DriverReply(_Message):
     """A driver's answer: plain values and numeric arrays."""
 
-    values: dict = field(default_factory=dict)
-    arrays: dict = field(default_factory=dict)
+    values: dict[str, Any] = msgspec.field(default_factory=dict)
+    arrays: dict[str, np.ndarray] = msgspec.field(default_factory=dict)
 
 
-@dataclass(frozen=True)
-class ActionEvent:
+class ActionEvent(_Message):
     """Sim only: a goal for ``action(args)`` begins or ends (``phase``), for Table II injection."""
 
     phase: str  # "begin" | "end"
@@ -198,16 +191,14 @@ class ActionEvent:
     args: tuple[str, ...] = ()
 
 
-@dataclass(frozen=True)
-class ActionAck:
+class ActionAck(_Message):
     """The simulated world took an ActionEvent (it says nothing of what it drew)."""
 
     ok: bool
     reason: str = ""
 
 
-@dataclass(frozen=True)
-class OracleQuery:
+class OracleQuery(_Message):
     """Sim only, for the runner's report (:mod:`vap_bt.transport.world_services`): ask a simulated
     world ``verb`` (``holds``, ``injected``, ``info``, ``site_map``, ``reset``) about ``atoms``,
     or reset it to ``seed``."""
@@ -217,277 +208,104 @@ class OracleQuery:
     seed: int | None = None
 
 
-@dataclass(frozen=True)
-class OracleReply:
+class OracleReply(_Message):
     """A simulated world's answer to an OracleQuery: plain JSON values."""
 
-    values: dict = field(default_factory=dict)
+    values: dict[str, Any] = msgspec.field(default_factory=dict)
 
 
-@dataclass(frozen=True)
-class MoveViewReply:
-    reachable: bool
-
-
-@dataclass(frozen=True)
-class ErrorReply:
+class ErrorReply(_Message):
     """A server could not answer (its world raised); ``reason`` says why."""
 
     reason: str
 
 
-# -- codec ---------------------------------------------------------------------------------------
+# -- numeric arrays: described in the body, their bytes after it ---------------------------------
 
-Arrays = dict[str, np.ndarray]
-Packer = Callable[[Any], tuple[dict[str, Any], Arrays]]
-Unpacker = Callable[[dict[str, Any], Arrays], Any]
+_IMAGE_DTYPES = {"rgb": np.uint8, "depth": np.float32, "masks": np.int32, "camera_pose": np.float64}
+_ARRAY_HEAD = struct.Struct("<QB")  # offset in the frame's tail, length of the dtype's name
 
-_IMAGE_DTYPES = {"rgb": np.uint8, "depth": np.float32, "masks": np.int32}
 
+class _Tail:
+    """The arrays of one frame being written, in the order their bytes follow the body."""
 
-def _pack_flat(msg: Any) -> tuple[dict[str, Any], Arrays]:
-    return {f.name: getattr(msg, f.name) for f in fields(msg)}, {}
+    def __init__(self) -> None:
+        self.arrays: list[np.ndarray] = []
+        self.size = 0
 
+    def add(self, a: Any, dtype: Any = None) -> msgspec.msgpack.Ext:
+        """Queue ``a``'s bytes; what the body says of it (an :data:`ARRAY_EXT` extension)."""
+        a = np.ascontiguousarray(a, dtype=dtype)
+        kind = a.dtype.str.encode()
+        head = _ARRAY_HEAD.pack(self.size, len(kind)) + kind + struct.pack(f"<B{a.ndim}I", a.ndim, *a.shape)
+        self.arrays.append(a)
+        self.size += a.nbytes
+        return msgspec.msgpack.Ext(ARRAY_EXT, head)
 
-def _flat_unpacker(cls: type) -> Unpacker:
-    def unpack(d: dict[str, Any], _: Arrays) -> Any:
-        return cls(**{k: tuple(v) if isinstance(v, list) else v for k, v in d.items()})
 
-    return unpack
+class _Reading(threading.local):
+    """Per thread: the bytes after the body of the frame being decoded (its arrays)."""
 
+    tail: bytes | memoryview = b""
 
-def _atoms_out(atoms) -> list:
-    return [[a.predicate, list(a.args)] for a in atoms]
 
+_reading = _Reading()
 
-def _atoms_in(rows) -> tuple[Atom, ...]:
-    return tuple(Atom(p, tuple(args)) for p, args in rows)
 
-
-def _tuple_or_none(v):
-    return None if v is None else tuple(v)
-
-
-def _aim_out(a: Aim | None) -> dict | None:
-    return None if a is None else {"names": list(a.names), "point": a.point, "place": a.place}
-
-
-def _aim_in(d: dict | None) -> Aim | None:
-    return None if d is None else Aim(tuple(d["names"]), _tuple_or_none(d["point"]), d.get("place"))
-
-
-def _pack_capture(m: CaptureRequest) -> tuple[dict[str, Any], Arrays]:
-    return {"aim": _aim_out(m.aim)}, {}
-
-
-def _unpack_capture(d: dict[str, Any], _: Arrays) -> CaptureRequest:
-    return CaptureRequest(_aim_in(d["aim"]))
-
-
-def _pack_view(m: ViewRequest) -> tuple[dict[str, Any], Arrays]:
-    v = m.view
-    return {"room": v.room, "aim": _aim_out(v.aim), "base_pose": v.base_pose, "label": v.label}, {}
-
-
-def _unpack_view(d: dict[str, Any], _: Arrays) -> ViewRequest:
-    return ViewRequest(Viewpoint(d["room"], _aim_in(d["aim"]), _tuple_or_none(d["base_pose"]), d["label"]))
-
-
-def _pack_move(m: MoveViewRequest) -> tuple[dict[str, Any], Arrays]:
-    return {"aim": _aim_out(m.aim), "direction": m.direction}, {}
-
-
-def _unpack_move(d: dict[str, Any], _: Arrays) -> MoveViewRequest:
-    return MoveViewRequest(_aim_in(d["aim"]), d["direction"])
-
-
-def _pack_frame(f: Frame) -> tuple[dict[str, Any], Arrays]:
-    arrays = {name: np.ascontiguousarray(getattr(f, name), dtype=dtype)
-              for name, dtype in _IMAGE_DTYPES.items() if getattr(f, name) is not None}
-    if f.camera_pose is not None:
-        arrays["camera_pose"] = np.ascontiguousarray(f.camera_pose, dtype=np.float64)
-    dets = [{"name": d.name, "label": d.label, "pixels": d.pixels, "mask_id": d.mask_id, "score": d.score,
-             "relations": _atoms_out(d.relations)} for d in f.detections]
-    return {"frame_id": f.frame_id, "stamp": f.stamp, "detections": dets, "intrinsics": f.intrinsics,
-            "aim": list(f.aim), "extra": f.extra, "stand": f.stand}, arrays
-
-
-def _unpack_frame(d: dict[str, Any], arrays: Arrays) -> Frame:
-    dets = tuple(Detection(x["label"], int(x["pixels"]), int(x["mask_id"]), float(x["score"]),
-                           _atoms_in(x["relations"]), name=x["name"]) for x in d["detections"])
-    return Frame(d["frame_id"], float(d["stamp"]), dets, rgb=arrays.get("rgb"), depth=arrays.get("depth"),
-                 masks=arrays.get("masks"), intrinsics=_tuple_or_none(d["intrinsics"]),
-                 camera_pose=arrays.get("camera_pose"), aim=tuple(d["aim"]), extra=dict(d["extra"]),
-                 stand=d.get("stand"))
-
-
-def _unpack_state(d: dict[str, Any], _: Arrays) -> RobotState:
-    return RobotState(float(d["stamp"]), d["room"], _tuple_or_none(d["base_pose"]), tuple(d["joints"]),
-                      _tuple_or_none(d["tcp_pose"]), d["gripper_width"], d["gripper_holding"])
-
-
-def _articulation_out(a: Articulation | None) -> dict | None:
-    return None if a is None else {f.name: getattr(a, f.name) for f in fields(a)}
-
-
-def _articulation_in(d: dict | None) -> Articulation | None:
-    return None if d is None else Articulation(**{k: tuple(v) if isinstance(v, list) else v for k, v in d.items()})
-
-
-def _cavity_out(c: Cavity | None) -> list | None:
-    return None if c is None else [list(c.z), c.wall, c.open]
-
-
-def _cavity_in(v: list | None) -> Cavity | None:
-    return None if v is None else Cavity(tuple(v[0]), float(v[1]), v[2])
-
-
-def _pack_map(m: SiteMap) -> tuple[dict[str, Any], Arrays]:
-    return {"rooms": [[r.name, r.floor, r.bounds] for r in m.rooms],
-            "doors": [[x.name, list(x.rooms), x.pose, x.width, _articulation_out(x.articulation)] for x in m.doors],
-            "furniture": [[f.name, f.label, f.type, f.room, f.pose, f.footprint, f.height, _cavity_out(f.cavity),
-                           _articulation_out(f.articulation), f.switch, f.tap] for f in m.furniture],
-            "facts": _atoms_out(sorted(m.facts))}, {}
-
-
-def _unpack_map(d: dict[str, Any], _: Arrays) -> SiteMap:
-    return SiteMap(
-        rooms=tuple(RoomInfo(n, fl, _tuple_or_none(b)) for n, fl, b in d["rooms"]),
-        doors=tuple(DoorInfo(n, tuple(r), _tuple_or_none(p), w, _articulation_in(a)) for n, r, p, w, a in d["doors"]),
-        furniture=tuple(FurnitureInfo(n, lb, t, r, _tuple_or_none(p), _tuple_or_none(fp), h, _cavity_in(c),
-                                      _articulation_in(a), _tuple_or_none(sw), _tuple_or_none(tap))
-                        for n, lb, t, r, p, fp, h, c, a, sw, tap in d["furniture"]),
-        facts=frozenset(_atoms_in(d["facts"])))
-
-
-def _pack_driver(m) -> tuple[dict[str, Any], Arrays]:
-    body = {f.name: getattr(m, f.name) for f in fields(m) if f.name != "arrays"}
-    return body, {k: np.ascontiguousarray(v) for k, v in m.arrays.items()}
-
-
-def _driver_unpacker(cls: type) -> Unpacker:
-    def unpack(d: dict[str, Any], arrays: Arrays) -> Any:
-        return cls(**d, arrays=dict(arrays))
-
-    return unpack
-
-
-def _pack_vlm(m: VlmRequest) -> tuple[dict[str, Any], Arrays]:
-    q = m.query
-    return {"frame_id": m.frame_id, "prompt": q.prompt, "kind": q.kind, "purpose": q.purpose,
-            "about": _atoms_out(q.about), "objects": list(q.objects), "options": list(q.options),
-            "identified": {str(k): int(v) for k, v in m.identified.items()}}, {}
-
-
-def _unpack_vlm(d: dict[str, Any], _: Arrays) -> VlmRequest:
-    q = Query(d["prompt"], d["kind"], d["purpose"], _atoms_in(d["about"]), tuple(d["objects"]), tuple(d["options"]))
-    return VlmRequest(q, d["frame_id"], {str(k): int(v) for k, v in d.get("identified", {}).items()})
-
-
-def _pack_oracle(m: OracleQuery) -> tuple[dict[str, Any], Arrays]:
-    return {"verb": m.verb, "atoms": _atoms_out(m.atoms), "seed": m.seed}, {}
-
-
-def _unpack_oracle(d: dict[str, Any], _: Arrays) -> OracleQuery:
-    return OracleQuery(d["verb"], _atoms_in(d["atoms"]), d.get("seed"))
-
-
-# -- goal traffic: binary headers ------------------------------------------------------------
-
-
-def _pack_strings(*items: str) -> bytes:
-    return (struct.pack(f"<{len(items) + 1}I", len(items), *map(len, items))
-            + "".join(items).encode())
-
-
-def _unpack_strings(data: bytes, offset: int) -> list[str]:
-    """The strings at ``offset``, which must run exactly to the end of ``data``."""
-    (n,) = _U32.unpack_from(data, offset)
-    offset += 4
-    if n * 4 > len(data) - offset:
-        raise MessageError("unreadable message header: string table is truncated")
-    lengths = struct.unpack_from(f"<{n}I", data, offset)
-    text = data[offset + 4 * n:].decode()  # one decode for all of them
-    if sum(lengths) != len(text):
-        raise MessageError("unreadable message header: strings do not match their lengths")
-    out, start = [], 0
-    for length in lengths:
-        out.append(text[start:start + length])
-        start += length
-    return out
-
-
-def _enc_request(m: GoalRequest) -> bytes:
-    hints = json.dumps([h.to_json() for h in m.hints], separators=(",", ":")) if m.hints else ""
-    return _pack_strings(m.goal_id, m.action, m.client, hints, *m.args)
-
-
-def _dec_request(data: bytes, offset: int) -> GoalRequest:
-    fields_ = _unpack_strings(data, offset)
-    if len(fields_) < 4:
-        raise MessageError("unreadable message header: a goal request needs id, action, client and hints")
-    goal_id, action, client, hints, *args = fields_
+def _array_in(ext: msgspec.msgpack.Ext) -> np.ndarray:
+    """The array an :data:`ARRAY_EXT` extension describes, a copy of its bytes in the tail."""
+    data, tail = ext.data, _reading.tail
     try:
-        parsed = tuple(Hint.from_json(h) for h in json.loads(hints)) if hints else ()
-    except (ValueError, KeyError, TypeError) as exc:
-        raise MessageError(f"unreadable goal hints: {exc}") from exc
-    return GoalRequest(goal_id, action, tuple(args), client, parsed)
+        offset, n = _ARRAY_HEAD.unpack_from(data)
+        dtype = np.dtype(data[_ARRAY_HEAD.size:_ARRAY_HEAD.size + n].decode())
+        (ndim,) = struct.unpack_from("<B", data, _ARRAY_HEAD.size + n)
+        shape = struct.unpack_from(f"<{ndim}I", data, _ARRAY_HEAD.size + n + 1)
+    except (TypeError, ValueError, UnicodeDecodeError, struct.error) as exc:
+        raise ValueError(f"bad array description: {exc}") from None
+    if dtype.hasobject:
+        raise ValueError(f"not a numeric array: dtype {dtype}")
+    count = math.prod(shape)  # exact: a forged shape cannot wrap around
+    if offset + count * dtype.itemsize > len(tail):
+        raise ValueError(f"array is truncated ({count * dtype.itemsize} bytes at {offset}, "
+                         f"the frame has {len(tail)})")
+    return np.frombuffer(tail, dtype, count, offset).reshape(shape).copy()
 
 
-def _enc_reply(m: GoalReply) -> bytes:
-    return (b"\x01" if m.accepted else b"\x00") + _pack_strings(m.goal_id, m.reason, m.server)
+def _plain(obj: Any) -> Any:
+    """A plain value for what msgspec cannot send as it is: numpy values, or their ``str``."""
+    if isinstance(obj, np.ndarray):
+        return obj.tolist()
+    if isinstance(obj, np.generic):
+        return obj.item()
+    return str(obj)
 
 
-def _dec_reply(data: bytes, offset: int) -> GoalReply:
-    accepted = data[offset]
-    goal_id, reason, server = _unpack_strings(data, offset + 1)
-    return GoalReply(goal_id, accepted == 1, reason, server)
+def _typed_in(kind: type, obj: Any) -> Any:
+    """msgspec's hook for the fields it has no decoder of its own for: numpy arrays."""
+    if kind is np.ndarray and isinstance(obj, msgspec.msgpack.Ext) and obj.code == ARRAY_EXT:
+        return _array_in(obj)
+    raise TypeError(f"expected a numeric array, got {type(obj).__name__}")
 
 
-def _enc_cancel(m: CancelRequest) -> bytes:
-    return _pack_strings(m.goal_id)
+# -- wire forms: the arrays of a message described, a result's data made plain ------------------
 
 
-def _dec_cancel(data: bytes, offset: int) -> CancelRequest:
-    (goal_id,) = _unpack_strings(data, offset)
-    return CancelRequest(goal_id)
+def _frame_out(f: Frame, tail: _Tail) -> Frame:
+    return dataclasses.replace(f, **{name: tail.add(getattr(f, name), dtype)
+                                     for name, dtype in _IMAGE_DTYPES.items() if getattr(f, name) is not None})
 
 
-_STATUS_HEAD = struct.Struct("<Bd")  # flags, feedback progress
-_HAS_FEEDBACK, _HAS_RESULT, _SUCCESS = 1, 2, 4
+def _driver_out(m: DriverCall | DriverReply, tail: _Tail) -> Any:
+    return msgspec.structs.replace(m, arrays={k: tail.add(v) for k, v in m.arrays.items()})
 
 
-def _enc_status(m: GoalStatus) -> bytes:
-    flags, progress, text, message, data = 0, 0.0, "", "", ""
-    if m.feedback is not None:
-        flags |= _HAS_FEEDBACK
-        progress, text = float(m.feedback.progress), m.feedback.text
-    if m.result is not None:
-        flags |= _HAS_RESULT | (_SUCCESS if m.result.success else 0)
-        message = m.result.message
-        if m.result.data:
-            value = m.result.data if isinstance(m.result.data, dict) else {"value": m.result.data}
-            data = json.dumps(value, separators=(",", ":"), default=_json_default)
-    return _STATUS_HEAD.pack(flags, progress) + _pack_strings(
-        m.goal_id, m.state.value, m.server, text, message, data)
-
-
-def _dec_status(data: bytes, offset: int) -> GoalStatus:
-    flags, progress = _STATUS_HEAD.unpack_from(data, offset)
-    goal_id, state, server, text, message, blob = _unpack_strings(data, offset + _STATUS_HEAD.size)
-    result = None
-    if flags & _HAS_RESULT:
-        payload = json.loads(blob) if blob else {}
-        if not isinstance(payload, dict):
-            raise MessageError("malformed goal_status message: result data is not an object")
-        result = SkillResult(bool(flags & _SUCCESS), message, payload)
-    return GoalStatus(
-        goal_id=goal_id,
-        state=GoalState(state),
-        feedback=Feedback(progress, text) if flags & _HAS_FEEDBACK else None,
-        result=result,
-        server=server,
-    )
+def _status_out(m: GoalStatus) -> GoalStatus:
+    """``m`` with its result data a dict of plain values under string keys."""
+    data = m.result.data if m.result is not None else {}
+    if isinstance(data, dict) and all(type(k) is str for k in data):
+        return m
+    plain = {str(k): v for k, v in data.items()} if isinstance(data, dict) else {"value": data}
+    return msgspec.structs.replace(m, result=dataclasses.replace(m.result, data=plain))
 
 
 # -- the kind table ------------------------------------------------------------------------------
@@ -502,100 +320,76 @@ KIND_CODES = {
     "site_map": 18, "vlm_request": 19, "answer": 20,
     # schema 5: a simulated world's action hook, the robot's drivers (vap_bt.transport.drivers)
     "action_event": 21, "action_ack": 22, "driver_call": 23, "driver_reply": 24,
-    # added in schema 5 (new kinds only, nothing changed): a simulated world's oracle for the report
     "oracle_query": 25, "oracle_reply": 26,
 }
 
-Encoder = Callable[[Any], bytes]
-Decoder = Callable[[bytes, int], Any]
-
-# kinds with a binary header: (class, encoder, decoder)
-_BINARY: dict[str, tuple[type, Encoder, Decoder]] = {
-    "goal_request": (GoalRequest, _enc_request, _dec_request),
-    "goal_reply": (GoalReply, _enc_reply, _dec_reply),
-    "goal_status": (GoalStatus, _enc_status, _dec_status),
-    "cancel": (CancelRequest, _enc_cancel, _dec_cancel),
+_KIND_OF: dict[type, str] = {
+    GoalRequest: "goal_request", GoalReply: "goal_reply", GoalStatus: "goal_status", CancelRequest: "cancel",
+    MoveViewRequest: "move_view", MoveViewReply: "move_view_reply", ErrorReply: "error",
+    CaptureRequest: "capture", Frame: "frame", ViewRequest: "view", StateRequest: "state_request",
+    RobotState: "robot_state", MapRequest: "map_request", SiteMap: "site_map", VlmRequest: "vlm_request",
+    Answer: "answer", ActionEvent: "action_event", ActionAck: "action_ack", DriverCall: "driver_call",
+    DriverReply: "driver_reply", OracleQuery: "oracle_query", OracleReply: "oracle_reply",
 }
-# kinds with a JSON header: (class, packer, unpacker)
-_JSON: dict[str, tuple[type, Packer, Unpacker]] = {
-    "move_view": (MoveViewRequest, _pack_move, _unpack_move),
-    "move_view_reply": (MoveViewReply, _pack_flat, _flat_unpacker(MoveViewReply)),
-    "error": (ErrorReply, _pack_flat, _flat_unpacker(ErrorReply)),
-    "capture": (CaptureRequest, _pack_capture, _unpack_capture),
-    "frame": (Frame, _pack_frame, _unpack_frame),
-    "view": (ViewRequest, _pack_view, _unpack_view),
-    "state_request": (StateRequest, _pack_flat, _flat_unpacker(StateRequest)),
-    "robot_state": (RobotState, _pack_flat, _unpack_state),
-    "map_request": (MapRequest, _pack_flat, _flat_unpacker(MapRequest)),
-    "site_map": (SiteMap, _pack_map, _unpack_map),
-    "vlm_request": (VlmRequest, _pack_vlm, _unpack_vlm),
-    "answer": (Answer, _pack_flat, _flat_unpacker(Answer)),
-    "action_event": (ActionEvent, _pack_flat, _flat_unpacker(ActionEvent)),
-    "action_ack": (ActionAck, _pack_flat, _flat_unpacker(ActionAck)),
-    "driver_call": (DriverCall, _pack_driver, _driver_unpacker(DriverCall)),
-    "driver_reply": (DriverReply, _pack_driver, _driver_unpacker(DriverReply)),
-    "oracle_query": (OracleQuery, _pack_oracle, _unpack_oracle),
-    "oracle_reply": (OracleReply, _pack_flat, _flat_unpacker(OracleReply)),
+#: the kinds with numeric arrays, and their wire form (the arrays described, their bytes in the tail)
+_ARRAYS: dict[type, Callable[[Any, _Tail], Any]] = {
+    Frame: _frame_out, DriverCall: _driver_out, DriverReply: _driver_out,
 }
-_KIND_OF = {cls: kind for kind, (cls, _, _) in [*_BINARY.items(), *_JSON.items()]}
-# class -> its frame prefix and encoder (binary kinds) or packer (JSON kinds)
-_ENCODERS: dict[type, tuple[bytes, bool, Callable[[Any], Any]]] = {
-    cls: (_PREFIX.pack(MAGIC, SCHEMA, KIND_CODES[kind]), kind in _BINARY,
-          (_BINARY[kind] if kind in _BINARY else _JSON[kind])[1])
-    for cls, kind in _KIND_OF.items()
-}
-# code -> (kind name, class, binary decoder or None, JSON unpacker or None)
-_DECODERS: dict[int, tuple[str, type, Decoder | None, Unpacker | None]] = {
-    KIND_CODES[kind]: (kind, cls, _BINARY[kind][2] if kind in _BINARY else None,
-                       _JSON[kind][2] if kind in _JSON else None)
-    for cls, kind in _KIND_OF.items()
-}
+_U32 = struct.Struct("<I")
+_ENCODER = msgspec.msgpack.Encoder(enc_hook=_plain)
+_PREFIXES = {cls: _PREFIX.pack(MAGIC, SCHEMA, KIND_CODES[kind]) for cls, kind in _KIND_OF.items()}
+# kind code -> (kind name, class, its decoder)
+_DECODERS = {KIND_CODES[kind]: (kind, cls, msgspec.msgpack.Decoder(cls, dec_hook=_typed_in))
+             for cls, kind in _KIND_OF.items()}
 
 
 def encode(msg: Any) -> bytes:
     """One frame for ``msg`` (any message class above, a Frame, RobotState, SiteMap or Answer)."""
-    codec = _ENCODERS.get(type(msg))
-    if codec is None:
-        raise TypeError(f"{type(msg).__name__} is not a transport message")
-    prefix, binary, enc = codec
-    if binary:
-        return prefix + enc(msg)
-    body, arrays = enc(msg)
-    header = {**body, "arrays": [[n, a.dtype.str, list(a.shape)] for n, a in arrays.items()]}
-    head = json.dumps(header, separators=(",", ":"), default=_json_default).encode()
-    return b"".join([prefix, _U32.pack(len(head)), head, *(a.tobytes() for a in arrays.values())])
+    cls = type(msg)
+    prefix = _PREFIXES.get(cls)
+    if prefix is None:
+        raise TypeError(f"{cls.__name__} is not a transport message")
+    if cls is GoalStatus:
+        msg = _status_out(msg)
+    arrays = _ARRAYS.get(cls)
+    if arrays is None:
+        return prefix + _ENCODER.encode(msg)
+    tail = _Tail()
+    body = _ENCODER.encode(arrays(msg, tail))
+    return b"".join([prefix, _U32.pack(len(body)), body, *tail.arrays])  # contiguous arrays are buffers
 
 
 def decode(data: bytes | bytearray | memoryview, expect: type[T]) -> T:
     """The message in ``data``, which must be of type ``expect``."""
-    if type(data) is not bytes:
-        data = bytes(data)
-    if len(data) < _PREFIX.size or not data.startswith(MAGIC):
+    if len(data) < _PREFIX.size:
         raise MessageError("not a vap_bt message (bad magic)")
-    if data[8] == 0x7B:  # "{": a schema-1 frame
+    magic, schema, code = _PREFIX.unpack_from(data)
+    if magic != MAGIC:
+        raise MessageError("not a vap_bt message (bad magic)")
+    if code == 0x7B:  # "{": a schema-1 frame
         _legacy_schema(data)  # raises
-    _, schema, code = _PREFIX.unpack_from(data)
     if schema != SCHEMA:
         raise _mismatch(schema)
     codec = _DECODERS.get(code)
     if codec is None:
         raise MessageError(f"unknown message kind {code!r}")
-    kind, cls, binary, unpack = codec
+    kind, cls, decoder = codec
     if cls is not expect:
         raise MessageError(f"expected a {_KIND_OF[expect]} message, got {kind}")
     try:
-        if binary is not None:
-            return binary(data, _PREFIX.size)
-        header, arrays = _read_json(data, _PREFIX.size)
-        return unpack(header, arrays)  # type: ignore[misc]
-    except struct.error:
-        raise MessageError(f"unreadable message header: {kind} message is truncated") from None
-    except UnicodeDecodeError as exc:
-        raise MessageError(f"unreadable message header: {exc}") from None
-    except (KeyError, TypeError, ValueError, IndexError) as exc:
-        if isinstance(exc, MessageError):
-            raise
-        raise MessageError(f"malformed {kind} message: {type(exc).__name__}: {exc}") from None
+        if cls not in _ARRAYS:
+            return decoder.decode(data[_PREFIX.size:])  # small: a copy costs less than a view
+        view = memoryview(data)[_PREFIX.size:]
+        (n,) = _U32.unpack_from(view)
+        _reading.tail = view[_U32.size + n:]
+        try:
+            return decoder.decode(view[_U32.size:_U32.size + n])
+        finally:
+            _reading.tail = b""
+    except msgspec.ValidationError as exc:
+        raise MessageError(f"malformed {kind} message: {exc}") from None
+    except (msgspec.DecodeError, struct.error) as exc:
+        raise MessageError(f"unreadable {kind} message: {exc}") from None
 
 
 def _mismatch(schema: object) -> SchemaMismatch:
@@ -605,52 +399,11 @@ def _mismatch(schema: object) -> SchemaMismatch:
     )
 
 
-def _legacy_schema(data: bytes) -> None:
+def _legacy_schema(data: bytes | bytearray | memoryview) -> None:
     """A schema-1 frame (JSON header right after a u32 length): say which schema it is."""
     _, n = _LEGACY_PREFIX.unpack_from(data)
     try:
-        header = json.loads(data[_LEGACY_PREFIX.size:_LEGACY_PREFIX.size + n])
+        header = json.loads(bytes(data[_LEGACY_PREFIX.size:_LEGACY_PREFIX.size + n]))
     except ValueError as exc:
         raise MessageError(f"unreadable message header: {exc}") from None
     raise _mismatch(header.get("schema") if isinstance(header, dict) else None)
-
-
-def _read_json(data: bytes, offset: int) -> tuple[dict[str, Any], Arrays]:
-    (n,) = _U32.unpack_from(data, offset)
-    offset += _U32.size
-    if offset + n > len(data):
-        raise MessageError("unreadable message header: truncated")
-    try:
-        header = json.loads(data[offset:offset + n])
-    except ValueError as exc:
-        raise MessageError(f"unreadable message header: {exc}") from None
-    if not isinstance(header, dict):
-        raise MessageError("message header is not an object")
-    return header, _read_arrays(data, offset + n, header.pop("arrays", []))
-
-
-def _read_arrays(data: bytes, offset: int, specs: list) -> Arrays:
-    arrays: Arrays = {}
-    for spec in specs:
-        try:
-            name, dtype, shape = spec
-            dt = np.dtype(dtype)
-            count = int(np.prod(shape, dtype=np.int64))
-        except (TypeError, ValueError) as exc:
-            raise MessageError(f"bad array description {spec!r}: {exc}") from None
-        end = offset + count * dt.itemsize
-        if end > len(data):
-            raise MessageError(f"array {name!r} is truncated")
-        arrays[name] = np.frombuffer(data, dt, count, offset).reshape(shape).copy()
-        offset = end
-    return arrays
-
-
-def _json_default(obj: Any) -> Any:
-    if isinstance(obj, np.ndarray):
-        return obj.tolist()
-    if isinstance(obj, np.generic):
-        return obj.item()
-    if isinstance(obj, (set, frozenset)):
-        return sorted(obj, key=str)
-    return str(obj)
