@@ -23,7 +23,7 @@ from __future__ import annotations
 from typing import Any
 
 from skills.body import Slipped, Stopped
-from skills.hands import Outcome
+from vap_bt.outcome import Outcome
 from skills.kit import Kit, has_drivers, kit_for
 from skills.navigator import Blocked
 from vap_bt.skill import Hint, Skill, SkillResult

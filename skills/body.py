@@ -349,9 +349,9 @@ class Body:
     def _follow(self, traj: JointTrajectory) -> None:
         res = self.arm.follow(traj, self.cancelled)
         if not res.completed:
-            if res.reason.startswith("blocked") and not self.cancelled():
-                raise Struck(res.reason)
-            raise Stopped(res.reason or "the arm stopped")
+            if res.message.startswith("blocked") and not self.cancelled():
+                raise Struck(res.message)
+            raise Stopped(res.message or "the arm stopped")
 
     def goto_pose(self, T: np.ndarray, speed: float = 0.8, allow_base: bool = False, frame: str = "tcp") -> bool:
         """Move ``frame`` to ``T`` by an arm pose with a clear way there (:meth:`reachable`); the
@@ -417,7 +417,7 @@ class Body:
             slipped = self.slipped()
             if slipped is not None and not self.cancelled():
                 raise Slipped(slipped)
-            raise Stopped(res.reason or "the base stopped")
+            raise Stopped(res.message or "the base stopped")
 
     def fingers(self, width: float, force: float = 40.0) -> bool:
         """Open or close the fingers to ``width`` (m between them); True when they hold something."""

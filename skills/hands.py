@@ -41,6 +41,7 @@ from skills.eyes import CAMERA_EYE, Eyes, Held
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
+from vap_bt.outcome import Outcome
 from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN
 from vap_bt.scene.pointcloud import backproject, instance_cloud
 
@@ -136,14 +137,6 @@ def laid_over(held: Held, R: np.ndarray, a: np.ndarray) -> float:
 def how(a) -> str:
     """A hand approaching along ``a`` works from above ("top") or from the side ("front")."""
     return "top" if a[2] < -0.9 else "front"
-
-
-@dataclass(frozen=True)
-class Outcome:
-    """A skill's motion ended: ``completed`` (its own view), and what happened in words."""
-
-    completed: bool
-    message: str = ""
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,8 @@ doors and drawers), from what the camera measures where the goal's hints say to 
 from __future__ import annotations
 
 from skills.base import MotionSkill
-from skills.hands import Outcome, Where
+from skills.hands import Where
+from vap_bt.outcome import Outcome
 from skills.kit import Kit
 from vap_bt.skill import Hint
 

@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from skills.base import MotionSkill
-from skills.hands import Outcome
+from vap_bt.outcome import Outcome
 from skills.kit import Kit
 from vap_bt.skill import Hint
 

@@ -22,7 +22,8 @@ from vap_bt.motion.kinematics import Kinematics, world_to_base
 from vap_bt.motion.limits import arm_limits
 from vap_bt.motion.se3 import approach_pose as frame  # noqa: F401  (the tests' name for it)
 from vap_bt.motion.timing import time_path
-from vap_bt.robot.drivers import JointTrajectory, MotionResult
+from vap_bt.robot.drivers import JointTrajectory
+from vap_bt.outcome import Outcome
 
 ARM = Kinematics.arm()
 LIMITS = arm_limits()
@@ -49,16 +50,16 @@ def trajectory(d, qs: list[np.ndarray], speed: float) -> JointTrajectory:
     return JointTrajectory(d.arm.joints, timed.t, timed.q, timed.qd)
 
 
-def through(d, qs: list[np.ndarray], speed: float = 0.5, cancelled: Callable[[], bool] = never) -> MotionResult:
+def through(d, qs: list[np.ndarray], speed: float = 0.5, cancelled: Callable[[], bool] = never) -> Outcome:
     return d.arm.follow(trajectory(d, qs, speed), cancelled)
 
 
-def reach(d, T: np.ndarray, speed: float = 0.5) -> MotionResult:
+def reach(d, T: np.ndarray, speed: float = 0.5) -> Outcome:
     """A joint-space move to the tcp pose ``T``."""
     return through(d, [ik(d, T)], speed)
 
 
-def line(d, T: np.ndarray, steps: int = 6, speed: float = 0.3) -> MotionResult:
+def line(d, T: np.ndarray, steps: int = 6, speed: float = 0.3) -> Outcome:
     """The tcp along a straight line to ``T`` (orientation slerped)."""
     A = d.arm.tcp_pose()
     slerp = Slerp([0, 1], Rotation.from_matrix(np.stack([A[:3, :3], T[:3, :3]])))
@@ -78,13 +79,13 @@ def moved(T: np.ndarray, dp) -> np.ndarray:
     return out
 
 
-def hold(d, seconds: float) -> MotionResult:
+def hold(d, seconds: float) -> Outcome:
     """Keep the arm still for ``seconds`` (time passes only while something moves)."""
     q = np.array(d.arm.joint_state().positions)
     return d.arm.follow(JointTrajectory(d.arm.joints, np.array([0.0, seconds]), np.array([q, q])), never)
 
 
-def drive(d, *poses, speed: float = 0.8) -> MotionResult:
+def drive(d, *poses, speed: float = 0.8) -> Outcome:
     return d.base.follow([tuple(map(float, p)) for p in poses], speed, never)
 
 
@@ -100,7 +101,7 @@ def in_base(d, fwd: float, left: float, z: float) -> np.ndarray:
     return np.array([x + c * fwd - s * left, y + s * fwd + c * left, z])
 
 
-def carry(d, T: np.ndarray | None = None) -> MotionResult:
+def carry(d, T: np.ndarray | None = None) -> Outcome:
     """The held item beside the base, over the floor (hand orientation kept)."""
     T = d.arm.tcp_pose() if T is None else T
     return line(d, moved(T, in_base(d, 0.35, 0.42, 0.95) - T[:3, 3]), steps=8)
@@ -168,7 +169,7 @@ def world_of(tmp_path, name: str, scene: str, situations=None, **kw):
                          image_size=(160, 120), **kw)
 
 
-def stand_before(d, point, normal, distance: float, side=(0.0, 0.0, 0.0)) -> MotionResult:
+def stand_before(d, point, normal, distance: float, side=(0.0, 0.0, 0.0)) -> Outcome:
     """Drive (sideways along the room's middle, then straight in) to stand ``distance`` in front
     of ``point`` along ``normal`` (horizontal), shifted by ``side``, facing it."""
     n = np.array([normal[0], normal[1], 0.0]) / np.hypot(normal[0], normal[1])

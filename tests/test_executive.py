@@ -225,13 +225,13 @@ def test_a_failure_that_comes_back_unchanged_is_looked_at_afresh_then_stops_the_
     executive re-surveys instead of only replanning, the third time it stops and says why —
     rather than spending the replanning budget on the same motion."""
     from vap_bt.sim.symbolic import SymbolicWorld
-    from vap_bt.world import ActionOutcome
+    from vap_bt.outcome import Outcome
 
     perform = SymbolicWorld.perform
 
     def no_grasp(self, action, args, ctx):
         if action == "grasp":
-            return ActionOutcome(False, f"{args[0]}: no arm pose reaches it")
+            return Outcome(False, f"{args[0]}: no arm pose reaches it")
         return perform(self, action, args, ctx)
 
     monkeypatch.setattr(SymbolicWorld, "perform", no_grasp)

@@ -36,9 +36,9 @@ def endless(monkeypatch):
                 raise AssertionError("the goal was never cancelled")
             time.sleep(0.005)
         rec["cancelled"], rec["t1"] = True, time.monotonic()
-        from vap_bt.world import ActionOutcome
+        from vap_bt.outcome import Outcome
 
-        return ActionOutcome(False, "cancelled")
+        return Outcome(False, "cancelled")
 
     monkeypatch.setattr(SymbolicWorld, "perform", perform)
     return seen, started
@@ -82,13 +82,13 @@ def test_ctrl_c_halts_the_tree_and_cancels_the_goal_in_flight(endless, monkeypat
     seen, started = endless
     real = Executive._tick_until_done
 
-    def ticking(self, tree, ctx, plan, out):
+    def ticking(self, tree, ctx, plan, out, *rest):
         def press_ctrl_c(tree, ticks):  # the user presses Ctrl-C while the first action runs
             if started.is_set() and ticks > 5:
                 raise KeyboardInterrupt
 
         self.on_tree = press_ctrl_c
-        return real(self, tree, ctx, plan, out)
+        return real(self, tree, ctx, plan, out, *rest)
 
     monkeypatch.setattr(Executive, "_tick_until_done", ticking)
     session = _session()
@@ -106,7 +106,7 @@ def test_ctrl_c_halts_the_tree_and_cancels_the_goal_in_flight(endless, monkeypat
 def test_the_time_budget_halts_a_replanned_tree_and_cancels_its_goal_in_flight(endless, monkeypatch):
     """The first action fails at once, so the executive replans and ticks a new tree; the budget
     ends while that tree's goal runs: it is the one halted, and its goal cancelled."""
-    from vap_bt.world import ActionOutcome
+    from vap_bt.outcome import Outcome
 
     seen, _ = endless
     endless_perform = SymbolicWorld.perform
@@ -116,7 +116,7 @@ def test_the_time_budget_halts_a_replanned_tree_and_cancels_its_goal_in_flight(e
         calls["n"] += 1
         if calls["n"] == 1:
             seen.append({"action": action, "cancelled": False, "failed": True})
-            return ActionOutcome(False, "the first try fails")
+            return Outcome(False, "the first try fails")
         return endless_perform(self, action, args, ctx)
 
     monkeypatch.setattr(SymbolicWorld, "perform", fail_first)

@@ -82,7 +82,7 @@ def test_the_arm_refuses_what_it_cannot_follow(counter):
     backwards = JointTrajectory(d.arm.joints, np.array([0.0, -1.0]), np.array([here, here]))
     for tr, why in ((wrong, "joints"), (far, "starts"), (beyond, "limits"), (backwards, "grow")):
         out = d.arm.follow(tr, never)
-        assert not out.completed and out.reason.startswith("refused") and why in out.reason
+        assert not out.completed and out.message.startswith("refused") and why in out.message
     assert counter.ticks == t0  # nothing moved
     # the joints may come in any order: they are matched by name
     order = tuple(reversed(d.arm.joints))
@@ -118,7 +118,7 @@ def test_cancel_stops_every_driver_within_one_step(counter, n):
         out = move(c)
         assert counter.ticks - c.ticks <= 1  # at most the step in progress
         if hasattr(out, "completed"):
-            assert not out.completed and out.reason == "cancelled"
+            assert not out.completed and out.message == "cancelled"
         q = counter.robot.q()
         hold(d, 0.3)  # the stop holds where the joints were, it does not finish the motion
         assert np.max(np.abs(counter.robot.q() - q)) < 0.02
@@ -139,7 +139,7 @@ def test_stop_ends_a_motion_running_on_another_thread(counter):
     assert moving.wait(10)
     d.arm.stop()
     run.join(timeout=10)
-    assert out and not out[0].completed and out[0].reason == "stopped"
+    assert out and not out[0].completed and out[0].message == "stopped"
     assert through(d, [np.array(d.arm.joint_state().positions)], 0.5).completed  # and it moves again
 
 

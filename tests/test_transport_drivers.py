@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from plugin_fixtures.zenoh_net import endpoint, free_port, session, wait_until
-from vap_bt.robot.drivers import GripperState, JointState, JointTrajectory, MotionResult
+from vap_bt.robot.drivers import GripperState, JointState, JointTrajectory, Outcome
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
@@ -34,19 +34,19 @@ class TimedPart:
         self.started = threading.Event()
         self.log: list[str] = []
 
-    def run(self, duration: float, cancelled) -> MotionResult:
+    def run(self, duration: float, cancelled) -> Outcome:
         self._stop.clear()
         self.started.set()
         t_end = time.monotonic() + duration
         while time.monotonic() < t_end:
             if cancelled():
-                return MotionResult(False, "cancelled")
+                return Outcome(False, "cancelled")
             if self._stop.is_set():
                 self.log.append("stopped")
-                return MotionResult(False, "stopped")
+                return Outcome(False, "stopped")
             time.sleep(0.002)
         self.log.append("completed")
-        return MotionResult(True)
+        return Outcome(True)
 
     def stop(self) -> None:
         self._stop.set()
@@ -66,7 +66,7 @@ class Arm(TimedPart):
         T[:3, 3] = (0.4, 0.1, 1.0)
         return T
 
-    def follow(self, trajectory: JointTrajectory, cancelled) -> MotionResult:
+    def follow(self, trajectory: JointTrajectory, cancelled) -> Outcome:
         self.got = trajectory
         r = self.run(trajectory.duration, cancelled)
         if r.completed:
@@ -85,7 +85,7 @@ class Base(TimedPart):
     def odometry(self):
         return self.at
 
-    def follow(self, path, speed, cancelled) -> MotionResult:
+    def follow(self, path, speed, cancelled) -> Outcome:
         r = self.run(0.2 * len(path), cancelled)
         if r.completed:
             self.at = tuple(path[-1])
@@ -165,7 +165,7 @@ def test_cancelling_stops_the_motion_within_a_control_cycle(link):
     t0 = time.monotonic()
     r = remote.arm.follow(_trajectory(5.0), lambda: time.monotonic() > cancel_at)
     took = time.monotonic() - t0
-    assert not r.completed and r.reason == "cancelled"
+    assert not r.completed and r.message == "cancelled"
     assert took < 0.3 + 0.25, f"the stop took {took - 0.3:.3f} s to end the motion"
     assert drivers.arm.log[-1] == "stopped"
 
@@ -177,7 +177,7 @@ def test_a_client_that_dies_mid_motion_has_its_motion_stopped(link):
     with session(connect=(endpoint(port),)) as doomed_session:
         doomed = RemoteDrivers(doomed_session, "ur5e")
         wait_until(lambda: _answers(doomed), 3)
-        done: list[MotionResult] = []
+        done: list[Outcome] = []
         threading.Thread(target=lambda: done.append(doomed.arm.follow(_trajectory(10.0), lambda: False)),
                          daemon=True).start()
         assert drivers.arm.started.wait(3)

@@ -12,7 +12,8 @@ import pytest
 from vap_bt.domain.atoms import Atom
 from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
-from vap_bt.transport.messages import (ARRAY_EXT, KIND_CODES, SCHEMA, ActionAck, ActionEvent, CancelRequest,
+from vap_bt.outcome import Outcome
+from vap_bt.transport.messages import (ARRAY_EXT, KIND_CODES, SCHEMA, ActionEvent, CancelRequest,
                                        GoalReply, GoalRequest, GoalStatus, MessageError, SchemaMismatch, decode, encode)
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
@@ -54,8 +55,8 @@ def test_messages_round_trip():
     view = ViewRequest(Viewpoint("kitchen", Aim(("t",), (1.0, 3.0, 0.7)), (1.0, 1.5, 1.57), "t from the front"))
     ask = VlmRequest(Query("Is the cup on the t?", about=(Atom("on", ("cup", "t")),), objects=("cup", "t")), "f-1", {"cup": 0})
     for msg in (site, state, view, ask, CaptureRequest(None), CaptureRequest(Aim(("cup",))), Answer("yes", True),
-                ActionEvent("begin", "grasp", ("cup", "table")), ActionEvent("end", "grasp"), ActionAck(True),
-                ActionAck(False, "no action open")):
+                ActionEvent("begin", "grasp", ("cup", "table")), ActionEvent("end", "grasp"), Outcome(True),
+                Outcome(False, "no action open")):
         assert decode(encode(msg), type(msg)) == msg
 
 

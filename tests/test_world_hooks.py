@@ -12,7 +12,8 @@ from plugin_fixtures.zenoh_net import endpoint, free_port, session
 
 from vap_bt.sim.situations import SituationModel, SituationSpec
 from vap_bt.transport import keys
-from vap_bt.transport.messages import ActionAck, decode
+from vap_bt.outcome import Outcome
+from vap_bt.transport.messages import decode
 from vap_bt.transport.world_hooks import ActionHookServer, ZenohActionHooks
 
 SCENE = kitchen({"microwave": "type: appliance, state: closed"})
@@ -68,8 +69,8 @@ def test_a_bad_event_gets_a_refusal_not_a_dead_server(net):
         hooks = ZenohActionHooks(skills, "ur5e")
         hooks.begin_action("grasp", ("cup", "table"))
         replies = list(skills.get(keys.world_action("ur5e"), payload=b"garbage", timeout=2))
-        ack = decode(replies[0].ok.payload.to_bytes(), ActionAck)
-        assert not ack.ok and "bad action event" in ack.reason
+        ack = decode(replies[0].ok.payload.to_bytes(), Outcome)
+        assert not ack.completed and "bad action event" in ack.message
         hooks.end_action()
         assert world.calls == [("begin", "grasp", ("cup", "table")), ("end", None, None)]
         hooks.close()

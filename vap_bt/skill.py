@@ -116,7 +116,7 @@ class WorldActionSkill(Skill):
 
     A world that knows every action — the symbolic one, over ground facts — needs no motion: this
     skill reports that it started, hands the action over and turns the world's
-    :class:`~vap_bt.world.ActionOutcome` into a :class:`SkillResult`. It stands in for a plugin
+    :class:`~vap_bt.world.Outcome` into a :class:`SkillResult`. It stands in for a plugin
     whose world lacks what the plugin needs (:meth:`Skill.binds`), under the plugin's own action,
     robot and resource (:func:`vap_bt.plugins.instantiate`), and for the domain actions no plugin
     implements (:func:`vap_bt.app.runner.make_skills`). A world with drivers (the pybullet one)

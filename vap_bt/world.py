@@ -16,6 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Protocol, runtime_checkable
 
+from vap_bt.outcome import Outcome
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
@@ -32,15 +33,6 @@ class InjectedSituation:
     step: int
     #: the things it changed (what fell, what a person moved, the leaf pushed), where the world says
     affected: tuple[str, ...] = ()
-
-
-@dataclass
-class ActionOutcome:
-    """What the world did with an action. ``completed`` is the motion's own view: a grasp that
-    closed on nothing still *completed*; that it failed is for perception to find out."""
-
-    completed: bool
-    message: str = ""
 
 
 class GoalContext(Protocol):
@@ -68,7 +60,7 @@ class World(Protocol):
     def reset(self, seed: int) -> None:
         """Restore the task's initial state; every random draw after this follows ``seed``."""
 
-    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
+    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> Outcome:
         """Carry out one domain action, with this world's situation injection. Only a world
         without drivers has it (the symbolic one); a world with drivers (the pybullet one) performs
         nothing: skills move its robot (:mod:`vap_bt.robot.drivers`)."""

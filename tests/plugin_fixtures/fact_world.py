@@ -19,7 +19,8 @@ from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.site_map import RoomInfo, SiteMap
 from vap_bt.robot.state import RobotState
 from vap_bt.sim.oracle import FunctionOracle
-from vap_bt.world import ActionOutcome, GoalContext
+from vap_bt.outcome import Outcome
+from vap_bt.world import GoalContext
 
 # action -> (preconditions, added, deleted) over argument positions ?0, ?1
 _SCHEMAS: dict[str, tuple[list[str], list[str], list[str]]] = {
@@ -54,26 +55,26 @@ class FactWorld:
         self.view = 0
         self.performed: list[tuple[str, tuple[str, ...]]] = []
 
-    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
+    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> Outcome:
         schema = _SCHEMAS.get(action)
         if schema is None:
-            return ActionOutcome(False, f"facts world cannot {action}")
+            return Outcome(False, f"facts world cannot {action}")
         pre, add, delete = schema
         try:
             needed = [_atom(t, args) for t in pre]
         except (IndexError, ValueError):
-            return ActionOutcome(False, f"{action}{args}: wrong number of arguments")
+            return Outcome(False, f"{action}{args}: wrong number of arguments")
         if not all(a in self.facts for a in needed):
-            return ActionOutcome(False, f"{action}{args}: preconditions do not hold")
+            return Outcome(False, f"{action}{args}: preconditions do not hold")
         for i in range(self.steps):
             if ctx.cancelled():
-                return ActionOutcome(False, f"{action} stopped by cancel")
+                return Outcome(False, f"{action} stopped by cancel")
             time.sleep(self.duration / self.steps)
             ctx.feedback((i + 1) / self.steps, f"{action} step {i + 1}/{self.steps}")
         self.facts -= {_atom(t, args) for t in delete}
         self.facts |= {_atom(t, args) for t in add}
         self.performed.append((action, tuple(args)))
-        return ActionOutcome(True, f"{action} done")
+        return Outcome(True, f"{action} done")
 
     def capture(self, aim: Aim | None = None) -> Frame:
         h, w = 4, 6

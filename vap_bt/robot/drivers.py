@@ -31,6 +31,7 @@ from typing import Callable, Protocol
 
 import numpy as np
 
+from vap_bt.outcome import Outcome
 from vap_bt.robot.frame import Frame
 
 Cancelled = Callable[[], bool]
@@ -49,14 +50,6 @@ class JointTrajectory:
     def duration(self) -> float:
         """Seconds from the first sample to the last."""
         return float(self.times[-1])
-
-
-@dataclass(frozen=True)
-class MotionResult:
-    """How a motion ended: ``completed``, or not with the reason (cancelled, refused, blocked)."""
-
-    completed: bool
-    reason: str = ""
 
 
 @dataclass(frozen=True)
@@ -85,7 +78,7 @@ class Arm(Protocol):
     def tcp_pose(self) -> np.ndarray:
         """The tool centre point's pose in the map frame (4x4)."""
 
-    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> MotionResult:
+    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> Outcome:
         """Track ``trajectory`` from the current joint positions; blocks until it is done, stopped by
         ``cancelled()`` or refused, and says which."""
 
@@ -114,7 +107,7 @@ class Base(Protocol):
         never jumps and is exact over a short way (odometry drifts over a long one), so the
         motion between two readings is what the base did."""
 
-    def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> MotionResult:
+    def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> Outcome:
         """Drive through ``path`` (x, y, yaw) at ``speed`` (share of the base's limits)."""
 
     def stop(self) -> None:

@@ -6,7 +6,7 @@ a real driver could not measure: joint encoders, the fingers' opening and whethe
 something, the base's localization, the camera's frame. Every call that moves the robot steps the
 physics one step at a time (:meth:`PybulletWorld.step`, which also evaluates the physics rules
 and Table II injection), checks ``cancelled()`` and ``stop()`` before every step and ends with a
-:class:`MotionResult` saying why it ended:
+:class:`Outcome` saying why it ended:
 
 * :class:`PybulletArm` — ``follow`` tracks a timed trajectory of the six arm joints: each
   physics step the set-point is the trajectory linearly interpolated at that step's time (with
@@ -24,7 +24,7 @@ and Table II injection), checks ``cancelled()`` and ``stop()`` before every step
   an item go once the fingers are ``ITEM_RELEASE`` wider than they held it (or fully open), a handle once they
   are ``HANDLE_CAPTURE`` apart (a loosely closed hand still traps the bar). ``holding`` is a grip
   in force — on an item or a handle. A cancelled ``move`` returns the state where the fingers
-  stopped (the protocol's ``move`` answers with the gripper's state, not a MotionResult).
+  stopped (the protocol's ``move`` answers with the gripper's state, not a Outcome).
 * :class:`PybulletBase` — ``follow`` drives through the poses one after the other, each leg a
   time-optimal jerk-limited rest-to-rest move (ruckig) at ``speed`` of the base's limits (a base
   controller's own profile, not a plan); ends ``blocked`` when the base falls ``BASE_TRACKING_LIMIT`` behind.
@@ -57,7 +57,8 @@ import numpy as np
 
 from vap_bt.motion.limits import base_limits
 from vap_bt.motion.tracking import point_to_point
-from vap_bt.robot.drivers import Cancelled, GripperState, JointState, JointTrajectory, MotionResult
+from vap_bt.robot.drivers import Cancelled, GripperState, JointState, JointTrajectory
+from vap_bt.outcome import Outcome
 from vap_bt.robot.frame import Frame
 from vap_bt.sim.localization import Localization
 from vap_bt.sim.pb import pb
@@ -132,26 +133,26 @@ class _Stoppable:
         return None
 
     def _track(self, setpoints: Iterator[tuple[np.ndarray, np.ndarray]], cancelled: Cancelled,
-               lag: Callable[[np.ndarray], float], limit: float, blocked: str) -> MotionResult:
+               lag: Callable[[np.ndarray], float], limit: float, blocked: str) -> Outcome:
         """Command each (body joints, velocities) set-point for one physics step, then settle;
         halts (holding where the joints are) on cancel, stop, or a lag beyond ``limit``."""
         r = self.sim.robot
         for body, vel in setpoints:
             if (why := self._halted(cancelled)) is not None:
                 self._hold_now()
-                return MotionResult(False, why)
+                return Outcome(False, why)
             r.command(body, vel)
             self.sim.step()
             if (off := lag(body)) > limit:
                 self._hold_now()
-                return MotionResult(False, f"blocked: {blocked.format(off)}")
+                return Outcome(False, f"blocked: {blocked.format(off)}")
         for _ in range(SETTLE_STEPS):
             if (why := self._halted(cancelled)) is not None:
                 self._hold_now()
-                return MotionResult(False, why)
+                return Outcome(False, why)
             r.command(r.target)
             self.sim.step()
-        return MotionResult(True)
+        return Outcome(True)
 
     def stop(self) -> None:
         """End the motion in progress at its next step; idle, hold where the joints are."""
@@ -191,12 +192,12 @@ class PybulletArm(_Stoppable):
     def _hold_now(self) -> None:
         _hold(self.sim.robot, base=False)
 
-    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> MotionResult:
+    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> Outcome:
         with self.sim.lock:
             r = self.sim.robot
             checked = self._check(trajectory, r.q()[3:])
             if isinstance(checked, str):
-                return MotionResult(False, f"refused: {checked}")
+                return Outcome(False, f"refused: {checked}")
             times, q, qd = checked
             first = len(r.target) - q.shape[1]  # 3: the arm alone; 0: base and arm together
             if first == 0:  # the base's joints are commanded in the believed map frame
@@ -394,14 +395,14 @@ class PybulletBase(_Stoppable):
     def _hold_now(self) -> None:
         _hold(self.sim.robot, arm=False)
 
-    def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> MotionResult:
+    def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> Outcome:
         with self.sim.lock:
             r, sim = self.sim.robot, self.sim
             poses = [tuple(map(float, p)) for p in path]
             if any(len(p) != 3 or not all(map(math.isfinite, p)) for p in poses):
-                return MotionResult(False, "refused: a path is a list of finite (x, y, yaw) poses")
+                return Outcome(False, "refused: a path is a list of finite (x, y, yaw) poses")
             if not 0.0 < speed <= 1.0:
-                return MotionResult(False, f"refused: speed {speed} is not a share of the limits in (0, 1]")
+                return Outcome(False, f"refused: speed {speed} is not a share of the limits in (0, 1]")
             self._stop.clear()
             limits = base_limits().scaled(speed)
             legs, here = [], r.target[:3].copy()

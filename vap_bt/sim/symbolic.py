@@ -63,7 +63,8 @@ from vap_bt.sim.disturbances import MOVED, SHUT, Disturbance, DisturbanceModel
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.relation_reports import RelationDetector
 from vap_bt.sim.situations import SituationModel, SituationSpec
-from vap_bt.world import ActionOutcome, GoalContext, InjectedSituation
+from vap_bt.outcome import Outcome
+from vap_bt.world import GoalContext, InjectedSituation
 
 #: visibility of an object in view is drawn uniformly from [VISIBILITY_LOW, 1]
 VISIBILITY_LOW = 0.3
@@ -121,23 +122,23 @@ class SymbolicWorld:
 
     # -- actions ---------------------------------------------------------------------------
 
-    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
+    def perform(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> Outcome:
         step = self._step
         outcome = self._act(action, args, ctx)
         if self._step > step:  # an action ran (or failed): what a person does after it happens now
             self._disturb(action, tuple(args))
         return outcome
 
-    def _act(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> ActionOutcome:
+    def _act(self, action: str, args: tuple[str, ...], ctx: GoalContext) -> Outcome:
         try:
             ga = self.knowledge.ground(action, tuple(args))
         except (KeyError, ValueError) as exc:
-            return ActionOutcome(False, str(exc))
+            return Outcome(False, str(exc))
         self._step += 1
         spec = self.situations.draw(action)  # drawn for every action, so the stream stays aligned
         ctx.feedback(0.0, f"{ga} started")
         if ctx.cancelled():
-            return ActionOutcome(False, "cancelled")
+            return Outcome(False, "cancelled")
         truth = {a for a in self.atoms if self._holds(a)}
         starts = self._starts_from(ga)
         if starts:  # a base drives from wherever it stands: the motion starts where the action says,
@@ -146,7 +147,7 @@ class SymbolicWorld:
             truth |= {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "in_room"}
         if not ga.applicable(truth):
             self._new_view()
-            return ActionOutcome(False, f"{ga}: nothing to act on")
+            return Outcome(False, f"{ga}: nothing to act on")
         if starts:
             self.atoms = (self.atoms - {a for a in self.atoms if a.predicate == "robot_at"}) | starts
         intended = self._effects(ga, self.atoms, ctx)
@@ -161,7 +162,7 @@ class SymbolicWorld:
         self._look = None  # the skill moved the arm: the camera looks at what the robot stands at
         self._new_view()
         ctx.feedback(1.0, f"{ga} done")
-        return ActionOutcome(True)
+        return Outcome(True)
 
     def injected(self) -> list[InjectedSituation]:
         """The situations the world caused this episode (Table II or a disturbance script), in order."""

@@ -44,7 +44,8 @@ import numpy as np
 import zenoh
 
 from vap_bt.errors import TransportError
-from vap_bt.robot.drivers import Cancelled, GripperState, JointState, JointTrajectory, MotionResult
+from vap_bt.robot.drivers import Cancelled, GripperState, JointState, JointTrajectory
+from vap_bt.outcome import Outcome
 from vap_bt.robot.frame import Frame
 from vap_bt.transport import keys
 from vap_bt.transport.messages import DriverCall, DriverReply, ErrorReply, MessageError, decode, encode
@@ -210,8 +211,8 @@ def _gripper_reply(s: GripperState) -> DriverReply:
     return DriverReply({"width": float(s.width), "holding": bool(s.holding)})
 
 
-def _motion_reply(r: MotionResult) -> DriverReply:
-    return DriverReply({"completed": bool(r.completed), "reason": r.reason})
+def _motion_reply(r: Outcome) -> DriverReply:
+    return DriverReply({"completed": bool(r.completed), "message": r.message})
 
 
 # -- client ----------------------------------------------------------------------------------------
@@ -292,13 +293,13 @@ class _Link:
             raise TransportError(f"driver {call} on robot {self.robot}: {reason}") from None
 
 
-def _motion_result(reply: DriverReply | None, cancelled: Cancelled) -> MotionResult:
+def _motion_result(reply: DriverReply | None, cancelled: Cancelled) -> Outcome:
     if reply is None:
-        return MotionResult(False, "transport: the driver host did not answer")
-    done, reason = bool(reply.values["completed"]), str(reply.values.get("reason", ""))
-    if not done and reason == "stopped" and cancelled():
-        reason = "cancelled"
-    return MotionResult(done, reason)
+        return Outcome(False, "transport: the driver host did not answer")
+    done, why = bool(reply.values["completed"]), str(reply.values.get("message", ""))
+    if not done and why == "stopped" and cancelled():
+        why = "cancelled"
+    return Outcome(done, why)
 
 
 @dataclass
@@ -314,7 +315,7 @@ class RemoteArm:
     def tcp_pose(self) -> np.ndarray:
         return self.link.call("arm.tcp").arrays["pose"]
 
-    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> MotionResult:
+    def follow(self, trajectory: JointTrajectory, cancelled: Cancelled) -> Outcome:
         arrays = {"times": np.asarray(trajectory.times, float), "positions": np.asarray(trajectory.positions, float)}
         if trajectory.velocities is not None:
             arrays["velocities"] = np.asarray(trajectory.velocities, float)
@@ -322,7 +323,7 @@ class RemoteArm:
             reply = self.link.motion("arm.follow", {"joints": list(trajectory.joints)}, arrays,
                                      trajectory.duration, cancelled)
         except TransportError as exc:
-            return MotionResult(False, f"transport: {exc}")
+            return Outcome(False, f"transport: {exc}")
         return _motion_result(reply, cancelled)
 
     def stop(self) -> None:
@@ -363,7 +364,7 @@ class RemoteBase:
     def odometry(self) -> tuple[float, float, float]:
         return tuple(map(float, self.link.call("base.odometry").values["pose"]))
 
-    def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> MotionResult:
+    def follow(self, path: list[tuple[float, float, float]], speed: float, cancelled: Cancelled) -> Outcome:
         here = np.array(self.pose()[:2])
         length = sum(float(np.linalg.norm(np.array(b[:2]) - np.array(a[:2])))
                      for a, b in zip([tuple(here), *path], path))
@@ -372,7 +373,7 @@ class RemoteBase:
             reply = self.link.motion("base.follow", {"path": [list(map(float, p)) for p in path], "speed": float(speed)},
                                      None, duration, cancelled)
         except TransportError as exc:
-            return MotionResult(False, f"transport: {exc}")
+            return Outcome(False, f"transport: {exc}")
         return _motion_result(reply, cancelled)
 
     def stop(self) -> None:

@@ -12,7 +12,7 @@ other's goals (a client subscribes to its robots' namespaces only)::
     vap/<robot>/body/state            queryable: StateRequest -> RobotState
     vap/<robot>/body/map              queryable: MapRequest -> SiteMap
     vap/<robot>/vlm/ask               queryable: VlmRequest -> Answer (a world-side VLM)
-    vap/<robot>/world/action          queryable: ActionEvent -> ActionAck (sim only: which action
+    vap/<robot>/world/action          queryable: ActionEvent -> Outcome (sim only: which action
                                       a goal is, for Table II injection; see world_hooks)
     vap/<robot>/alive/<server>        liveliness token of a running skill server
     vap/<robot>/alive/<server>/goal/<action>/<id>

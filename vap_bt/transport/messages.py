@@ -56,6 +56,7 @@ import msgspec
 import numpy as np
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.outcome import Outcome
 from vap_bt.perception.vlm import Answer, Query
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import Frame
@@ -191,13 +192,6 @@ class ActionEvent(_Message):
     args: tuple[str, ...] = ()
 
 
-class ActionAck(_Message):
-    """The simulated world took an ActionEvent (it says nothing of what it drew)."""
-
-    ok: bool
-    reason: str = ""
-
-
 class OracleQuery(_Message):
     """Sim only, for the runner's report (:mod:`vap_bt.transport.world_services`): ask a simulated
     world ``verb`` (``holds``, ``injected``, ``info``, ``site_map``, ``reset``) about ``atoms``,
@@ -328,7 +322,7 @@ _KIND_OF: dict[type, str] = {
     MoveViewRequest: "move_view", MoveViewReply: "move_view_reply", ErrorReply: "error",
     CaptureRequest: "capture", Frame: "frame", ViewRequest: "view", StateRequest: "state_request",
     RobotState: "robot_state", MapRequest: "map_request", SiteMap: "site_map", VlmRequest: "vlm_request",
-    Answer: "answer", ActionEvent: "action_event", ActionAck: "action_ack", DriverCall: "driver_call",
+    Answer: "answer", ActionEvent: "action_event", Outcome: "action_ack", DriverCall: "driver_call",
     DriverReply: "driver_reply", OracleQuery: "oracle_query", OracleReply: "oracle_reply",
 }
 #: the kinds with numeric arrays, and their wire form (the arrays described, their bytes in the tail)

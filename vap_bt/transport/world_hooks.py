@@ -26,7 +26,8 @@ from typing import Any, Protocol
 import zenoh
 
 from vap_bt.transport import keys
-from vap_bt.transport.messages import ActionAck, ActionEvent, MessageError, decode, encode
+from vap_bt.outcome import Outcome
+from vap_bt.transport.messages import ActionEvent, MessageError, decode, encode
 
 log = logging.getLogger(__name__)
 
@@ -70,13 +71,13 @@ class ZenohActionHooks:
         for reply in self._querier.get(payload=encode(event)):
             if reply.ok is not None:
                 try:
-                    ack = decode(reply.ok.payload.to_bytes(), ActionAck)
+                    ack = decode(reply.ok.payload.to_bytes(), Outcome)
                 except MessageError as exc:
                     log.warning("unreadable acknowledgement of %s %s: %s", event.phase, event.action, exc)
                     continue
-                if ack.ok:
+                if ack.completed:
                     return True
-                log.warning("the world refused %s %s: %s", event.phase, event.action, ack.reason)
+                log.warning("the world refused %s %s: %s", event.phase, event.action, ack.message)
         log.warning("no simulated world acknowledged %s %s on robot %s", event.phase, event.action, self.robot)
         return False
 
@@ -111,11 +112,11 @@ class ActionHookServer:
                 self.world.end_action(event.action or None, event.args if event.action else None)
             else:
                 raise MessageError(f"phase {event.phase!r} is neither begin nor end")
-            ack = ActionAck(True)
+            ack = Outcome(True)
         except MessageError as exc:
-            ack = ActionAck(False, f"bad action event: {exc}")
+            ack = Outcome(False, f"bad action event: {exc}")
         except Exception as exc:  # the world's failure is the caller's answer, not our crash
-            ack = ActionAck(False, f"world failed: {type(exc).__name__}: {exc}")
+            ack = Outcome(False, f"world failed: {type(exc).__name__}: {exc}")
         query.reply(query.key_expr, encode(ack))
 
     def close(self) -> None:

@@ -1,0 +1,20 @@
+"""Outcome: how something asked of a robot, a skill's motion or a world ended.
+
+A driver's trajectory, a skill's own motion, a simulated world's action and a world's answer to
+an action hook all end the same way: done, or not and why. One type says it everywhere, so a
+reason reads the same from the driver up to the skill's result (``message``), and the wire
+carries it as it is. ``completed`` is the doer's own view: a grasp that closed on nothing still
+*completed*; that it failed is for perception to find out.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """``completed``, or not and why (``message``: ``"blocked: …"``, ``"refused: …"``, ``"cancelled"``)."""
+
+    completed: bool
+    message: str = ""
