@@ -54,7 +54,6 @@ from py_trees.common import Status
 
 from vap_bt.bt.context import BASIS, Basis, ExecutionContext, Outcome, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
-from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.errors import TransportError
 from vap_bt.perception.evidence import claim_threshold
