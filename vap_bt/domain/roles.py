@@ -17,7 +17,7 @@ filtering; a profile can also switch a role off with ``null``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, replace
 from typing import Iterable, Protocol
 
 from vap_bt.domain.atoms import Atom
@@ -80,11 +80,6 @@ class Roles:
     room: str | None = "room"
     container: str | None = "container"
 
-    @classmethod
-    def none(cls) -> "Roles":
-        """No predicate or type plays any role (every role-driven behaviour off)."""
-        return cls(**{f.name: (() if f.name == "portable" else None) for f in fields(cls)})
-
     def predicate_roles(self) -> dict[str, str | None]:
         """Role -> the predicate that plays it."""
         return {r: getattr(self, r) for r in ARITY}
@@ -93,15 +88,11 @@ class Roles:
         """These roles, each kept only where ``domain`` has the predicate with the role's arity
         (or the type): what a profile that says nothing of roles gets."""
         keep = {r: p for r, p in self.predicate_roles().items()
-                if p is not None and len(domain.predicates.get(p, ())) == ARITY[r] and p in domain.predicates}
+                if p in domain.predicates and len(domain.predicates[p]) == ARITY[r]}
         return replace(self, **{r: keep.get(r) for r in ARITY},
                        portable=tuple(t for t in self.portable if t in domain.parents),
                        room=self.room if self.room in domain.parents else None,
                        container=self.container if self.container in domain.parents else None)
-
-    def rename(self, names: dict[str, str]) -> "Roles":
-        """The same roles played by renamed predicates (``names``: old -> new; others kept)."""
-        return replace(self, **{r: names.get(p, p) if p else p for r, p in self.predicate_roles().items()})
 
     # -- the sets the executive reads ------------------------------------------------------------
 
