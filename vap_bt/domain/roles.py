@@ -49,8 +49,6 @@ ARITY: dict[str, int] = {
     "reachable": 1,  # the arm can reach X
     "blocking": 2,  # X stands in the way of Y
 }
-#: the type roles: which types are carried about, which type is a room, which holds things inside
-TYPE_ROLES = ("portable", "room", "container")
 
 
 @dataclass(frozen=True)

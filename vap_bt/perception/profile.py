@@ -53,11 +53,11 @@ domain (:func:`resolve`).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Literal, Mapping, Sequence
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import DomainKnowledge
@@ -91,30 +91,8 @@ class PredicateSpec(BaseModel):
     note: str = Field("", description="why this source; reported with the atoms it leaves unchecked")
 
 
-class RolesSpec(BaseModel):
-    """A profile file's ``roles:``: the predicate (or types) playing each role; null: none does.
-    A role left out keeps the household's name (see :mod:`vap_bt.domain.roles`)."""
-
+class _RolesFile(BaseModel):
     model_config = ConfigDict(extra="forbid")
-    in_view: str | None = None
-    robot_at: str | None = None
-    robot_in: str | None = None
-    in_room: str | None = None
-    held: str | None = None
-    hand_empty: str | None = None
-    open: str | None = None
-    closed: str | None = None
-    openable: str | None = None
-    on: str | None = None
-    inside: str | None = None
-    connects: str | None = None
-    clear: str | None = None
-    fillable: str | None = None
-    reachable: str | None = None
-    blocking: str | None = None
-    portable: list[str] | None = None
-    room: str | None = None
-    container: str | None = None
 
     def over(self, base: Roles) -> Roles:
         """``base`` with the roles this file states (null ones switched off)."""
@@ -122,6 +100,14 @@ class RolesSpec(BaseModel):
         if "portable" in given:
             given["portable"] = tuple(given["portable"] or ())
         return replace(base, **given)
+
+
+#: a profile file's ``roles:``: the predicate (or types) playing each role of
+#: :class:`~vap_bt.domain.roles.Roles` (one field each, of the same name); null: none does; a role
+#: left out keeps the household's name
+RolesSpec = create_model("RolesSpec", __base__=_RolesFile, __doc__="A profile file's roles: (see :data:`RolesSpec`).",
+                         **{f.name: (list[str] | None if f.name == "portable" else str | None, None)
+                            for f in fields(Roles)})
 
 
 class ProfileSpec(BaseModel):
