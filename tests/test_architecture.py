@@ -264,3 +264,56 @@ def test_the_composition_root_is_imported_from_the_command_line_only():
             for p in files("vap_bt/transport")}
     assert files("vap_bt/transport")
     assert not {k: v for k, v in wire.items() if v}
+
+
+# -- the executive names no household predicate -------------------------------------------------------
+
+#: the words of a task file's scene format (``place: on table``, a door's ``state: open``): the file's
+#: own syntax, which :func:`vap_bt.scene.layout.layout_facts` writes out in the roles' predicates
+LAYOUT_WORDS = {"on", "inside", "open", "closed"}
+
+
+def _household_vocabulary() -> tuple[set[str], set[str]]:
+    """The household domain's predicates and types, as its PDDL declares them."""
+    import re
+
+    text = (ROOT / "domains" / "household.pddl").read_text()
+    types = text[text.index("(:types"):text.index("(:predicates")]
+    block = text[text.index("(:predicates"):text.index("(:action")]
+    return set(re.findall(r"\(\s*([a-z][a-z0-9_-]*)", block)) - {"predicates"}, \
+        set(re.findall(r"[a-z][a-z0-9_-]*", types.split(None, 1)[1])) - {"object"}
+
+
+def string_literals(path: Path) -> list[tuple[int, str]]:
+    """(line, text) of every string constant in the code (docstrings are not code)."""
+    tree = ast.parse(path.read_text(), filename=str(path))
+    docs = {id(n.body[0].value) for n in ast.walk(tree)
+            if isinstance(n, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+            and n.body and isinstance(n.body[0], ast.Expr) and isinstance(n.body[0].value, ast.Constant)}
+    return [(n.lineno, n.value) for n in ast.walk(tree)
+            if isinstance(n, ast.Constant) and isinstance(n.value, str) and id(n) not in docs]
+
+
+def household_literals(*rooms: str) -> list[str]:
+    """Every string constant in ``rooms`` that is a household predicate or type, except the scene
+    layout's format words and the household types a layout's scene is written in."""
+    predicates, types = _household_vocabulary()
+    layout = ROOT / "vap_bt/scene/layout.py"
+    return [f"{p.relative_to(ROOT)}:{line}: {text!r}" for p in files(*rooms) for line, text in string_literals(p)
+            if (text in predicates and not (p == layout and text in LAYOUT_WORDS))
+            or (text in types and p != layout)]
+
+
+def test_the_executive_names_no_household_predicate():
+    """What a predicate means to the executive (in view, held, on, in a room...) is the perception
+    profile's word (:mod:`vap_bt.domain.roles`), so ``bt/`` and ``scene/`` name no predicate or type
+    of the household; the household's names are the roles' defaults, in vap_bt/domain/roles.py."""
+    predicates, types = _household_vocabulary()
+    assert {"inview", "holding", "hand_empty", "on", "in_room"} <= predicates and {"item", "room"} <= types
+    hits = household_literals("vap_bt/bt", "vap_bt/scene")
+    assert files("vap_bt/bt") and files("vap_bt/scene")
+    assert not hits, hits
+    # the check sees a literal where there is one: the world speaks the household
+    assert any("symbolic.py" in h and "'holding'" in h for h in household_literals("vap_bt/sim"))
+    defaults = {t for _, t in string_literals(ROOT / "vap_bt/domain/roles.py")}
+    assert {"inview", "holding", "hand_empty", "item", "room"} <= defaults

@@ -45,7 +45,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validat
 from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal as Lit
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import InputError
-from vap_bt.perception.profile import locate as locate_profile, resolve as resolve_profile
+from vap_bt.perception.profile import file_roles, locate as locate_profile, resolve as resolve_profile
 from vap_bt.scene.layout import Layout, layout_facts
 from vap_bt.settings import TaskOptions, World, task_file_field
 from vap_bt.yaml_file import read_model
@@ -133,7 +133,7 @@ def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
             planning = planning.with_state(planning.init, _goal(spec.goal, planning, where))
         return Task(spec, planning, Path(where), perception_file=perception)
     objects = spec.scene.objects()
-    facts = layout_facts(spec.scene)
+    facts = layout_facts(spec.scene, file_roles(perception))  # in the predicates the profile names
     goal_atoms = [_parse(g, where) for g in spec.goal or ()]  # none: the instruction is parsed
     for lit in goal_atoms:  # unknown names are the goal's fault, said before PDDL ever sees them
         unknown = [a for a in lit.atom.args if a not in objects]

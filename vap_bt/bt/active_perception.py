@@ -54,12 +54,10 @@ from py_trees.common import Status
 
 from vap_bt.bt.context import BASIS, Basis, ExecutionContext, Outcome, Phase, Situation, Verification
 from vap_bt.bt.inflight import cancel_all
-from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.errors import TransportError
 from vap_bt.perception.evidence import claim_threshold
 from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
-from vap_bt.scene.belief import HAND_PREDICATES
 
 
 class ActivePerception(py_trees.decorators.Decorator):
@@ -134,9 +132,10 @@ class ActivePerception(py_trees.decorators.Decorator):
         with the hand, so no move of the base shows it better (the gripper's feel decides what
         the first view could not). Another domain's 0-ary atoms (movie's ``have-chips``) are about
         the scene, which a move does show anew."""
+        roles = self.ctx.roles
         if not self.atom.args:
-            return self.atom.predicate in HAND_PREDICATES
-        return Atom("holding", self.atom.args[:1]) in self.ctx.graph.facts
+            return self.atom.predicate in roles.hand
+        return roles.holding(self.atom.args[0]) in self.ctx.graph.facts
 
     def _decide(self, exhausted: bool) -> Status:
         v = verdict(self._evidence(), exhausted)

@@ -89,7 +89,7 @@ def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowl
     if ctx.mode.eff:
         eff = _checks(ctx, "eff", expected.effects, action, step, knowledge)
         after = (expected.before - expected.diff.deleted) | expected.diff.added
-        if any(a.predicate == "holding" for a in after):
+        if any(profile_of(ctx, knowledge).roles.is_held(a) for a in after):
             if not eff:
                 eff = [py_trees.composites.Sequence("eff", memory=True)]
             eff[0].add_child(FeelHand(ctx, action, step))

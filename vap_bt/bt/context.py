@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Literal
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.roles import HOUSEHOLD, Roles
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.bt.inflight import InlineExecutor
 from vap_bt.perception.evidence import CLAIM_RISK, Calibration, default_calibration
@@ -171,10 +172,10 @@ class Verified:
     the hand's atoms after every action) — a cup confirmed filled at the sink is still filled in
     the microwave, where no view shows its inside."""
 
-    HAND = frozenset({"holding", "hand_empty"})
-
-    def __init__(self, enabled: bool = False) -> None:
+    def __init__(self, enabled: bool = False, hand: frozenset[str] = HOUSEHOLD.hand) -> None:
         self.enabled = enabled
+        #: the hand's predicates (the profile's roles ``held`` and ``hand_empty``)
+        self.hand = hand
         self._values: dict[Atom, bool] = {}
         self._rounds: dict[Atom, list[Round]] = {}
 
@@ -205,7 +206,7 @@ class Verified:
         args, changed = set(action.args), action.may_add | action.may_delete
 
         def changeable(a: Atom) -> bool:
-            return a in changed or a.predicate in self.HAND or not a.args
+            return a in changed or a.predicate in self.hand or not a.args
 
         self._values = {a: v for a, v in self._values.items() if not (args & set(a.args) or changeable(a))}
         self._rounds = {a: r for a, r in self._rounds.items() if not changeable(a)}
@@ -273,6 +274,11 @@ class ExecutionContext:
     #: the domain's own, :func:`vap_bt.perception.profile.resolve`)
     profile: PerceptionProfile | None = None
     t0: float = field(default_factory=time.perf_counter)
+
+    @property
+    def roles(self) -> Roles:
+        """Which predicate plays each role (the profile's; the household's before there is one)."""
+        return self.profile.roles if self.profile is not None else HOUSEHOLD
 
     def submit(self, fn, *args) -> Future:
         return self.executor.submit(fn, *args)

@@ -10,7 +10,8 @@ then swaps in a new plan's tree:
 1. an effect that did not happen first undoes the action-driven update, so belief returns to
    what held before the action;
 2. the contradicted atom is set to its observed value (observation-driven update);
-3. a skill that failed to act makes the robot's placement for it (``inview``) stale, so that the
+3. a skill that failed to act makes the robot's placement for it (the in-view role, the
+   household's ``inview``) stale, so that the
    new plan approaches the target again rather than retrying from the same spot; so does a
    precondition the camera could not settle (a situation of kind ``unseen``: the action did not
    run because nobody could see whether it may) drops ``inview`` of the things it is about, so
@@ -74,8 +75,8 @@ from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import VLM
 from vap_bt.robot.camera import Aim, Body, Camera
 from vap_bt.scene import belief
-from vap_bt.scene.builder import GEOMETRIC_PREDICATES, SUPPORT_PREDICATES, Geometry, SceneGraphBuilder, SweepRecord
-from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph
+from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
+from vap_bt.scene.graph import SceneGraph
 from vap_bt.scene.identity import Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
 from vap_bt.robot.frame import Frame
@@ -83,14 +84,9 @@ from vap_bt.robot.labels import label_of
 from vap_bt.settings import default as run_default
 from vap_bt.skill import SkillClient
 
-#: PDDL types whose objects are placed somewhere (and so can be lost track of)
-PORTABLE_TYPES = ("item",)
 #: times an observation that leaves no plan is doubted and looked at again before it stands: a
 #: settled check errs now and then (docs/perception.md), two more from new pictures seldom all do
 MAX_DOUBTS = 2
-#: the perception predicate that says the robot is placed to act on a thing; a skill that failed
-#: to act from where the robot stands makes these beliefs stale, so the new plan re-approaches
-VIEW_PREDICATE = "inview"
 #: how often a recovery's tree is ticked while its step is in flight on a thread (it waits on
 #: the robot: a drive, a frame), in seconds
 RECOVERY_POLL_S = 0.02
@@ -184,7 +180,6 @@ class Executive:
         #: every frame is identified against belief before anything reads it (see the module docstring)
         self.camera = IdentifyingCamera(Halting(camera, self._halt), self._identify)
         self.graph: SceneGraph | None = None  # belief, once the first survey has built it
-        self._prior_graph = SceneGraph.of_facts(prior)  # what the task file says, until then
         self._searching: set[str] = set()  # objects being looked for: placed nowhere
         #: how often the robot went to look from close by at each set of items (a new stand each time)
         self._near_looks: Counter[tuple[str, ...]] = Counter()
@@ -201,6 +196,11 @@ class Executive:
         self.goal_parser = goal_parser
         #: which predicates are asked of the VLM and how (default: the domain's own profile)
         self.profile = profile if profile is not None else resolve(task.knowledge)
+        #: which predicate plays each role the executive acts on (the profile's): the one that says
+        #: the robot is placed to act on a thing (a skill that failed to act from where the robot
+        #: stands makes it stale, so the new plan re-approaches), the hand's, where things are
+        self.roles = self.profile.roles
+        self._prior_graph = SceneGraph.of_facts(prior, roles=self.roles)  # what the task file says, until then
         #: the episode once it has a belief to plan from (before that, :meth:`so_far`)
         self.outcome: EpisodeOutcome | None = None
         self.phase = PHASES[0]  # which of PHASES the episode is in
@@ -231,7 +231,7 @@ class Executive:
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
-                               verified=Verified(self.s.protocol.reuse), executor=executor,
+                               verified=Verified(self.s.protocol.reuse, self.roles.hand), executor=executor,
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
@@ -306,7 +306,7 @@ class Executive:
                 t0 = time.perf_counter()
                 if situation.kind == "execution" and situation.action is not None:
                     ctx.doubted |= {lit.atom for lit in situation.action.preconditions
-                                    if lit.positive and lit.atom.predicate != VIEW_PREDICATE}
+                                    if lit.positive and lit.atom.predicate != self.roles.in_view}
                 recovered, survey = self._recover(graph, situation, times, out, deadline)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
@@ -432,8 +432,9 @@ class Executive:
         with the items only the task file places."""
         k = self.task.knowledge
         site_map = self.body.site_map()
-        self.builder = SceneGraphBuilder(k, self.task.objects, site_map, self.geometry)
-        self.identifier = Identifier({n: label_of(n, site_map) for n in self.task.objects}, site_map)
+        self.builder = SceneGraphBuilder(k, self.task.objects, site_map, self.geometry, self.roles)
+        self.identifier = Identifier({n: label_of(n, site_map) for n in self.task.objects}, site_map,
+                                     roles=self.roles)
         start = self.body.state().room
         rooms = sweep_order(site_map, start)
         self.progress(f"survey: {len(rooms)} room(s) {', '.join(rooms) or '(no map rooms)'}")
@@ -450,15 +451,16 @@ class Executive:
                                        lambda: f"survey: {', '.join(unplaced())} still not seen;")
         state = self.body.state()
         located, prior_only = belief.item_facts(self.builder, items, self.prior)
-        facts = belief.map_facts(site_map) | belief.robot_facts(state, sweep, site_map) | belief.hand_facts(state, self.builder)
+        facts = belief.map_facts(site_map, self.roles) | belief.robot_facts(state, sweep, site_map, self.roles) \
+            | belief.hand_facts(state, self.builder)
         facts |= located
         # the prior's other statements (states, and anything of a domain without a site map)
         surveyed = bool(site_map.rooms)  # without a site to look round, the prior is all there is
-        facts |= {a for a in self.prior if not surveyed or a.predicate not in GEOMETRIC_PREDICATES
-                  | belief.ROBOT_PREDICATES | belief.HAND_PREDICATES}
+        facts |= {a for a in self.prior if not surveyed or a.predicate not in self.builder.geometric
+                  | self.roles.robot | self.roles.hand}
         graph = SceneGraph({n: self.builder.node(n) for n in self.task.objects},
                            belief.typed(facts, k, self.task.objects),
-                           tracks_hand={"holding", "hand_empty"} <= set(k.predicates))
+                           tracks_hand=self.roles.tracks_hand, roles=self.roles)
         for n, obj in graph.objects.items():
             if obj.centroid is not None and n not in prior_only:  # the prior's place is not where it was seen
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
@@ -469,8 +471,8 @@ class Executive:
                        ) -> tuple[SceneGraph, Survey]:
         """Belief completed after the survey's questions: the closed world's defaults, the record."""
         site_map, k = self.builder.site_map, self.task.knowledge
-        graph.facts |= belief.typed(belief.closed_world_defaults(graph.facts, site_map, self.task.objects, k),
-                                    k, self.task.objects)
+        graph.facts |= belief.typed(belief.closed_world_defaults(graph.facts, site_map, self.task.objects, k,
+                                                                 self.roles), k, self.task.objects)
         survey = Survey("initial", sweep, states, graph.state(), tuple(sorted(prior_only)))
         self.progress(f"survey: {sweep.frames} frames from {sweep.reached}/{sweep.views} views in "
                       f"{sweep.seconds:.2f} s; {len(sweep.detected)} objects seen"
@@ -485,7 +487,7 @@ class Executive:
         What the robot is looking for is placed nowhere, so that it is taken where it is seen."""
         graph = self.graph if self.graph is not None else self._prior_graph
         state = self.body.state()
-        held = next((a.args[0] for a in sorted(graph.facts) if a.predicate == "holding" and a.args), None)
+        held = next((a.args[0] for a in sorted(graph.facts) if self.roles.is_held(a)), None)
         if state.gripper_holding is False:
             held = None  # an empty gripper holds nothing, whatever belief says
         # a thing looked for is placed nowhere until this search has seen it, and then where it
@@ -513,28 +515,29 @@ class Executive:
         return named
 
     def _said_where(self, obj: str) -> bool:
-        return any(a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj for a in self.prior)
+        return any(a.predicate in self.roles.location and a.args and a.args[0] == obj for a in self.prior)
 
     def _ask_states(self, graph: SceneGraph) -> list[StateAnswer]:
         """Ask the VLM whether each openable thing seen (a door, a drawer, a fridge) is open;
         believe what settles. What the map says cannot be opened or shut (a basket) is not asked:
         its state is rigid, and a view that judged a basket "not open" left no plan to put logs in
         it (store_firewood seeds 7 and 10). Without ``openable`` in the domain, every container."""
-        if self.vlm is None or not self.profile.asks("open", 1):
+        opened, container = self.roles.open, self.roles.container
+        if self.vlm is None or opened is None or not self.profile.asks(opened, 1):
             return []
         k = self.task.knowledge
-        sig = k.predicates["open"][0]
-        if "openable" in k.predicates:
-            askable = {a.args[0] for a in self.builder.site_map.facts if a.predicate == "openable"}
+        sig = k.predicates[opened][0]
+        if self.roles.openable is not None:
+            askable = {a.args[0] for a in self.builder.site_map.facts if a.predicate == self.roles.openable}
         else:
-            askable = {f.name for f in self.builder.site_map.furniture if "container" in k.parents
-                       and k.is_subtype(f.type, "container")}
+            askable = {f.name for f in self.builder.site_map.furniture if container is not None
+                       and k.is_subtype(f.type, container)}
         candidates = [n for n in sorted(self.builder.evidence) if n in askable and k.is_subtype(self.task.objects[n], sig)]
         with make_executor(self.s.threads) as executor:
             answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile,
-                                    protocol=self.s.protocol, undetectable=self.builder.undetectable(),
+                                    predicates=(opened,), protocol=self.s.protocol, undetectable=self.builder.undetectable(),
                                     executor=executor)
-        complement = k.complements.get("open")
+        complement = k.complements.get(opened)
         for a in answers:
             if a.value is not None:
                 graph.correct(a.atom, a.value)
@@ -603,7 +606,7 @@ class Executive:
             graph.correct(s.atom, s.observed, self.task.knowledge.complements.get(s.atom.predicate))
         if s.kind == "execution" and s.action is not None:
             for lit in s.action.preconditions:
-                if lit.positive and lit.atom.predicate == VIEW_PREDICATE:
+                if lit.positive and lit.atom.predicate == self.roles.in_view:
                     graph.correct(lit.atom, False)
 
     def _relocate_involved(self, graph: SceneGraph, s: Situation, dropped: list[str]) -> list[str]:
@@ -616,7 +619,7 @@ class Executive:
             return []
         lost = self._relocate(graph, portable)
         return lost + [o for o in portable if o not in lost
-                       and not any(a.predicate in ("on", "inside", "holding") for a in graph.location(o))]
+                       and not any(self.roles.supports(a) or self.roles.is_held(a) for a in graph.location(o))]
 
     def _look_afresh(self, graph: SceneGraph, s: Situation) -> Survey:
         """A situation came back unchanged: re-survey for the items it is about (or round the
@@ -635,8 +638,8 @@ class Executive:
         same picture, which a model answers the same way). What could not be made out is not in
         view: the new plan re-approaches it."""
         for a in names:
-            if Atom(VIEW_PREDICATE, (a,)) in graph.facts:
-                graph.correct(Atom(VIEW_PREDICATE, (a,)), False)
+            if Atom(self.roles.in_view, (a,)) in graph.facts:
+                graph.correct(Atom(self.roles.in_view, (a,)), False)
         # an item and a container open at the top: the container's top from close by
         tops = [n for n in names if self.builder.opens_on_top(n)] if any(map(self._portable, names)) else []
         view = next((v for n in names if not tops and not self._portable(n) and (v := self.builder.view_of(graph, n))), None)
@@ -651,24 +654,26 @@ class Executive:
             self.progress(f"    looking again: {view.label}")
             sweep = SweepRecord((view.room,), 1, 1, 0, last_view=view, last_frame=self.camera.capture(view.aim))
             self.builder.integrate(sweep.last_frame)
-            graph.replace_predicates(belief.ROBOT_PREDICATES - {VIEW_PREDICATE},
-                                     belief.robot_facts(self.body.state(), sweep, self.builder.site_map), "look")
+            graph.replace_predicates(self.roles.robot - {self.roles.in_view},
+                                     belief.robot_facts(self.body.state(), sweep, self.builder.site_map, self.roles),
+                                     "look")
 
     def _feel_hand(self, graph: SceneGraph, s: Situation) -> list[str]:
         """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
         belief had in the hand: it is somewhere else now, and must be looked for. A gripper that
         holds something belief does not: see :meth:`_held_after_all`."""
         felt = self.body.state().gripper_holding
-        if felt and not any(a.predicate == "holding" for a in graph.facts):
+        if felt and not any(self.roles.is_held(a) for a in graph.facts):
             self._held_after_all(graph, s)
             return []
         if felt is not False:
             return []
-        held = sorted(a for a in graph.facts if a.predicate == "holding")
+        held = sorted(a for a in graph.facts if self.roles.is_held(a))
         for a in held:
             graph.correct(a, False, cause="gripper")
-        if "hand_empty" in self.task.knowledge.predicates and Atom("hand_empty") not in graph.facts:
-            graph.correct(Atom("hand_empty"), True, cause="gripper")
+        empty = self.roles.hand_empty
+        if empty is not None and Atom(empty) not in graph.facts:
+            graph.correct(Atom(empty), True, cause="gripper")
         return [a.args[0] for a in held]
 
     @staticmethod
@@ -681,17 +686,17 @@ class Executive:
         took out of the hand (store_firewood seed 4: a view judged the log not held, and the robot
         searched two rooms for the log in its own hand until the replanning budget ran out)."""
         if s.action is not None and s.kind in ("execution", "effect"):
-            took = [a for a in s.action.diff(graph.state()).added if a.predicate == "holding"]
+            took = [a for a in s.action.diff(graph.state()).added if graph.roles.is_held(a)]
             if len(took) == 1 and (s.kind == "execution" or s.atom in took):
                 graph.apply(s.action)
                 return
         if s.atom is None or s.observed is not False:
             return
-        item = s.atom.args[0] if s.atom.predicate == "holding" and s.atom.args else None
-        if s.atom.predicate == "hand_empty":
+        item = s.atom.args[0] if graph.roles.is_held(s.atom) else None
+        if s.atom.predicate == graph.roles.hand_empty:
             item = last_taken_from_hand(graph)
         if item is not None:
-            graph.relocate(item, {Atom("holding", (item,))})
+            graph.relocate(item, {graph.roles.holding(item)})
 
     def _relocate(self, graph: SceneGraph, portable: list[str]) -> list[str]:
         """Look where belief puts ``portable``; re-locate what the frame shows. Returns the objects
@@ -725,7 +730,7 @@ class Executive:
         they are found. Every item the sweep saw is re-located. ``why``: the
         reason to look, when it is not that ``lost`` are lost."""
         here = self.body.state().room
-        near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == "in_room" and a.args[0] == o}
+        near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == self.roles.in_room and a.args[0] == o}
                       - {here}) + ([here] if here else [])
         self.progress(f"    {why or 'lost track of ' + ', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
@@ -764,7 +769,8 @@ class Executive:
             if o not in in_hand and self.builder.placed(o, in_hand):
                 graph.relocate(o, observed)
                 graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
-        graph.replace_predicates(belief.ROBOT_PREDICATES, belief.robot_facts(self.body.state(), sweep, self.builder.site_map), "survey")
+        graph.replace_predicates(self.roles.robot, belief.robot_facts(self.body.state(), sweep, self.builder.site_map,
+                                                                      self.roles), "survey")
         survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
@@ -791,11 +797,11 @@ class Executive:
         had it where frames had measured it: note the spot (:mod:`vap_bt.scene.misses`). Items the
         hand holds are not missing anywhere."""
         for a in graph.facts:
-            if a.predicate == "holding" and a.args:
+            if self.roles.is_held(a):
                 self.misses.clear(a.args[0])
         a = s.atom
         if s.kind not in ("unseen", "precondition") or a is None or s.observed is True or not a.args \
-                or a.predicate not in (VIEW_PREDICATE, *SUPPORT_PREDICATES):
+                or a.predicate not in (self.roles.in_view, *self.roles.support):
             return  # an effect or a goal is about what the robot just did there: no phantom put it
         obj = graph.objects.get(a.args[0])
         if obj is not None and self._portable(obj.name) and obj.centroid is not None \
@@ -812,10 +818,9 @@ class Executive:
         g = self.builder.geometry
         return g is not None and self.misses.at(name, g.centroid(name))
 
-    @staticmethod
-    def _feels(atom: Atom) -> bool:
+    def _feels(self, atom: Atom) -> bool:
         """Whether the gripper can say anything of ``atom``: ``holding(x)`` and ``hand_empty``."""
-        return (atom.predicate, len(atom.args)) in (("hand_empty", 0), ("holding", 1))
+        return self.roles.is_held(atom) or (atom.predicate == self.roles.hand_empty and not atom.args)
 
     def _felt(self, graph: SceneGraph, atom: Atom) -> bool | None:
         """Proprioception's word on ``holding(x)`` and ``hand_empty``: the gripper reports whether
@@ -826,33 +831,33 @@ class Executive:
         holding = self.body.state().gripper_holding
         if holding is None:
             return None
-        return (not holding) if atom.predicate == "hand_empty" else (holding and atom in graph.facts)
+        return (not holding) if atom.predicate == self.roles.hand_empty else (holding and atom in graph.facts)
 
     def _in_hand(self, graph: SceneGraph) -> set[str]:
         """What belief holds, while the gripper feels something between its fingers."""
         if self.body.state().gripper_holding is False:
             return set()
-        return {a.args[0] for a in graph.facts if a.predicate == "holding"}
+        return {a.args[0] for a in graph.facts if self.roles.is_held(a)}
 
     @staticmethod
     def _expected_in_sight(graph: SceneGraph, obj: str) -> bool:
         """Belief says the camera should see ``obj``: it is held, or it is in the robot's room and
         not inside something (a container's interior shows only to a view into it, and a detector
         misses most of what stands inside: a frame without the thing is no sign it moved)."""
-        loc = graph.location(obj)
-        if any(a.predicate == "holding" for a in loc):
+        loc, r = graph.location(obj), graph.roles
+        if any(r.is_held(a) for a in loc):
             return True
-        if any(a.predicate == "inside" for a in loc):
+        if any(a.predicate == r.inside for a in loc):
             return False
-        rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"}
-        return any(a.predicate == "in_room" and a.args[1] in rooms for a in loc)
+        rooms = {a.args[0] for a in graph.facts if a.predicate == r.robot_in}
+        return any(a.predicate == r.in_room and a.args[1] in rooms for a in loc)
 
     def _situated(self) -> bool:
-        return bool(LOCATION_PREDICATES & set(self.task.knowledge.predicates))
+        return bool(self.roles.location & set(self.task.knowledge.predicates))
 
     def _portable(self, obj: str) -> bool:
         t = self.task.objects.get(obj)
-        return t is not None and any(self.task.knowledge.is_subtype(t, p) for p in PORTABLE_TYPES) \
+        return t is not None and any(self.task.knowledge.is_subtype(t, p) for p in self.roles.portable) \
             and self._situated()
 
 
@@ -882,7 +887,7 @@ def last_taken_from_hand(graph: SceneGraph) -> str | None:
     grasp not done), unless something else touched what the hand holds since (an action put it
     down, the gripper felt it gone)."""
     for ch in reversed(graph.history):
-        touched = [a for a in ch.added | ch.removed if a.predicate == "holding" and a.args]
+        touched = [a for a in ch.added | ch.removed if graph.roles.is_held(a)]
         if touched:
             # "correct": a check said it is not held; "undo": a check said the grasp did not take
             return touched[0].args[0] if ch.cause in ("correct", "undo") and touched[0] in ch.removed else None

@@ -32,7 +32,6 @@ from vap_bt.bt.context import ExecutionContext, Situation
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.scene.belief import ROBOT_PREDICATES
 
 
 class FeelHand(py_trees.behaviour.Behaviour):
@@ -44,7 +43,7 @@ class FeelHand(py_trees.behaviour.Behaviour):
         self._job: Future | None = None
 
     def initialise(self) -> None:
-        graph, held = self.ctx.graph, sorted(a for a in self.ctx.graph.facts if a.predicate == "holding")
+        graph, held = self.ctx.graph, sorted(a for a in self.ctx.graph.facts if self.ctx.roles.is_held(a))
         self._job = self.ctx.submit(self._lost, graph, held) if held else None
 
     def _lost(self, graph, held: list[Atom]) -> Atom | None:
@@ -61,7 +60,7 @@ class FeelHand(py_trees.behaviour.Behaviour):
             return Status.SUCCESS
         lost_its_tool = atom.args[0] in self.action.args and not self._moves_robot()
         if lost_its_tool:  # a value judged of its effects is not reused (the lean protocol)
-            self.ctx.verified.distrust({a for a in self.action.may_add if a.predicate != "holding"})
+            self.ctx.verified.distrust({a for a in self.action.may_add if a.predicate != self.ctx.roles.held})
         self.ctx.situation = Situation("effect", self.action if lost_its_tool else None,
                                        self.step if lost_its_tool else self.step + 1, atom, True, False,
                                        f"the gripper holds nothing after {self.action}")
@@ -76,4 +75,4 @@ class FeelHand(py_trees.behaviour.Behaviour):
     def _moves_robot(self) -> bool:
         """Whether the action changes where the robot is or what it has in view (a navigation
         carrying the item, a find: it got there, whatever the hand lost on the way)."""
-        return any(a.predicate in ROBOT_PREDICATES for a in self.action.may_add | self.action.may_delete)
+        return any(a.predicate in self.ctx.roles.robot for a in self.action.may_add | self.action.may_delete)

@@ -150,7 +150,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         return self._finish(r)
 
     def _finish(self, r: Round) -> Status:
-        r.located = located(self.observation, self.atom, self.ctx.undetectable)
+        r.located = located(self.observation, self.atom, self.ctx.undetectable, self.ctx.roles)
         self.round = r
         self.feedback_message = f"vote={r.vote} consistent={r.consistent} sufficient={r.sufficient}"
         return self._status(r)

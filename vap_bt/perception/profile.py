@@ -29,23 +29,39 @@ reason. A predicate the file leaves out — every predicate, for a domain withou
 the default: ``map`` if no action changes it, else ``vlm``. So any domain's changing predicates
 are verified, and no question is ever formatted with another predicate's text.
 
+A profile also says which predicate plays which *role* the executive acts on (``roles:``; see
+:mod:`vap_bt.domain.roles`): the one that says a thing is in view, that the gripper holds it or is
+empty, that the robot is in a room, that a thing rests on or in another, which types can be
+carried about and which is a room::
+
+    roles:
+      in_view: inview
+      held: holding
+      portable: [item]
+      on: null                        # no predicate of this domain plays it: what needs it is off
+
+A role the file leaves out gets the household's name, where the domain has that predicate with
+the role's arity (else None: off).
+
 A file is checked in two steps, each fault one :class:`~vap_bt.errors.InputError` naming the
 file and the field (exit code 2): its shape by pydantic and the paraphrases' placeholders
 (:func:`load_spec`), then against the domain — the predicate exists with that arity, no two
-predicates share a question (:func:`resolve`).
+predicates share a question, each role names a predicate of the role's arity or a type of the
+domain (:func:`resolve`).
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Literal, Mapping, Sequence
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, create_model
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import DomainKnowledge
+from vap_bt.domain.roles import ARITY, HOUSEHOLD, Roles
 from vap_bt.errors import InputError
 from vap_bt.perception.paraphrase import (
     TEMPLATE_COUNT, paraphrases_problem, placeholder, template_paraphrases, usable)
@@ -75,12 +91,32 @@ class PredicateSpec(BaseModel):
     note: str = Field("", description="why this source; reported with the atoms it leaves unchecked")
 
 
+class _RolesFile(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    def over(self, base: Roles) -> Roles:
+        """``base`` with the roles this file states (null ones switched off)."""
+        given = {r: getattr(self, r) for r in self.model_fields_set}
+        if "portable" in given:
+            given["portable"] = tuple(given["portable"] or ())
+        return replace(base, **given)
+
+
+#: a profile file's ``roles:``: the predicate (or types) playing each role of
+#: :class:`~vap_bt.domain.roles.Roles` (one field each, of the same name); null: none does; a role
+#: left out keeps the household's name
+RolesSpec = create_model("RolesSpec", __base__=_RolesFile, __doc__="A profile file's roles: (see :data:`RolesSpec`).",
+                         **{f.name: (list[str] | None if f.name == "portable" else str | None, None)
+                            for f in fields(Roles)})
+
+
 class ProfileSpec(BaseModel):
-    """A perception profile file: predicates keyed ``name/arity``."""
+    """A perception profile file: predicates keyed ``name/arity``, and the roles they play."""
 
     model_config = ConfigDict(extra="forbid")
     domain: str | None = Field(None, description="the PDDL domain's name; checked against the domain file when given")
     predicates: dict[str, PredicateSpec] = Field(default_factory=dict)
+    roles: RolesSpec = Field(default_factory=RolesSpec, description="which predicate plays each role (vap_bt.domain.roles)")
 
 
 def load_spec(path: str | Path) -> ProfileSpec:
@@ -92,6 +128,11 @@ def load_spec(path: str | Path) -> ProfileSpec:
         for key in predicates if isinstance(predicates, dict) else ():
             if not isinstance(key, str):  # YAML 1.1 reads a bare on/off/yes/no as a boolean
                 raise InputError(f"{path}: field predicates.{key}", _KEY_HINT)
+        roles = raw.get("roles")
+        for key, value in roles.items() if isinstance(roles, dict) else ():
+            if isinstance(key, bool) or isinstance(value, bool):  # roles: {on: on} reads as {true: true}
+                raise InputError(f"{path}: field roles" + ("" if isinstance(key, bool) else f".{key}"), "quote a role or predicate named on, off, yes or "
+                                                               "no: YAML reads it bare as a boolean (\"on\": \"on\")")
 
     spec = read_model(path, ProfileSpec, "perception profile", "predicates: {name/arity: {source: ...}}",
                       keys_are_text)
@@ -109,6 +150,12 @@ def load_spec(path: str | Path) -> ProfileSpec:
             raise InputError(where, f"{len(entry.paraphrases)} given; give at least {MIN_PARAPHRASES} (the vote "
                                     f"asks up to N = {MIN_PARAPHRASES}), or none to have them generated")
     return spec
+
+
+def file_roles(path: str | Path | None) -> Roles:
+    """The roles a profile file states over the household's, before any domain is read (a task
+    file's scene is written out in these predicates; :func:`resolve` then checks them)."""
+    return load_spec(path).roles.over(HOUSEHOLD) if path is not None else HOUSEHOLD
 
 
 def locate(domain_file: str | Path) -> Path:
@@ -174,6 +221,8 @@ class PerceptionProfile:
 
     predicates: Mapping[tuple[str, int], PredicatePerception]
     file: Path | None = None
+    #: which predicate plays each role the executive acts on (default: the household's names)
+    roles: Roles = field(default_factory=Roles)
 
     def get(self, name: str, arity: int) -> PredicatePerception | None:
         return self.predicates.get((name, arity))
@@ -234,7 +283,8 @@ def resolve(knowledge: DomainKnowledge, path: str | Path | None = None,
         out[(name, len(types))] = p = _perception(name, tuple(types), entry, paraphraser, taken)
         taken |= set(p.paraphrases)
     _check_distinct(out.values(), where)
-    return PerceptionProfile(out, Path(path) if path is not None else None)
+    roles = _roles(spec.roles, knowledge, where)
+    return PerceptionProfile(out, Path(path) if path is not None else None, roles)
 
 
 def _perception(name: str, types: tuple[str, ...], entry: PredicateSpec,
@@ -284,6 +334,26 @@ def _check_domain(spec: ProfileSpec, knowledge: DomainKnowledge, where: str) -> 
             raise InputError(f"{where}: field predicates.{key}",
                              f"the domain's {name} takes {len(sig)} argument{'s' if len(sig) != 1 else ''}: "
                              f"write {name}/{len(sig)}")
+
+
+def _roles(spec: RolesSpec, knowledge: DomainKnowledge, where: str) -> Roles:
+    """The household's roles the domain has, with what the file states over them, each checked:
+    a stated predicate exists with the role's arity, a stated type exists."""
+    for role in sorted(spec.model_fields_set):
+        value = getattr(spec, role)
+        names = value if isinstance(value, list) else [] if value is None else [value]
+        for name in names:
+            if role in ARITY:
+                sig = knowledge.predicates.get(name)
+                why = (f"the domain has no predicate {name!r}" if sig is None else
+                       f"the role {role} takes {ARITY[role]} argument{'s' if ARITY[role] != 1 else ''}, "
+                       f"the domain's {name} {len(sig)}" if len(sig) != ARITY[role] else "")
+            else:
+                why = "" if name in knowledge.parents else \
+                    f"the domain has no type {name!r} (it has {', '.join(sorted(knowledge.parents))})"
+            if why:
+                raise InputError(f"{where}: field roles.{role}", why)
+    return spec.over(HOUSEHOLD.for_domain(knowledge))
 
 
 def _check_distinct(predicates, where: str) -> None:

@@ -17,13 +17,13 @@ import math
 from dataclasses import dataclass, field
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.roles import HOUSEHOLD, Roles
 from vap_bt.perception import prompts
 from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.vlm import VLM, Answer, Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 from vap_bt.robot.frame import Frame
-from vap_bt.scene.graph import supports
 from vap_bt.scene.identity import named_relations
 
 
@@ -88,19 +88,20 @@ def unshown(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()
     return tuple(o for o in objects_of(atom) if o not in found and o not in undetectable)
 
 
-def located(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset()) -> bool | None:
+def located(frame: Frame, atom: Atom, undetectable: frozenset[str] = frozenset(),
+            roles: Roles = HOUSEHOLD) -> bool | None:
     """Where the frame's relation detector (a world that reports relations with its detections:
     :attr:`~vap_bt.robot.frame.Detection.relations`) put the item of a location atom: True if at
     the atom's place, False if at another, None when it reported none — or when the frame does
     not show the place itself, since a detector can only choose among the places in view (an
     item beside a basket out of the picture would always read "not inside")."""
-    if not supports(atom) or unshown(frame, atom, undetectable):
+    if not roles.supports(atom) or unshown(frame, atom, undetectable):
         return None
     item = atom.args[0]
     k = frame.identified().get(item)  # None: a thing of the map, never detected
     if k is None:
         return None
-    places = [a for a in named_relations(frame, k) if (supports(a) or a.predicate == "holding") and a.args[0] == item]
+    places = [a for a in named_relations(frame, k) if (roles.supports(a) or roles.is_held(a)) and a.args[0] == item]
     return (atom in places) if places else None
 
 

@@ -28,17 +28,18 @@ from typing import Callable, Protocol
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import DomainKnowledge
+from vap_bt.domain.roles import Roles
 from vap_bt.robot.camera import Aim, Camera, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
-from vap_bt.scene.graph import LOCATION_PREDICATES, SUPPORT_PREDICATES, SceneGraph, SceneObject, supports
+from vap_bt.scene.graph import SceneGraph, SceneObject
 from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN, Believed, named_relations
 from vap_bt.skill import Hint
 
 #: frames kept per object (the best views of it), for questions asked after the sweep
 KEEP_FRAMES = 3
-#: the relations the builder establishes about items (by geometry, or from a relation detector)
-GEOMETRIC_PREDICATES = LOCATION_PREDICATES | {"blocking", "reachable", "near"}
+#: a relation among items the geometry establishes where a domain has it (beside the roles')
+NEAR = "near"
 
 # -- where the sweep looks from (metres, radians); a view that cannot be reached is skipped --------
 #: base centre to the front face of a piece of furniture when looking at it, and again closer
@@ -141,9 +142,12 @@ class SceneGraphBuilder:
     """Builds and refreshes the scene graph's objects and location facts from frames."""
 
     def __init__(self, knowledge: DomainKnowledge, objects: dict[str, str], site_map: SiteMap,
-                 geometry: Callable[[DomainKnowledge, dict[str, str], SiteMap], Geometry] | None = None) -> None:
+                 geometry: Callable[[DomainKnowledge, dict[str, str], SiteMap, Roles], Geometry] | None = None,
+                 roles: Roles | None = None) -> None:
         self.knowledge, self.objects, self.site_map = knowledge, objects, site_map
-        self.geometry = geometry(knowledge, objects, site_map) if geometry is not None else None
+        #: which predicates say where things are (default: the household's)
+        self.roles = roles or Roles()
+        self.geometry = geometry(knowledge, objects, site_map, self.roles) if geometry is not None else None
         self.evidence: dict[str, Evidence] = {}
         #: every name a frame has ever shown (integrated or not: a check's frames count, see
         #: :meth:`saw`): :meth:`forget` drops what frames said of a thing, not that the robot has
@@ -246,9 +250,16 @@ class SceneGraphBuilder:
         piece = self.site_map.piece(name)
         return piece is not None and piece.pose is not None and piece.cavity is not None and piece.cavity.open == "top"
 
+    @property
+    def geometric(self) -> frozenset[str]:
+        """The relations the builder establishes about items (by geometry, or from a relation
+        detector): where each is, what blocks it, whether it is reachable, what it is near."""
+        r = self.roles
+        return r.location | {p for p in (r.blocking, r.reachable, NEAR) if p is not None}
+
     def _has_top(self, f) -> bool:
         """Whether things are put on this placed piece of furniture (the domain's ``on`` takes its type)."""
-        sig = self.knowledge.predicates.get("on")
+        sig = self.knowledge.predicates.get(self.roles.on) if self.roles.on is not None else None
         return f.pose is not None and sig is not None and len(sig) == 2 and self.knowledge.is_subtype(f.type, sig[1])
 
     def _top_view(self, f, standoff: float) -> Viewpoint:
@@ -368,18 +379,19 @@ class SceneGraphBuilder:
 
     def placed(self, name: str, held=()) -> bool:
         """Whether the frames put ``name`` on or in something (or in the hand)."""
-        return any(a.predicate in (*SUPPORT_PREDICATES, "holding") and a.args[0] == name
+        return any((self.roles.supports(a) or self.roles.is_held(a)) and a.args[0] == name
                    for a in self.observed(name, held))
 
     def _voted(self, name: str, ev: Evidence) -> set[Atom]:
         """Reports voted across the frames that saw the object: one support, one room, and every
         other fact more than half of them reported."""
         out: set[Atom] = set()
-        for preds in (SUPPORT_PREDICATES, ("in_room",)):
+        support, in_room = self.roles.support, (self.roles.in_room,)
+        for preds in (support, in_room):
             cands = [(n, a) for a, n in ev.reports.items() if a.predicate in preds and a.args[0] == name]
             if cands:
                 out.add(max(cands, key=lambda c: (c[0], str(c[1])))[1])
-        out |= {a for a, n in ev.reports.items() if a.predicate not in (*SUPPORT_PREDICATES, "in_room")
+        out |= {a for a, n in ev.reports.items() if a.predicate not in (*support, *in_room)
                 and n * 2 > ev.frames}
         return out
 
@@ -411,14 +423,14 @@ class SceneGraphBuilder:
             if piece is not None:
                 return self._furniture_view(piece)
             if door is not None:
-                rooms = {a.args[0] for a in graph.facts if a.predicate == "robot_in"} & set(door.rooms)
+                rooms = {a.args[0] for a in graph.facts if a.predicate == self.roles.robot_in} & set(door.rooms)
                 return self._door_view(door, sorted(rooms)[0] if rooms else door.rooms[0])
-            support = [a.args[1] for a in sorted(graph.location(name)) if supports(a)]
+            support = [a.args[1] for a in sorted(graph.location(name)) if self.roles.supports(a)]
             if not support:
                 break
             name = support[0]
         room = next((r for r in self.site_map.rooms if r.floor == name), None)
-        rooms = [a.args[1] for a in graph.facts if a.predicate == "in_room" and a.args[0] == name]
+        rooms = [a.args[1] for a in graph.facts if a.predicate == self.roles.in_room and a.args[0] == name]
         room = room or (self.site_map.room(rooms[0]) if rooms else None)
         views = self.views(room.name) if room is not None else []
         return views[-1] if views else None  # the look round its floor
@@ -452,12 +464,12 @@ class SceneGraphBuilder:
         """The mapped thing where belief puts ``name``: a piece of furniture, a door, a floor or a
         room is its own place; an item is at the place of what belief says it rests on or in. None
         for what the hand holds and for an item belief places on or in nothing."""
-        if Atom("holding", (name,)) in graph.facts or depth > 3:
+        if self.roles.holding(name) in graph.facts or depth > 3:
             return None
         if name in self._static:
             return name
         for a in sorted(graph.location(name)):
-            if supports(a):
+            if self.roles.supports(a):
                 return self.place_of(graph, a.args[1], depth + 1)
         return None
 
@@ -471,9 +483,9 @@ class SceneGraphBuilder:
         what."""
         out = []
         for n in names:
-            loc = sorted(a for a in graph.location(n) if supports(a))
-            on = next((a.args[1] for a in loc if a.predicate != "inside"), None)
-            inside = next((a.args[1] for a in loc if a.predicate == "inside"), None)
+            loc = sorted(a for a in graph.location(n) if self.roles.supports(a))
+            on = next((a.args[1] for a in loc if a.predicate != self.roles.inside), None)
+            inside = next((a.args[1] for a in loc if a.predicate == self.roles.inside), None)
             b = self.believed(graph, n)
             point = self.point_of(graph, n)
             out.append(Hint(n, point, on, inside, b.radius if b is not None and b.point is not None else None))
@@ -488,7 +500,7 @@ class SceneGraphBuilder:
         what belief has in the hand (the hand names it) and for what belief places nowhere.
         ``seen_first``: during the first sweep, what the frames showed so far outranks what the
         task file said."""
-        if name in self._static or Atom("holding", (name,)) in graph.facts:
+        if name in self._static or self.roles.holding(name) in graph.facts:
             return None
         loc = graph.location(name)
         if seen_first:
@@ -496,15 +508,16 @@ class SceneGraphBuilder:
             if c is not None:
                 return Believed(c, SEEN_RADIUS)
             seen = self.observed(name)
-            if any(a.args and a.args[0] == name and a.predicate in LOCATION_PREDICATES for a in seen):
-                loc = {a for a in seen if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == name}
-        place = next((a for a in sorted(loc) if supports(a)), None)
-        room = next((a.args[1] for a in sorted(loc) if a.predicate == "in_room" and len(a.args) == 2), None)
+            location = self.roles.location
+            if any(a.args and a.args[0] == name and a.predicate in location for a in seen):
+                loc = {a for a in seen if a.predicate in location and a.args and a.args[0] == name}
+        place = next((a for a in sorted(loc) if self.roles.supports(a)), None)
+        room = next((a.args[1] for a in sorted(loc) if a.predicate == self.roles.in_room and len(a.args) == 2), None)
         if place is None and room is None:
             return None
         support = place.args[1] if place is not None else None
-        inside = place is not None and place.predicate == "inside"
-        hidden = inside and Atom("closed", (support,)) in graph.facts
+        inside = place is not None and place.predicate == self.roles.inside
+        hidden = inside and Atom(self.roles.closed, (support,)) in graph.facts
         obj = graph.objects.get(name)
         if not seen_first and obj is not None and obj.centroid is not None and obj.located == frozenset(loc):
             return Believed(obj.centroid, SEEN_RADIUS, support, room, hidden=hidden, inside=inside)
@@ -520,7 +533,7 @@ class SceneGraphBuilder:
         piece = self.site_map.piece(support) if support else None
         if piece is not None and piece.pose is not None and piece.footprint:
             w, d = piece.footprint
-            inside = place.predicate == "inside" and piece.cavity is not None
+            inside = place.predicate == self.roles.inside and piece.cavity is not None
             z = sum(piece.cavity.z) / 2 if inside else (piece.height or FURNITURE_AIM_HEIGHT)
             return (piece.pose[0], piece.pose[1], z), math.hypot(w, d) / 2 + SUPPORT_MARGIN
         if support is not None and support in self.objects and support not in self._static:
@@ -535,13 +548,13 @@ class SceneGraphBuilder:
     def point_of(self, graph: SceneGraph, name: str, depth: int = 0) -> tuple[float, float, float] | None:
         """Where belief puts ``name``, in the map frame: its measured centroid while belief still
         places it where it was measured, else a point of what belief says it rests on or in."""
-        if Atom("holding", (name,)) in graph.facts or depth > 3:
+        if self.roles.holding(name) in graph.facts or depth > 3:
             return None
         obj = graph.objects.get(name)
         if obj is not None and obj.centroid is not None and obj.located == frozenset(graph.location(name)):
             return obj.centroid
         for a in sorted(graph.location(name)):
-            if supports(a):
+            if self.roles.supports(a):
                 return self._place_point(a) or self.point_of(graph, a.args[1], depth + 1)
         return self._map_point(name)
 
@@ -553,9 +566,9 @@ class SceneGraphBuilder:
         if piece is None or piece.pose is None:
             return None
         x, y, _ = piece.pose
-        if atom.predicate == "inside" and piece.cavity is not None:
+        if atom.predicate == self.roles.inside and piece.cavity is not None:
             return (x, y, sum(piece.cavity.z) / 2)
-        if atom.predicate != "inside" and piece.height is not None:
+        if atom.predicate != self.roles.inside and piece.height is not None:
             return (x, y, piece.height)
         return None
 

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import DomainKnowledge
+from vap_bt.domain.roles import Roles
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.relations import Signatures, scene_relations
@@ -26,8 +27,9 @@ if TYPE_CHECKING:
 class PointCloudGeometry:
     """Fused tracks of one scene and the geometric relations among them."""
 
-    def __init__(self, knowledge: DomainKnowledge, objects: dict[str, str], site_map: SiteMap) -> None:
-        self.sig = Signatures(knowledge, objects)
+    def __init__(self, knowledge: DomainKnowledge, objects: dict[str, str], site_map: SiteMap,
+                 roles: Roles | None = None) -> None:
+        self.sig = Signatures(knowledge, objects, roles or Roles())
         self.site_map = site_map
         self.tracks = Tracks(static=site_map.static_names())
         self._relations: dict[frozenset[str], frozenset[Atom]] = {}
@@ -50,7 +52,7 @@ class PointCloudGeometry:
         atoms = self._relations.get(key)
         if atoms is None:
             atoms = self._relations[key] = scene_relations(self.tracks, self.site_map, self.sig, held=key)
-        return {a for a in atoms if name in a.args and (a.args[0] == name or a.predicate == "blocking")}
+        return {a for a in atoms if name in a.args and (a.args[0] == name or a.predicate == self.sig.roles.blocking)}
 
     def centroid(self, name: str) -> tuple[float, float, float] | None:
         t = self.tracks.get(name)

@@ -10,8 +10,9 @@ looking (:mod:`vap_bt.scene.builder`) and changes in the two ways the paper name
   remembers what it changed so that :meth:`undo` can take it back when the camera shows the
   action did not happen;
 * **observation-driven** — :meth:`correct` sets one atom to its verified value, and
-  :meth:`relocate` replaces what is believed about where an object is (``on``, ``inside``,
-  ``in_room``, ``holding``) by what the scene-graph builder sees now.
+  :meth:`relocate` replaces what is believed about where an object is (the domain's predicates of
+  the location roles, :attr:`~vap_bt.domain.roles.Roles.location`: the household's ``on``,
+  ``inside``, ``in_room``, ``holding``) by what the scene-graph builder sees now.
 
 Every change is logged with its cause, so a report can show how belief evolved. Each object
 records where its node came from: the site ``map``, ``perceived`` (detected in a frame), or a
@@ -25,18 +26,7 @@ from typing import Literal
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-
-#: Predicates that say where an object is; an object's location is the set of these atoms whose
-#: first argument is the object. ``hand_empty`` follows from ``holding``.
-LOCATION_PREDICATES = frozenset({"on", "inside", "in_room", "holding"})
-#: the location predicates that put an object on or in another
-SUPPORT_PREDICATES = ("on", "inside")
-
-
-def supports(atom: Atom) -> bool:
-    """``atom`` puts its first argument on or in its second (another domain's ``on ?c`` of one
-    argument — a car on the ferry — names no support to look at)."""
-    return atom.predicate in SUPPORT_PREDICATES and len(atom.args) == 2
+from vap_bt.domain.roles import Roles
 
 Source = Literal["map", "perceived", "prior"]
 
@@ -77,15 +67,17 @@ class SceneGraph:
 
     objects: dict[str, SceneObject]
     facts: set[Atom]
-    #: keep hand_empty consistent with holding (domains that have both, like the household)
+    #: keep the hand-empty atom consistent with the held ones (domains that have both, like the household)
     tracks_hand: bool = False
+    #: which predicates say where a thing is, what the hand holds, what blocks what
+    roles: Roles = field(default_factory=Roles)
     history: list[Change] = field(default_factory=list)
     _applied: list[tuple[GroundAction, Change]] = field(default_factory=list, repr=False)
 
     @classmethod
-    def of_facts(cls, facts, tracks_hand: bool = False) -> "SceneGraph":
+    def of_facts(cls, facts, tracks_hand: bool = False, roles: Roles | None = None) -> "SceneGraph":
         """A graph of bare facts, without object nodes (planning and tests)."""
-        return cls({}, set(facts), tracks_hand=tracks_hand)
+        return cls({}, set(facts), tracks_hand=tracks_hand, roles=roles or Roles())
 
     def state(self) -> frozenset[Atom]:
         return frozenset(self.facts)
@@ -129,15 +121,16 @@ class SceneGraph:
         return self._change(cause, add, remove)
 
     def location(self, obj: str) -> set[Atom]:
-        return {a for a in self.facts if a.predicate in LOCATION_PREDICATES and a.args and a.args[0] == obj}
+        return {a for a in self.facts if a.predicate in self.roles.location and a.args and a.args[0] == obj}
 
     def relocate(self, obj: str, observed: set[Atom]) -> Change:
         """Believe ``observed`` (this object's location atoms, and what the frames show standing in
         its way) instead of what was believed. Whether it can be reached is left to the checks: a
         blocker seen is a reason the planner can act on (push it), a verdict is not overturned."""
-        new = {a for a in observed if a.args and (a.predicate in LOCATION_PREDICATES and a.args[0] == obj
-                                                  or a.predicate == "blocking" and a.args[-1] == obj)}
-        old = self.location(obj) | {a for a in self.facts if a.predicate == "blocking" and a.args[-1] == obj}
+        location, blocking = self.roles.location, self.roles.blocking
+        new = {a for a in observed if a.args and (a.predicate in location and a.args[0] == obj
+                                                  or a.predicate == blocking and a.args[-1] == obj)}
+        old = self.location(obj) | {a for a in self.facts if a.predicate == blocking and a.args[-1] == obj}
         ch = self._change("relocate", new, old - new)
         self._sync_hand()
         return ch
@@ -149,9 +142,9 @@ class SceneGraph:
         return self._change(cause, {a for a in atoms if a.predicate in predicates}, old)
 
     def _sync_hand(self) -> None:
-        # hand_empty is believed exactly when nothing is believed held
-        if not self.tracks_hand:
+        # the hand is believed empty exactly when nothing is believed held
+        if not self.tracks_hand or not self.roles.tracks_hand:
             return
-        held = any(a.predicate == "holding" for a in self.facts)
-        empty = Atom("hand_empty")
+        held = any(a.predicate == self.roles.held for a in self.facts)
+        empty = Atom(self.roles.hand_empty)
         self._change("relocate", set() if held else {empty}, {empty} if held else set())

@@ -56,6 +56,7 @@ from typing import Callable, Mapping
 import numpy as np
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.roles import Roles
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import SELF, Detection, Frame, detection_index
 from vap_bt.robot.labels import DOOR, similar
@@ -151,10 +152,12 @@ class Identifier:
     of the task by name, with its class (:func:`vap_bt.robot.labels.label_of`)."""
 
     def __init__(self, vocabulary: Mapping[str, str], site_map: SiteMap,
-                 params: IdentityParams = IdentityParams()) -> None:
+                 params: IdentityParams = IdentityParams(), roles: Roles | None = None) -> None:
         self.vocabulary = dict(vocabulary)
         self.site_map = site_map
         self.p = params
+        #: which reported relations say held, on, inside, in a room (a detector reports the domain's)
+        self.roles = roles or Roles()
         self.mapped = site_map.static_names()
 
     def identify(self, frame: Frame, belief: Mapping[str, Believed] = {}, held: str | None = None,
@@ -236,7 +239,7 @@ class Identifier:
         None when they are not on it (no points with depth: when the frame does not look at it;
         without pixels: when it is not reported in its room)."""
         if piece.pose is None or not piece.footprint or frame.depth is None:
-            rooms = _reported_rooms(d) or ({room} if room else set())
+            rooms = _reported_rooms(d, self.roles) or ({room} if room else set())
             return 0.0 if piece.room in rooms or not rooms else None
         x, y, yaw = piece.pose
         if point is None:
@@ -259,7 +262,7 @@ class Identifier:
         when they are not by it; a door with no points of its own (seen through its doorway) is
         the door whose doorway the frame looks at."""
         if door.pose is None or frame.depth is None:
-            rooms = _reported_rooms(d) or ({room} if room else set())
+            rooms = _reported_rooms(d, self.roles) or ({room} if room else set())
             return 0.0 if rooms <= set(door.rooms) or not rooms else None
         width = door.width or 1.0
         centre = np.array([door.pose[0], door.pose[1], 0.0])
@@ -284,7 +287,7 @@ class Identifier:
                 dist = float(np.linalg.norm(np.subtract(points[k], hand)))
                 if dist <= self.p.hand_radius and (best is None or dist < best[0]):
                     best = (dist, k)
-            elif points[k] is None and Atom("holding", (SELF,)) in d.relations:
+            elif points[k] is None and self.roles.holding(SELF) in d.relations:
                 best = best or (0.0, k)
         return None if best is None else best[1]
 
@@ -333,12 +336,12 @@ class Identifier:
             if dist <= b.radius:
                 return dist / b.radius + _spread(b.radius) + extra
             return BEYOND_GATE + dist / TOLD_SCALE + extra if b.told else None
-        if not d.relations or Atom("holding", (SELF,)) in d.relations:
+        if not d.relations or self.roles.holding(SELF) in d.relations:
             return None  # nothing to place it by (or it is in the hand, and not what belief holds)
-        support, unresolved = _reported_support(d, names)
+        support, unresolved = _reported_support(d, names, self.roles)
         if unresolved and strict:
             return None
-        rooms = _reported_rooms(d)
+        rooms = _reported_rooms(d, self.roles)
         if b.support is not None and support == b.support:
             return extra
         if b.room is not None and rooms and b.room in rooms:
@@ -437,15 +440,15 @@ def _compatible(label: str, cls: str | None) -> bool:
     return cls is not None and (label == cls or similar(label, cls))
 
 
-def _reported_rooms(d: Detection) -> set[str]:
-    return {a.args[1] for a in d.relations if a.predicate == "in_room" and len(a.args) == 2 and a.args[0] == SELF}
+def _reported_rooms(d: Detection, roles: Roles) -> set[str]:
+    return {a.args[1] for a in d.relations if a.predicate == roles.in_room and len(a.args) == 2 and a.args[0] == SELF}
 
 
-def _reported_support(d: Detection, names: dict[int, str]) -> tuple[str | None, bool]:
+def _reported_support(d: Detection, names: dict[int, str], roles: Roles) -> tuple[str | None, bool]:
     """What ``d`` is reported on or in (resolving "#k" through the names given so far), and
     whether the report names a detection not named yet."""
     for a in d.relations:
-        if a.predicate in ("on", "inside") and len(a.args) == 2 and a.args[0] == SELF:
+        if roles.supports(a) and a.args[0] == SELF:
             k = detection_index(a.args[1])
             if k is None:
                 return a.args[1], False

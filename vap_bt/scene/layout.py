@@ -2,9 +2,12 @@
 
 Writing every ground atom of a house by hand is error-prone, so task files describe a scene the
 way a person would — rooms, doors between them, furniture in rooms, items on or inside furniture
-— and :func:`layout_facts` expands that into the household domain's atoms (``in_room``,
-``connects`` both ways, ``openable``/``open``/``closed``, ``reachable``, ``blocking``, a floor
-per room for things that fall). The same layout names the objects a physical world must build.
+— and :func:`layout_facts` expands that into the domain's atoms, in the predicates its perception
+profile names for each role (:mod:`vap_bt.domain.roles`; the household's by default): where each
+thing is, the doors' ``connects`` both ways, ``openable``/``open``/``closed``, ``reachable``,
+``blocking``, a floor per room for things that fall. The words of the layout itself (``place: on
+table``, a door's ``state: open``) are the file's own, whatever the domain calls those relations.
+The same layout names the objects a physical world must build.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.roles import Roles
 
 
 def floor_of(room: str) -> str:
@@ -147,40 +151,47 @@ def _unique_pddl_names(layout: Layout) -> None:
             kinds[name] = kind
 
 
-def layout_facts(layout: Layout) -> set[Atom]:
-    """The ground atoms a layout means, in the household domain's vocabulary."""
-    f: set[Atom] = {Atom("robot_in", (layout.robot.room,))}
+def layout_facts(layout: Layout, roles: Roles | None = None) -> set[Atom]:
+    """The ground atoms a layout means, in the predicates ``roles`` names (default: the
+    household's); a role no predicate plays says nothing."""
+    r = roles or Roles()
+    f: set[Atom] = {Atom(r.robot_in, (layout.robot.room,))}
     at = layout.robot.at or floor_of(layout.robot.room)
-    f |= {Atom("robot_at", (at,)), Atom("inview", (at,))}
-    for r in layout.rooms:
-        f |= {Atom("in_room", (floor_of(r), r)), Atom("clear", (floor_of(r),))}
+    f |= {Atom(r.robot_at, (at,)), Atom(r.in_view, (at,))}
+    for room in layout.rooms:
+        f |= {Atom(r.in_room, (floor_of(room), room)), Atom(r.clear, (floor_of(room),))}
     for name, d in layout.doors.items():
         a, b = d.between
-        f |= {Atom("connects", (name, a, b)), Atom("connects", (name, b, a)),
-              Atom("in_room", (name, a)), Atom("in_room", (name, b)), Atom("openable", (name,)),
-              Atom(d.state, (name,))}
+        f |= {Atom(r.connects, (name, a, b)), Atom(r.connects, (name, b, a)),
+              Atom(r.in_room, (name, a)), Atom(r.in_room, (name, b)), Atom(r.openable, (name,)),
+              Atom(_state(d.state, r), (name,))}
     for name, fu in layout.furniture.items():
-        f.add(Atom("in_room", (name, fu.room)))
+        f.add(Atom(r.in_room, (name, fu.room)))
         if fu.state is not None:
-            f |= {Atom("openable", (name,)), Atom(fu.state, (name,))}
+            f |= {Atom(r.openable, (name,)), Atom(_state(fu.state, r), (name,))}
         elif fu.type in ("container", "appliance"):
-            f.add(Atom("open", (name,)))  # an open-topped container (a basket) is always open
+            f.add(Atom(r.open, (name,)))  # an open-topped container (a basket) is always open
         if fu.type == "surface" and fu.clear:
-            f.add(Atom("clear", (name,)))
+            f.add(Atom(r.clear, (name,)))
     held = False
     for name, it in layout.items.items():
         if it.held:
-            f.add(Atom("holding", (name,)))
+            f.add(Atom(r.held, (name,)))
             held = True
         else:
-            f.add(Atom("on", (name, it.on)) if it.on else Atom("inside", (name, it.inside)))
-            f.add(Atom("in_room", (name, layout.room_of(name))))
+            f.add(Atom(r.on, (name, it.on)) if it.on else Atom(r.inside, (name, it.inside)))
+            f.add(Atom(r.in_room, (name, layout.room_of(name))))
         if it.fillable:
-            f.add(Atom("fillable", (name,)))
+            f.add(Atom(r.fillable, (name,)))
         for b in it.blocked_by:
-            f.add(Atom("blocking", (b, name)))
+            f.add(Atom(r.blocking, (b, name)))
         if not it.blocked_by:
-            f.add(Atom("reachable", (name,)))
+            f.add(Atom(r.reachable, (name,)))
     if not held:
-        f.add(Atom("hand_empty"))
-    return f
+        f.add(Atom(r.hand_empty))
+    return {a for a in f if a.predicate is not None}
+
+
+def _state(word: str, roles: Roles) -> str | None:
+    """The predicate of a layout's ``state:`` word (the file's ``open``/``closed``)."""
+    return roles.open if word == "open" else roles.closed

@@ -44,13 +44,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Collection, Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Protocol
 
 import numpy as np
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import DomainKnowledge
+from vap_bt.domain.roles import Roles
 from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
 
 
@@ -237,14 +238,16 @@ class Signatures:
 
     knowledge: DomainKnowledge
     types: Mapping[str, str]  # object name -> PDDL type (the planning task's objects)
+    #: which predicates say on, inside, in a room, blocking, reachable (default: the household's)
+    roles: Roles = field(default_factory=Roles)
 
-    def has(self, predicate: str, arity: int) -> bool:
-        sig = self.knowledge.predicates.get(predicate)
+    def has(self, predicate: str | None, arity: int) -> bool:
+        sig = self.knowledge.predicates.get(predicate) if predicate is not None else None
         return sig is not None and len(sig) == arity
 
-    def fits(self, predicate: str, position: int, name: str) -> bool:
+    def fits(self, predicate: str | None, position: int, name: str) -> bool:
         """Can ``name`` stand at ``position`` of ``predicate``?"""
-        sig = self.knowledge.predicates.get(predicate)
+        sig = self.knowledge.predicates.get(predicate) if predicate is not None else None
         t = self.types.get(name)
         return sig is not None and t is not None and position < len(sig) and self.knowledge.is_subtype(t, sig[position])
 
@@ -254,14 +257,15 @@ class Signatures:
 
 
 def _best_support(obj: Located, surfaces: list[Extent], containers: list[Extent],
-                  th: Thresholds) -> Atom | None:
-    """The one location atom of ``obj`` (see the module docstring for the order)."""
+                  th: Thresholds, roles: Roles) -> Atom | None:
+    """The one location atom of ``obj`` (see the module docstring for the order); ``surfaces``
+    and ``containers`` are empty where the domain has no on or inside role."""
     inside = [c for c in containers if c.name != obj.name and lies_inside(obj, c, th)]
     if inside:
-        return Atom("inside", (obj.name, min(inside, key=lambda c: c.volume).name))
+        return Atom(roles.inside, (obj.name, min(inside, key=lambda c: c.volume).name))
     on = [s for s in surfaces if s.name != obj.name and rests_on(obj, s, th)]
     if on:
-        return Atom("on", (obj.name, min(on, key=lambda s: abs(obj.box[2] - s.top)).name))
+        return Atom(roles.on, (obj.name, min(on, key=lambda s: abs(obj.box[2] - s.top)).name))
     return None
 
 
@@ -279,9 +283,12 @@ def room_of(obj: Located, site_map: SiteMap) -> tuple[str, ...]:
 
 def room_atoms(site_map: SiteMap, sig: Signatures) -> frozenset[Atom]:
     """``in_room`` of what the map places before anything is seen: floors, doors, furniture."""
-    atoms = {Atom("in_room", (r.floor, r.name)) for r in site_map.rooms}
-    atoms |= {Atom("in_room", (d.name, r)) for d in site_map.doors for r in d.rooms}
-    atoms |= {Atom("in_room", (f.name, f.room)) for f in site_map.furniture}
+    in_room = sig.roles.in_room
+    if in_room is None:
+        return frozenset()
+    atoms = {Atom(in_room, (r.floor, r.name)) for r in site_map.rooms}
+    atoms |= {Atom(in_room, (d.name, r)) for d in site_map.doors for r in d.rooms}
+    atoms |= {Atom(in_room, (f.name, f.room)) for f in site_map.furniture}
     return frozenset(a for a in atoms if sig.typed(a))
 
 
@@ -291,43 +298,46 @@ def scene_relations(objects: Iterable[Located], site_map: SiteMap, sig: Signatur
     ``on``/``inside`` (one per item), ``in_room`` (with :func:`room_atoms`), ``near`` (if the
     domain has it), ``blocking`` and ``reachable`` (if it has them). ``held``: items in the hand,
     which are in no place and block nothing (and nothing blocks them)."""
+    roles = sig.roles
     objs = [o for o in objects if o.box is not None and o.centroid is not None]
     placed = [o for o in objs if o.name not in held]
     extents = {o.name: object_extent(o, site_map) for o in placed}
     floors = [e for e in map(floor_extent, site_map.rooms) if e is not None]
-    surfaces = {e.name: e for e in (*extents.values(), *floors) if sig.fits("on", 1, e.name)}
-    containers = [e for e in extents.values() if sig.fits("inside", 1, e.name)]
+    surfaces = {e.name: e for e in (*extents.values(), *floors) if sig.fits(roles.on, 1, e.name)}
+    containers = [e for e in extents.values() if sig.fits(roles.inside, 1, e.name)]
     atoms: set[Atom] = set(room_atoms(site_map, sig))
     support: dict[str, Atom] = {}
     for o in placed:
-        best = _best_support(o, list(surfaces.values()) if sig.fits("on", 0, o.name) else [],
-                             containers if sig.fits("inside", 0, o.name) else [], th)
+        best = _best_support(o, list(surfaces.values()) if sig.fits(roles.on, 0, o.name) else [],
+                             containers if sig.fits(roles.inside, 0, o.name) else [], th, roles)
         if best is not None:
             support[o.name] = best
-        atoms |= {Atom("in_room", (o.name, r)) for r in room_of(o, site_map)}
+        if roles.in_room is not None:
+            atoms |= {Atom(roles.in_room, (o.name, r)) for r in room_of(o, site_map)}
     atoms |= set(support.values())
     if sig.has("near", 2):
         atoms |= {Atom("near", (a.name, b.name)) for a in objs for b in objs if a.name != b.name and is_near(a, b, th)}
-    blocking = _blocking_atoms(placed, support, surfaces, site_map, th) if sig.has("blocking", 2) else set()
+    blocking = _blocking_atoms(placed, support, surfaces, site_map, th, roles) \
+        if sig.has(roles.blocking, 2) else set()
     atoms |= blocking
-    if sig.has("reachable", 1):
+    if sig.has(roles.reachable, 1):
         blocked = {a.args[1] for a in blocking if sig.typed(a)}
-        atoms |= {Atom("reachable", (o.name,)) for o in objs if o.name not in blocked}
+        atoms |= {Atom(roles.reachable, (o.name,)) for o in objs if o.name not in blocked}
     return frozenset(a for a in atoms if sig.typed(a))
 
 
 def _blocking_atoms(placed: list[Located], support: dict[str, Atom], surfaces: Mapping[str, Extent],
-                    site_map: SiteMap, th: Thresholds) -> set[Atom]:
+                    site_map: SiteMap, th: Thresholds, roles: Roles) -> set[Atom]:
     """``blocking(b, o)`` between items resting on one surface."""
     atoms: set[Atom] = set()
     for o in placed:
         s = support.get(o.name)
-        if s is None or s.predicate != "on":
+        if s is None or s.predicate != roles.on:
             continue
         front = approach_of(o, surfaces[s.args[1]], site_map)
         if front is None:
             continue
-        atoms |= {Atom("blocking", (b.name, o.name)) for b in placed
-                  if b.name != o.name and support.get(b.name) == Atom("on", (b.name, s.args[1]))
+        atoms |= {Atom(roles.blocking, (b.name, o.name)) for b in placed
+                  if b.name != o.name and support.get(b.name) == Atom(roles.on, (b.name, s.args[1]))
                   and blocks(b, o, front, th)}
     return atoms

@@ -5,9 +5,11 @@ pile of overlapping ``in_room`` and ``on`` boxes; this module computes where eve
 as :mod:`~vap_bt.viz.tree_graph` does for the behaviour tree, so that nothing overlaps:
 
 * **where things are** is a forest. Each object hangs from what holds it: the thing it is on or
-  in (:func:`~vap_bt.scene.graph.supports`: ``on``, ``inside``), the robot when a one-argument
-  location atom says the hand has it (``holding(cup)``), else its room (``in_room``). Rooms are
-  the roots, drawn top to bottom; the robot hangs in the room belief puts it in (``robot_in``).
+  in (the support roles, :attr:`~vap_bt.domain.roles.Roles.support`: the household's ``on``,
+  ``inside``), the robot when a one-argument location atom says the hand has it (``holding(cup)``),
+  else its room (``in_room``). Rooms are the roots, drawn top to bottom; the robot hangs in the
+  room belief puts it in (``robot_in``). Which predicate plays each part is the graph's
+  :class:`~vap_bt.domain.roles.Roles` (the domain's perception profile says).
 * the forest is laid out **sideways**: a node sits on the row of its first child, its children
   stacked below in the next column; every leaf has a row of its own (as tall as the row's
   tallest label), so no two labels share one. Between a node's column and its children's, a small grey node carries the relation's
@@ -32,8 +34,7 @@ from dataclasses import dataclass
 import rerun as rr
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.scene.belief import ROBOT_PREDICATES
-from vap_bt.scene.graph import LOCATION_PREDICATES, SceneGraph, supports
+from vap_bt.scene.graph import SceneGraph
 from vap_bt.viz.tree_graph import GAP_X, GAP_Y, size_of
 
 ROBOT = "(robot)"
@@ -86,9 +87,10 @@ class _Node:
 
 def draw(graph: SceneGraph) -> SceneDrawing:
     """The drawing of ``graph``'s facts (see the module docstring)."""
-    facts = sorted(graph.facts)
-    rooms = {o for o, obj in graph.objects.items() if obj.label == "room"} | {
-        a.args[1] for a in facts if a.predicate == "in_room" and len(a.args) == 2}
+    facts, roles = sorted(graph.facts), graph.roles
+    supports = roles.supports
+    rooms = {o for o, obj in graph.objects.items() if roles.room is not None and obj.label == roles.room} | {
+        a.args[1] for a in facts if a.predicate == roles.in_room and len(a.args) == 2}
     names = (set(graph.objects) | {x for a in facts for x in a.args}) - rooms
     props: dict[str, list[str]] = defaultdict(list)
     parent: dict[str, tuple[str, Atom | None]] = {}  # object -> (parent id, the fact that puts it there)
@@ -97,9 +99,9 @@ def draw(graph: SceneGraph) -> SceneDrawing:
     for a in facts:
         if len(a.args) == 1:
             x = a.args[0]
-            if x in rooms and a.predicate in ROBOT_PREDICATES:  # robot_in(kitchen): where the robot is
+            if x in rooms and a.predicate in roles.robot:  # robot_in(kitchen): where the robot is
                 parent.setdefault(ROBOT, (x, a))
-            elif a.predicate in LOCATION_PREDICATES and not supports(a):  # holding(cup)
+            elif a.predicate in roles.location and not supports(a):  # holding(cup)
                 parent[x] = (ROBOT, a)
             else:
                 props[x].append(a.predicate)
@@ -107,13 +109,13 @@ def draw(graph: SceneGraph) -> SceneDrawing:
         if supports(a) and a.args[0] not in parent:
             parent[a.args[0]] = (a.args[1], a)
     for a in facts:
-        if a.predicate == "in_room" and len(a.args) == 2 and a.args[1] in rooms and a.args[0] not in parent:
+        if a.predicate == roles.in_room and len(a.args) == 2 and a.args[1] in rooms and a.args[0] not in parent:
             parent[a.args[0]] = (a.args[1], None)
     for a in facts:
         if len(a.args) < 2 or supports(a):
             continue
         # in_room(cup, kitchen) with the cup in a cabinet in the kitchen: the drawing says it already
-        if not (a.predicate == "in_room" and a.args[1] in _ancestors(parent, a.args[0])):
+        if not (a.predicate == roles.in_room and a.args[1] in _ancestors(parent, a.args[0])):
             others.append(a)
     nodes = {r: _Node(r, r, ROOM_COLOUR) for r in rooms}
     for n in names:
