@@ -13,7 +13,7 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
-from vap_bt.domain import dialect
+from vap_bt.domain import dialect, up_engines
 from vap_bt.domain.atoms import Literal
 from vap_bt.domain.formula import FALSE, TRUE, And
 from vap_bt.domain.instances import UPInstances
@@ -27,6 +27,7 @@ def _reader():
     from unified_planning.io import PDDLReader
     from unified_planning.environment import get_environment  # not .shortcuts: it imports every engine (1 s)
 
+    up_engines.load()  # the environment builds the engine factory: without ConfigSpace's 0.8 s
     env = get_environment()
     env.credits_stream = None  # keep stdout for our own progress and reports
     env.error_used_name = False  # the paper names both an action and a predicate "open"
