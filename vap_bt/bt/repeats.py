@@ -23,9 +23,11 @@ that every situation Table II injects can use).
 from __future__ import annotations
 
 from collections import Counter
+from typing import TYPE_CHECKING
 
-from vap_bt.bt.context import Situation
-from vap_bt.domain.atoms import Atom
+if TYPE_CHECKING:  # for annotations only: the command line reads MAX_REPLANS without the executive
+    from vap_bt.bt.context import Situation
+    from vap_bt.domain.atoms import Atom
 
 #: replans an episode may make by default: Table II injects up to seven situations in one
 #: pybullet episode and each may take two replans (the correction, then what it uncovers); with 10,
