@@ -37,7 +37,8 @@ import pinocchio as pin
 
 from skills.body import Body, Struck, angle_to
 from skills.eyes import Eyes
-from skills.hands import APPROACH, Hands, Outcome, Where
+from skills.goal import Outcome, Where
+from skills.hands import APPROACH, Hands
 from skills.navigator import Navigator
 from skills.scene_model import Leaf, SceneModel
 from vap_bt.motion import se3

@@ -32,12 +32,13 @@ and the executive finds out by looking whether they did.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
 from skills.body import Body, Stopped, Struck
 from skills.eyes import CAMERA_EYE, Eyes, Held
+from skills.goal import Outcome, Where
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
@@ -136,28 +137,6 @@ def laid_over(held: Held, R: np.ndarray, a: np.ndarray) -> float:
 def how(a) -> str:
     """A hand approaching along ``a`` works from above ("top") or from the side ("front")."""
     return "top" if a[2] < -0.9 else "front"
-
-
-@dataclass(frozen=True)
-class Outcome:
-    """A skill's motion ended: ``completed`` (its own view), and what happened in words."""
-
-    completed: bool
-    message: str = ""
-
-
-@dataclass(frozen=True)
-class Where:
-    """What the executive believes about an item's place: its support or container, and how far
-    from the point it gave the item may be (``radius``, m; None: it did not say)."""
-
-    on: str | None = None
-    inside: str | None = None
-    radius: float | None = None
-
-    @property
-    def place(self) -> str | None:
-        return self.inside or self.on
 
 
 class Hands:

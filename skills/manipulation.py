@@ -7,10 +7,14 @@ doors and drawers), from what the camera measures where the goal's hints say to 
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from skills.base import MotionSkill
-from skills.hands import Outcome, Where
-from skills.kit import Kit
+from skills.goal import Outcome, Where
 from vap_bt.skill import Hint
+
+if TYPE_CHECKING:
+    from skills.kit import Kit
 
 
 class ArmSkill(MotionSkill):

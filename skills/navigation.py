@@ -10,10 +10,14 @@ import math
 
 import numpy as np
 
+from typing import TYPE_CHECKING
+
 from skills.base import MotionSkill
-from skills.hands import Outcome
-from skills.kit import Kit
+from skills.goal import Outcome
 from vap_bt.skill import Hint
+
+if TYPE_CHECKING:
+    from skills.kit import Kit
 
 
 class BaseSkill(MotionSkill):

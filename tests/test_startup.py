@@ -79,3 +79,15 @@ def test_the_engines_leave_configspace_for_when_an_engine_builds_a_configuration
                              "assert type(space) is ConfigSpace.ConfigurationSpace\n"
                              "print(ConfigSpace.__file__)")
     assert "ConfigSpace" in packages(modules) and out.strip().endswith("__init__.py")
+
+
+def test_a_symbolic_run_moves_no_arm_so_loads_no_kinematics_nor_simulator():
+    """The world performs the actions, so the skill classes load without their motion modules.
+    scipy is used (the search's sparse matrices, the identifier's assignment), its statistics
+    are not."""
+    modules, out = loaded_by(command("run", TREES / "collect_cup.yaml", "--world", "symbolic", "--transport",
+                                     "inproc", "--no-injection", "-q", "--json"))
+    assert json.loads(out)["success"]
+    assert "skills.manipulation" in modules and "skills.kit" not in modules
+    assert not packages(modules) & (set(HEAVY) - {"scipy"})
+    assert "scipy.stats" not in modules

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from skills.base import MotionSkill
-from skills.hands import Outcome
+from skills.goal import Outcome
 from skills.kit import Kit
 from vap_bt.motion import se3
 from vap_bt.skill import Hint
