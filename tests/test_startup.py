@@ -19,6 +19,9 @@ from conftest import DOMAINS, ROOT, TREES
 
 #: what no command that neither simulates, moves an arm nor records may load
 HEAVY = ("pybullet", "open3d", "rerun", "pinocchio", "toppra", "scipy", "ConfigSpace")
+#: what hosts parts over Zenoh: the command line defines serve's and sim's arguments on every
+#: start, and imports their servers only when one of those commands runs
+SERVERS = {"vap_bt.transport.server", "vap_bt.transport.drivers", "vap_bt.transport.messages", "vap_bt.plugins"}
 
 
 def loaded_by(code: str) -> tuple[set[str], str]:
@@ -56,6 +59,7 @@ def test_help_imports_none_of_the_heavy_modules_nor_unified_planning():
     assert not packages(modules) & {*HEAVY, "unified_planning", "py_trees"}
     assert "vap_bt.bt.repeats" in modules  # for --max-replans' default, without the executive it annotates
     assert not modules & {"vap_bt.bt.context", "vap_bt.perception.evidence", "vap_bt.perception.profile"}
+    assert "numpy" not in modules and not modules & SERVERS
 
 
 @pytest.mark.parametrize("argv", [("tree", TREES / "collect_cup.yaml"),
@@ -65,6 +69,7 @@ def test_tree_and_plan_read_pddl_and_plan_without_the_heavy_modules(argv):
     modules, out = loaded_by(command(*argv))
     assert "unified_planning" in packages(modules) and out.strip()  # they read PDDL and printed a result
     assert not packages(modules) & set(HEAVY)
+    assert not modules & SERVERS
 
 
 def test_the_engines_leave_configspace_for_when_an_engine_builds_a_configuration_space():
