@@ -20,14 +20,24 @@ has no such hook.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from skills.body import Slipped, Stopped
 from vap_bt.outcome import Outcome
-from skills.kit import Kit, has_drivers, kit_for
-from skills.navigator import Blocked
 from vap_bt.skill import Hint, Skill, SkillResult
 from vap_bt.world import GoalContext
+
+if TYPE_CHECKING:
+    from skills.kit import Kit
+
+#: the driver interfaces a kit needs (attributes of what skills are bound to's ``drivers``)
+REQUIRED = ("arm", "gripper", "base", "camera")
+
+
+def has_drivers(robot: object) -> bool:
+    """Whether ``robot`` offers the driver interfaces motion skills move it through (its
+    ``drivers``: arm, gripper, base and wrist camera)."""
+    drivers = getattr(robot, "drivers", None)
+    return drivers is not None and all(getattr(drivers, name, None) is not None for name in REQUIRED)
 
 
 class MotionSkill(Skill):
@@ -38,6 +48,11 @@ class MotionSkill(Skill):
         return has_drivers(world)
 
     def execute(self, args: tuple[str, ...], ctx: GoalContext) -> SkillResult:
+        # the motion modules on the first goal: a run whose world performs the actions never loads them
+        from skills.body import Slipped, Stopped
+        from skills.kit import kit_for
+        from skills.navigator import Blocked
+
         call = f"{self.action}({', '.join(args)})"
         if ctx.cancelled():  # cancelled while queued: do not start moving
             return SkillResult(False, f"{call} cancelled before it started")
@@ -63,7 +78,4 @@ class MotionSkill(Skill):
         return SkillResult(out.completed, out.message or call)
 
     def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
-        """Move the robot for ``action(args)`` through ``kit``, looking where ``hints`` say, and say how
-        the motion ended. Blocks until done; a cancelled goal raises :class:`~skills.body.Stopped` from
-        the driver call it reached."""
         raise NotImplementedError

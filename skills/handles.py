@@ -37,8 +37,9 @@ import pinocchio as pin
 
 from skills.body import Body, Struck, angle_to
 from skills.eyes import Eyes
-from skills.hands import APPROACH, Hands, Where
+from skills.goal import Where
 from vap_bt.outcome import Outcome
+from skills.hands import APPROACH, Hands
 from skills.navigator import Navigator
 from skills.scene_model import Leaf, SceneModel
 from vap_bt.motion import se3

@@ -32,16 +32,17 @@ and the executive finds out by looking whether they did.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
 from skills.body import Body, Stopped, Struck
 from skills.eyes import CAMERA_EYE, Eyes, Held
+from skills.goal import Where
+from vap_bt.outcome import Outcome
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, SceneModel, Seen, seen_from
 from vap_bt.motion import se3
-from vap_bt.outcome import Outcome
 from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN
 from vap_bt.scene.pointcloud import backproject, instance_cloud
 
@@ -137,22 +138,6 @@ def laid_over(held: Held, R: np.ndarray, a: np.ndarray) -> float:
 def how(a) -> str:
     """A hand approaching along ``a`` works from above ("top") or from the side ("front")."""
     return "top" if a[2] < -0.9 else "front"
-
-
-@dataclass(frozen=True)
-class Where:
-    """What the executive believes about an item's place: its support or container, and how far
-    from the point it gave the item may be (``radius``, m; None: it did not say)."""
-
-    on: str | None = None
-    inside: str | None = None
-    radius: float | None = None
-
-    @property
-    def place(self) -> str | None:
-        """The container the item is believed in, else the support it is believed on (None: belief places
-        it nowhere)."""
-        return self.inside or self.on
 
 
 class Hands:
@@ -264,8 +249,6 @@ class Hands:
         return z if z is not None and SUPPORT_SNAP[0] <= lo - z <= SUPPORT_SNAP[1] else lo
 
     def support_height(self, where: Where, point) -> float | None:
-        """The height (m, map frame) an item at ``where`` rests at: a container's cavity floor, a
-        surface's top, 0 on a floor; None when the map does not know the place."""
         if where.inside and where.inside in self.scene.furniture:
             cav = self.scene.furniture[where.inside].info.cavity
             return cav.z[0] if cav else None
@@ -553,8 +536,6 @@ class Hands:
         self.body.goto_pose(self.body.base_T() @ rel, 0.8)
 
     def let_go(self) -> None:
-        """Open the fingers fully; the eyes forget the held item only once the gripper no longer holds
-        it."""
         self.body.fingers(self.body.cfg.gripper.stroke)
         if not self.body.holding():  # a gripper that would not open still holds what it held
             self.eyes.held = None

@@ -26,7 +26,9 @@ from typing import Iterator
 from skills.body import Body
 from skills.eyes import Eyes, Held
 from skills.handles import Handles
-from skills.hands import Hands, Where
+from skills.base import has_drivers
+from skills.goal import Where
+from skills.hands import Hands
 from skills.navigator import Navigator
 from skills.scene_model import ANONYMOUS, SceneModel, seen_from, seen_in_hand
 from vap_bt.robot.frame import Frame
@@ -35,8 +37,6 @@ from vap_bt.scene.identity import SEEN_RADIUS, Believed, Identifier, IdentityPar
 from vap_bt.skill import Hint
 from vap_bt.world import GoalContext
 
-#: the driver interfaces a kit needs (attributes of what skills are bound to's ``drivers``)
-REQUIRED = ("arm", "gripper", "base", "camera")
 #: s (the robot's clock) a drive goes on after the hand lost its item, before it stops: about
 #: the time the item takes to fall from where it rides (0.95 m: 0.44 s). Stopped at once, the
 #: base would leave the falling item flying on the way the base moved — onto the base's top
@@ -47,13 +47,6 @@ EXACT = IdentityParams(similar_cost=None)
 
 _kits: dict[int, "Kit"] = {}
 _lock = threading.Lock()
-
-
-def has_drivers(robot: object) -> bool:
-    """Whether ``robot`` offers the driver interfaces motion skills move it through (its
-    ``drivers``: arm, gripper, base and wrist camera)."""
-    drivers = getattr(robot, "drivers", None)
-    return drivers is not None and all(getattr(drivers, name, None) is not None for name in REQUIRED)
 
 
 def kit_for(robot) -> "Kit":

@@ -7,16 +7,18 @@ doors and drawers), from what the camera measures where the goal's hints say to 
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from skills.base import MotionSkill
-from skills.hands import Where
+from skills.goal import Where
 from vap_bt.outcome import Outcome
-from skills.kit import Kit
 from vap_bt.skill import Hint
+
+if TYPE_CHECKING:
+    from skills.kit import Kit
 
 
 class ArmSkill(MotionSkill):
-    """A skill of the arm and gripper (the ``ur5e`` server; occupies the arm)."""
-
     robot = "ur5e"
     resource = "arm"
 

@@ -10,15 +10,17 @@ import math
 
 import numpy as np
 
+from typing import TYPE_CHECKING
+
 from skills.base import MotionSkill
 from vap_bt.outcome import Outcome
-from skills.kit import Kit
 from vap_bt.skill import Hint
+
+if TYPE_CHECKING:
+    from skills.kit import Kit
 
 
 class BaseSkill(MotionSkill):
-    """A skill of the mobile base (the ``base`` server; occupies the base)."""
-
     robot = "base"
     resource = "base"
 

@@ -105,10 +105,14 @@ def make_camera(robot) -> Any:
     """The camera service and body the executive perceives through: on a robot with drivers,
     the skills' own (:class:`skills.views.ViewService`, sharing their kit, so that a look and a
     skill never move the robot at once); a world without drivers (the symbolic one) is its own."""
-    from skills.kit import has_drivers, kit_for
+    from skills.base import has_drivers
+
+    if not has_drivers(robot):
+        return robot
+    from skills.kit import kit_for  # the motion modules: only a robot with drivers needs them
     from skills.views import ViewService
 
-    return ViewService(kit_for(robot)) if has_drivers(robot) else robot
+    return ViewService(kit_for(robot))
 
 
 VLMS = typing.get_args(Vlm)  # sim, sim-http and each HTTP backend (tests/test_settings.py checks they match)

@@ -34,16 +34,16 @@ import signal
 import sys
 import threading
 import time
+from typing import TYPE_CHECKING
 
-from vap_bt import plugins
 from vap_bt.app.arguments import add_settings
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, EXIT_TRANSPORT, InputError, TransportError, VapBtError
-from vap_bt.transport import server as server_module
 from vap_bt.settings import Commands, Hosting, Zenoh
 from vap_bt.transport.config import describe, open_session, part_settings, settings_from_args
-from vap_bt.app.locked_world import LockedWorld
-from vap_bt.transport.server import SkillServer
-from vap_bt.app.world_factory import make_world, parse_world_args
+
+if TYPE_CHECKING:  # the servers, the plugins and the worlds are imported by the commands that use them:
+    from vap_bt import plugins  # the command line defines these commands' arguments on every start
+    from vap_bt.transport.server import SkillServer
 
 #: ``--world remote``: the robot of a world that ``vap-bt sim`` hosts
 REMOTE = "remote"
@@ -56,6 +56,11 @@ def add_serve_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run_serve(args: argparse.Namespace) -> int:
+    from vap_bt import plugins
+    from vap_bt.app.locked_world import LockedWorld
+    from vap_bt.app.world_factory import make_world, parse_world_args
+    from vap_bt.transport.server import SkillServer
+
     _show_goal_log()
     entries = [e for e in plugins.discover_skills() if e.name not in set(args.exclude_skill)]
     table = plugins.skill_table(entries)
@@ -80,8 +85,10 @@ def run_serve(args: argparse.Namespace) -> int:
 def _serve_remote(args: argparse.Namespace, entries, robots: list[str]) -> int:
     """Skills over a robot whose world is ``vap-bt sim``'s (:class:`RemoteRobot`); the camera
     robot's server hosts the camera service, built on the same kit as its skills."""
+    from vap_bt import plugins
     from vap_bt.app.runner import make_camera
     from vap_bt.transport.drivers import HostWatch, host_token_key
+    from vap_bt.transport.server import SkillServer
     from vap_bt.app.embedded import CAMERA_ROBOT
     from vap_bt.app.remote_robot import RemoteRobot
 
@@ -164,6 +171,8 @@ def add_skills_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def run_skills(args: argparse.Namespace) -> int:
+    from vap_bt import plugins
+
     found = plugins.discover()
     rows = [
         {"action": e.action, "robot": e.robot, "resource": e.resource, "entry_point": e.name,
@@ -210,6 +219,8 @@ class _ServerLog(logging.StreamHandler):
 def _show_goal_log() -> None:
     """The skill servers' goal lines (INFO: accepted, feedback, result, cancel) on stderr, however
     quiet the rest of the logging is (once per process, in this format only)."""
+    from vap_bt.transport import server as server_module
+
     logger = logging.getLogger(server_module.__name__)
     for old in [h for h in logger.handlers if isinstance(h, _ServerLog)]:
         logger.removeHandler(old)

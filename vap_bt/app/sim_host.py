@@ -30,17 +30,11 @@ import sys
 import threading
 import time
 
-from vap_bt import plugins
 from vap_bt.app.arguments import add_settings
 from vap_bt.errors import EXIT_OK, InputError, VapBtError
 from vap_bt.settings import Hosting, RunConfig, Zenoh
 from vap_bt.transport import keys
 from vap_bt.transport.config import SIM_ENDPOINT, describe, open_session, settings_from_args
-from vap_bt.transport.drivers import DriverServer
-from vap_bt.app.embedded import CAMERA_ROBOT
-from vap_bt.app.locked_world import LockedWorld
-from vap_bt.transport.world_hooks import ActionHookServer
-from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
 
 #: the command's one-line description for ``--help``: this docstring's first line, as plain text
 DESCRIPTION = __doc__.split("\n\n")[0].replace("``", "")
@@ -74,8 +68,14 @@ def _say(what: str) -> None:
 
 
 def run_sim(args: argparse.Namespace) -> int:
-    from vap_bt import taskfile
+    # the world's servers here, not at the top: the command line defines this command's arguments on every start
+    from vap_bt import plugins, taskfile
     from vap_bt.app import runner
+    from vap_bt.app.embedded import CAMERA_ROBOT
+    from vap_bt.app.locked_world import LockedWorld
+    from vap_bt.transport.drivers import DriverServer
+    from vap_bt.transport.world_hooks import ActionHookServer
+    from vap_bt.transport.world_services import OracleServer, VlmServer, WorldFacts
 
     task = taskfile.load(args.household)
     if task.spec.scene is None:

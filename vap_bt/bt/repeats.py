@@ -24,9 +24,11 @@ situation Table II injects can use).
 from __future__ import annotations
 
 from collections import Counter
+from typing import TYPE_CHECKING
 
-from vap_bt.bt.context import Situation
-from vap_bt.domain.atoms import Atom
+if TYPE_CHECKING:  # for annotations only: the command line reads MAX_REPLANS without the executive
+    from vap_bt.bt.context import Situation
+    from vap_bt.domain.atoms import Atom
 
 #: the occurrence of an identical situation from an identical belief that re-surveys first
 LOOK_AFRESH = 2

@@ -26,14 +26,17 @@ condition's positive literals.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy import sparse
 
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.formula import FALSE, TRUE, Formula, FormulaTooLarge, assume, dnf
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.domain.task import PlanningTask
+
+if TYPE_CHECKING:
+    from scipy import sparse
 
 #: at most this many disjuncts per precondition or effect condition (beyond: Fast Downward only)
 DNF_LIMIT = 4096
@@ -197,6 +200,8 @@ def _effects(a: GroundAction, known, limit: int):
 
 
 def _matrix(rows: list[list[int]], width: int) -> sparse.csr_matrix:
+    from scipy import sparse  # on first grounding: a command that only asks Fast Downward never pays for scipy
+
     indptr = np.cumsum([0] + [len(r) for r in rows])
     data = np.ones(int(indptr[-1]), dtype=np.int32)
     cols = np.fromiter((c for r in rows for c in r), dtype=np.int64, count=int(indptr[-1]))

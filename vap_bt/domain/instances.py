@@ -32,6 +32,7 @@ import threading
 from dataclasses import dataclass
 from typing import Iterator
 
+from vap_bt.domain import up_engines
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.formula import FALSE, TRUE, And, Formula, bind, conjunction, from_up
 from vap_bt.domain.knowledge import ConditionalEffect, GroundAction
@@ -59,6 +60,7 @@ class UPInstances:
     """Ground instances of one unified-planning problem's actions."""
 
     def __init__(self, problem, has_quantifiers: bool = True) -> None:
+        up_engines.load()
         from unified_planning.engines import CompilationKind
         from unified_planning.engines.compilers import QuantifiersRemover
         from unified_planning.model.walkers import Simplifier

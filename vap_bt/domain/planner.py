@@ -40,7 +40,7 @@ import warnings
 from dataclasses import dataclass, field
 from typing import Literal as Lit
 
-from vap_bt.domain import validation
+from vap_bt.domain import up_engines, validation
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.formula import FormulaTooLarge
 from vap_bt.domain.grounding import GroundedTask, ground
@@ -189,6 +189,7 @@ class Planner:
             return self._fast_downward_with(task, {}, self.fd_timeout_s * (1 - COST_AWARE_SHARE))
 
     def _fast_downward_with(self, task: PlanningTask, params: dict, timeout: float) -> tuple[list[GroundAction], str]:
+        up_engines.load()
         from unified_planning.engines import PlanGenerationResultStatus as S
 
         with warnings.catch_warnings():
@@ -225,6 +226,7 @@ def private_fast_downward(**params):
     """unified-planning's Fast Downward engine with the translator's output in the engine's own
     temporary folder, beside its plan file, instead of the working directory (see the module's
     docstring)."""
+    up_engines.load()
     from up_fast_downward import FastDownwardPDDLPlanner
 
     class PrivateFastDownward(FastDownwardPDDLPlanner):

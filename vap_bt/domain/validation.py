@@ -13,6 +13,7 @@ from __future__ import annotations
 import warnings
 from dataclasses import dataclass
 
+from vap_bt.domain import up_engines
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.domain.task import PlanningTask
 
@@ -37,14 +38,15 @@ def up_plan(problem, actions: list[GroundAction]):
 
 def validate(task: PlanningTask, actions: list[GroundAction]) -> Verdict:
     """Check ``actions`` from ``task.init`` to ``task.goal`` with unified-planning's validator."""
+    up_engines.load()
     from unified_planning.engines import ValidationResultStatus
-    from unified_planning.shortcuts import PlanValidator
+    from unified_planning.environment import get_environment  # not .shortcuts, which imports all of UP
 
     problem = task.to_up()
     with warnings.catch_warnings():
         # unified-planning cannot tell whether integral ``number`` costs (reals) suit its validator
         warnings.simplefilter("ignore")
-        with PlanValidator(name="sequential_plan_validator") as v:
+        with get_environment().factory.PlanValidator(name="sequential_plan_validator") as v:
             result = v.validate(problem, up_plan(problem, actions))
     if result.status != ValidationResultStatus.VALID:
         return Verdict(False, "; ".join(m.message for m in result.log_messages) or result.status.name)

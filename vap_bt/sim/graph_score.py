@@ -31,7 +31,6 @@ from itertools import product
 from typing import Mapping
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.task import PlanningTask
@@ -88,6 +87,8 @@ def match_instances(oracle: Oracle, items: list[str], told: set[str], centroids:
                     cost[i, j] = float(np.linalg.norm(np.subtract(c, p)))
                 else:  # no geometry: the matching that makes the most believed relations true
                     cost[i, j] = -sum(_renamed(a, {n: m}) in true for a in believed if a.args and a.args[0] == n)
+        from scipy.optimize import linear_sum_assignment  # on first use: scipy.optimize costs 0.6 s at start-up
+
         rows, cols = linear_sum_assignment(cost)
         out.update({group[i]: group[j] for i, j in zip(rows, cols)})
     return out
