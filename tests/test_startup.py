@@ -57,8 +57,8 @@ def test_help_imports_none_of_the_heavy_modules_nor_unified_planning():
                              + "\nexcept SystemExit as stop:\n    assert stop.code == 0")
     assert "usage: vap-bt" in out
     assert not packages(modules) & {*HEAVY, "unified_planning", "py_trees"}
-    assert "vap_bt.bt.repeats" in modules  # for --max-replans' default, without the executive it annotates
-    assert not modules & {"vap_bt.bt.context", "vap_bt.perception.evidence", "vap_bt.perception.profile"}
+    assert "vap_bt.settings" in modules  # every flag and default comes from the settings, nothing else of the executive
+    assert not modules & {"vap_bt.bt.repeats", "vap_bt.bt.context", "vap_bt.perception.evidence", "vap_bt.perception.profile"}
     assert "numpy" not in modules and not modules & SERVERS
 
 

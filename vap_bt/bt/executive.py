@@ -581,7 +581,8 @@ class Executive:
         """Tick a recovery's tree until its steps are done (drawn for the live view when ``out``
         counts the episode's ticks); False when the time budget ran out first. Halted however it
         ends, so no step is left in flight."""
-        if out is not None:  # drawn before its first tick: what it is about comes before what it does
+        if out is not None:  # drawn before its first tick, at a tick of its own on the live view's
+            out.ticks += 1  # timeline: what it is about comes before what it does
             self.on_tree(tree, out.ticks)
         try:
             while True:
