@@ -54,7 +54,7 @@ import py_trees
 from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
-from vap_bt.bt.inflight import cancel_all
+from vap_bt.bt.inflight import cancel_all, in_flight
 from vap_bt.bt.record import Situation, Verification
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
@@ -140,7 +140,7 @@ class ActivePerception(py_trees.decorators.Decorator):
             if self.verify.status == Status.RUNNING:
                 return Status.RUNNING
             return self._weigh()
-        if not self._job.done():
+        if in_flight(self._job):
             return Status.RUNNING
         return {"choose": self._chosen, "move": self._moved, "feel": self._body_answered}[self._stage]()
 

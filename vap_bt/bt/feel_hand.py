@@ -32,7 +32,7 @@ from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.record import Situation
-from vap_bt.bt.inflight import cancel_all
+from vap_bt.bt.inflight import cancel_all, in_flight
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.scene.belief import ROBOT_PREDICATES
@@ -60,7 +60,7 @@ class FeelHand(py_trees.behaviour.Behaviour):
     def update(self) -> Status:
         if self._job is None:
             return Status.SUCCESS
-        if not self._job.done():
+        if in_flight(self._job):
             return Status.RUNNING
         atom = self._job.result()  # a TransportError (the state service gone) ends the episode
         if atom is None:

@@ -16,6 +16,7 @@ process, in its own time, whatever the rest of the work does.
 
 from __future__ import annotations
 
+import time
 from concurrent.futures import Executor, Future, ThreadPoolExecutor
 from typing import Any, Callable
 
@@ -47,6 +48,17 @@ def body_executor(executor: Executor) -> Executor:
     if isinstance(executor, InlineExecutor):
         return ThreadPoolExecutor(1, thread_name_prefix="body")
     return executor
+
+
+def in_flight(f: Future) -> bool:
+    """Whether ``f`` is not done yet; if not, the ticking thread lets the interpreter go for a
+    moment (``sleep(0)``: a yield, not a wait) so that a worker answering in-process — the
+    robot-state service of a simulated robot answers in microseconds — finishes now, instead of
+    after the interpreter's switch interval of ticks spent asking whether it has."""
+    if f.done():
+        return False
+    time.sleep(0)
+    return not f.done()
 
 
 def cancel_all(futures) -> None:
