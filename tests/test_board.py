@@ -18,7 +18,8 @@ import pytest
 from py_trees.common import Access, Status
 
 from vap_bt.app.runner import RunConfig, Session
-from vap_bt.bt import active_perception, apply_effects, execute_skill, feel_hand, goal_check, verify_predicate
+from vap_bt.bt import (active_perception, apply_effects, execute_skill, feel_hand, goal_check, recovery,
+                       verify_predicate)
 from vap_bt.bt.board import KEYS, Board, BoardClient
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.execute_skill import ExecuteSkill
@@ -31,13 +32,15 @@ from vap_bt.taskfile import load
 
 from conftest import TREES, household_profile
 
-#: the modules whose behaviours the compiler puts in a plan's tree
-MODULES = (active_perception, apply_effects, execute_skill, feel_hand, goal_check, verify_predicate)
+#: the modules whose behaviours the executive ticks: a plan's tree, and a recovery's
+MODULES = (active_perception, apply_effects, execute_skill, feel_hand, goal_check, recovery, verify_predicate)
 
 
 def behaviour_classes() -> list[type]:
+    """The behaviours and decorators the modules define (a composite only orders its children)."""
     return [c for m in MODULES for _, c in inspect.getmembers(m, inspect.isclass)
-            if issubclass(c, py_trees.behaviour.Behaviour) and c.__module__ == m.__name__]
+            if issubclass(c, py_trees.behaviour.Behaviour) and not issubclass(c, py_trees.composites.Composite)
+            and c.__module__ == m.__name__]
 
 
 def test_a_client_allows_only_what_was_declared():
