@@ -99,7 +99,7 @@ class ExecutionContext:
     board: Board = field(default_factory=Board)
     t0: float = field(default_factory=time.perf_counter)
     #: where the body's word is asked (:meth:`ask_body`): made on first use, closed with :meth:`close`
-    _body: Executor | None = field(default=None, repr=False)
+    _body: Executor | None = field(default=None, init=False, repr=False)
 
     def submit(self, fn, *args) -> Future:
         return self.executor.submit(fn, *args)
