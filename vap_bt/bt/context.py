@@ -104,13 +104,13 @@ class ExecutionContext:
     def submit(self, fn, *args) -> Future:
         return self.executor.submit(fn, *args)
 
-    def ask_body(self, atoms_of: Callable[..., Any], *args) -> Future:
+    def ask_body(self, fn: Callable[..., Any], *args) -> Future:
         """Ask the robot's state service in flight, always off the ticking thread: however the
         context's other work runs (inline, in-process), the body is another process's to answer,
         and a slow or silent one must not hold a tick (:func:`~vap_bt.bt.inflight.body_executor`)."""
         if self._body is None:
             self._body = body_executor(self.executor)
-        return self._body.submit(atoms_of, *args)
+        return self._body.submit(fn, *args)
 
     def close(self) -> None:
         """Let go of the body's worker (a query in flight finishes unheard)."""
