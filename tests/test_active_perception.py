@@ -1,4 +1,4 @@
-"""ActivePerception on its own: a decorator that reads its child's status and typed round.
+"""ActivePerception on its own: a decorator that reads its child's status and typed look.
 
 The child here is scripted — each run hands the decorator the next :class:`Round` of a list — and
 so are the camera (which directions it can move to) and the VLM (which direction it suggests).
@@ -11,9 +11,11 @@ import py_trees
 from py_trees.common import Status
 
 from vap_bt.bt.active_perception import ActivePerception
+from vap_bt.bt.board import Board
 from vap_bt.bt.context import ExecutionContext, Verified
 from vap_bt.domain.atoms import Atom
 from vap_bt.perception.evidence import Calibration
+from vap_bt.perception.judgement import Look
 from vap_bt.perception.verification import Round
 from vap_bt.perception.viewpoints import GREEDY_ORDER, ViewpointStrategy
 from vap_bt.perception.vlm import Answer
@@ -42,21 +44,21 @@ def view(answers: str, sufficient: bool | None, unshown: tuple[str, ...] = ()) -
 
 
 class ScriptedCheck(py_trees.behaviour.Behaviour):
-    """A check whose n-th run produces the n-th scripted round."""
+    """A check whose n-th run produces the n-th scripted round (a look at one frame)."""
 
     def __init__(self, atom: Atom, rounds: list[Round], expected: bool = True) -> None:
         super().__init__(name=str(atom))
         self.atom, self.expected, self._script = atom, expected, list(rounds)
-        self.round: Round | None = None
-        self.observation = Frame("f", 0.0)
+        self.look: Look | None = None
         self.runs = 0
 
     def initialise(self) -> None:
-        self.round = None
+        self.look = None
 
     def update(self) -> Status:
-        self.round, self.runs = self._script[self.runs], self.runs + 1
-        return Status.SUCCESS if self.round.settled and self.round.vote == self.expected else Status.FAILURE
+        r, self.runs = self._script[self.runs], self.runs + 1
+        self.look = Look(r, Frame("f", 0.0))
+        return Status.SUCCESS if r.settled and r.vote == self.expected else Status.FAILURE
 
 
 class Camera:
@@ -86,7 +88,7 @@ def run(child: ScriptedCheck, camera: Camera, vlm=None, facts=(), budget: int = 
         doubted=()) -> tuple[Status, ActivePerception, ExecutionContext]:
     ctx = ExecutionContext(graph=SceneGraph.of_facts(set(facts)), vlm=vlm or Suggests("left"), camera=camera,
                            skills=None, budget=budget, felt=felt or (lambda graph, atom: None),
-                           viewpoints=ViewpointStrategy(strategy), second_look=second_look, doubted=set(doubted),
+                           viewpoints=ViewpointStrategy(strategy), second_look=second_look, board=Board(doubted=set(doubted)),
                            calibration=CAL, claim_risk=RISK)
     node = ActivePerception(ctx, child, phase, None, 0)
     for _ in range(50):
@@ -99,7 +101,7 @@ def run(child: ScriptedCheck, camera: Camera, vlm=None, facts=(), budget: int = 
 def test_a_settled_first_view_decides_without_moving():
     camera = Camera()
     status, node, ctx = run(ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True)]), camera)
-    assert status == Status.SUCCESS and camera.asked == [] and ctx.verifications[-1].outcome == "confirmed"
+    assert status == Status.SUCCESS and camera.asked == [] and ctx.board.verifications[-1].outcome == "confirmed"
 
 
 def test_a_view_that_settles_against_expectation_is_a_situation_once_a_second_view_agrees():
@@ -108,13 +110,13 @@ def test_a_view_that_settles_against_expectation_is_a_situation_once_a_second_vi
     camera = Camera()
     status, node, ctx = run(ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True), view("nnnny", False)]), camera)
     assert status == Status.FAILURE and camera.asked == ["left"]
-    assert ctx.situation.kind == "precondition" and ctx.situation.observed is False
+    assert ctx.board.situation.kind == "precondition" and ctx.board.situation.observed is False
 
 
 def test_a_surprise_the_second_view_does_not_repeat_is_not_believed():
     child = ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True), view("yyyyy", True), view("yyyyy", True)])
     status, node, ctx = run(child, Camera())
-    assert status == Status.SUCCESS and child.runs == 3 and ctx.verifications[-1].outcome == "confirmed"
+    assert status == Status.SUCCESS and child.runs == 3 and ctx.board.verifications[-1].outcome == "confirmed"
 
 
 def test_a_precondition_an_action_failed_on_is_confirmed_only_by_a_second_view():
@@ -124,15 +126,15 @@ def test_a_precondition_an_action_failed_on_is_confirmed_only_by_a_second_view()
     child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("nnnnn", True), view("nnnnn", True)])
     camera = Camera()
     status, node, ctx = run(child, camera, doubted={CUP_ON_TABLE})
-    assert status == Status.FAILURE and child.runs == 3 and ctx.situation.observed is False
-    assert CUP_ON_TABLE not in ctx.doubted
+    assert status == Status.FAILURE and child.runs == 3 and ctx.board.situation.observed is False
+    assert CUP_ON_TABLE not in ctx.board.doubted
     undoubted = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("nnnnn", True)])
     assert run(undoubted, Camera())[0] == Status.SUCCESS and undoubted.runs == 1
 
 
 def test_the_papers_rule_believes_the_first_settled_view():
     status, node, ctx = run(ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True)]), Camera(), second_look=False)
-    assert status == Status.FAILURE and ctx.situation.observed is False
+    assert status == Status.FAILURE and ctx.board.situation.observed is False
 
 
 def goal_check(earlier: list[Round], own: list[Round], calibration: Calibration = CAL) -> tuple[ExecutionContext, int]:
@@ -140,7 +142,7 @@ def goal_check(earlier: list[Round], own: list[Round], calibration: Calibration 
     budget to look at all of them); the context and how many of its own views it took."""
     ctx = ExecutionContext(graph=SceneGraph.of_facts(set()), vlm=Suggests("left"), camera=Camera(), skills=None,
                            budget=len(own) - 1, calibration=calibration, claim_risk=RISK)
-    ctx.verified.saw(CUP_ON_TABLE, earlier)
+    ctx.board.verified.saw(CUP_ON_TABLE, earlier)
     child = ScriptedCheck(CUP_ON_TABLE, own)
     node = ActivePerception(ctx, child, "goal", None, 0)
     for _ in range(30):
@@ -155,7 +157,7 @@ def test_a_goal_is_claimed_once_its_views_odds_reach_the_bound():
     likelihood ratio (here 3 for a settled view), and the claim waits for odds of 19 to 1 (a 5 %
     risk): two settled views are 9 to 1, three are 27 to 1."""
     ctx, runs = goal_check([], [view("yyyyy", True)] * 4)
-    assert ctx.verifications[-1].outcome == "confirmed" and runs == 3 and not ctx.unconfirmed_goal
+    assert ctx.board.verifications[-1].outcome == "confirmed" and runs == 3 and not ctx.board.unconfirmed_goal
 
 
 def test_a_goal_whose_views_disagree_is_not_claimed():
@@ -163,13 +165,13 @@ def test_a_goal_whose_views_disagree_is_not_claimed():
     times and "not sliced" three. Views against count against the claim — a split vote too,
     weakly — so mixed views leave the goal unconfirmed where the budget ends."""
     ctx, _ = goal_check([view("nnnnn", True)] * 3 + [view("yyyyy", True)] * 3, [view("yyyyy", True)] * 2)
-    assert ctx.verifications[-1].outcome == "unsettled" and ctx.unconfirmed_goal == [CUP_ON_TABLE]
+    assert ctx.board.verifications[-1].outcome == "unsettled" and ctx.board.unconfirmed_goal == [CUP_ON_TABLE]
     ctx, _ = goal_check([view("nnnnn", True)], [view("yyyyy", True)] * 3)  # 3 for, 1 against: 9 to 1
-    assert ctx.verifications[-1].outcome == "unsettled"
+    assert ctx.board.verifications[-1].outcome == "unsettled"
     ctx, _ = goal_check([view("nnnnn", True)], [view("yyyyy", True)] * 4)  # 4 for, 1 against: 27 to 1
-    assert ctx.verifications[-1].outcome == "confirmed"
+    assert ctx.board.verifications[-1].outcome == "confirmed"
     ctx, runs = goal_check([], [view("yyyyy", True), view("yynnn", True), view("yyyyy", True), view("yyyyy", True)])
-    assert ctx.verifications[-1].outcome == "unsettled" and runs == 4  # a split view against costs a view
+    assert ctx.board.verifications[-1].outcome == "unsettled" and runs == 4  # a split view against costs a view
 
 
 def test_a_relation_the_model_reads_well_is_claimed_on_fewer_views():
@@ -177,9 +179,9 @@ def test_a_relation_the_model_reads_well_is_claimed_on_fewer_views():
     settled views are right nine times in ten reaches it on the two views every goal needs."""
     strong = Calibration({"on": {"settled_yes": (900, 100), "settled_no": (100, 900)}})
     ctx, runs = goal_check([], [view("yyyyy", True)] * 3, strong)
-    assert ctx.verifications[-1].outcome == "confirmed" and runs == 2
+    assert ctx.board.verifications[-1].outcome == "confirmed" and runs == 2
     ctx, runs = goal_check([], [view("yyyyy", True)] * 2)
-    assert ctx.verifications[-1].outcome == "unsettled" and runs == 2
+    assert ctx.board.verifications[-1].outcome == "unsettled" and runs == 2
 
 
 def test_it_moves_where_the_vlm_says_until_a_view_settles():
@@ -210,8 +212,8 @@ def test_with_no_way_to_a_new_view_the_views_it_has_decide():
     camera = Camera(refused=set(GREEDY_ORDER))
     status, node, ctx = run(child, camera, Suggests("front"))
     assert child.runs == 1 and sorted(camera.asked) == sorted(GREEDY_ORDER)
-    assert ctx.verifications[-1].outcome == "unsettled" and status == Status.FAILURE
-    assert ctx.situation.kind == "unseen"
+    assert ctx.board.verifications[-1].outcome == "unsettled" and status == Status.FAILURE
+    assert ctx.board.situation.kind == "unseen"
 
 
 def test_what_the_hand_holds_is_not_looked_at_from_elsewhere_the_gripper_decides():
@@ -221,8 +223,8 @@ def test_what_the_hand_holds_is_not_looked_at_from_elsewhere_the_gripper_decides
     camera = Camera()
     status, node, ctx = run(child, camera, facts={HOLDING_CUP}, felt=lambda graph, atom: False)
     assert child.runs == 1 and camera.asked == []
-    assert status == Status.FAILURE and ctx.verifications[-1].outcome == "contradicted"
-    assert ctx.situation.observed is False
+    assert status == Status.FAILURE and ctx.board.verifications[-1].outcome == "contradicted"
+    assert ctx.board.situation.observed is False
 
 
 def test_the_greedy_round_skips_a_way_it_was_refused_before():
@@ -241,7 +243,7 @@ def test_a_goal_counts_the_views_an_earlier_check_judged_it_on():
     ctx = ExecutionContext(graph=SceneGraph.of_facts(set()), vlm=Suggests("left"), camera=camera, skills=None,
                            calibration=Calibration({"on": {"settled_yes": (900, 100), "settled_no": (100, 900)}}),
                            claim_risk=RISK)
-    ctx.verified.saw(CUP_ON_TABLE, [view("yyyyy", True)])
+    ctx.board.verified.saw(CUP_ON_TABLE, [view("yyyyy", True)])
     node = ActivePerception(ctx, child, "goal", None, 0)
     for _ in range(10):
         node.tick_once()

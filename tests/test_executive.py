@@ -270,17 +270,18 @@ def test_a_goal_the_camera_could_not_confirm_is_looked_at_again_before_success_i
     goal nor gives up on it — it goes to look at what the atom is about and checks the goal again
     (an empty plan, the goal's checks only); a goal no view ever confirms stops as stuck."""
     from vap_bt.bt.active_perception import ActivePerception
+    from vap_bt.perception.judgement import Settlement
 
     settle = ActivePerception._settle
 
     def blind_to_goal(times: int):
         left = {"n": times}
 
-        def weigh(self, value, outcome, basis=None):
+        def weigh(self, s: Settlement):
             if self.phase == "goal" and left["n"]:
                 left["n"] -= 1
-                return settle(self, self.verify.expected, "unsettled")
-            return settle(self, value, outcome, basis)
+                return settle(self, Settlement(self.subject.expected, "unsettled", "belief"))
+            return settle(self, s)
         return weigh
 
     task = load(TREES / "collect_cup.yaml")
@@ -312,13 +313,14 @@ def test_a_precondition_denied_that_leaves_no_plan_is_doubted_then_tried_against
     third time it is put on trial — the grasp runs against it, and the world, where the cup is in
     reach, lets it succeed. The verifications still say what the camera said."""
     from vap_bt.bt.active_perception import ActivePerception
+    from vap_bt.perception.judgement import Settlement
 
     settle = ActivePerception._settle
 
-    def out_of_reach(self, value, outcome, basis=None):
-        if self.phase == "pre" and self.verify.atom.predicate == "reachable":
-            return settle(self, False, "contradicted")
-        return settle(self, value, outcome, basis)
+    def out_of_reach(self, s: Settlement):
+        if self.phase == "pre" and self.atom.predicate == "reachable":
+            return settle(self, Settlement(False, "contradicted", "vlm"))
+        return settle(self, s)
 
     monkeypatch.setattr(ActivePerception, "_settle", out_of_reach)
     lines = []

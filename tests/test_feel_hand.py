@@ -3,6 +3,8 @@ holds when the fingers feel something belief does not."""
 
 from __future__ import annotations
 
+import time
+
 from py_trees.common import Status
 
 from vap_bt.bt.context import ExecutionContext, Situation
@@ -25,12 +27,17 @@ def after(action: tuple[str, tuple[str, ...]], held: str) -> tuple[ExecutionCont
     knowledge = load(TREES / "cut_lemon.yaml").planning.knowledge
     ctx = ExecutionContext(graph=SceneGraph.of_facts({Atom("holding", (held,)), SLICED}), vlm=None, camera=None,
                            skills=None, felt=lambda graph, atom: False)
-    ctx.verified.saw(SLICED, [Round(view="f1", vote=True, consistent=True, sufficient=True)])
+    ctx.board.verified.saw(SLICED, [Round(view="f1", vote=True, consistent=True, sufficient=True)])
     ground = knowledge.ground(*action)
     node = FeelHand(ctx, ground, 3)
-    node.tick_once()
-    assert node.status == Status.FAILURE and ctx.situation.atom == Atom("holding", (held,))
-    assert ctx.situation.kind == "effect" and ctx.situation.observed is False
+    for _ in range(500):  # the gripper is asked on a worker: tick until it has answered
+        node.tick_once()
+        if node.status != Status.RUNNING:
+            break
+        time.sleep(0.001)
+    ctx.close()
+    assert node.status == Status.FAILURE and ctx.board.situation.atom == Atom("holding", (held,))
+    assert ctx.board.situation.kind == "effect" and ctx.board.situation.observed is False
     return ctx, ground
 
 
@@ -40,20 +47,20 @@ def test_a_tool_lost_by_the_action_that_used_it_names_the_action_to_be_done_agai
     claimed on a whole lemon. The situation names the cut: belief takes it back (the executive
     undoes an effect situation's action) and the replan cuts again, from the cut on."""
     ctx, cut = after(("cut", ("lemon", "knife")), "knife")
-    assert ctx.situation.action == cut and ctx.situation.step == 3
-    assert ctx.verified.views(SLICED) == [] and not ctx.doubted
+    assert ctx.board.situation.action == cut and ctx.board.situation.step == 3
+    assert ctx.board.verified.views(SLICED) == [] and not ctx.board.doubted
 
 
 def test_an_item_lost_on_the_way_leaves_what_the_action_did_to_other_things():
     ctx, _ = after(("find", ("counter", "lemon", "kitchen")), "knife")
-    assert ctx.situation.action is None and ctx.situation.step == 4 and len(ctx.verified.views(SLICED)) == 1
+    assert ctx.board.situation.action is None and ctx.board.situation.step == 4 and len(ctx.board.verified.views(SLICED)) == 1
 
 
 def test_an_item_lost_while_carried_somewhere_leaves_the_robot_where_it_got():
     """The knife, held and named as what the robot stood at, fell while the base drove: the
     robot is in the kitchen all the same (a navigation is not taken back)."""
     ctx, _ = after(("navigate", ("living_room", "kitchen", "door_lk", "knife")), "knife")
-    assert ctx.situation.action is None and ctx.situation.step == 4 and len(ctx.verified.views(SLICED)) == 1
+    assert ctx.board.situation.action is None and ctx.board.situation.step == 4 and len(ctx.board.verified.views(SLICED)) == 1
 
 
 # -- the gripper holds something belief does not (Executive._held_after_all) ------------------

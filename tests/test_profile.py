@@ -57,7 +57,7 @@ def test_household_trees_check_exactly_the_vlm_sourced_atoms(cup):
     root = compile_plan(ctx, actions, task.goal, task.knowledge)
     asked = {b.atom.predicate for b in root.iterate() if isinstance(b, VerifyPredicate)}
     assert asked and asked <= HOUSEHOLD_ASKED
-    unchecked = {u.atom.predicate: u.reason for u in ctx.unchecked.values()}
+    unchecked = {u.atom.predicate: u.reason for u in ctx.board.unchecked.values()}
     assert "robot_in" in unchecked and "source proprioception" in unchecked["robot_in"]
     assert "in_room" in unchecked and "source none" in unchecked["in_room"]
     assert not set(unchecked) & HOUSEHOLD_ASKED

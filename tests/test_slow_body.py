@@ -11,15 +11,19 @@ from __future__ import annotations
 
 import threading
 import time
-from concurrent.futures import ThreadPoolExecutor
 
+import py_trees
 import pytest
 from py_trees.common import Status
 
+from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.feel_hand import FeelHand
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.domain.atoms import Atom
+from vap_bt.perception.judgement import Look
+from vap_bt.perception.verification import Round
+from vap_bt.robot.frame import Frame
 from vap_bt.app.runner import RunConfig, Session
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.sim.symbolic import SymbolicWorld
@@ -29,33 +33,78 @@ from conftest import TREES
 
 #: the longest a tick may take (the issue's bound) and how slow the state service is made here
 TICK_BOUND_S = 0.05
-SLOW_S = 0.4
+SLOW_S = 0.4  # the whole episode's state service
+SLOW_BODY_S = 2.0  # the single behaviours' (the issue's: the whole wait is ticked through)
 
 
-def test_feel_hand_asks_the_gripper_in_flight_and_waits_without_blocking():
+def ticks_while_the_body_answers(node, wait_s: float) -> list[float]:
+    """Tick ``node`` until it ends, 10 ms apart; the wall time of each tick (the first, which
+    sends the question, included)."""
+    took = []
+    t_end = time.perf_counter() + 5 * wait_s  # a bound, should the answer never come
+    while time.perf_counter() < t_end:
+        t = time.perf_counter()
+        node.tick_once()
+        took.append(time.perf_counter() - t)
+        if node.status != Status.RUNNING:
+            break
+        time.sleep(0.01)
+    return took
+
+
+def slow_gripper(asked: list, answer: bool | None):
+    """A robot-state service that takes SLOW_BODY_S to say ``answer`` of any atom."""
+    def felt(graph, atom):
+        asked.append(atom)
+        time.sleep(SLOW_BODY_S)
+        return answer
+    return felt
+
+
+def test_feel_hand_never_holds_a_tick_while_a_slow_state_service_answers():
+    """The context as the in-process runs make it (work done inline, no thread pool): the
+    gripper's query still runs off the ticking thread, so no tick over the 2 s wait is slow."""
     task = load(TREES / "collect_cup.yaml")
     action = task.planning.knowledge.ground("navigate", ("living_room", "kitchen", "door_lk", "cup"))
     asked = []
-
-    def felt(graph, atom):
-        asked.append(atom)
-        time.sleep(SLOW_S)
-        return False  # the hand came back empty
-
-    with ThreadPoolExecutor(2) as pool:
-        ctx = ExecutionContext(graph=SceneGraph.of_facts({Atom("holding", ("cup",))}), vlm=None, camera=None,
-                               skills=None, felt=felt, executor=pool)
+    ctx = ExecutionContext(graph=SceneGraph.of_facts({Atom("holding", ("cup",))}), vlm=None, camera=None,
+                           skills=None, felt=slow_gripper(asked, False))
+    try:
         node = FeelHand(ctx, action, 3)
-        t0 = time.perf_counter()
-        node.tick_once()
-        assert node.status == Status.RUNNING and time.perf_counter() - t0 < TICK_BOUND_S
-        while node.status == Status.RUNNING:
-            t = time.perf_counter()
-            node.tick_once()
-            assert time.perf_counter() - t < TICK_BOUND_S
-            time.sleep(0.01)
+        took = ticks_while_the_body_answers(node, SLOW_BODY_S)
+    finally:
+        ctx.close()
     assert node.status == Status.FAILURE and asked == [Atom("holding", ("cup",))]
-    assert ctx.situation.atom == Atom("holding", ("cup",)) and ctx.situation.observed is False
+    assert len(took) > 10 and max(took) < TICK_BOUND_S, max(took)  # it waited, ticking, and no tick waited
+    assert ctx.board.situation.atom == Atom("holding", ("cup",)) and ctx.board.situation.observed is False
+
+
+def test_a_hand_check_asks_the_gripper_without_holding_a_tick():
+    """A check about the hand the camera could not settle asks the gripper last (the same slow
+    service): no tick waits for the answer, and the answer settles the check."""
+    holding = Atom("holding", ("cup",))
+    asked = []
+    ctx = ExecutionContext(graph=SceneGraph.of_facts({holding}), vlm=None, camera=None, skills=None,
+                           felt=slow_gripper(asked, True), feels=lambda atom: atom == holding)
+    try:
+        node = ActivePerception(ctx, Unsure(holding), "eff", None, 0)
+        took = ticks_while_the_body_answers(node, SLOW_BODY_S)
+    finally:
+        ctx.close()
+    assert node.status == Status.SUCCESS and asked == [holding] and ctx.board.verifications[-1].outcome == "felt"
+    assert len(took) > 10 and max(took) < TICK_BOUND_S, max(took)
+
+
+class Unsure(py_trees.behaviour.Behaviour):
+    """A check of ``atom`` whose one view does not show it (the camera cannot tell)."""
+
+    def __init__(self, atom: Atom) -> None:
+        super().__init__(name=str(atom))
+        self.atom, self.expected, self.look = atom, True, None
+
+    def update(self) -> Status:
+        self.look = Look(Round(view="f", unshown=self.atom.args), Frame("f", 0.0))
+        return Status.FAILURE
 
 
 @pytest.mark.slow

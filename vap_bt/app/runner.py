@@ -484,16 +484,17 @@ class Session:
         parse = self.goal_parse
         goal = self.task.planning.goal if parse is None or parse.goal is None else parse.goal  # the goal pursued
         ctx = out.context
+        board = ctx.board  # what the episode's behaviours left
         world_name = self.world.name if self.world is not None else cfg.world
         detector = make_detector(cfg) if world_name == "symbolic" else getattr(self.world, "detector", None)
-        verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in ctx.verifications]
+        verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in board.verifications]
         return {
             "success": out.success,
             "goal_satisfied": self._holds(goal),
             "reason": out.reason,
             "no_initial_plan": out.no_initial_plan or None,
             # what the goal's last check rested on: looked at, felt, or belief alone
-            "goal_evidence": ctx.goal_evidence.to_json() if ctx.goal_evidence is not None else None,
+            "goal_evidence": board.goal_evidence.to_json() if board.goal_evidence is not None else None,
             "interrupted": interrupted,
             "phase": phase,
             "seed": cfg.seed,
@@ -511,7 +512,7 @@ class Session:
                            "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
                            "verifications": verification_counts(verifications)},
             "plans": [p.to_json() for p in out.plans],
-            "actions_executed": ctx.actions,
+            "actions_executed": board.actions,
             "situations": [s.to_json() for s in out.situations],
             "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
                           "affected": list(i.affected)}
@@ -524,7 +525,7 @@ class Session:
             "verifications": verifications,
             "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints,
                          "claim_risk": cfg.claim_risk, "calibration": dict(ctx.calibration.source)},
-            "unchecked": [u.to_json() for u in ctx.unchecked.values()],
+            "unchecked": [u.to_json() for u in board.unchecked.values()],
             "belief_changes": [c.to_json() for c in out.graph.history],
             "wall_s": round(wall, 4),
             # actions' sent_s/done_s count from this time.perf_counter() (CLOCK_MONOTONIC on Linux:

@@ -1,11 +1,18 @@
 """ActivePerception: the retry decorator that moves the camera until a verification settles.
 
-It wraps a check — a child that, each time it runs, produces one typed :class:`Round` (today a
+It wraps a check — a child that says what it checks (:class:`Check`: an atom and the value the
+plan expects) and, each time it runs, produces one typed :class:`~vap_bt.perception.judgement.Look`
+(a round of questions and the frame it asked them of; today a
 :class:`~vap_bt.bt.verify_predicate.VerifyPredicate`) — and reads nothing of it but its status
-and that round (paper Alg. 2). After each round it weighs every view of the check so far
-(:func:`~vap_bt.perception.verification.verdict`): a settled round decides when no other view
-said otherwise, and views that disagree need more settled rounds to be outvoted. A decided value
-stands: SUCCESS if it matches the expectation; otherwise a *situation* is recorded on the context
+and that look (paper Alg. 2). The rules live in :mod:`vap_bt.perception`, each tested on its own:
+the views' verdict (:func:`~vap_bt.perception.judgement.judge`, over
+:func:`~vap_bt.perception.verification.verdict`), where to look next within the budget
+(:class:`~vap_bt.perception.viewpoints.ViewpointSearch`) and the body's word
+(:func:`~vap_bt.perception.judgement.conclude`); this decorator runs them as work in flight and
+maps what they say to a status. After each round it weighs every view of the check so far: a
+settled round decides when no other view said otherwise, and views that disagree need more
+settled rounds to be outvoted. A decided value
+stands: SUCCESS if it matches the expectation; otherwise a *situation* is written to the board
 and the decorator fails, which fails the plan's tree and hands control to the executive.
 
 While nothing is decided the decorator moves the camera — at most K times — and runs the child
@@ -15,30 +22,23 @@ flight like any other; the child is not ticked meanwhile. A direction the robot 
 is replaced at once by another (a frame from the same spot would show the same picture), and
 when no direction is left, or the check is about the hand or what it holds (the wrist camera
 moves with the hand: no base move shows it better), the views so far are all there are. Beyond
-the paper (``ctx.second_look``, on by default): a *surprise* — a value against the plan's
-expectation — and a *goal* value need a second view from a different picture that agrees (its
-answers consistent, sufficient or not) while the budget allows a move, since a model's errors
-are shared by every question about one picture; for a goal atom found as the goal wants it the
-views' log odds, each view weighed by the backend's measured calibration (and, for where a thing
-rests, by what the frame's detector reported of it), must also reach the claim's bound
-(:mod:`vap_bt.perception.evidence`: a sequential probability-ratio test whose chance of claiming
-an atom that does not hold is about ``ctx.claim_risk``, 5 %). A goal atom that the budget leaves
-short of it is unsettled (success is not claimed on it). With
-the budget spent and nothing decided, a value stands only if at least two views that showed the
-atom's objects voted for it and none against (a view whose paraphrases disagreed votes neither
-way: :func:`~vap_bt.perception.verification.verdict`); otherwise the check is *unsettled* (the paper
+the paper (``ctx.second_look``, on by default) a surprise and a goal value need a second view
+from a new picture, and a goal value odds that reach the claim's bound, while the budget allows
+a move (:mod:`vap_bt.perception.judgement`); with the budget spent and nothing decided, a value
+stands only if at least two views that showed the atom's objects voted for it and none against
+(:func:`~vap_bt.perception.verification.verdict`), otherwise the check is *unsettled* (the paper
 returns the last vote here; one vote from a view the VLM judged insufficient is too close to a
 guess to rewrite the scene graph).
 
 An unsettled *goal* atom withholds the executive's claim of success (the executive goes to look at
 it and checks the goal again: :func:`~vap_bt.bt.executive.unconfirmed_goal`); an unsettled effect lets the
 plan go on (the next action's preconditions are checked before it acts); an unsettled
-*precondition* first asks the body (``ctx.felt``: the gripper knows whether it holds
-something; where it is sure — the hand empty or not, an empty hand holding nothing — it also
-overrules a camera that settled otherwise), then follows the context's ``unseen`` policy — by default it is a situation of kind
+*precondition* first asks the body (``ctx.felt``, in flight on a worker: the gripper knows
+whether it holds something; where it is sure it also overrules a camera that settled otherwise),
+then follows the context's ``unseen`` policy — by default it is a situation of kind
 ``unseen``: the action does not run, the executive looks for what the check was about and
 replans. Under the lean protocol an atom verified earlier, that no action since could have
-changed, is not asked again (``ctx.verified``) — mid-plan only: the goal's check, on which
+changed, is not asked again (the board's ``verified``) — mid-plan only: the goal's check, on which
 success is claimed, looks under every protocol (an earlier check's views of the atom count
 beside its own, never instead of them). A reused value is recorded as ``reused``, apart from
 what was looked at or felt, and is never scored as verified
@@ -48,35 +48,63 @@ what was looked at or felt, and is never scored as verified
 from __future__ import annotations
 
 from concurrent.futures import Future
+from typing import ClassVar, Protocol
 
 import py_trees
-from py_trees.common import Status
+from py_trees.common import Access, Status
 
-from vap_bt.bt.context import BASIS, Basis, ExecutionContext, Outcome, Phase, Situation, Verification
-from vap_bt.bt.inflight import cancel_all
+from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.inflight import cancel_all, in_flight
+from vap_bt.bt.record import Situation, Verification
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.errors import TransportError
-from vap_bt.perception.evidence import claim_threshold
-from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, verdict, votes
+from vap_bt.perception import judgement
+from vap_bt.perception.judgement import Look, Phase, Settlement, Subject
+from vap_bt.perception.verification import Round, Verdict, choice, target_of
+from vap_bt.perception.viewpoints import ViewpointSearch
+
+
+class Check(Protocol):
+    """What ActivePerception decorates: a behaviour that checks ``atom`` against ``expected`` and
+    leaves what its last run saw in ``look`` (None until a run is done)."""
+
+    atom: Atom
+    expected: bool
+    look: Look | None
+    status: Status
 
 
 class ActivePerception(py_trees.decorators.Decorator):
     """Look again, from elsewhere, until a check's views decide (budget K)."""
 
+    KEYS: ClassVar[dict[str, Access]] = {
+        "verifications": Access.WRITE, "situation": Access.WRITE, "unconfirmed_goal": Access.WRITE,
+        "verified": Access.WRITE, "doubted": Access.WRITE, "on_belief": Access.READ, "on_trial": Access.READ}
+
     def __init__(self, ctx: ExecutionContext, child: py_trees.behaviour.Behaviour, phase: Phase,
                  action: GroundAction | None, step: int) -> None:
         super().__init__(name=f"look(K={ctx.budget})", child=child)
         self.ctx, self.phase, self.action, self.step = ctx, phase, action, step
-        self.verify = child
+        self.board = ctx.board.client(type(self).__name__, self.KEYS)
+        self.verify: Check = child
+        self.subject = Subject(child.atom, child.expected, phase)
+        self.rules = ctx.rules
         self.rounds: list[Round] = []
-        self.moves = 0
+        self.search = ViewpointSearch(ctx.viewpoints, ctx.budget)
         self._job: Future | None = None  # the viewpoint answer, the move or the gripper's word, in flight
         self._stage = "look"  # look | choose | move | feel
         self._verdict: Verdict | None = None  # the views' verdict while the gripper is asked
+        self._look: Look | None = None  # the child's last look (its frame is asked where to look next)
+        self._reused: bool | None = None  # an earlier check's value this one stands on (lean)
 
     @property
-    def atom(self):
-        return self.verify.atom
+    def atom(self) -> Atom:
+        return self.subject.atom
+
+    @property
+    def moves(self) -> int:
+        return self.search.moves
 
     @property
     def stage(self) -> str:
@@ -85,82 +113,73 @@ class ActivePerception(py_trees.decorators.Decorator):
         return self._stage
 
     def initialise(self) -> None:
-        self.rounds, self.moves, self._job, self._stage = [], 0, None, "look"
-        self._refused: set[str] = set()  # directions this check could not move to
-        self._tried: set[str] = set()  # directions this check moved to or was refused
+        self.rounds, self._job, self._stage, self._look = [], None, "look", None
+        self.search = ViewpointSearch(self.ctx.viewpoints, self.ctx.budget)
+        # lean: verified before, and nothing since could have changed it. Never the goal's check:
+        # success is claimed on it, so it looks (an earlier value is evidence only beside its own views)
+        self._reused = None if self.phase == "goal" else self.board.verified.get(self.atom)
 
     def tick(self):
+        """py_trees' decorator tick, but the child runs only while the check looks: while a
+        viewpoint is chosen or reached, or the gripper asked, it stays as its last run left it."""
         if self.status != Status.RUNNING:
             self.initialise()
-            # lean: verified before, and nothing since could have changed it. Never the goal's check:
-            # success is claimed on it, so it looks (an earlier value is evidence only beside its own views)
-            reused = None if self.phase == "goal" else self.ctx.verified.get(self.atom)
-            if reused is not None:
-                self._end_tick(self._settle(reused, "reused"))
-                yield self
-                return
-        if self._stage == "look":  # while a viewpoint is chosen or reached, the check waits
+        if self._stage == "look" and self._reused is None:
             yield from self.decorated.tick()
-        self._end_tick(self.update())
-        yield self
-
-    def _end_tick(self, new: Status) -> None:
+        new = self.update()
         if new != Status.RUNNING:
             self.stop(new)
         self.status = new
+        yield self
 
     def update(self) -> Status:
+        if self._reused is not None:
+            return self._settle(judgement.reused(self._reused))
         if self._stage == "look":
             if self.verify.status == Status.RUNNING:
                 return Status.RUNNING
             return self._weigh()
-        if self._stage == "choose":
-            return self._chosen()
-        if self._stage == "feel":
-            return self._body_answered()
-        return self._moved()
+        if in_flight(self._job):
+            return Status.RUNNING
+        return {"choose": self._chosen, "move": self._moved, "feel": self._body_answered}[self._stage]()
 
     def _weigh(self) -> Status:
-        r = self.verify.round
-        if r is None:  # the child did not run (interrupted)
+        look = self.verify.look
+        if look is None:  # the child did not run (interrupted)
             return Status.FAILURE
-        self.rounds.append(r)
-        return self._decide(exhausted=self.moves >= self.ctx.budget or self._in_hand())
+        self._look = look
+        self.rounds.append(look.round)
+        return self._decide(exhausted=self.search.spent or self._in_hand())
 
     def _in_hand(self) -> bool:
         """Whether the check is about the hand or what belief has in it: the wrist camera moves
         with the hand, so no move of the base shows it better (the gripper's feel decides what
         the first view could not). Another domain's 0-ary atoms (movie's ``have-chips``) are about
         the scene, which a move does show anew."""
-        roles = self.ctx.roles
         if not self.atom.args:
-            return self.atom.predicate in roles.hand
-        return roles.holding(self.atom.args[0]) in self.ctx.graph.facts
+            return self.atom.predicate in self.ctx.roles.hand
+        return self.ctx.roles.holding(self.atom.args[0]) in self.ctx.graph.facts
+
+    def _evidence(self) -> list[Round]:
+        return judgement.evidence(self.subject, self.rounds, self.board.verified.views(self.atom))
 
     def _decide(self, exhausted: bool) -> Status:
-        v = verdict(self._evidence(), exhausted)
-        if v is not None and v.outcome != "unsettled" and self._look_twice(v.value):
-            if not exhausted:
-                v = None  # one picture is one draw of the model's errors: another view before believing it
-            elif self.phase == "goal" and v.value == self.verify.expected:
-                v = Verdict(v.value, "unsettled")  # success is never claimed on views short of the bound
-        if v is None:
-            r = self.rounds[-1]
-            question = r.questions[0] if r.questions else self.ctx.profile.questions(self.atom, 1)[0]
-            nxt = self.ctx.viewpoints.next(self.moves, self.atom, question, target_of(self.atom))
+        v = judgement.judge(self.subject, self._evidence(), self.rules, exhausted, self.atom in self.board.doubted)
+        if v is None:  # look again: where, the strategy says (or the model, asked about the last frame)
+            nxt = self.search.next(self.atom, self.rounds[-1], self.ctx.profile)
             if isinstance(nxt, str):
                 return self._move(nxt)
-            self._job, self._stage = self.ctx.submit(self.ctx.vlm.ask, nxt, self.verify.observation), "choose"
-            return Status.RUNNING
+            return self._start("choose", self.ctx.submit(self.ctx.vlm.ask, nxt, self._look.frame))
         if self.ctx.feels(self.atom):  # the gripper may overrule: ask it, and wait without blocking
             self._verdict = v
-            self._job, self._stage = self.ctx.submit(self.ctx.felt, self.ctx.graph, self.atom), "feel"
-            return self._body_answered()  # done at once in process: no tick spent waiting
-        return self._conclude(v, None)
+            return self._start("feel", self.ctx.ask_body(self.ctx.felt, self.ctx.graph, self.atom))
+        return self._settle(judgement.conclude(self.subject, v, None))
+
+    def _start(self, stage: str, job: Future) -> Status:
+        self._stage, self._job = stage, job
+        return Status.RUNNING
 
     def _body_answered(self) -> Status:
-        if not self._job.done():
-            return Status.RUNNING
         try:
             felt = self._job.result()
         except TransportError:  # the robot's state service is gone: the episode ends
@@ -168,57 +187,9 @@ class ActivePerception(py_trees.decorators.Decorator):
         except Exception:  # noqa: BLE001 - no word from the body: the camera's verdict stands
             felt = None
         self._job = None
-        return self._conclude(self._verdict, felt)
-
-    def _conclude(self, v: Verdict, felt: bool | None) -> Status:
-        """The check's outcome from the views' verdict and the body's word (None: it has none)."""
-        if v.outcome == "unsettled":
-            if felt is not None:  # the camera could not tell; the gripper can
-                return self._feel(felt)
-            return self._settle(self.verify.expected, "unsettled")
-        if felt is not None and felt != v.value and (felt is False or not self.atom.args):
-            # the gripper is surer than a camera where it can be: fingers that closed on nothing
-            # hold nothing, and whether the hand is empty at all is theirs to say
-            return self._feel(felt)
-        return self._settle(v.value, "confirmed" if v.value == self.verify.expected else "contradicted")
-
-    def _look_twice(self, value: bool) -> bool:
-        """Whether a value one view gave needs a second view from a new picture first: a surprise
-        (it would correct belief and make the robot replan) or a goal (success would be claimed on
-        it), when the context asks for second looks. A model's errors belong to the picture — its
-        five paraphrases can agree and be wrong — so only another view is a second opinion
-        (docs/perception.md): one more view that showed the atom's objects and whose answers
-        agreed on the same value, sufficient or not — and for a goal atom found as the goal
-        wants it, on which success will be claimed, that and views whose log odds reach the
-        claim's bound (:mod:`vap_bt.perception.evidence`: every view weighed by the backend's
-        calibration, views against included, so that a model weak on a relation must show it
-        more often; the chance of claiming an atom that does not hold stays about
-        ``ctx.claim_risk``). An atom in doubt
-        (``ctx.doubted``: a precondition of an action that failed when it last ran) is treated as
-        a surprise even when confirmed: the failure is evidence against it (an oven the survey
-        took for open, into which no arm pose reaches)."""
-        doubted = self.atom in self.ctx.doubted
-        if not self.ctx.second_look or (value == self.verify.expected and self.phase != "goal" and not doubted):
-            return False
-        rounds = distinct(self._evidence())
-        voted = votes(rounds)
-        agreeing = voted.count(value)
-        if self.phase == "goal" and value == self.verify.expected:  # success is claimed on it
-            odds = self.ctx.calibration.log_odds(self.atom.predicate, rounds)
-            return agreeing < 2 or (odds if value else -odds) < claim_threshold(self.ctx.claim_risk)
-        return agreeing < 2
-
-    def _evidence(self) -> list[Round]:
-        """The views this check weighs: its own; for a goal atom also those earlier checks judged
-        it on since the last action that could change it (a cup confirmed filled at the sink,
-        whose inside no view into the microwave shows, is still filled)."""
-        if self.phase != "goal":
-            return self.rounds
-        return [*(r for r in self.ctx.verified.views(self.atom) if not any(r is o for o in self.rounds)), *self.rounds]
+        return self._settle(judgement.conclude(self.subject, self._verdict, felt))
 
     def _chosen(self) -> Status:
-        if not self._job.done():
-            return Status.RUNNING
         try:
             direction = choice(self._job.result())
         except TransportError:  # the VLM's server is gone: the episode ends (verify_predicate._answer)
@@ -229,20 +200,15 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     def _move(self, direction: str | None) -> Status:
         r = self.rounds[-1]
-        if direction is None or direction in self._refused:  # no answer, or a way already refused
-            direction = self.ctx.viewpoints.instead(self._tried)
+        direction = self.search.pick(direction)
         if direction is None:  # no way to a new view from here: what the views said is all there is
             r.moved = False
             return self._decide(exhausted=True)
         r.direction = direction
-        self._tried.add(direction)
         aim = self.ctx.aim(self.ctx.graph, (target_of(self.atom), *self.atom.args))
-        self._job, self._stage = self.ctx.submit(self.ctx.camera.move_view, aim, direction), "move"
-        return Status.RUNNING
+        return self._start("move", self.ctx.submit(self.ctx.camera.move_view, aim, direction))
 
     def _moved(self) -> Status:
-        if not self._job.done():
-            return Status.RUNNING
         r = self.rounds[-1]
         try:
             r.moved = bool(self._job.result())
@@ -250,10 +216,10 @@ class ActivePerception(py_trees.decorators.Decorator):
             r.moved = False
         self._job = None
         if not r.moved:  # the same spot would show the same picture: try another way at once
-            self._refused.add(r.direction)
+            self.search.refuse(r.direction)
             r.refused += (r.direction,)
             return self._move(None)
-        self.moves += 1
+        self.search.moved()
         self._stage = "look"
         return Status.RUNNING  # the child runs again next tick, from the new view
 
@@ -262,35 +228,33 @@ class ActivePerception(py_trees.decorators.Decorator):
             cancel_all([self._job])
             self._job, self._stage = None, "look"
 
-    def _feel(self, felt: bool) -> Status:
-        """Settle on the gripper's word (it can contradict the plan as well as confirm it)."""
-        return self._settle(felt, "felt" if felt == self.verify.expected else "contradicted", "proprioception")
-
-    def _settle(self, value: bool, outcome: Outcome, basis: Basis | None = None) -> Status:
-        v = self.verify
-        self.ctx.verified.saw(v.atom, self.rounds)
-        self.ctx.verifications.append(Verification(self.phase, str(self.action) if self.action else "goal",
-                                                   v.atom, v.expected, value, outcome, list(self.rounds),
-                                                   basis or BASIS[outcome]))
-        self.ctx.record(self.ctx.verifications[-1])
-        if outcome != "unsettled":
-            self.ctx.doubted.discard(v.atom)
-        if outcome in ("confirmed", "contradicted", "felt"):
-            self.ctx.verified.remember(v.atom, value)
-        if self.phase == "goal" and outcome == "unsettled":
-            self.ctx.unconfirmed_goal.append(v.atom)
-        if outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on" \
-                and v.atom not in self.ctx.on_belief:
-            self.ctx.situation = Situation("unseen", self.action, self.step, v.atom, v.expected, None,
-                                           detail=f"could not see whether {v.atom} holds")
-            self.ctx.progress(f"    situation: could not see {'' if v.expected else 'not '}{v.atom}")
+    def _settle(self, s: Settlement) -> Status:
+        """Record the check and map its settlement to a status: a situation (FAILURE) where the
+        plan must not go on, SUCCESS otherwise."""
+        atom, expected, board = self.atom, self.subject.expected, self.board
+        board.verified.saw(atom, self.rounds)
+        v = Verification(self.phase, str(self.action) if self.action else "goal", atom, expected, s.value,
+                         s.outcome, list(self.rounds), s.basis)
+        board.verifications.append(v)
+        self.ctx.record(v)
+        if s.outcome != "unsettled":
+            board.doubted.discard(atom)
+        if s.outcome in ("confirmed", "contradicted", "felt"):
+            board.verified.remember(atom, s.value)
+        if self.phase == "goal" and s.outcome == "unsettled":
+            board.unconfirmed_goal.append(atom)
+        if s.outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on" \
+                and atom not in board.on_belief:
+            board.situation = Situation("unseen", self.action, self.step, atom, expected, None,
+                                        detail=f"could not see whether {atom} holds")
+            self.ctx.progress(f"    situation: could not see {'' if expected else 'not '}{atom}")
             return Status.FAILURE
-        if outcome != "contradicted":  # confirmed, felt, reused, or unsettled where the plan may go on
+        if s.outcome != "contradicted":  # confirmed, felt, reused, or unsettled where the plan may go on
             return Status.SUCCESS
-        if self.phase == "pre" and v.atom in self.ctx.on_trial:
-            self.ctx.progress(f"    {v.atom} observed {value} again: trying {self.action} against it")
+        if self.phase == "pre" and atom in board.on_trial:
+            self.ctx.progress(f"    {atom} observed {s.value} again: trying {self.action} against it")
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]
-        self.ctx.situation = Situation(kind, self.action, self.step, v.atom, v.expected, value)
-        self.ctx.progress(f"    situation: {kind} {'' if v.expected else 'not '}{v.atom} observed {value}")
+        board.situation = Situation(kind, self.action, self.step, atom, expected, s.value)
+        self.ctx.progress(f"    situation: {kind} {'' if expected else 'not '}{atom} observed {s.value}")
         return Status.FAILURE

@@ -10,8 +10,10 @@ says so if belief made a different one.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 import py_trees
-from py_trees.common import Status
+from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.domain.knowledge import GroundAction, StateDiff
@@ -20,9 +22,12 @@ from vap_bt.domain.knowledge import GroundAction, StateDiff
 class ApplyEffects(py_trees.behaviour.Behaviour):
     """Apply the action's effects to the scene graph."""
 
+    KEYS: ClassVar[dict[str, Access]] = {}
+
     def __init__(self, ctx: ExecutionContext, action: GroundAction, expected: StateDiff | None = None) -> None:
         super().__init__(name="apply effects")
         self.ctx, self.action, self.expected = ctx, action, expected
+        self.board = ctx.board.client(type(self).__name__, self.KEYS)
 
     def update(self) -> Status:
         change = self.ctx.graph.apply(self.action)

@@ -21,7 +21,7 @@ makes there — every atom it adds (the paper's Eff+, conditional effects includ
 conditions are expected to hold) and the deleted atoms the rest of the plan needs false. Of
 those, the camera is asked about the atoms whose predicate the domain's perception profile
 (:mod:`vap_bt.perception.profile`) sources from the VLM; every other atom — proprioception's,
-the map's (rigid facts, by default), or never checked — is recorded on the context as unchecked,
+the map's (rigid facts, by default), or never checked — is recorded on the board as unchecked,
 with the profile's reason, for the report. After an action that leaves belief holding something,
 the gripper is asked whether it still does (:class:`~vap_bt.bt.feel_hand.FeelHand`, the effect
 phase's last node: proprioception, no question to the camera). Before claiming success, the goal's
@@ -70,7 +70,7 @@ def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction 
             asked.append(l)
         else:
             name = str(action) if action else "goal"
-            ctx.unchecked.setdefault((phase, name, l), Unchecked(phase, name, l.atom, l.positive, reason))
+            ctx.board.unchecked.setdefault((phase, name, l), Unchecked(phase, name, l.atom, l.positive, reason))
     if not asked:
         return []
     return [py_trees.composites.Sequence(phase, memory=True, children=[

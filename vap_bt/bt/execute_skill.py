@@ -10,18 +10,27 @@ kind ``execution``.
 
 from __future__ import annotations
 
-import py_trees
-from py_trees.common import Status
+from typing import ClassVar
 
-from vap_bt.bt.context import ExecutionContext, Situation
+import py_trees
+from py_trees.common import Access, Status
+
+from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.record import Situation
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.skill import GoalHandle, GoalState
 
 
 class ExecuteSkill(py_trees.behaviour.Behaviour):
+    """Send one plan action to its skill server and follow the goal to its result."""
+
+    KEYS: ClassVar[dict[str, Access]] = {"verified": Access.WRITE, "actions": Access.WRITE,
+                                         "situation": Access.WRITE}
+
     def __init__(self, ctx: ExecutionContext, action: GroundAction, step: int) -> None:
         super().__init__(name=f"execute {action}")
         self.ctx, self.action, self.step = ctx, action, step
+        self.board = ctx.board.client(type(self).__name__, self.KEYS)
         self.handle: GoalHandle | None = None
         self._sent_at = 0.0
 
@@ -39,9 +48,9 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         if not state.terminal:
             return Status.RUNNING
         result = self.handle.result()
-        self.ctx.verified.executed(self.action)  # whatever it did, what it touched must be looked at again
+        self.board.verified.executed(self.action)  # whatever it did, what it touched must be looked at again
         ok = state == GoalState.SUCCEEDED and result is not None and result.success
-        self.ctx.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
+        self.board.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
                                  "message": result.message if result else "", "sent_s": self._sent_at,
                                  "done_s": self.ctx.now()})
         self.ctx.progress(f"  a{self.step}: {state.value} in {(self.ctx.now() - self._sent_at) * 1000:.0f} ms"
@@ -49,7 +58,7 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         if ok:
             return Status.SUCCESS
         detail = result.message if result else state.value
-        self.ctx.situation = Situation("execution", self.action, self.step, detail=detail)
+        self.board.situation = Situation("execution", self.action, self.step, detail=detail)
         self.ctx.progress(f"    situation: execution of {self.action} failed ({detail})")
         return Status.FAILURE
 

@@ -58,7 +58,9 @@ import py_trees
 from py_trees.common import Status
 
 from vap_bt.bt.compiler import compile_plan
-from vap_bt.bt.context import ExecutionContext, Situation, Verification, Verified, VerifyMode
+from vap_bt.bt.board import Board
+from vap_bt.bt.context import ExecutionContext, VerifyMode
+from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.bt.recovery import Halting, Step, recovery_tree
@@ -231,7 +233,7 @@ class Executive:
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
-                               verified=Verified(self.s.protocol.reuse, self.roles.hand), executor=executor,
+                               board=Board(verified=Verified(self.s.protocol.reuse, self.roles.hand)), executor=executor,
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
@@ -253,13 +255,14 @@ class Executive:
             return self._tick_until_done(tree, ctx, plan, out, time.monotonic() + self.s.max_seconds)
         finally:
             self.halt(tree)
+            ctx.close()  # the body's worker, if a check asked the gripper
 
     def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome,
                          deadline: float) -> EpisodeOutcome:
         # the tree ticked last is halted however this ends (a replan replaces the one run() built,
         # and a time budget or Ctrl-C may come while the replanned tree has a goal in flight)
         try:
-            graph = out.graph
+            graph, board = out.graph, ctx.board
             repeats = RepeatWatch()
             doubted: Counter[Atom] = Counter()  # observations doubted because they left no plan
             while time.monotonic() < deadline:
@@ -267,7 +270,7 @@ class Executive:
                 out.ticks += 1
                 self.on_tree(tree, out.ticks)
                 status = tree.root.status
-                if status == Status.SUCCESS and not ctx.unconfirmed_goal:
+                if status == Status.SUCCESS and not board.unconfirmed_goal:
                     out.success, out.reason = True, "goal reached"
                     return out
                 if status == Status.RUNNING:
@@ -275,10 +278,10 @@ class Executive:
                         time.sleep(self.s.tick_period_s)
                     continue
                 if status == Status.SUCCESS:  # the tree got through, but the camera could not confirm the goal
-                    situation = unconfirmed_goal(ctx.unconfirmed_goal, len(plan.actions))
-                    ctx.unconfirmed_goal.clear()
+                    situation = unconfirmed_goal(board.unconfirmed_goal, len(plan.actions))
+                    board.unconfirmed_goal.clear()
                 else:
-                    situation, ctx.situation = ctx.situation, None
+                    situation, board.situation = board.situation, None
                 if situation is None:
                     out.reason = "the tree failed without a situation"
                     return out
@@ -291,10 +294,10 @@ class Executive:
                     return out
                 times = repeats.count(situation, graph.state())
                 if stuck(situation, times) and situation.kind == "unseen" and situation.action is not None \
-                        and situation.atom not in ctx.on_belief:
+                        and situation.atom not in board.on_belief:
                     # looked again and again, and no view shows it well enough: act on belief
                     # (the action's effects are checked) rather than give the episode up
-                    ctx.on_belief.add(situation.atom)
+                    board.on_belief.add(situation.atom)
                     self.progress(f"    could not see {situation.atom} after {times} looks: acting on belief")
                 elif stuck(situation, times):
                     out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
@@ -305,15 +308,15 @@ class Executive:
                     return out
                 t0 = time.perf_counter()
                 if situation.kind == "execution" and situation.action is not None:
-                    ctx.doubted |= {lit.atom for lit in situation.action.preconditions
-                                    if lit.positive and lit.atom.predicate != self.roles.in_view}
+                    board.doubted |= {lit.atom for lit in situation.action.preconditions
+                                      if lit.positive and lit.atom.predicate != self.roles.in_view}
                 recovered, survey = self._recover(graph, situation, times, out, deadline)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
                 if survey is not None:
                     out.surveys.append(survey)
                 try:
-                    plan = self._replan(graph, situation, plan, doubted, ctx.on_trial,
+                    plan = self._replan(graph, situation, plan, doubted, board.on_trial,
                                         lambda look: self._drive(look, deadline, out))
                 except (UnsolvableError, PlanningTimeout) as exc:
                     out.reason = f"no plan after {situation.kind} situation: {exc}"
@@ -408,7 +411,7 @@ class Executive:
             tree.root.stop(Status.INVALID)
 
     def _tree(self, ctx: ExecutionContext, plan: Plan) -> py_trees.trees.BehaviourTree:
-        ctx.goal_evidence = None  # a claim rests on the new tree's own goal checks
+        ctx.board.goal_evidence = None  # a claim rests on the new tree's own goal checks
         return PlanTree(compile_plan(ctx, plan.actions, self.task.goal, self.task.knowledge))
 
     # -- perception ----------------------------------------------------------------------------

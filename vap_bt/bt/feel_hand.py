@@ -17,19 +17,22 @@ seed 0 with injection claimed a lemon "sliced" on two views from nearly one spot
 fell before the stroke and the first views had said "not sliced".
 
 Asking the gripper is a query to the robot's state service, which can be slow or gone: the
-question is work in flight (``ctx.submit``), polled each tick and cancelled on a halt, like a
-camera frame or a VLM answer — ``update()`` never waits for it.
+question is work in flight (``ctx.ask_body``: on a worker, never on the ticking thread, even where
+the rest of the work runs inline), polled each tick and ignored once the behaviour is halted, like
+a camera frame or a VLM answer — neither ``initialise()`` nor ``update()`` waits for it.
 """
 
 from __future__ import annotations
 
 from concurrent.futures import Future
+from typing import ClassVar
 
 import py_trees
-from py_trees.common import Status
+from py_trees.common import Access, Status
 
-from vap_bt.bt.context import ExecutionContext, Situation
-from vap_bt.bt.inflight import cancel_all
+from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.record import Situation
+from vap_bt.bt.inflight import cancel_all, in_flight
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 
@@ -37,14 +40,17 @@ from vap_bt.domain.knowledge import GroundAction
 class FeelHand(py_trees.behaviour.Behaviour):
     """Whether the gripper still holds what belief has in it after ``action``."""
 
+    KEYS: ClassVar[dict[str, Access]] = {"verified": Access.WRITE, "situation": Access.WRITE}
+
     def __init__(self, ctx: ExecutionContext, action: GroundAction, step: int) -> None:
         super().__init__(name="feel hand")
         self.ctx, self.action, self.step = ctx, action, step
+        self.board = ctx.board.client(type(self).__name__, self.KEYS)
         self._job: Future | None = None
 
     def initialise(self) -> None:
         graph, held = self.ctx.graph, sorted(a for a in self.ctx.graph.facts if self.ctx.roles.is_held(a))
-        self._job = self.ctx.submit(self._lost, graph, held) if held else None
+        self._job = self.ctx.ask_body(self._lost, graph, held) if held else None
 
     def _lost(self, graph, held: list[Atom]) -> Atom | None:
         """The first held atom the gripper denies (runs in flight: each answer is a query)."""
@@ -53,17 +59,17 @@ class FeelHand(py_trees.behaviour.Behaviour):
     def update(self) -> Status:
         if self._job is None:
             return Status.SUCCESS
-        if not self._job.done():
+        if in_flight(self._job):
             return Status.RUNNING
         atom = self._job.result()  # a TransportError (the state service gone) ends the episode
         if atom is None:
             return Status.SUCCESS
         lost_its_tool = atom.args[0] in self.action.args and not self._moves_robot()
         if lost_its_tool:  # a value judged of its effects is not reused (the lean protocol)
-            self.ctx.verified.distrust({a for a in self.action.may_add if a.predicate != self.ctx.roles.held})
-        self.ctx.situation = Situation("effect", self.action if lost_its_tool else None,
-                                       self.step if lost_its_tool else self.step + 1, atom, True, False,
-                                       f"the gripper holds nothing after {self.action}")
+            self.board.verified.distrust({a for a in self.action.may_add if a.predicate != self.ctx.roles.held})
+        self.board.situation = Situation("effect", self.action if lost_its_tool else None,
+                                        self.step if lost_its_tool else self.step + 1, atom, True, False,
+                                        f"the gripper holds nothing after {self.action}")
         self.ctx.progress(f"    situation: the gripper holds nothing after {self.action}")
         return Status.FAILURE
 

@@ -10,10 +10,13 @@ Two executors serve: a bounded thread pool, so that a round's questions are in f
 against a remote model, and :class:`InlineExecutor`, which does the work at submission — for the
 symbolic world's in-process campaigns, where every answer is immediate and threads would only
 cost time (the behaviours are the same; their futures are simply done when they first look).
+The robot's state service is never asked inline (:func:`body_executor`): it answers from another
+process, in its own time, whatever the rest of the work does.
 """
 
 from __future__ import annotations
 
+import time
 from concurrent.futures import Executor, Future, ThreadPoolExecutor
 from typing import Any, Callable
 
@@ -36,6 +39,26 @@ class InlineExecutor(Executor):
 def make_executor(concurrent: bool) -> Executor:
     """A thread pool for work that takes time, or the inline executor for immediate answers."""
     return ThreadPoolExecutor(MAX_IN_FLIGHT, thread_name_prefix="inflight") if concurrent else InlineExecutor()
+
+
+def body_executor(executor: Executor) -> Executor:
+    """Where the robot's state service is asked: ``executor`` when it is a pool of workers, else a
+    worker of its own — an inline executor would ask it on the ticking thread, and a state query
+    can take as long as the robot likes (a Zenoh query waits up to its timeout)."""
+    if isinstance(executor, InlineExecutor):
+        return ThreadPoolExecutor(1, thread_name_prefix="body")
+    return executor
+
+
+def in_flight(f: Future) -> bool:
+    """Whether ``f`` is not done yet; if not, the ticking thread lets the interpreter go for a
+    moment (``sleep(0)``: a yield, not a wait) so that a worker answering in-process — the
+    robot-state service of a simulated robot answers in microseconds — finishes now, instead of
+    after the interpreter's switch interval of ticks spent asking whether it has."""
+    if f.done():
+        return False
+    time.sleep(0)
+    return not f.done()
 
 
 def cancel_all(futures) -> None:

@@ -23,10 +23,10 @@ from __future__ import annotations
 
 import threading
 from concurrent.futures import Executor, Future
-from typing import Any, Callable
+from typing import Any, Callable, ClassVar
 
 import py_trees
-from py_trees.common import Status
+from py_trees.common import Access, Status
 
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.bt.plan_tree import PlanTree
@@ -40,6 +40,10 @@ class Step(py_trees.behaviour.Behaviour):
     """One recovery step: ``routine()`` run as work in flight; SUCCESS when it returns (its value
     in :attr:`result`), and an exception it raises is raised from the tick that sees it (a
     transport gone ends the episode, as from any behaviour)."""
+
+    #: the board keys it uses (:mod:`vap_bt.bt.board`): none — its routine is the executive's, which
+    #: owns the board
+    KEYS: ClassVar[dict[str, Access]] = {}
 
     def __init__(self, name: str, routine: Callable[[], Any], executor: Executor, halt: threading.Event) -> None:
         super().__init__(name=name)

@@ -13,21 +13,24 @@ Every tick polls what is in flight and returns RUNNING until the round is done; 
 cancels what has not been sent. The behaviour succeeds when the round settles on the expected
 value and fails otherwise; whether a failure means "the world disagrees" or "could not tell from
 here" is in :attr:`round` for its :class:`~vap_bt.bt.active_perception.ActivePerception`
-decorator to weigh.
+decorator to weigh, with the frame it was asked of (:attr:`look`). It reads and writes nothing
+of the board: what a check concludes is its decorator's to record.
 """
 
 from __future__ import annotations
 
 from concurrent.futures import Future
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import py_trees
-from py_trees.common import Status
+from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all
 from vap_bt.domain.atoms import Atom
 from vap_bt.errors import TransportError
+from vap_bt.perception.judgement import Look
 from vap_bt.perception.verification import (Round, RoundAsker, located, shown_plainly, sufficiency_query, unshown,
                                            yes_no)
 from vap_bt.perception.vlm import Answer
@@ -47,9 +50,12 @@ class RoundProgress:
 class VerifyPredicate(py_trees.behaviour.Behaviour):
     """Ask about one atom of one fresh frame; SUCCESS when the round settles as expected."""
 
+    KEYS: ClassVar[dict[str, Access]] = {}
+
     def __init__(self, ctx: ExecutionContext, atom: Atom, expected: bool = True) -> None:
         super().__init__(name=f"{'' if expected else 'not '}{atom}")
         self.ctx, self.atom, self.expected = ctx, atom, expected
+        self.board = ctx.board.client(type(self).__name__, self.KEYS)
         self.round: Round | None = None
         self.observation: Frame | None = None
         self._frame: Future | None = None
@@ -64,6 +70,11 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         self._answers, self._sufficiency, self._plain = {}, None, False
         self._frame = self.ctx.submit(self.ctx.camera.capture, self.ctx.aim(self.ctx.graph, self.atom.args))
         self.feedback_message = "capturing"
+
+    @property
+    def look(self) -> Look | None:
+        """What the last run saw: its round and the frame it asked about (None until it is done)."""
+        return None if self.round is None else Look(self.round, self.observation)
 
     def progress(self) -> RoundProgress:
         """The round so far (read by the live view between ticks; changes nothing)."""

@@ -13,6 +13,9 @@ answer is the direction (the caller sends it and polls, :mod:`vap_bt.bt.inflight
 the robot cannot move to (a wall, a doorway, already as close as a view gets), or no answer at
 all, is replaced by the first of the predefined round not yet tried in this check
 (:meth:`ViewpointStrategy.instead`): looking again from the same spot would show the same picture.
+
+:class:`ViewpointSearch` is one check's use of a strategy: at most K moves (its budget), the
+directions tried and refused so far, and the question to ask where the strategy asks the model.
 """
 
 from __future__ import annotations
@@ -20,7 +23,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.perception.verification import viewpoint_query
+from vap_bt.perception.profile import PerceptionProfile
+from vap_bt.perception.verification import Round, target_of, viewpoint_query
 from vap_bt.perception.vlm import Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 
@@ -49,6 +53,43 @@ class ViewpointStrategy:
         """The direction to try where the chosen one could not be reached (or none was given):
         the first of the predefined round not in ``tried``; None once every one was."""
         return next((d for d in GREEDY_ORDER if d not in tried), None)
+
+
+class ViewpointSearch:
+    """Where one check looks next, within its budget of ``budget`` moves: the strategy's direction
+    (or the query for it), replaced by the predefined round where it was refused or not given."""
+
+    def __init__(self, strategy: ViewpointStrategy, budget: int) -> None:
+        self.strategy, self.budget = strategy, budget
+        self.moves = 0  # moves made (a refused direction is no move)
+        self.tried: set[str] = set()  # directions moved to or refused
+        self.refused: set[str] = set()  # directions the robot could not move to
+
+    @property
+    def spent(self) -> bool:
+        return self.moves >= self.budget
+
+    def next(self, atom: Atom, last: Round, profile: PerceptionProfile | None) -> str | Query:
+        """The direction of the next move, or the query about the last round's frame that asks for
+        it (the round's first question names what is looked for)."""
+        question = last.questions[0] if last.questions else profile.questions(atom, 1)[0]
+        return self.strategy.next(self.moves, atom, question, target_of(atom))
+
+    def pick(self, direction: str | None) -> str | None:
+        """The direction to move to: ``direction`` (the strategy's or the model's), unless it is none
+        or was refused already, then the first of the round not yet tried; None once every one was."""
+        if direction is None or direction in self.refused:
+            direction = self.strategy.instead(self.tried)
+        if direction is not None:
+            self.tried.add(direction)
+        return direction
+
+    def refuse(self, direction: str) -> None:
+        """The robot could not move to ``direction``."""
+        self.refused.add(direction)
+
+    def moved(self) -> None:
+        self.moves += 1
 
 
 assert set(GREEDY_ORDER) == set(VIEW_DIRECTIONS)

@@ -37,7 +37,7 @@ def action_start_text(step: int, action: str) -> str:
 
 
 def action_result_text(entry: dict) -> tuple[str, str]:
-    """(text, level) for one entry of ``ctx.actions``."""
+    """(text, level) for one entry of the board's ``actions``."""
     ms = (entry.get("done_s", 0.0) - entry.get("sent_s", 0.0)) * 1000
     ok = entry.get("state") == "succeeded"
     msg = f" ({entry['message']})" if entry.get("message") and not ok else ""

@@ -134,11 +134,12 @@ class TreeRecorder:
         for c in [c for c in pending_changes if c.cause != "apply"]:
             self._text(L.EV_BELIEF, ev.change_text(c))
         applied = [c for c in pending_changes if c.cause == "apply"]
-        actions = ctx.actions[self._n_actions:]
-        self._n_actions = len(ctx.actions)
+        board = ctx.board
+        actions = board.actions[self._n_actions:]
+        self._n_actions = len(board.actions)
         n_before = self._n_verifications
-        verifications = ctx.verifications[n_before:]
-        self._n_verifications = len(ctx.verifications)
+        verifications = board.verifications[n_before:]
+        self._n_verifications = len(board.verifications)
         self._walk(tree.root, actions, verifications, applied)
         for entry in actions:  # anything the walk could not place (not expected)
             self._text(L.EV_ACTIONS, *ev.action_result_text(entry))
@@ -147,10 +148,10 @@ class TreeRecorder:
         self._log_queries(ctx)
         for c in applied:
             self._text(L.EV_BELIEF, ev.change_text(c))
-        if ctx.situation is not None and ctx.situation is not self._situation:
-            self._situation = ctx.situation
-            self._text(L.EV_SITUATIONS, ev.situation_text(ctx.situation), ev.WARN)
-            kind = ctx.situation.kind
+        if board.situation is not None and board.situation is not self._situation:
+            self._situation = board.situation
+            self._text(L.EV_SITUATIONS, ev.situation_text(board.situation), ev.WARN)
+            kind = board.situation.kind
             self._situations[kind] = self._situations.get(kind, 0) + 1
             self.stream.log(f"{L.STATS_SITUATIONS}/{kind}", rr.Scalars(self._situations[kind]))
         if pending_changes:
@@ -299,7 +300,7 @@ class TreeRecorder:
                      and v.action == action)
             if v is not None:
                 self._text(L.EV_VERIFICATIONS, *ev.verification_text(v))
-                situation = node.ctx.situation if v.outcome == "contradicted" else None
+                situation = node.ctx.board.situation if v.outcome == "contradicted" else None
                 self._page(ev.verdict_markdown(v, situation))
                 key = (self._replans, node.step)
                 self._per_action[key] = self._per_action.get(key, 0) + v.queries
@@ -377,7 +378,7 @@ class TreeRecorder:
         for a model nobody meters, the queries of the settled checks."""
         total = getattr(ctx.vlm, "total", None)
         if total is None:
-            total = sum(v.queries for v in ctx.verifications)
+            total = sum(v.queries for v in ctx.board.verifications)
         if self._queries_before + total != self.queries:
             self.queries = self._queries_before + total
             self.stream.log(L.STATS_QUERIES, rr.Scalars(self.queries))

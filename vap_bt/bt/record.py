@@ -1,0 +1,172 @@
+"""What a behaviour tree's checks and actions leave behind: situations, verifications, what was
+left unchecked, what a goal rests on, and which values a later check may reuse.
+
+These are the values behaviours write to the episode's board (:mod:`vap_bt.bt.board`) and the
+executive, the report and the live view read: typed records, each saying what it is.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.knowledge import GroundAction
+from vap_bt.domain.roles import HOUSEHOLD
+from vap_bt.perception.judgement import Basis, Outcome, Phase
+from vap_bt.perception.verification import Round
+
+SituationKind = Literal["precondition", "effect", "execution", "goal", "unseen"]
+
+
+@dataclass
+class Situation:
+    """A check that settled against expectation, or a skill that failed: the loop must replan."""
+
+    kind: SituationKind
+    action: GroundAction | None
+    step: int  # index of the action in the plan being executed
+    atom: Atom | None = None
+    expected: bool | None = None
+    observed: bool | None = None
+    detail: str = ""
+
+    def to_json(self) -> dict:
+        return {"kind": self.kind, "action": str(self.action) if self.action else None,
+                "predicate": str(self.atom) if self.atom else None,
+                "expected": self.expected, "observed": self.observed, "detail": self.detail}
+
+
+@dataclass
+class Verification:
+    """One check of one atom, settled: when and for which action, what was expected and
+    believed after, how (the outcome and what it rests on), and the views it took."""
+
+    phase: Phase
+    action: str
+    atom: Atom
+    expected: bool
+    value: bool
+    outcome: Outcome
+    rounds: list[Round]
+    basis: Basis
+
+    @property
+    def queries(self) -> int:
+        """The VLM queries this check asked: each round's answers, its view-sufficiency question
+        when the model was asked it, and its viewpoint question when one followed."""
+        return sum(len(r.answers) + (r.sufficient_by == "model") + (r.direction is not None) for r in self.rounds)
+
+    def to_json(self) -> dict:
+        return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
+                "expected": self.expected, "value": self.value, "outcome": self.outcome, "basis": self.basis,
+                "views": len(self.rounds), "queries": self.queries, "rounds": [r.to_json() for r in self.rounds]}
+
+
+@dataclass(frozen=True)
+class Unchecked:
+    """An atom a compiled tree does not look at, and why (the report lists them)."""
+
+    phase: Phase
+    action: str
+    atom: Atom
+    expected: bool
+    reason: str
+
+    def to_json(self) -> dict:
+        return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
+                "name": self.atom.predicate, "expected": self.expected, "reason": self.reason}
+
+
+@dataclass(frozen=True)
+class GoalAtomEvidence:
+    """What one goal atom rests on when the goal is checked: the last goal check of it
+    (``verification``: its index in the context's, and the report's, verifications), or, where
+    none looked, why not."""
+
+    atom: Atom
+    expected: bool
+    rests_on: Literal["looked", "felt", "unchecked"]
+    verification: int | None = None
+    check: Verification | None = None
+    reason: str = ""
+
+    def to_json(self) -> dict:
+        out = {"predicate": str(self.atom), "expected": self.expected}
+        if self.check is not None:
+            out.update(verification=self.verification, value=self.check.value, outcome=self.check.outcome,
+                       views=len(self.check.rounds))
+        if self.reason:
+            out["reason"] = self.reason
+        return out
+
+
+@dataclass(frozen=True)
+class GoalEvidence:
+    """What the goal check of a tree rested on, per goal literal (the report's ``goal_evidence``):
+    ``looked`` — a VLM verdict on views its goal check took; ``felt`` — the body's word (the
+    gripper settled the check, or the domain leaves the predicate to proprioception);
+    ``unchecked`` — belief alone (map knowledge, a predicate never checked, goal checks off, or a
+    look that could not settle it)."""
+
+    atoms: tuple[GoalAtomEvidence, ...]
+
+    def to_json(self) -> dict:
+        return {kind: [a.to_json() for a in self.atoms if a.rests_on == kind]
+                for kind in ("looked", "felt", "unchecked")}
+
+
+class Verified:
+    """Atoms verified earlier and not changeable since (the lean protocol's reuse, mid-plan only:
+    the goal's check before success is claimed always looks).
+
+    An entry lives until an executed action could have changed its atom: one whose arguments
+    include one of the atom's objects, or one of whose effects (conditional ones included) could
+    add or delete that atom; the hand's atoms (no arguments, or ``holding``) go after every
+    action, as the hand can lose things on any move. Disabled (always empty) unless the protocol
+    reuses.
+
+    It also keeps the views each atom was judged on (:meth:`saw`), for the goal's second opinion
+    (:class:`~vap_bt.bt.active_perception.ActivePerception`): those live, whatever the protocol,
+    until an executed action's effects could change the atom (the planner's own frame assumption;
+    the hand's atoms after every action) — a cup confirmed filled at the sink is still filled in
+    the microwave, where no view shows its inside."""
+
+    def __init__(self, enabled: bool = False, hand: frozenset[str] = HOUSEHOLD.hand) -> None:
+        self.enabled = enabled
+        #: the hand's predicates (the profile's roles ``held`` and ``hand_empty``)
+        self.hand = hand
+        self._values: dict[Atom, bool] = {}
+        self._rounds: dict[Atom, list[Round]] = {}
+
+    def get(self, atom: Atom) -> bool | None:
+        return self._values.get(atom) if self.enabled else None
+
+    def remember(self, atom: Atom, value: bool) -> None:
+        if self.enabled:
+            self._values[atom] = value
+
+    def saw(self, atom: Atom, rounds) -> None:
+        """``atom`` was judged on ``rounds`` (one per frame) by one check."""
+        known = self._rounds.setdefault(atom, [])
+        known += [r for r in rounds if not any(r is k for k in known)]
+
+    def views(self, atom: Atom) -> list[Round]:
+        """The rounds ``atom`` was judged on since the last action that could have changed it."""
+        return list(self._rounds.get(atom, ()))
+
+    def distrust(self, atoms) -> None:
+        """Forget the values and views ``atoms`` were judged on: something since casts doubt on
+        them (the action meant to bring them about lost its tool)."""
+        self._values = {a: v for a, v in self._values.items() if a not in atoms}
+        self._rounds = {a: r for a, r in self._rounds.items() if a not in atoms}
+
+    def executed(self, action: GroundAction) -> None:
+        """``action`` ran (or tried to): forget what it could have changed."""
+        args, changed = set(action.args), action.may_add | action.may_delete
+
+        def changeable(a: Atom) -> bool:
+            return a in changed or a.predicate in self.hand or not a.args
+
+        self._values = {a: v for a, v in self._values.items() if not (args & set(a.args) or changeable(a))}
+        self._rounds = {a: r for a, r in self._rounds.items() if not changeable(a)}
