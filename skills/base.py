@@ -78,4 +78,7 @@ class MotionSkill(Skill):
         return SkillResult(out.completed, out.message or call)
 
     def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
+        """Move the robot for ``action(args)`` through ``kit``, looking where ``hints`` say, and say how
+        the motion ended. Blocks until done; a cancelled goal raises :class:`~skills.body.Stopped` from
+        the driver call it reached."""
         raise NotImplementedError

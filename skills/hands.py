@@ -249,6 +249,8 @@ class Hands:
         return z if z is not None and SUPPORT_SNAP[0] <= lo - z <= SUPPORT_SNAP[1] else lo
 
     def support_height(self, where: Where, point) -> float | None:
+        """The height (m, map frame) an item at ``where`` rests at: a container's cavity floor, a
+        surface's top, 0 on a floor; None when the map does not know the place."""
         if where.inside and where.inside in self.scene.furniture:
             cav = self.scene.furniture[where.inside].info.cavity
             return cav.z[0] if cav else None
@@ -536,6 +538,8 @@ class Hands:
         self.body.goto_pose(self.body.base_T() @ rel, 0.8)
 
     def let_go(self) -> None:
+        """Open the fingers fully; the eyes forget the held item only once the gripper no longer holds
+        it."""
         self.body.fingers(self.body.cfg.gripper.stroke)
         if not self.body.holding():  # a gripper that would not open still holds what it held
             self.eyes.held = None

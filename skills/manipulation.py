@@ -19,6 +19,8 @@ if TYPE_CHECKING:
 
 
 class ArmSkill(MotionSkill):
+    """A skill of the arm and gripper (the ``ur5e`` server; occupies the arm)."""
+
     robot = "ur5e"
     resource = "arm"
 

@@ -21,6 +21,8 @@ if TYPE_CHECKING:
 
 
 class BaseSkill(MotionSkill):
+    """A skill of the mobile base (the ``base`` server; occupies the base)."""
+
     robot = "base"
     resource = "base"
 
