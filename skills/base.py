@@ -23,22 +23,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from vap_bt.outcome import Outcome
+from vap_bt.robot.drivers import has_drivers
 from vap_bt.skill import Hint, Skill, SkillResult
 from vap_bt.world import GoalContext
 
 if TYPE_CHECKING:
     from skills.kit import Kit
-
-#: the driver interfaces a kit needs (attributes of what skills are bound to's ``drivers``)
-REQUIRED = ("arm", "gripper", "base", "camera")
-
-
-def has_drivers(robot: object) -> bool:
-    """Whether ``robot`` offers the driver interfaces motion skills move it through (its
-    ``drivers``: arm, gripper, base and wrist camera)."""
-    drivers = getattr(robot, "drivers", None)
-    return drivers is not None and all(getattr(drivers, name, None) is not None for name in REQUIRED)
-
 
 class MotionSkill(Skill):
     """Perform ``self.action`` by moving the robot (a subclass implements :meth:`run`)."""

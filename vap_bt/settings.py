@@ -32,14 +32,21 @@ library only (defaults owned by heavier modules are read when a config is built,
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Annotated, Any, Iterator, Literal
+from typing import Annotated, Any, Iterator, Literal, Protocol
 
 from pydantic import ConfigDict, Field, create_model
 from pydantic.dataclasses import dataclass as settings_model
 from pydantic.fields import FieldInfo
 
-if TYPE_CHECKING:
-    from vap_bt.taskfile import Task
+
+class StatedSettings(Protocol):
+    """Where a run's settings are stated, besides the command line: a task file
+    (:class:`vap_bt.taskfile.Task`: its ``options:`` and its other keys, ``spec``). A protocol, so
+    that the settings, which the task file's model is made of, need not import it back."""
+
+    options: Any
+    spec: Any
+
 
 #: replans an episode may make by default (the paper sets no bound; an episode needs one:
 #: vap_bt.bt.repeats): Table II injects up to seven situations in one pybullet episode and each may
@@ -116,17 +123,6 @@ def settings_fields(model: type) -> Iterator[tuple[str, FieldInfo, Option | None
     """``(name, field, option)`` for each field of a settings model, in declaration order."""
     for name, info in model.__pydantic_fields__.items():
         yield name, info, option_of(info)
-
-
-def _detector_default(name: str):
-    """A default owned by the symbolic world's detector model (read when a config is built: the
-    simulator is not imported to print ``--help``)."""
-    def default() -> float:
-        from vap_bt.sim.detector import DetectorModel
-
-        return getattr(DetectorModel(), name)
-
-    return default
 
 
 RUN_TREE = ("run", "export", "tree")
@@ -213,20 +209,24 @@ class RunConfig:
     disturbance: float = Field(
         0.0, ge=0, le=1, description="the probability of a scripted disturbance per episode (a person moves a "
                                      "thing, pushes a leaf shut or half shut: vap_bt.sim.disturbances); 0: none")
-    miss_rate: float = Field(default_factory=_detector_default("miss_rate"),
-                             description="the symbolic world's detector: the chance an object in view is missed")
-    relation_noise: float = Field(default_factory=_detector_default("relation_noise"),
-                                  description="the symbolic world's relation reports (0: exact where shown)")
+    # the symbolic world's detector: None leaves a value to its model (vap_bt.sim.detector), which the
+    # runner fills in before the run, so the report states what was used
+    miss_rate: float | None = Field(
+        None, ge=0, le=1, description="the symbolic world's detector: the chance an object in view is missed "
+                                      "(default: the detector model's)")
+    relation_noise: float | None = Field(
+        None, ge=0, description="the symbolic world's relation reports, 0: exact where shown (default: the "
+                                "detector model's)")
 
     @classmethod
-    def from_task(cls, task: "Task", **given: Any) -> "RunConfig":
+    def from_task(cls, task: StatedSettings, **given: Any) -> "RunConfig":
         """The settings of a run of ``task``: each one ``given`` (None: not given, as an argparse
         flag left out), else what the task file states (its ``options:``, its ``world:``), else the
         default."""
         return cls(**cls.chosen(task, **given))
 
     @classmethod
-    def chosen(cls, task: "Task", **given: Any) -> dict[str, Any]:
+    def chosen(cls, task: StatedSettings, **given: Any) -> dict[str, Any]:
         """The settings :meth:`from_task` builds a config of, before the defaults fill in the rest
         (a command that reads only a few of them need not build the whole config)."""
         stated = {name: _stated(task, name, option.in_task) for name, _, option in settings_fields(cls)
@@ -245,7 +245,7 @@ def default(name: str) -> Any:
     return RunConfig.__pydantic_fields__[name].get_default(call_default_factory=True)
 
 
-def _stated(task: "Task", name: str, where: str) -> Any:
+def _stated(task: StatedSettings, name: str, where: str) -> Any:
     return getattr(task.options if where == OPTIONS else task.spec, name)
 
 

@@ -1,7 +1,7 @@
 """A robot whose world runs in another process: what ``vap-bt serve --world remote`` binds skills to.
 
 Motion skills bind to anything that offers the robot's drivers, its ``state()`` and its
-``site_map()`` (:func:`skills.base.has_drivers`); a simulated world also takes the sim-only action
+``site_map()`` (:func:`vap_bt.robot.drivers.has_drivers`); a simulated world also takes the sim-only action
 hook (``begin_action``/``end_action``). :class:`RemoteRobot` is that object over Zenoh, for a world
 hosted by ``vap-bt sim`` (:mod:`vap_bt.app.sim_host`): the drivers and body are a
 :class:`~vap_bt.transport.drivers.RemoteDrivers`, the hook a

@@ -63,8 +63,19 @@ STARTING = "starting"
 
 
 def make_detector(cfg: RunConfig) -> DetectorModel:
-    """The symbolic world's detector, with the run's miss rate and relation noise."""
-    return DetectorModel(miss_rate=cfg.miss_rate, relation_noise=cfg.relation_noise)
+    """The symbolic world's detector, with the run's miss rate and relation noise where it sets them."""
+    return DetectorModel(**{k: v for k in DETECTOR_SETTINGS if (v := getattr(cfg, k)) is not None})
+
+
+#: the run settings that, left None, are the symbolic detector model's own
+DETECTOR_SETTINGS = ("miss_rate", "relation_noise")
+
+
+def resolved(cfg: RunConfig) -> RunConfig:
+    """``cfg`` with what it leaves to the detector model filled in from it, so that a report states
+    the values the run used."""
+    model = make_detector(cfg)
+    return replace(cfg, **{k: getattr(model, k) for k in DETECTOR_SETTINGS})
 
 
 def make_world(task: Task, cfg: RunConfig) -> World:
@@ -105,7 +116,7 @@ def make_camera(robot) -> Any:
     """The camera service and body the executive perceives through: on a robot with drivers,
     the skills' own (:class:`skills.views.ViewService`, sharing their kit, so that a look and a
     skill never move the robot at once); a world without drivers (the symbolic one) is its own."""
-    from skills.base import has_drivers
+    from vap_bt.robot.drivers import has_drivers
 
     if not has_drivers(robot):
         return robot
@@ -278,6 +289,7 @@ class Session:
     last_outcome: EpisodeOutcome | None = field(init=False, default=None)
 
     def __post_init__(self) -> None:
+        self.cfg = resolved(self.cfg)
         self.words = check_config(self.task, self.cfg)  # bad input is said before a world starts
         t0 = time.perf_counter()
         self._nothing_started()

@@ -120,3 +120,14 @@ class WristCamera(Protocol):
     def capture(self) -> Frame:
         """One aligned colour + depth frame with the detector's masks, in the map frame; it moves
         nothing."""
+
+
+#: the driver interfaces motion skills move a robot through (attributes of its ``drivers``)
+REQUIRED = ("arm", "gripper", "base", "camera")
+
+
+def has_drivers(robot: object) -> bool:
+    """Whether ``robot`` offers the driver interfaces motion skills move it through (its
+    ``drivers``: arm, gripper, base and wrist camera)."""
+    drivers = getattr(robot, "drivers", None)
+    return drivers is not None and all(getattr(drivers, name, None) is not None for name in REQUIRED)

@@ -409,7 +409,7 @@ class RemoteDrivers:
 
     @property
     def drivers(self) -> "RemoteDrivers":
-        """Itself: it has the four drivers (what :func:`skills.base.has_drivers` looks for)."""
+        """Itself: it has the four drivers (what :func:`vap_bt.robot.drivers.has_drivers` looks for)."""
         return self
 
     def state(self):
