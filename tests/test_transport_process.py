@@ -2,7 +2,7 @@
 
 SIGKILL closes the TCP link, so the server's liveliness token vanishes at once (goal ABORTED
 within 0.5 s). SIGSTOP keeps the socket open; only the link lease (2 s by default) tells, so the
-goal must fail within 3 s. The server is ``python -m vap_bt.app.serve`` over the facts
+goal must fail within 3 s. The server is ``python -m vap_bt serve`` over the facts
 world, exactly as ``vap-bt serve`` runs.
 """
 
@@ -64,7 +64,7 @@ def test_serve_stops_cleanly_on_sigterm_and_refuses_bad_input():
     bad = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=60)
     assert bad.returncode == 2
     assert bad.stderr.strip().splitlines() == [
-        "vap-bt serve: --robot: no skill plugin is bound to robot 'r2d2' (robots with skills: base, ur5e)"
+        "vap-bt: --robot: no skill plugin is bound to robot 'r2d2' (robots with skills: base, ur5e)"
     ]
     port = free_port()
     cmd, env = serve_command("--world", "fact_world:FactWorld", "--connect", endpoint(port),

@@ -2,7 +2,7 @@
 
 Every test gets its own port (found by binding a socket, since not every Zenoh endpoint accepts
 port 0), so tests never see each other's traffic. Server subprocesses are started through
-``python -m vap_bt.app.serve`` with the facts world and always killed on exit.
+``python -m vap_bt serve`` with the facts world and always killed on exit.
 """
 
 from __future__ import annotations
@@ -44,9 +44,9 @@ def session(listen: tuple[str, ...] = (), connect: tuple[str, ...] = (),
 
 
 def serve_command(*args: str) -> tuple[list[str], dict[str, str]]:
-    """argv and environment for ``python -m vap_bt.app.serve`` able to load the facts world."""
+    """argv and environment for ``python -m vap_bt serve`` able to load the facts world."""
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(FIXTURES), os.environ.get("PYTHONPATH", "")])}
-    return [sys.executable, "-m", "vap_bt.app.serve", *args], env
+    return [sys.executable, "-m", "vap_bt", "serve", *args], env
 
 
 @contextmanager

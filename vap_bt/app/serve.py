@@ -7,7 +7,7 @@ shared safely by the arm's and the base's skills. It prints one ``ready`` line o
 everything is declared (``vap-bt serve: ready: ur5e skills [close, cut, …] with the camera, on
 zenoh (connected to tcp/127.0.0.1:7447)``), logs each goal on stderr (accepted, throttled
 feedback, result, cancel: :mod:`~vap_bt.transport.server`) and runs until SIGINT or SIGTERM.
-``python -m vap_bt.app.serve`` does the same without the ``vap-bt`` wrapper.
+``python -m vap_bt serve`` does the same without the ``vap-bt`` wrapper.
 
 With ``--world remote`` the skills bind to a robot whose world runs in ``vap-bt sim``
 (:class:`~vap_bt.app.remote_robot.RemoteRobot`: its drivers and action hook over Zenoh); the
@@ -244,19 +244,3 @@ def _print_table(rows: list[dict[str, str]]) -> None:
     print("  ".join(c.upper().ljust(widths[c]) for c in cols).rstrip())
     for r in rows:
         print("  ".join(r[c].ljust(widths[c]) for c in cols).rstrip())
-
-
-def main(argv: list[str] | None = None) -> int:
-    """``python -m vap_bt.app.serve``: the serve command on its own."""
-    parser = argparse.ArgumentParser(prog="vap-bt serve", description=__doc__.splitlines()[0])
-    add_serve_arguments(parser)
-    args = parser.parse_args(argv)
-    try:
-        return run_serve(args)
-    except VapBtError as exc:
-        print(f"vap-bt serve: {exc}", file=sys.stderr)
-        return exc.exit_code
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -24,7 +24,6 @@ SIGTERM, then withdraws everything and exits 0.
 from __future__ import annotations
 
 import argparse
-import logging
 import signal
 import sys
 import threading
@@ -115,20 +114,3 @@ def run_sim(args: argparse.Namespace) -> int:
             session.close()
         world.close()
     return EXIT_OK
-
-
-def main(argv: list[str] | None = None) -> int:
-    """``python -m vap_bt.app.sim_host``: the sim command on its own."""
-    parser = argparse.ArgumentParser(prog="vap-bt sim", description=DESCRIPTION)
-    add_sim_arguments(parser)
-    args = parser.parse_args(argv)
-    logging.basicConfig(level=logging.WARNING, format="%(levelname)s %(name)s: %(message)s")
-    try:
-        return run_sim(args)
-    except VapBtError as exc:
-        print(f"vap-bt sim: {exc}", file=sys.stderr)
-        return exc.exit_code
-
-
-if __name__ == "__main__":
-    sys.exit(main())
