@@ -111,6 +111,8 @@ class Option:
     help_for: tuple[tuple[str, str], ...] = ()
 
     def help(self, command: str, description: str | None) -> str | None:
+        """The option's help text in ``command``: its own words for that command (``help_for``), else the
+        field's ``description``."""
         return dict(self.help_for).get(command, description)
 
 

@@ -56,6 +56,9 @@ Options = TaskOptions
 
 
 class TaskFile(BaseModel):
+    """A task file as written (the module docstring shows one), with its fields' types and the rules
+    between them; :func:`load` reads one."""
+
     model_config = ConfigDict(extra="forbid")
     name: str
     instruction: str = ""
@@ -113,16 +116,22 @@ class Task:
 
     @property
     def options(self) -> Options:
+        """The options the task file states (unstated ones at their defaults)."""
         return self.spec.options
 
 
 def load(path: str | Path) -> Task:
+    """The task the file at ``path`` describes, read, checked and resolved (its paths relative to it);
+    every mistake is one :class:`InputError` naming the file and the field at fault."""
     path = Path(path)
     spec = read_model(path, TaskFile, "task file", "name:, domain:, goal:, ...")
     return from_spec(spec, base=path.parent, where=path)
 
 
 def from_spec(spec: TaskFile, base: Path, where: Path | str) -> Task:
+    """The task of a task file already parsed: the domain, the perception profile and the problem file read
+    relative to ``base``, the scene expanded into facts, and the goal checked against them; ``where`` names
+    the file in errors."""
     from vap_bt.domain.pddl import load_task, parse_strings
 
     domain_path = _existing(base, spec.domain, where, "domain")

@@ -41,6 +41,9 @@ KINDS = ("sim", "drivers", "skill server", "executive")
 
 @dataclass(frozen=True)
 class Part:
+    """One part alive on the network, as its liveliness token (``key``) says: its kind (one of
+    :data:`KINDS`), the robot it serves and its name."""
+
     kind: str
     robot: str  # "" for a part that is no one robot's (sim, executive)
     name: str  # "" for a robot's drivers
@@ -48,11 +51,15 @@ class Part:
 
     @property
     def label(self) -> str:
+        """``robot/name`` without the empty ones: how the table names the part."""
         return "/".join(x for x in (self.robot, self.name) if x)
 
 
 @dataclass(frozen=True)
 class Goal:
+    """A goal a skill server is running now: the robot and server, the action, the goal's id, and the
+    token's key."""
+
     robot: str
     server: str
     action: str
@@ -111,10 +118,13 @@ def _columns(head: list[str], rows: list[list[str]]) -> list[str]:
 
 
 def add_parts_arguments(p: argparse.ArgumentParser) -> None:
+    """Declare ``vap-bt parts``' options on ``p`` (from :mod:`vap_bt.settings`)."""
     add_settings(p, "parts", Commands, Zenoh)
 
 
 def run_parts(args: argparse.Namespace) -> int:
+    """``vap-bt parts``: print one snapshot (a table, or JSON with ``--json``) or, with ``--watch``, follow
+    the parts as they come and go until Ctrl-C; returns the exit code."""
     session = open_session(part_settings(args))
     try:
         if args.watch:

@@ -37,6 +37,7 @@ def _progress(quiet: bool):
 
 
 def cmd_plan(args) -> int:
+    """``vap-bt plan``: the plan on stdout; its length, cost, engine and planning time on stderr."""
     from vap_bt.domain.pddl import load_task
     from vap_bt.domain.planner import Planner
 
@@ -251,6 +252,8 @@ def _examples(*lines: str) -> dict:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``vap-bt`` parser: every command with its options (declared in :mod:`vap_bt.settings`) and
+    examples."""
     from vap_bt.app.arguments import add_settings
     from vap_bt.settings import Commands, RunConfig, RunOutput, TaskSource, TreeOutput, Zenoh
 
@@ -356,6 +359,8 @@ def _add_transport_commands(sub) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The ``vap-bt`` entry point: runs the command ``argv`` names (default: the process's arguments) and
+    returns its exit code (:mod:`vap_bt.errors`)."""
     try:
         return _command(argv)
     except KeyboardInterrupt:  # before a run has begun (imports, the task file), or a command without a report

@@ -55,6 +55,8 @@ class ConnectedTransport:
 
     @property
     def where(self) -> str:
+        """Where the executive looks for the parts, for messages: the endpoints it connects to, or the
+        configured router."""
         return ", ".join(self.settings.connect) or "the configured router"
 
     def _wait_for_servers(self, robots: list[str], timeout: float) -> None:

@@ -29,6 +29,8 @@ CAMERA_ROBOT = "ur5e"
 
 
 def free_loopback_endpoint() -> str:
+    """A Zenoh TCP endpoint on a loopback port that is free now (another process may take it before the
+    servers bind it)."""
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
         s.bind(("127.0.0.1", 0))
         return f"tcp/127.0.0.1:{s.getsockname()[1]}"

@@ -110,10 +110,15 @@ class PartSpec(BaseModel):
         return value
 
     def says_where(self) -> bool:
+        """Whether the part's own arguments already say where it meets the others (:data:`WHERE`); launch
+        then adds no ``--listen`` or ``--connect``."""
         return any(a == opt or a.startswith(opt + "=") for a in self.args for opt in WHERE)
 
 
 class LaunchFile(BaseModel):
+    """A launch file as written (:data:`SCHEMA` explains each field): where the parts meet, how long they
+    may take to come up and to stop, and the parts."""
+
     model_config = ConfigDict(extra="forbid")
     endpoint: str | None = None
     ready_timeout: float = Field(120.0, gt=0)
@@ -173,6 +178,7 @@ class _Child:
 
 
 def exit_text(code: int) -> str:
+    """A child's return code in words: the signal that killed it (a negative code), or its exit code."""
     return f"was killed by {signal.Signals(-code).name}" if code < 0 else f"exited with code {code}"
 
 
@@ -190,6 +196,8 @@ class Launcher:
     # -- the run ---------------------------------------------------------------------------------
 
     def run(self) -> int:
+        """Start the parts stage by stage, pass their lines on, and stop them all once the executive ends,
+        a part fails to come up, or a signal comes; blocks until then and returns the launch's exit code."""
         previous = self._catch_signals()
         try:
             return self._run()
@@ -355,6 +363,7 @@ class Launcher:
     # -- output and signals ----------------------------------------------------------------------
 
     def say(self, text: str) -> None:
+        """One ``[launch] …`` line on stderr."""
         self._write(self.err, f"[launch] {text}")
 
     def _write(self, stream: IO[str], line: str) -> None:
@@ -383,8 +392,11 @@ class Launcher:
 
 
 def add_launch_arguments(p: argparse.ArgumentParser) -> None:
+    """Declare ``vap-bt launch``'s options on ``p`` (from :mod:`vap_bt.settings`)."""
     add_settings(p, "launch", Commands)
 
 
 def run_launch(args: argparse.Namespace) -> int:
+    """``vap-bt launch``: load the launch file and run its parts to the end (blocks); returns the exit code
+    the module docstring describes."""
     return Launcher(load(args.file), endpoint=args.endpoint).run()

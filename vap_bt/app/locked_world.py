@@ -23,10 +23,13 @@ class LockedWorld:
 
     @property
     def lock(self) -> threading.RLock:
+        """The lock every call goes under: give it to another :class:`LockedWorld` whose object must take
+        turns with this world (the simulated VLM that reads it)."""
         return self._lock
 
     @property
     def unwrapped(self) -> Any:
+        """The world behind the proxy; calls made on it do not take the lock."""
         return self._world
 
     def __getattr__(self, attr: str) -> Any:

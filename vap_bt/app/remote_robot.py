@@ -30,6 +30,7 @@ class RemoteRobot:
 
     @property
     def drivers(self) -> RemoteDrivers:
+        """The robot's drivers and body over Zenoh: what the motion skills act through."""
         return self._drivers
 
     def state(self):

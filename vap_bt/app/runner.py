@@ -79,6 +79,9 @@ def resolved(cfg: RunConfig) -> RunConfig:
 
 
 def make_world(task: Task, cfg: RunConfig) -> World:
+    """The world ``cfg.world`` names for ``task``, seeded by ``cfg.seed``, with the configured situation
+    injection and disturbances (and, for pybullet, the sensor model: ``exact`` or noisy ``real``); a
+    ValueError for a world or sensor model it does not know."""
     situations = SituationModel(enabled=cfg.injection, seed=cfg.seed)
     disturbances = DisturbanceModel(cfg.disturbance) if cfg.disturbance > 0 else None
     if cfg.world == "symbolic":
@@ -384,6 +387,9 @@ class Session:
         return {**scores[0], "vlm_queries": metered.total}
 
     def episode(self, seed: int | None = None) -> dict:
+        """Run one episode (``seed`` overrides the config's) and return its report. A part that goes away
+        mid-episode ends it with a report that says so; a Ctrl-C raises :class:`EpisodeInterrupted`, which
+        carries the report so far."""
         cfg = self.cfg if seed is None else replace(self.cfg, seed=seed)
         t0 = time.perf_counter()
         scores: list[dict] = []
@@ -590,6 +596,8 @@ class Session:
         return [d.to_json() if hasattr(d, "to_json") else dict(d) for d in getattr(self.world, "disturbances", None) or ()]
 
     def world_situations(self) -> list[dict]:
+        """The situations the world may inject, as the report lists them; empty for a world without a
+        situation model (a remote one)."""
         model = getattr(self.world, "situations", None)
         return model.describe() if model is not None else []
 

@@ -52,10 +52,13 @@ READY = "vap-bt serve: ready"
 
 
 def add_serve_arguments(p: argparse.ArgumentParser) -> None:
+    """Declare ``vap-bt serve``'s options on ``p`` (from :mod:`vap_bt.settings`)."""
     add_settings(p, "serve", Hosting, Zenoh)
 
 
 def run_serve(args: argparse.Namespace) -> int:
+    """``vap-bt serve``: start the skill servers and serve until SIGINT or SIGTERM, or, on a remote world,
+    until its sim goes (blocks); returns the exit code."""
     from vap_bt import plugins
     from vap_bt.app.locked_world import LockedWorld
     from vap_bt.app.world_factory import make_world, parse_world_args
@@ -167,10 +170,13 @@ def _serve_until_stopped(session, servers: list[SkillServer], settings, stop: _S
 
 
 def add_skills_arguments(p: argparse.ArgumentParser) -> None:
+    """Declare ``vap-bt skills``' options on ``p`` (from :mod:`vap_bt.settings`)."""
     add_settings(p, "skills", Commands)
 
 
 def run_skills(args: argparse.Namespace) -> int:
+    """``vap-bt skills``: the installed skill plugins as a table (``--json``: JSON), and the problems met
+    loading them as warnings on stderr."""
     from vap_bt import plugins
 
     found = plugins.discover()

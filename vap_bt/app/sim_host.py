@@ -42,6 +42,8 @@ READY = "vap-bt sim: ready"
 
 
 def add_sim_arguments(p: argparse.ArgumentParser) -> None:
+    """Declare ``vap-bt sim``'s options on ``p`` (from :mod:`vap_bt.settings`): hosting and Zenoh, and the
+    run's settings that shape the world."""
     add_settings(p, "sim", Hosting, RunConfig, Zenoh)  # the injection and the VLM's noise: a run's settings
 
 
@@ -67,6 +69,8 @@ def _say(what: str) -> None:
 
 
 def run_sim(args: argparse.Namespace) -> int:
+    """``vap-bt sim``: build the task's household and serve it until SIGINT or SIGTERM (blocks); returns
+    the exit code."""
     # the world's servers here, not at the top: the command line defines this command's arguments on every start
     from vap_bt import plugins, taskfile
     from vap_bt.app import runner

@@ -33,6 +33,8 @@ def make_world(spec: str, task: str | None = None, seed: int = 0,
 
 
 def parse_world_args(pairs: list[str]) -> dict[str, str]:
+    """``--world-arg KEY=VALUE`` pairs as keyword arguments for a world factory (the values stay strings);
+    a malformed pair is an :class:`InputError`."""
     out: dict[str, str] = {}
     for pair in pairs:
         key, sep, value = pair.partition("=")

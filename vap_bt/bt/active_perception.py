@@ -100,10 +100,12 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     @property
     def atom(self) -> Atom:
+        """The atom the wrapped check is about."""
         return self.subject.atom
 
     @property
     def moves(self) -> int:
+        """The viewpoint moves made so far in this check (at most the budget K)."""
         return self.search.moves
 
     @property

@@ -99,6 +99,9 @@ def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowl
 
 def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Literal, ...],
                  knowledge: DomainKnowledge) -> py_trees.composites.Sequence:
+    """The tree of ``plan`` drawn above: each action's checks, skill and effects, then (when effects are
+    checked) the goal's checks, and :class:`GoalCheck` last. Which atoms are checked follows from the
+    states the plan expects, starting from the belief in ``ctx.graph``."""
     steps = expect(ctx.graph.state(), plan, goal)
     nodes = [compile_action(ctx, a, i, knowledge, e) for i, (a, e) in enumerate(zip(plan, steps))]
     if ctx.mode.eff:

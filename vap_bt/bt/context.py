@@ -42,11 +42,15 @@ UnseenPolicy = Literal["look", "go_on", "stop"]
 
 @dataclass(frozen=True)
 class VerifyMode:
+    """Which checks the tree makes: preconditions before each action, effects after it (``--verify
+    both|pre|eff|none``)."""
+
     pre: bool = True
     eff: bool = True
 
     @classmethod
     def parse(cls, name: str) -> "VerifyMode":
+        """The mode named ``both``, ``pre``, ``eff`` or ``none``; a KeyError for any other name."""
         return {"both": cls(True, True), "pre": cls(True, False), "eff": cls(False, True),
                 "none": cls(False, False)}[name]
 
@@ -108,6 +112,8 @@ class ExecutionContext:
         return self.profile.roles if self.profile is not None else HOUSEHOLD
 
     def submit(self, fn, *args) -> Future:
+        """Start ``fn(*args)`` where the episode's work in flight runs; the caller polls the future
+        (:mod:`vap_bt.bt.inflight`)."""
         return self.executor.submit(fn, *args)
 
     def ask_body(self, fn: Callable[..., Any], *args) -> Future:
@@ -130,4 +136,5 @@ class ExecutionContext:
         return JudgementRules(self.second_look, self.calibration, self.claim_risk)
 
     def now(self) -> float:
+        """Seconds since the context was made (the episode's clock for records), to the microsecond."""
         return round(time.perf_counter() - self.t0, 6)

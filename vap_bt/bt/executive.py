@@ -218,6 +218,8 @@ class Executive:
         return EpisodeOutcome.nothing_yet(self.graph if self.graph is not None else self._prior_graph)
 
     def run(self) -> EpisodeOutcome:
+        """Run the episode to its end — survey, plan, tick, handle situations, replan — and return how it
+        ended. Blocks until then; ``phase`` says meanwhile where it is."""
         self.phase = "survey"
         #: where work in flight runs: the checks' captures and questions, the recovery steps
         self.executor = executor = make_executor(self.s.threads)

@@ -70,6 +70,8 @@ def _element(node: py_trees.behaviour.Behaviour) -> ET.Element:
 
 
 def to_btcpp_xml(root: py_trees.behaviour.Behaviour, tree_id: str = "plan") -> str:
+    """The tree under ``root`` as a BehaviorTree.CPP v4 document named ``tree_id``, with the executive's
+    node models."""
     doc = ET.Element("root", BTCPP_format="4", main_tree_to_execute=tree_id)
     bt = ET.SubElement(doc, "BehaviorTree", ID=tree_id)
     bt.append(_element(root))

@@ -140,9 +140,11 @@ class Verified:
         self._rounds: dict[Atom, list[Round]] = {}
 
     def get(self, atom: Atom) -> bool | None:
+        """The value remembered for ``atom``, or None: never verified, forgotten since, or reuse disabled."""
         return self._values.get(atom) if self.enabled else None
 
     def remember(self, atom: Atom, value: bool) -> None:
+        """Keep ``atom``'s verified value for later checks to reuse (nothing, while reuse is disabled)."""
         if self.enabled:
             self._values[atom] = value
 

@@ -50,6 +50,8 @@ class RepeatWatch:
 
     @staticmethod
     def key(s: Situation, belief: frozenset[Atom]) -> tuple:
+        """What makes two situations the same recurrence: kind, action, atom, observation and message, and
+        the belief they arose from."""
         return (s.kind, str(s.action) if s.action else None, s.atom, s.observed, s.detail, belief)
 
     def count(self, s: Situation, belief: frozenset[Atom]) -> int:

@@ -97,6 +97,8 @@ class Calibration:
         return self.pooled(group)
 
     def pooled(self, group: tuple[str, ...] = VIEW_KINDS) -> dict[str, tuple[int, int]]:
+        """Every predicate's counts summed, for each kind of ``group``: what a predicate with too few views
+        of its own is weighed by."""
         return {k: (sum(r.get(k, (0, 0))[0] for r in self.counts.values()),
                     sum(r.get(k, (0, 0))[1] for r in self.counts.values())) for k in group}
 
@@ -128,11 +130,15 @@ class Calibration:
 
     @classmethod
     def load(cls, path: Path = CALIBRATION) -> "Calibration":
+        """The calibration a YAML file holds (default: the shipped :data:`CALIBRATION`), as :meth:`to_yaml`
+        writes it."""
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
         counts = {p: {k: (int(v[0]), int(v[1])) for k, v in row.items()} for p, row in data["counts"].items()}
         return cls(counts, data.get("source", {}))
 
     def to_yaml(self) -> str:
+        """The calibration as YAML, its source and then the counts by predicate and kind, as :meth:`load`
+        reads it."""
         counts = {p: {k: list(row.get(k, (0, 0))) for k in KINDS if k in row or k in VIEW_KINDS}
                   for p, row in sorted(self.counts.items())}
         return (yaml.safe_dump({"source": dict(self.source)}, sort_keys=False, width=1000)

@@ -92,6 +92,7 @@ class GoalParse:
 
     @property
     def reasked(self) -> bool:
+        """Whether the first reply was not a valid goal and the model was asked again."""
         return len(self.attempts) > 1
 
     @property

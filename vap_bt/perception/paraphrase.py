@@ -42,6 +42,7 @@ def argument_index(name: str) -> int:
 
 
 def placeholders(arity: int) -> tuple[str, ...]:
+    """The placeholders of a predicate's ``arity`` arguments, in order: X, Y, ..."""
     return tuple(placeholder(i) for i in range(arity))
 
 

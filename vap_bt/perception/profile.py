@@ -186,6 +186,7 @@ class PredicatePerception:
 
     @property
     def key(self) -> str:
+        """``name/arity``: how a profile file names the predicate."""
         return f"{self.name}/{self.arity}"
 
     def questions(self, args: Sequence[str], n: int = TEMPLATE_COUNT) -> list[str]:
@@ -225,9 +226,11 @@ class PerceptionProfile:
     roles: Roles = field(default_factory=Roles)
 
     def get(self, name: str, arity: int) -> PredicatePerception | None:
+        """How ``name/arity`` is perceived; None for a predicate the domain does not have."""
         return self.predicates.get((name, arity))
 
     def source(self, name: str, arity: int) -> Source | None:
+        """What settles atoms of ``name/arity``; None for a predicate the domain does not have."""
         p = self.get(name, arity)
         return p.source if p is not None else None
 
@@ -243,12 +246,15 @@ class PerceptionProfile:
         return p.questions(atom.args, n)
 
     def unchecked_reason(self, atom: Atom) -> str | None:
+        """Why ``atom`` is not asked of the camera, in words for the report; None when it is."""
         p = self.get(atom.predicate, len(atom.args))
         if p is None:
             return f"{atom.predicate}/{len(atom.args)} is not in the perception profile"
         return p.unchecked_reason()
 
     def generated(self) -> list[PredicatePerception]:
+        """The predicates whose paraphrases were generated (by the backend or from templates), not written
+        in a profile."""
         return [p for p in self.predicates.values() if p.generated]
 
     def to_json(self) -> dict:

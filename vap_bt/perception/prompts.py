@@ -29,6 +29,7 @@ class PromptBook:
 
 @lru_cache(maxsize=1)
 def book() -> PromptBook:
+    """The templates of ``prompts.yaml``, read once."""
     raw = yaml.safe_load(resources.files("vap_bt.perception").joinpath("prompts.yaml").read_text())
     return PromptBook(
         goal_parsing=raw["goal_parsing"], predicate_query=raw["predicate_query"],
@@ -43,14 +44,17 @@ def spoken(name: str) -> str:
 
 
 def predicate_query(question: str) -> str:
+    """The predicate-query prompt around one paraphrased question."""
     return book().predicate_query.format(paraphrased_question=question)
 
 
 def view_sufficiency(question: str) -> str:
+    """The view-sufficiency prompt: does the picture show enough to answer ``question``?"""
     return book().view_sufficiency.format(predicate_question=question)
 
 
 def viewpoint_selection(question: str, target: str) -> str:
+    """The viewpoint-selection prompt: which way to move to answer ``question`` about ``target`` (spoken)."""
     return book().viewpoint_selection.format(predicate_question=question, target_object=spoken(target))
 
 

@@ -60,12 +60,15 @@ class Protocol:
 
     @classmethod
     def parse(cls, name: str) -> "Protocol":
+        """The protocol named ``name`` (:data:`PROTOCOLS`); a ValueError that lists the known ones for any
+        other."""
         try:
             return PROTOCOLS[name]
         except KeyError:
             raise ValueError(f"unknown verification protocol {name!r} ({', '.join(PROTOCOLS)})") from None
 
     def describe(self) -> dict:
+        """Every setting of the protocol, for the report."""
         return asdict(self)
 
 

@@ -38,6 +38,7 @@ class StateAnswer:
 
     @property
     def value(self) -> bool | None:
+        """The last round's vote if it settled; None leaves belief to the prior."""
         last = self.rounds[-1]
         return last.vote if last.settled else None
 

@@ -29,6 +29,9 @@ from vap_bt.scene.identity import named_relations
 
 @dataclass(frozen=True)
 class VoteSettings:
+    """How a round votes: N paraphrases, the share of answers that must agree, and whether to stop asking
+    once nothing left could change the vote."""
+
     paraphrases: int = 5  # N
     agreement: float = 0.8  # share of answers that must agree for "responses consistent" (4 of 5)
     early_stop: bool = False
@@ -36,6 +39,9 @@ class VoteSettings:
 
 @dataclass
 class Round:
+    """One round of a check: the questions asked of one frame and their answers, the vote, the view's
+    sufficiency and who judged it, and where the camera went next."""
+
     view: str  # the frame's id
     questions: list[str] = field(default_factory=list)
     answers: list[bool | None] = field(default_factory=list)
@@ -62,6 +68,8 @@ class Round:
 
     @property
     def settled(self) -> bool:
+        """Whether the round decides its atom: the answers agree on a value and the view was judged
+        sufficient."""
         return self.consistent and self.sufficient is True and self.vote is not None
 
     def to_json(self) -> dict:
@@ -75,6 +83,8 @@ class Round:
 
 
 def objects_of(atom: Atom) -> tuple[str, ...]:
+    """The objects a question about ``atom`` concerns (its arguments): what the simulated model looks for
+    in the frame."""
     return atom.args
 
 
@@ -169,6 +179,7 @@ class RoundAsker:
 
     @property
     def outstanding(self) -> int:
+        """How many questions have been sent and not yet answered."""
         return len(self.asked) - len(self.answers)
 
     def _may_shorten(self, value: bool) -> bool:
@@ -192,6 +203,9 @@ class RoundAsker:
 
     @property
     def done(self) -> bool:
+        """Whether the round needs no more answers: all are in, a confident answer stood for the vote, or
+        (as the protocol allows) nothing still to ask could change the vote. Never while answers are
+        outstanding, short of a confident one."""
         if self.confident is not None:
             return True
         if len(self.answers) == len(self.questions):
@@ -227,6 +241,8 @@ class RoundAsker:
         return wave
 
     def give(self, index: int, answer: Answer) -> None:
+        """Record the answer to question ``index``; anything but a yes or no is an abstention. Under
+        ``logprobs`` a confident first answer may stand for the whole vote."""
         value = answer.value if isinstance(answer.value, bool) else None
         self.answers[index] = value
         if (self.protocol.logprobs and len(self.asked) == 1 and value is not None and answer.confidence is not None
@@ -283,10 +299,12 @@ def viewpoint_query(atom: Atom, question: str, target: str) -> Query:
 
 
 def yes_no(answer: Answer) -> bool | None:
+    """The answer's yes or no; None for no usable answer (or a choice)."""
     return answer.value if isinstance(answer.value, bool) else None
 
 
 def choice(answer: Answer) -> str | None:
+    """The option the answer named; None for no usable answer (or a yes or no)."""
     return answer.value if isinstance(answer.value, str) else None
 
 

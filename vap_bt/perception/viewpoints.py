@@ -67,6 +67,7 @@ class ViewpointSearch:
 
     @property
     def spent(self) -> bool:
+        """Whether the check has made all K moves of its budget."""
         return self.moves >= self.budget
 
     def next(self, atom: Atom, last: Round, profile: PerceptionProfile | None) -> str | Query:
@@ -89,6 +90,7 @@ class ViewpointSearch:
         self.refused.add(direction)
 
     def moved(self) -> None:
+        """Count one move the robot made (a refused direction is not one: :meth:`refuse`)."""
         self.moves += 1
 
 

@@ -30,6 +30,10 @@ Purpose = Literal["predicate", "sufficiency", "viewpoint", "action", "goal"]
 
 @dataclass(frozen=True)
 class Query:
+    """One question about a frame: the prompt, whether it wants a yes or no or one of ``options``, what it
+    is for (``purpose``, the metering's key), and the atoms and objects it concerns (which only the
+    simulated model reads)."""
+
     prompt: str
     kind: Literal["yesno", "choice"] = "yesno"
     purpose: Purpose = "predicate"
@@ -55,6 +59,7 @@ class Answer:
 
     @property
     def usable(self) -> bool:
+        """Whether the reply gave a value; one that did not counts as uncertainty."""
         return self.value is not None
 
     @property
@@ -71,7 +76,11 @@ class VLM(Protocol):
 
     name: str
 
-    def ask(self, query: Query, frame: Frame) -> Answer: ...
+    def ask(self, query: Query, frame: Frame) -> Answer:
+        """Answer ``query`` about ``frame``. Blocks for as long as the model takes, within the backend's
+        deadline; a reply that cannot be read, or none in time, is an :class:`Answer` whose value is
+        None. Only a server that has stopped answering altogether raises
+        (:class:`~vap_bt.errors.TransportError`)."""
 
     def describe(self) -> dict:
         """Backend name and every parameter that shapes its answers (for the report)."""
@@ -108,7 +117,10 @@ class TextModel(Protocol):
 
     name: str
 
-    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion: ...
+    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
+        """Reply to a text prompt without an image. Blocks like :meth:`VLM.ask`; what became of the request
+        (a refusal, a timeout, ...) is said in the :class:`Completion`, not raised, short of a server
+        that has stopped answering."""
 
 
 @runtime_checkable
@@ -119,9 +131,13 @@ class Paraphraser(Protocol):
 
     name: str
 
-    def paraphrase(self, predicate: str, arg_types: tuple[str, ...], n: int) -> list[str] | None: ...
+    def paraphrase(self, predicate: str, arg_types: tuple[str, ...], n: int) -> list[str] | None:
+        """``n`` question templates for ``predicate``, whose arguments are of ``arg_types`` (``{X}`` for
+        the first, ``{Y}`` for the second, ...), or None when the backend cannot write them. The caller
+        checks them before use."""
 
-    def describe(self) -> dict: ...
+    def describe(self) -> dict:
+        """Backend name and every parameter that shapes its answers (for the report)."""
 
 
 _YES = re.compile(r"^\W*(yes|y|true)\b", re.I)
@@ -196,6 +212,7 @@ class MeteredVLM:
 
     @property
     def total(self) -> int:
+        """Queries asked so far, of every purpose."""
         return sum(self.counts.values())
 
     def describe(self) -> dict:

@@ -88,15 +88,23 @@ DOOR_AIM_HEIGHT = 0.8
 class Geometry(Protocol):
     """Fused per-object geometry from frames with depth (see :mod:`vap_bt.scene.geometry`)."""
 
-    def integrate(self, frame: Frame) -> list[str]: ...
+    def integrate(self, frame: Frame) -> list[str]:
+        """Fuse the detections of ``frame`` that have a mask and depth into their objects' geometry;
+        returns the names of the objects it changed."""
 
-    def forget(self, names) -> None: ...
+    def forget(self, names) -> None:
+        """Drop what earlier frames measured of ``names`` (they may have moved)."""
 
-    def relations(self, name: str, held=()) -> set[Atom]: ...
+    def relations(self, name: str, held=()) -> set[Atom]:
+        """Every geometric atom about ``name``: its support, its room, what it blocks or is blocked by,
+        whether it is reachable; ``held``: the items in the hand, which are in no place."""
 
-    def centroid(self, name: str) -> tuple[float, float, float] | None: ...
+    def centroid(self, name: str) -> tuple[float, float, float] | None:
+        """``name``'s centroid (metres, map frame), or None when no frame measured it."""
 
-    def box(self, name: str) -> tuple[float, ...] | None: ...
+    def box(self, name: str) -> tuple[float, ...] | None:
+        """``name``'s axis-aligned box (xmin, ymin, zmin, xmax, ymax, zmax; metres, map frame), or None
+        when no frame measured it."""
 
 
 @dataclass
@@ -361,6 +369,7 @@ class SceneGraphBuilder:
             self.geometry.forget(names)
 
     def detected(self, name: str) -> bool:
+        """Whether a frame has detected ``name`` since it was last forgotten."""
         return name in self.evidence
 
     def best_frames(self) -> dict[str, list[Frame]]:

@@ -48,11 +48,14 @@ class SceneObject:
     located: frozenset[Atom] = frozenset()
 
     def seen(self, **changes) -> "SceneObject":
+        """This node with what a new look changed (its centroid, box, frames, where belief put it)."""
         return replace(self, **changes)
 
 
 @dataclass
 class Change:
+    """One change of belief: its cause and the atoms it added and removed."""
+
     cause: str  # "apply", "undo", "correct", "relocate", "survey"
     added: frozenset[Atom]
     removed: frozenset[Atom]
@@ -83,6 +86,7 @@ class SceneGraph:
         return frozenset(self.facts)
 
     def holds(self, atom: Atom) -> bool:
+        """Whether ``atom`` is believed (the world is closed: an atom not in the facts is false)."""
         return atom in self.facts
 
     def _change(self, cause: str, add: set[Atom], remove: set[Atom]) -> Change:
@@ -96,6 +100,8 @@ class SceneGraph:
         return ch
 
     def apply(self, action: GroundAction) -> Change:
+        """Believe ``action`` done: its state difference in current belief, remembered so that :meth:`undo`
+        can take it back. Returns the change."""
         diff = action.diff(self.facts)
         ch = self._change("apply", set(diff.added), set(diff.deleted))
         self._applied.append((action, ch))
@@ -121,6 +127,7 @@ class SceneGraph:
         return self._change(cause, add, remove)
 
     def location(self, obj: str) -> set[Atom]:
+        """The believed atoms that say where ``obj`` is (its location roles' atoms)."""
         return {a for a in self.facts if a.predicate in self.roles.location and a.args and a.args[0] == obj}
 
     def relocate(self, obj: str, observed: set[Atom]) -> Change:

@@ -31,11 +31,16 @@ class _Strict(BaseModel):
 
 
 class Door(_Strict):
+    """A door between two rooms, and whether it starts open."""
+
     between: tuple[str, str]
     state: Literal["open", "closed"] = "open"
 
 
 class Furniture(_Strict):
+    """A piece of furniture in a room: a surface (things go on it), a container or appliance (things go
+    inside), or a sink; whether it is open, for what opens, and whether its top starts clear."""
+
     type: Literal["surface", "container", "appliance", "sink"]
     room: str
     state: Literal["open", "closed"] | None = None  # only for things that open
@@ -62,25 +67,33 @@ class Item(_Strict):
 
     @property
     def held(self) -> bool:
+        """Whether the robot starts holding the item (``place: held``)."""
         return self.place == "held"
 
     @property
     def on(self) -> str | None:
+        """What the item starts on (``place: on X``), else None."""
         w = self.place.split()
         return w[1] if w[0] == "on" else None
 
     @property
     def inside(self) -> str | None:
+        """What the item starts inside (``place: inside X``), else None."""
         w = self.place.split()
         return w[1] if w[0] == "inside" else None
 
 
 class Robot(_Strict):
+    """Where the robot starts: its room, and what it stands at (default: the room's floor)."""
+
     room: str
     at: str | None = None  # what the robot stands at and looks at; default: its room's floor
 
 
 class Layout(_Strict):
+    """A household as a person describes it: rooms, doors, the robot, furniture and items. Reading one
+    checks that every name it uses is one of its own and every place fits what goes there."""
+
     rooms: list[str]
     doors: dict[str, Door] = Field(default_factory=dict)
     robot: Robot
@@ -121,6 +134,8 @@ class Layout(_Strict):
         return out
 
     def room_of(self, name: str) -> str | None:
+        """The room ``name`` starts in (a piece of furniture's, a floor's, an item's support's); None for a
+        held item or a name that is none of these."""
         if name in self.furniture:
             return self.furniture[name].room
         for r in self.rooms:

@@ -119,10 +119,12 @@ class Extent:
 
     @property
     def top(self) -> float:
+        """The height of its support surface: the box's top (metres)."""
         return float(self.hi[2])
 
     @property
     def volume(self) -> float:
+        """The box's volume (cubic metres)."""
         return float(np.prod(self.hi - self.lo))
 
     def over(self, p: np.ndarray, margin: float) -> bool:
@@ -242,6 +244,8 @@ class Signatures:
     roles: Roles = field(default_factory=Roles)
 
     def has(self, predicate: str | None, arity: int) -> bool:
+        """Whether the domain has ``predicate`` with ``arity`` arguments (never for None: a role the domain
+        leaves unfilled)."""
         sig = self.knowledge.predicates.get(predicate) if predicate is not None else None
         return sig is not None and len(sig) == arity
 
@@ -252,6 +256,7 @@ class Signatures:
         return sig is not None and t is not None and position < len(sig) and self.knowledge.is_subtype(t, sig[position])
 
     def typed(self, atom: Atom) -> bool:
+        """Whether ``atom`` is of a predicate the domain has, each argument of a type the predicate takes."""
         return self.has(atom.predicate, len(atom.args)) and all(
             self.fits(atom.predicate, i, a) for i, a in enumerate(atom.args))
 

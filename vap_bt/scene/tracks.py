@@ -79,6 +79,7 @@ def cloud_box(cloud: o3d.geometry.PointCloud, top_trim: float = 0.0) -> Box:
 
 
 def box_diagonal(box: Box) -> float:
+    """The length of a box's diagonal (metres)."""
     return float(np.linalg.norm(np.subtract(box[3:], box[:3])))
 
 
@@ -99,6 +100,7 @@ class ObjectTrack:
     @classmethod
     def start(cls, name: str, label: str, cloud: o3d.geometry.PointCloud, frame_id: str,
               params: FusionParams = FusionParams()) -> "ObjectTrack":
+        """A new track: ``cloud``, the object's first view, seen in ``frame_id``."""
         return cls(name, label, cloud, _centroid(cloud), cloud_box(cloud, params.box_trim), 1, frame_id)
 
     @property
@@ -201,6 +203,7 @@ class Tracks:
         return self._tracks.pop(name, None)
 
     def get(self, name: str) -> ObjectTrack | None:
+        """``name``'s track, or None when nothing of it is tracked."""
         return self._tracks.get(name)
 
     def __getitem__(self, name: str) -> ObjectTrack:
@@ -216,4 +219,5 @@ class Tracks:
         return len(self._tracks)
 
     def names(self) -> list[str]:
+        """The names of the objects tracked, in the order their tracks were started."""
         return list(self._tracks)

@@ -57,10 +57,13 @@ class SceneDrawing:
     edges: tuple[tuple[str, str], ...]
 
     def nodes(self) -> rr.GraphNodes:
+        """Every node (the objects, the robot, the relations' labels) as rerun graph nodes, each at its
+        computed place with its label and colour."""
         return rr.GraphNodes(list(self.ids), labels=list(self.labels), positions=list(self.positions),
                              colors=list(self.colours), show_labels=True)
 
     def links(self) -> rr.GraphEdges:
+        """The edges as rerun graph edges (undirected)."""
         # undirected: an edge reads both ways (``counter — on — cup``), and arrowheads would
         # point at the labels of the relations
         return rr.GraphEdges(list(self.edges), graph_type="undirected")
