@@ -12,6 +12,7 @@ from types import SimpleNamespace
 from vap_bt.bt.context import Situation
 from vap_bt.bt.executive import Executive
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.roles import HOUSEHOLD
 from vap_bt.scene.graph import SceneGraph, SceneObject
 from vap_bt.scene.misses import MISS_RADIUS, Misses
 
@@ -31,7 +32,7 @@ def test_a_spot_where_an_item_was_missed_holds_for_that_item_until_it_is_held():
 
 def executive_with(graph: SceneGraph) -> SimpleNamespace:
     """Just what :meth:`Executive._note_miss` reads of an executive."""
-    return SimpleNamespace(misses=Misses(), _portable=lambda name: name.startswith("stick"))
+    return SimpleNamespace(misses=Misses(), _portable=lambda name: name.startswith("stick"), roles=HOUSEHOLD)
 
 
 def measured(graph: SceneGraph, name: str, centroid) -> None:
