@@ -90,7 +90,8 @@ def _run(tmp: Path, ep: str, *extra: str) -> Part:
 @pytest.mark.slow
 def test_killing_the_arm_server_mid_takeout_fails_that_goal_within_half_a_second(tmp_path):
     with parts(tmp_path) as (ep, running):
-        run = running["run"] = _run(tmp_path, ep, "--max-replans", "3")
+        # a rejoin wait of 5 s, not 30: the test is about the goal's end, not the wait that follows
+        run = running["run"] = _run(tmp_path, ep, "--max-replans", "3", "--rejoin-timeout", "5")
         sim = running["sim"]
         begun = sim.wait_for(r"\[([0-9.]+)\] begin takeout\(", 240, stream="stderr")
         time.sleep(0.1)  # the skill is planning or moving the arm by now (its goal lasts about 0.5 s)
