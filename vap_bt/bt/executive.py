@@ -558,28 +558,26 @@ class Executive:
         re-located and, when lost, looked for; and when the same situation came back from the same
         belief (``times``), a look round before the same plan. Returns whether it finished before
         the time budget ran out, and the re-survey it took, if any."""
-        found: dict = {}
-        executor = self.executor
-        steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, self._halt)]
+        executor, halt = self.executor, self._halt
+        steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, halt)]
         if s.kind == "unseen" and s.atom is not None:
             steps.append(Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
-                              executor, self._halt))
+                              executor, halt))
+        # each step reads what the one before it found from that step's result
+        feel = Step("feel the hand", lambda: self._feel_hand(graph, s), executor, halt)
+        relocate = Step("re-locate what it is about", lambda: self._relocate_involved(graph, s, feel.result),
+                        executor, halt)
 
-        def relocate() -> None:
-            found["lost"] = self._relocate_involved(graph, s, found["dropped"])
+        def look_for() -> Survey | None:
+            if relocate.result:
+                return self._resurvey(graph, relocate.result, worked=self._worked(s))
+            if times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
+                return self._look_afresh(graph, s)
+            return None
 
-        def resurvey() -> None:
-            if found["lost"]:
-                found["survey"] = self._resurvey(graph, found["lost"], worked=self._worked(s))
-            elif times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
-                found["survey"] = self._look_afresh(graph, s)
-
-        steps += [Step("feel the hand", lambda: found.__setitem__("dropped", self._feel_hand(graph, s)),
-                       executor, self._halt),
-                  Step("re-locate what it is about", relocate, executor, self._halt),
-                  Step("look for what is lost", resurvey, executor, self._halt)]
-        done = self._drive(recovery_tree(describe(s), steps), deadline, out)
-        return done, found.get("survey")
+        search = Step("look for what is lost", look_for, executor, halt)
+        done = self._drive(recovery_tree(describe(s), [*steps, feel, relocate, search]), deadline, out)
+        return done, search.result
 
     def _drive(self, tree: py_trees.trees.BehaviourTree, deadline: float | None,
                out: EpisodeOutcome | None = None) -> bool:
