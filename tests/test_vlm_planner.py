@@ -12,16 +12,18 @@ from __future__ import annotations
 import json
 import threading
 
+import numpy as np
 import pytest
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_OK
 from vap_bt.perception.action_proposal import ActionSyntaxError, action_errors, action_list, read_action
 from vap_bt.perception.prompts import book
+from vap_bt.robot.frame import Frame
 from vap_bt.taskfile import load
 
 from conftest import TREES
-from test_vlm_backends import chat, serve  # noqa: F401 (serve is a fixture)
+from test_vlm_backends import FAST, chat, decoded, gemini_at, generate, openai, serve  # noqa: F401 (serve: a fixture)
 
 CUP = TREES / "collect_cup.yaml"
 CUP_TASK = load(CUP).planning
@@ -179,6 +181,34 @@ def test_anything_else_is_not_an_action(reply):
     ("(grasp cup sofa living_room)", "unknown object 'sofa'"), ("(grasp cup kitchen living_room)", "is a room")])
 def test_validation_names_actions_arities_objects_and_types(action, needle):
     assert needle in action_errors(Atom.parse(action), CUP_TASK, sorted(CUP_TASK.objects))
+
+
+# --- the request: free text about a frame ------------------------------------------------------
+
+def test_both_protocols_send_the_frame_with_a_free_text_request_and_no_constraint(serve):
+    rgb = np.arange(8 * 8 * 3, dtype=np.uint8).reshape(8, 8, 3)
+    frame = Frame("f-1", 0.0, rgb=rgb)
+    server = serve(chat("(open door_lk)"))
+    vlm = openai(server, FAST)
+    reply = vlm.complete("which next?", "plan", frame)
+    body = server.seen[0].body
+    assert reply.text == "(open door_lk)" and text_of(body) == "which next?"
+    assert (decoded(images_of(body)[0].split(",", 1)[1]) == rgb).all()
+    assert body["max_tokens"] == vlm.text_max_tokens and not {"structured_outputs", "guided_choice", "grammar",
+                                                              "logprobs"} & set(body)
+    record = vlm.requests[0]
+    assert record.purpose == "plan" and record.frame_id == "f-1" and record.frame_sha1 is not None
+    vlm.complete("which next?", "plan", Frame("f-2", 0.0))  # no pixels: the prompt goes alone
+    assert server.seen[1].body["messages"][0]["content"] == "which next?"
+
+    gserver = serve(generate("done"))
+    gvlm = gemini_at(gserver, FAST)
+    assert gvlm.complete("which next?", "plan", frame).text == "done"
+    gbody = gserver.seen[0].body
+    parts, config = gbody["contents"][0]["parts"], gbody["generationConfig"]
+    assert "inline_data" in parts[0] and parts[-1] == {"text": "which next?"}
+    assert config["maxOutputTokens"] == gvlm.text_max_tokens and "responseSchema" not in config
+    assert "responseLogprobs" not in config
 
 
 # --- offline: refused, never faked --------------------------------------------------------------

@@ -32,6 +32,10 @@ then replans as for any failed action, or the episode ends "transport down" nami
 A goal given in words is read between the survey and the first plan (paper Alg. 1 line 2): the
 ``goal_parser`` (:mod:`vap_bt.perception.goal_parsing`) is handed the scene graph's objects.
 
+The VLM-planner baseline (settings ``planner="vlm"``, ``--verify vlm_planner``) shares the survey
+and the skill path and nothing after: no planner, no checks, no situations; the model names each
+next action (:mod:`vap_bt.bt.vlm_planner`).
+
 The executive says which :data:`PHASES` it is in (``phase``) and keeps the episode so far readable
 at every moment (:meth:`Executive.so_far`), so that a Ctrl-C, which may come anywhere, still leaves
 a whole report: before the first plan that is the belief built so far and nothing done.
