@@ -71,7 +71,7 @@ def run(cli, tmp_path, server: PlannerServer, *extra):
     code, out, err = cli("run", CUP, "--world", "symbolic", "--vlm", "openai", "--vlm-url", server.url,
                          "--vlm-model", "m", "--verify", "vlm_planner", "--no-injection", "--transport", "inproc",
                          "--report", report, "-q", *extra)
-    return code, json.loads(report.read_text()), err
+    return code, json.loads(report.read_text()), out + err  # the summary table, and what went wrong
 
 
 # --- an episode ---------------------------------------------------------------------------------
@@ -82,6 +82,7 @@ def test_the_vlm_names_each_action_the_skills_execute_it_and_the_world_confirms_
     assert code == EXIT_OK, err
     assert rep["strategy"] == "vlm_planner" and rep["success"] and rep["goal_satisfied"]
     assert rep["reason"] == "the VLM said done" and rep["plans"] == [] and rep["verifications"] == []
+    assert "5 executed; named one at a time by the VLM (6 steps)" in err
     assert [a["action"] for a in rep["actions_executed"]] == [
         str(CUP_TASK.knowledge.ground(a.predicate, a.args)) for a in map(Atom.parse, SOLUTION[:-1])]
     steps = rep["vlm_planner"]["steps"]
