@@ -63,7 +63,7 @@ from py_trees.common import Status
 
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
-from vap_bt.bt.context import ExecutionContext, VerifyMode
+from vap_bt.bt.context import ExecutionContext, PlanSource, VerifyMode
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
@@ -128,7 +128,7 @@ class ExecutiveSettings:
     threads: bool = False
     #: who writes the plan: "pddl" (the planner, checked as ``mode`` says) or "vlm" (the VLM-planner
     #: baseline: the model names each next action and nothing is checked, vap_bt.bt.vlm_planner)
-    planner: str = "pddl"
+    planner: PlanSource = "pddl"
     #: the VLM-planner's budget of steps (it has no plan whose length could bound it)
     max_steps: int = run_default("max_steps")
 
@@ -152,7 +152,8 @@ class Survey:
 class EpisodeOutcome:
     """How an episode ended: the executive's claim, why, and what it did on the way."""
 
-    success: bool  # the executive's own claim: its tree reached GoalCheck and it held (VLM-planner: the model said done)
+    #: the executive's own claim: its tree reached GoalCheck and it held (the VLM-planner's: the model said done)
+    success: bool
     reason: str
     plans: list[Plan]
     situations: list[Situation]

@@ -20,7 +20,6 @@ from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all, in_flight
-from vap_bt.domain.atoms import Literal
 from vap_bt.domain.task import PlanningTask
 from vap_bt.perception.action_proposal import Proposal, ProposalAttempt, judge, next_action_prompt, reask
 from vap_bt.perception.vlm import Completion, TextModel
@@ -28,17 +27,17 @@ from vap_bt.robot.frame import Frame
 
 
 class ProposeNextAction(py_trees.behaviour.Behaviour):
-    """Ask ``model`` for step ``step``'s action, given the goal and the actions done so far."""
+    """Ask ``model`` for step ``step``'s action toward ``task``'s goal, given the actions done so far
+    (``history``: one line each, as the prompt lists them)."""
 
     #: the board keys it uses (:mod:`vap_bt.bt.board`): none — its proposal is its own (:attr:`proposal`)
     KEYS: ClassVar[dict[str, Access]] = {}
 
-    def __init__(self, ctx: ExecutionContext, model: TextModel, task: PlanningTask, instruction: str,
-                 goal: tuple[Literal, ...], step: int, history: list[str]) -> None:
+    def __init__(self, ctx: ExecutionContext, model: TextModel, task: PlanningTask, instruction: str, step: int,
+                 history: list[str]) -> None:
         super().__init__(name=f"propose step {step}")
-        self.ctx, self.model, self.task, self.instruction, self.goal = ctx, model, task, instruction, goal
+        self.ctx, self.model, self.task, self.instruction = ctx, model, task, instruction
         self.step, self.history = step, history
-        self.board = ctx.board.client(type(self).__name__, self.KEYS)
         self.proposal = Proposal(step)
         self._objects: tuple[str, ...] = ()
         self._first = ""
@@ -48,8 +47,7 @@ class ProposeNextAction(py_trees.behaviour.Behaviour):
         graph = self.ctx.graph
         self.proposal = Proposal(self.step)
         self._objects = tuple(sorted(graph.objects))
-        self._first = next_action_prompt(self.instruction, self.goal, self.task, self._objects, graph.state(),
-                                         self.history)
+        self._first = next_action_prompt(self.instruction, self.task, self._objects, graph.state(), self.history)
         self.feedback_message = "asking the model"
         self._job = self.ctx.submit(self._ask, self._first, None)
 

@@ -62,8 +62,7 @@ class VlmPlanner:
         """Step until the model says ``done``, fails to name an action, or a budget ends the episode."""
         rec, history = self.record, []
         for step in range(self.max_steps):
-            propose = ProposeNextAction(self.ctx, self.model, self.task, self.instruction, self.task.goal, step,
-                                        history)
+            propose = ProposeNextAction(self.ctx, self.model, self.task, self.instruction, step, history)
             if not self.drive(PlanTree(propose), deadline):
                 return self._ended(False, "time budget exhausted while the VLM chose an action")
             p = propose.proposal

@@ -30,7 +30,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Iterable
 
-from vap_bt.domain.atoms import Atom, AtomSyntaxError, Literal
+from vap_bt.domain.atoms import Atom, AtomSyntaxError
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.domain.task import PlanningTask
 from vap_bt.perception.goal_parsing import predicate_list
@@ -83,14 +83,14 @@ def _unbracketed(text: str) -> str:
     return text[1:-1] if text.startswith("(") and text.endswith(")") else text
 
 
-def next_action_prompt(instruction: str, goal: Iterable[Literal], task: PlanningTask, objects: Iterable[str],
-                       facts: Iterable[Atom], history: Iterable[str]) -> str:
+def next_action_prompt(instruction: str, task: PlanningTask, objects: Iterable[str], facts: Iterable[Atom],
+                       history: Iterable[str]) -> str:
     """The ``vlm_planner`` prompt, filled in: the task's words and goal, the domain's actions and
     predicates, the objects the robot knows, what it believes now and what it has done."""
     done = list(history)
     return book().vlm_planner.format(
         instruction=instruction or "(none given: reach the goal)",
-        goal=", ".join(map(str, goal)), actions=action_list(task),
+        goal=", ".join(map(str, task.goal)), actions=action_list(task),
         predicate_list=predicate_list(task.knowledge), object_list=", ".join(objects),
         facts="\n".join(str(a) for a in sorted(facts)) or "(nothing)",
         history="\n".join(f"{i}. {line}" for i, line in enumerate(done, 1)) or "(none yet)")
