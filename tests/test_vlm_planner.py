@@ -11,19 +11,25 @@ from __future__ import annotations
 
 import json
 import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
+from py_trees.common import Status
 
+from vap_bt.bt.context import ExecutionContext
+from vap_bt.bt.propose_action import ProposeNextAction
 from vap_bt.domain.atoms import Atom
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_GOAL_NOT_REACHED, EXIT_OK
 from vap_bt.perception.action_proposal import ActionSyntaxError, action_errors, action_list, read_action
 from vap_bt.perception.prompts import book
 from vap_bt.robot.frame import Frame
+from vap_bt.scene.graph import SceneGraph
 from vap_bt.taskfile import load
 
 from conftest import TREES
-from test_vlm_backends import FAST, chat, decoded, gemini_at, generate, openai, serve  # noqa: F401 (serve: a fixture)
+from test_vlm_backends import FAST, HANG, chat, decoded, gemini_at, generate, openai, serve  # noqa: F401 (serve: a fixture)
 
 CUP = TREES / "collect_cup.yaml"
 CUP_TASK = load(CUP).planning
@@ -210,6 +216,33 @@ def test_both_protocols_send_the_frame_with_a_free_text_request_and_no_constrain
     assert "inline_data" in parts[0] and parts[-1] == {"text": "which next?"}
     assert config["maxOutputTokens"] == gvlm.text_max_tokens and "responseSchema" not in config
     assert "responseLogprobs" not in config
+
+
+class StillCamera:
+    """A camera that gives one picture, wherever it is aimed."""
+
+    def capture(self, aim=None) -> Frame:
+        return Frame("still", 0.0, rgb=np.zeros((8, 8, 3), np.uint8))
+
+
+def test_the_models_call_is_work_in_flight_polled_and_dropped_on_a_halt(serve):
+    """update() never waits for the model: RUNNING while it thinks; a halt leaves nothing to wait for."""
+    server = serve(HANG)
+    ctx = ExecutionContext(graph=SceneGraph.of_facts(CUP_TASK.init), vlm=None, camera=StillCamera(), skills=None,
+                           executor=ThreadPoolExecutor(2))
+    node = ProposeNextAction(ctx, openai(server, FAST), CUP_TASK, "take the cup", 0, [])
+    try:
+        started = time.monotonic()
+        for _ in range(3):
+            node.tick_once()
+            assert node.status == Status.RUNNING
+        assert time.monotonic() - started < 0.3
+        node.stop(Status.INVALID)
+        assert node.status == Status.INVALID and not node.proposal.attempts
+    finally:
+        server.release.set()
+        ctx.executor.shutdown(wait=True)
+    assert len(server.seen) >= 1 and text_of(server.seen[0].body).startswith(PLANNING_HEAD)
 
 
 # --- offline: refused, never faked --------------------------------------------------------------
