@@ -18,8 +18,8 @@ import pytest
 from py_trees.common import Access, Status
 
 from vap_bt.app.runner import RunConfig, Session
-from vap_bt.bt import (active_perception, apply_effects, execute_skill, feel_hand, goal_check, recovery,
-                       verify_predicate)
+from vap_bt.bt import (active_perception, apply_effects, execute_skill, feel_hand, goal_check, propose_action,
+                       recovery, verify_predicate)
 from vap_bt.bt.board import KEYS, Board, BoardClient
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.execute_skill import ExecuteSkill
@@ -32,8 +32,9 @@ from vap_bt.taskfile import load
 
 from conftest import TREES, household_profile
 
-#: the modules whose behaviours the executive ticks: a plan's tree, and a recovery's
-MODULES = (active_perception, apply_effects, execute_skill, feel_hand, goal_check, recovery, verify_predicate)
+#: the modules whose behaviours the executive ticks: a plan's tree, a recovery's, and the VLM-planner's
+MODULES = (active_perception, apply_effects, execute_skill, feel_hand, goal_check, propose_action, recovery,
+           verify_predicate)
 
 
 def behaviour_classes() -> list[type]:

@@ -63,6 +63,9 @@ def rows(rep: dict, outputs: Outputs = Outputs()) -> list[tuple[str, str]]:
     cfg, task = rep["config"], rep["task"]
     actions = rep["actions_executed"]
     failed = sum(a.get("state") != "succeeded" for a in actions)
+    plans = f"{len(rep['plans'])} plan{'s' if len(rep['plans']) != 1 else ''}"
+    if rep.get("vlm_planner"):  # the VLM-planner baseline has no plan: the model named each action
+        plans = f"named one at a time by the VLM ({len(rep['vlm_planner']['steps'])} steps)"
     replans = f"{rep['replans']}"
     if rep["replan_ms"]:
         replans += f" (slowest {max(rep['replan_ms']):.0f} ms)"
@@ -71,8 +74,7 @@ def rows(rep: dict, outputs: Outputs = Outputs()) -> list[tuple[str, str]]:
         ("world", f"{rep['world']['name']}, seed {rep['seed']}, verify {cfg['verify']}, "
                   f"injection {'on' if cfg['injection'] else 'off'}"),
         ("success", verdict(rep)),
-        ("actions", f"{len(actions)} executed" + (f", {failed} failed" if failed else "")
-                    + f"; {len(rep['plans'])} plan{'s' if len(rep['plans']) != 1 else ''}"),
+        ("actions", f"{len(actions)} executed" + (f", {failed} failed" if failed else "") + f"; {plans}"),
         ("situations", f"{_counted(rep['situations'], 'detected')}; "
                        f"{_counted(rep['injected'], 'injected by the world')}"),
         ("replans", replans),

@@ -53,6 +53,9 @@ class StatedSettings(Protocol):
 #: take two replans (the correction, then what it uncovers); with 10, a third of the failures with
 #: injection were episodes still recovering (docs/BENCHMARKS.md)
 MAX_REPLANS = 20
+#: steps the VLM-planner may take (it has no plan whose length could bound it; the household's
+#: longest plans are about a dozen actions)
+MAX_STEPS = 30
 #: the accepted chance of claiming a goal atom that does not hold, per atom (vap_bt.perception.evidence)
 CLAIM_RISK = 0.05
 
@@ -72,7 +75,9 @@ REJOIN_TIMEOUT_S = 30.0
 SNAPSHOT_TIMEOUT_S = 2.0
 
 World = Literal["symbolic", "pybullet"]
-Verify = Literal["both", "pre", "eff", "none"]
+#: which checks a plan's tree has (both, pre, eff, none: the closed-world baseline), or vlm_planner:
+#: no PDDL planner and no checks, the VLM names each next action (the paper's VLM-planner baseline)
+Verify = Literal["both", "pre", "eff", "none", "vlm_planner"]
 #: sim (world-side, offline) | sim-http | the HTTP backends of vap_bt.perception.backends
 Vlm = Literal["sim", "sim-http", "openai", "gemini"]
 Engine = Literal["fast-downward", "search"]
@@ -140,7 +145,9 @@ class RunConfig:
 
     verify: Annotated[Verify, Option("--verify", RUN_TREE, in_task=OPTIONS)] = Field(
         "both", description="which checks the tree has: preconditions and effects, one of them, or none (the "
-                            "closed-world baseline); default the task file's options.verify, else both")
+                            "closed-world baseline); or vlm_planner: no planner and no checks, a real VLM names "
+                            "each next action (the VLM-planner baseline); default the task file's options.verify, "
+                            "else both")
     world: Annotated[World, Option("--world", in_task=TOP_LEVEL)] = Field(
         "symbolic", description="the world to run in (default: the task file's world:; the household's task "
                                 "files say pybullet)")
@@ -196,6 +203,9 @@ class RunConfig:
                     "'Looking again')")
     max_replans: Annotated[int, Option("--max-replans", in_task=OPTIONS)] = Field(
         MAX_REPLANS, ge=0, description=f"replans an episode may make (default {MAX_REPLANS})")
+    max_steps: Annotated[int, Option("--max-steps", in_task=OPTIONS)] = Field(
+        MAX_STEPS, ge=1, description=f"--verify vlm_planner: actions the VLM may name before the episode ends "
+                                     f"without its 'done' (default {MAX_STEPS})")
     planner: Annotated[Engine, Option("--planner")] = Field(
         "fast-downward", description="engine of the first plan")
     transport: Annotated[Literal["inproc", "zenoh"], Option("--transport", cli_default="zenoh")] = Field(

@@ -192,6 +192,8 @@ def _compiled_tree(args):
     if not planning.goal:
         raise InputError(f"{task.path}: field goal", "export plans goal: atoms; a goal in words is parsed only "
                                                      "by a run (vap-bt run --vlm openai|gemini)")
+    if settings["verify"] == "vlm_planner":
+        raise InputError("--verify", "vlm_planner compiles no tree: the VLM names each action as the run goes")
     plan = Planner(planning).plan()
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
                            camera=None, skills=None, mode=VerifyMode.parse(settings["verify"]),

@@ -148,9 +148,17 @@ def make_endpoint(task: Task, world: World, cfg: RunConfig):
         return None
     from vap_bt.sim.vlm_endpoint import SimVLMEndpoint
 
+    show_pictures(world)
+    return SimVLMEndpoint(sim_vlm(task, world, cfg), world.captures, latency_s=cfg.vlm_latency).start()
+
+
+def show_pictures(world: World) -> None:
+    """Have a world without pixels (the symbolic one) give each frame a picture, a card of its id,
+    for a model that is shown only pictures: the simulated VLM behind its endpoint (it reads the
+    card back), or a real model asked for the VLM-planner's next action (it reads the prompt's
+    facts; the card stands for the frame a real camera would attach)."""
     if hasattr(world, "frame_cards"):
         world.frame_cards = True
-    return SimVLMEndpoint(sim_vlm(task, world, cfg), world.captures, latency_s=cfg.vlm_latency).start()
 
 
 def make_vlm(task: Task, world: World, cfg: RunConfig, endpoint=None):
@@ -192,6 +200,9 @@ class GoalWords:
 
 def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
     """Say bad world, VLM and goal options in one line before anything starts; returns the goal words."""
+    if cfg.verify == "vlm_planner" and cfg.vlm not in HTTP_BACKENDS:
+        raise InputError("--verify", f"vlm_planner needs a real VLM backend ({', '.join(HTTP_BACKENDS)}): "
+                                     "the simulated VLM cannot plan")
     if cfg.world == "pybullet" and task.spec.scene is None:  # a PDDL problem has no geometry to build
         raise InputError("--world", "the pybullet world builds a household from a task file's scene:; "
                                     "this task has a PDDL problem instead: run it --world symbolic")
@@ -200,8 +211,9 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
     if cfg.vlm in ("sim", "sim-http") and (cfg.vlm_url or cfg.vlm_model):
         raise InputError("--vlm-url" if cfg.vlm_url else "--vlm-model",
                          f"only for a real backend (--vlm openai|gemini); the {cfg.vlm} VLM has neither")
-    if cfg.vlm in HTTP_BACKENDS and cfg.world == "symbolic" and cfg.verify != "none":
+    if cfg.vlm in HTTP_BACKENDS and cfg.world == "symbolic" and cfg.verify not in ("none", "vlm_planner"):
         # every check would be an abstention without a request: the run would only ever be stuck
+        # (the VLM-planner checks nothing, and its frames get a picture: show_pictures)
         raise InputError("--vlm", f"the {cfg.vlm} VLM answers from pictures and the symbolic world's frames "
                                   "have none: run it --world pybullet, or --verify none (it then only parses goals)")
     if cfg.vlm_latency and cfg.vlm != "sim-http":
@@ -268,7 +280,9 @@ def executive_settings(cfg: RunConfig, *, remote: bool) -> ExecutiveSettings:
     protocol = Protocol.parse(cfg.protocol)
     if cfg.early_stop:
         protocol = replace(protocol, early_stop=True)
-    return ExecutiveSettings(mode=VerifyMode.parse(cfg.verify), budget=cfg.budget,
+    vlm_plans = cfg.verify == "vlm_planner"  # no planner and no checks: vap_bt.bt.vlm_planner
+    return ExecutiveSettings(mode=VerifyMode.parse("none" if vlm_plans else cfg.verify), budget=cfg.budget,
+                             planner="vlm" if vlm_plans else "pddl", max_steps=cfg.max_steps,
                              vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
                              max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
                              tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
@@ -323,6 +337,8 @@ class Session:
             self.world = make_world(self.task, self.cfg)
             self.skills = make_skills(self.task, self.world)
             self.endpoint = make_endpoint(self.task, self.world, self.cfg)  # sim-http: the sim VLM over HTTP
+            if self.cfg.verify == "vlm_planner":  # the model is shown the frame each step
+                show_pictures(self.world)
             if self.vlm is None:  # the simulated VLM, in process or behind its endpoint
                 self.vlm = make_vlm(self.task, self.world, self.cfg, self.endpoint)
         self.profile = make_profile(self.task, self.vlm)
@@ -372,7 +388,8 @@ class Session:
                               prior=self.task.prior, geometry=make_geometry(cfg),
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
                               on_verification=self._score_verification,
-                              goal_parser=self._goal_parser, profile=self.profile)
+                              goal_parser=self._goal_parser, profile=self.profile,
+                              instruction=self.task.spec.instruction.strip())
         self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
         if self.recorder is not None:  # the live view's 3-D scene shows the fused clouds beside the boxes
             self.recorder.clouds = lambda: fused_clouds(executive)
@@ -509,6 +526,7 @@ class Session:
         return {
             "success": out.success,
             "goal_satisfied": self._holds(goal),
+            "strategy": cfg.verify,  # which checks the trees had, or the VLM-planner baseline
             "reason": out.reason,
             "no_initial_plan": out.no_initial_plan or None,
             # what the goal's last check rested on: looked at, felt, or belief alone
@@ -530,6 +548,9 @@ class Session:
                            "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
                            "verifications": verification_counts(verifications)},
             "plans": [p.to_json() for p in out.plans],
+            # --verify vlm_planner: each step's prompts, frames, replies, re-asks and what came of them
+            "vlm_planner": {"max_steps": cfg.max_steps, "steps": [p.to_json() for p in out.proposals]}
+            if cfg.verify == "vlm_planner" else None,
             "actions_executed": board.actions,
             "situations": [s.to_json() for s in out.situations],
             "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,

@@ -38,6 +38,10 @@ from vap_bt.skill import SkillClient
 #: does not go on over a precondition nobody could see); "go_on" — believe it and act; "stop" —
 #: end the episode
 UnseenPolicy = Literal["look", "go_on", "stop"]
+#: who writes the plan (:class:`vap_bt.bt.executive.ExecutiveSettings`): "pddl" — the planner, and
+#: the trees check what :class:`VerifyMode` says; "vlm" — the VLM-planner baseline, the model names
+#: each next action and nothing is checked (:mod:`vap_bt.bt.vlm_planner`)
+PlanSource = Literal["pddl", "vlm"]
 
 
 @dataclass(frozen=True)

@@ -32,6 +32,10 @@ then replans as for any failed action, or the episode ends "transport down" nami
 A goal given in words is read between the survey and the first plan (paper Alg. 1 line 2): the
 ``goal_parser`` (:mod:`vap_bt.perception.goal_parsing`) is handed the scene graph's objects.
 
+The VLM-planner baseline (settings ``planner="vlm"``, ``--verify vlm_planner``) shares the survey
+and the skill path and nothing after: no planner, no checks, no situations; the model names each
+next action (:mod:`vap_bt.bt.vlm_planner`).
+
 The executive says which :data:`PHASES` it is in (``phase``) and keeps the episode so far readable
 at every moment (:meth:`Executive.so_far`), so that a Ctrl-C, which may come anywhere, still leaves
 a whole report: before the first plan that is the belief built so far and nothing done.
@@ -59,12 +63,13 @@ from py_trees.common import Status
 
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
-from vap_bt.bt.context import ExecutionContext, VerifyMode
+from vap_bt.bt.context import ExecutionContext, PlanSource, VerifyMode
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.bt.recovery import Halting, Step, recovery_tree
 from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, describe, stuck
+from vap_bt.bt.vlm_planner import VlmPlanner
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
 from vap_bt.domain.task import PlanningTask
@@ -121,6 +126,11 @@ class ExecutiveSettings:
     claim_risk: float = run_default("claim_risk")
     #: work in flight on a thread pool (a remote model or robot); False: done at once, in-process
     threads: bool = False
+    #: who writes the plan: "pddl" (the planner, checked as ``mode`` says) or "vlm" (the VLM-planner
+    #: baseline: the model names each next action and nothing is checked, vap_bt.bt.vlm_planner)
+    planner: PlanSource = "pddl"
+    #: the VLM-planner's budget of steps (it has no plan whose length could bound it)
+    max_steps: int = run_default("max_steps")
 
 
 @dataclass
@@ -142,7 +152,8 @@ class Survey:
 class EpisodeOutcome:
     """How an episode ended: the executive's claim, why, and what it did on the way."""
 
-    success: bool  # the executive's own claim: its tree reached GoalCheck and it held
+    #: the executive's own claim: its tree reached GoalCheck and it held (the VLM-planner's: the model said done)
+    success: bool
     reason: str
     plans: list[Plan]
     situations: list[Situation]
@@ -155,6 +166,8 @@ class EpisodeOutcome:
     #: why there was no first plan: "unsolvable" (none exists from what the survey saw) or
     #: "timeout" (the planner gave up); empty when there was one. The CLI's exit codes 3 and 5
     no_initial_plan: str = ""
+    #: the VLM-planner's steps (vap_bt.perception.action_proposal.Proposal); empty for the planner's
+    proposals: list = field(default_factory=list)
 
     @classmethod
     def nothing_yet(cls, graph: SceneGraph) -> "EpisodeOutcome":
@@ -175,7 +188,7 @@ class Executive:
                  on_survey: Callable[[Survey, SceneGraph], None] | None = None,
                  on_verification: Callable[[Verification], None] | None = None,
                  goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None,
-                 profile: PerceptionProfile | None = None) -> None:
+                 profile: PerceptionProfile | None = None, instruction: str = "") -> None:
         self.task, self.planner, self.skills, self.body, self.vlm = task, planner, skills, body, vlm
         #: raised by a halted recovery step: its routine stops at its next camera call
         self._halt = threading.Event()
@@ -196,6 +209,8 @@ class Executive:
         self.geometry = geometry
         #: ParseGoal (vap_bt.perception.goal_parsing): the goal from words, over the graph's objects
         self.goal_parser = goal_parser
+        #: the task's words, for the prompts that show them (the VLM-planner's)
+        self.instruction = instruction
         #: which predicates are asked of the VLM and how (default: the domain's own profile)
         self.profile = profile if profile is not None else resolve(task.knowledge)
         #: which predicate plays each role the executive acts on (the profile's): the one that says
@@ -208,6 +223,8 @@ class Executive:
         self.phase = PHASES[0]  # which of PHASES the episode is in
         if vlm is None and (self.s.mode.pre or self.s.mode.eff):
             raise ValueError("verification needs a VLM; use verify mode 'none' to run without one")
+        if self.s.planner == "vlm" and not callable(getattr(vlm, "complete", None)):
+            raise ValueError("the VLM-planner needs a VLM that writes text (a real backend)")
 
     # -- the loop ----------------------------------------------------------------------------
 
@@ -242,6 +259,8 @@ class Executive:
             self.phase = "goal parsing"
             self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
             self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
+        if self.s.planner == "vlm":
+            return self._run_vlm_planner(ctx, out)
         self.phase = "planning"
         try:
             plan = self.planner.plan(graph.state(), self.task.goal)
@@ -258,6 +277,20 @@ class Executive:
         finally:
             self.halt(tree)
             ctx.close()  # the body's worker, if a check asked the gripper
+
+    def _run_vlm_planner(self, ctx: ExecutionContext, out: EpisodeOutcome) -> EpisodeOutcome:
+        """The VLM-planner baseline instead of plan, compile and tick (:mod:`vap_bt.bt.vlm_planner`):
+        the model names each action, the skills execute it, nothing is checked."""
+        self.phase = "acting"
+        loop = VlmPlanner(ctx, self.vlm, self.task, self.instruction, self.s.max_steps,
+                          drive=lambda tree, deadline: self._drive(tree, deadline, out), rejoin=self._rejoin)
+        out.proposals = loop.record.proposals  # readable as it fills (a Ctrl-C's report)
+        try:
+            run = loop.run(time.monotonic() + self.s.max_seconds)
+        finally:
+            ctx.close()
+        out.success, out.reason = run.success, run.reason
+        return out
 
     def _tick_until_done(self, tree, ctx: ExecutionContext, plan: Plan, out: EpisodeOutcome,
                          deadline: float) -> EpisodeOutcome:

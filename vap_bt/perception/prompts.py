@@ -17,7 +17,8 @@ import yaml
 
 @dataclass(frozen=True)
 class PromptBook:
-    """The appendix's prompt templates (and the baselines' two questions), as ``str.format`` text."""
+    """The appendix's prompt templates (and the baselines' two questions), as ``str.format`` text;
+    beside them the VLM-planner baseline's two prompts, which are ours (the paper quotes none)."""
 
     goal_parsing: str
     predicate_query: str
@@ -25,17 +26,15 @@ class PromptBook:
     viewpoint_selection: str
     success_vqa: str
     affordance_vqa: str
+    vlm_planner: str
+    vlm_planner_reask: str
 
 
 @lru_cache(maxsize=1)
 def book() -> PromptBook:
     """The templates of ``prompts.yaml``, read once."""
     raw = yaml.safe_load(resources.files("vap_bt.perception").joinpath("prompts.yaml").read_text())
-    return PromptBook(
-        goal_parsing=raw["goal_parsing"], predicate_query=raw["predicate_query"],
-        view_sufficiency=raw["view_sufficiency"], viewpoint_selection=raw["viewpoint_selection"],
-        success_vqa=raw["success_vqa"], affordance_vqa=raw["affordance_vqa"],
-    )
+    return PromptBook(**{name: raw[name] for name in PromptBook.__dataclass_fields__})
 
 
 def spoken(name: str) -> str:

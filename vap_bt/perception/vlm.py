@@ -8,9 +8,11 @@ vote treats as uncertainty. A timeout is the same: uncertainty, never a crash.
 ``Query.about`` names the atoms the question concerns. Real models ignore it (they have the
 prompt and the image); the simulated model judges from what the world shows of those atoms' objects.
 
-One request has no image: goal parsing (paper Alg. 1 line 2) asks a :class:`TextModel` to
-``complete`` a text prompt and reads the free text it returns (a :class:`Completion`). Only the
-real backends answer text prompts; the simulated VLM does not parse goals.
+Two requests want free text rather than an answer among options: goal parsing (paper Alg. 1
+line 2) asks a :class:`TextModel` to ``complete`` a text prompt, with no image, and the
+VLM-planner baseline asks it for the next action, with the current frame; both read the free text
+it returns (a :class:`Completion`). Only the real backends answer them; the simulated VLM neither
+parses goals nor plans.
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Frame
 
 T = TypeVar("T")
-Purpose = Literal["predicate", "sufficiency", "viewpoint", "action", "goal"]
+Purpose = Literal["predicate", "sufficiency", "viewpoint", "action", "goal", "plan"]
 
 
 @dataclass(frozen=True)
@@ -117,10 +119,10 @@ class TextModel(Protocol):
 
     name: str
 
-    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
-        """Reply to a text prompt without an image. Blocks like :meth:`VLM.ask`; what became of the request
-        (a refusal, a timeout, ...) is said in the :class:`Completion`, not raised, short of a server
-        that has stopped answering."""
+    def complete(self, prompt: str, purpose: Purpose = "goal", frame: Frame | None = None) -> Completion:
+        """Reply to a text prompt in free text, shown ``frame``'s picture when one is given and has
+        pixels. Blocks like :meth:`VLM.ask`; what became of the request (a refusal, a timeout, ...)
+        is said in the :class:`Completion`, not raised, short of a server that has stopped answering."""
 
 
 @runtime_checkable
@@ -180,12 +182,12 @@ class MeteredVLM:
     def ask(self, query: Query, frame: Frame) -> Answer:
         return self._metered(query.purpose, lambda: self.inner.ask(query, frame))
 
-    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
+    def complete(self, prompt: str, purpose: Purpose = "goal", frame: Frame | None = None) -> Completion:
         """The inner model's :meth:`TextModel.complete`, counted like a query."""
         complete = getattr(self.inner, "complete", None)
         if complete is None:
             raise TypeError(f"the {self.name} VLM answers questions about frames, not text prompts")
-        return self._metered(purpose, lambda: complete(prompt, purpose))
+        return self._metered(purpose, lambda: complete(prompt, purpose, frame))
 
     def _metered(self, purpose: str, call: Callable[[], T]) -> T:
         t0 = time.perf_counter()

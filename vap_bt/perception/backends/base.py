@@ -29,8 +29,10 @@ accepts and never answers), for as long as its budgets last. So the backend reme
 :class:`StopWhenSilent`, which turns that into a :class:`~vap_bt.errors.TransportError`: the
 episode ends "transport down" with its report, as for any other part that went away.
 
-:meth:`HttpVLM.complete` is the one text-only request (goal parsing): the same template without
-the frame, returning the reply's free text as a :class:`~vap_bt.perception.vlm.Completion`.
+:meth:`HttpVLM.complete` asks for free text (goal parsing, the VLM-planner's next action): the
+same template without options, returning the reply's text as a
+:class:`~vap_bt.perception.vlm.Completion`; the frame, when one is given and has pixels, goes with
+the prompt as in :meth:`HttpVLM.ask`.
 """
 
 from __future__ import annotations
@@ -136,9 +138,9 @@ class HttpVLM:
 
     def request(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...],
                 features: frozenset[str]) -> dict:
-        """The request body; ``features`` names the optional features to include. Without an
-        image (and then without options) it is a text-only request: no image part, no answer
-        constraint, no logprobs, ``text_max_tokens``."""
+        """The request body; ``features`` names the optional features to include. Without
+        options it asks for free text: no answer constraint, no logprobs, ``text_max_tokens``,
+        and the image part only when there is an image (a text-only request has none)."""
         raise NotImplementedError
 
     def read(self, data: Any) -> Reply:
@@ -166,17 +168,21 @@ class HttpVLM:
         raw = rec.reply if rec.status == 200 else ""  # an error body is for the record, not an answer's text
         return Answer(raw=raw, value=rec.value, confidence=rec.confidence, latency_s=rec.latency_s)
 
-    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
-        """Ask ``prompt`` with no image and return the model's free text (goal parsing).
+    def complete(self, prompt: str, purpose: Purpose = "goal", frame: Frame | None = None) -> Completion:
+        """Ask ``prompt`` and return the model's free text (goal parsing; with ``frame``, the
+        VLM-planner's next action about what the camera shows).
 
         The same transport, timeouts, retries, feature dropping and records as :meth:`ask`; the
-        request carries no image, no answer constraint and no logprobs, and has the larger
-        ``text_max_tokens`` budget. A reply cut off at that budget is not an answer (outcome
-        ``unparsed``): a goal missing its tail would otherwise pass for a whole one. Never raises.
+        request carries no answer constraint and no logprobs, and has the larger
+        ``text_max_tokens`` budget. The frame's picture goes with it when it has one (a frame
+        without pixels leaves the request text-only: the prompt still says what is known). A reply
+        cut off at that budget is not an answer (outcome ``unparsed``): a goal missing its tail
+        would otherwise pass for a whole one. Never raises.
         """
         rec = RequestRecord(backend=self.name, model=self.model, purpose=purpose, kind="text",
-                            prompt=prompt, options=(), frame_id="")
-        self._recorded(rec, lambda deadline: self._complete(prompt, rec, deadline))
+                            prompt=prompt, options=(), frame_id=frame.frame_id if frame is not None else "")
+        rgb = frame.rgb if frame is not None else None
+        self._recorded(rec, lambda deadline: self._complete(prompt, rgb, rec, deadline))
         text = rec.reply if rec.outcome == "answer" else None
         return Completion(text=text, outcome=rec.outcome, error=rec.error, latency_s=rec.latency_s)
 
@@ -209,8 +215,16 @@ class HttpVLM:
         if reply is not None:
             self._interpret(query, reply, rec)
 
-    def _complete(self, prompt: str, rec: RequestRecord, deadline: float) -> None:
-        reply = self._exchange(prompt, None, (), deadline, rec)
+    def _complete(self, prompt: str, rgb: np.ndarray | None, rec: RequestRecord, deadline: float) -> None:
+        image = None
+        if rgb is not None:
+            try:
+                image = self._images.encode(rgb)
+            except ValueError as e:  # not an (H, W, 3) uint8 image: nothing to show, nothing sent
+                rec.outcome, rec.error = "no_image", str(e)
+                return
+            rec.frame_sha1, rec.image_size = image.sha1, (image.width, image.height)
+        reply = self._exchange(prompt, image, (), deadline, rec)
         if reply is None:
             return
         rec.reply, rec.finish_reason = reply.text or "", reply.finish_reason
@@ -350,8 +364,10 @@ class StopWhenSilent:
         stopped answering."""
         return self._checked(self.inner.ask(query, frame))
 
-    def complete(self, prompt: str, purpose: Purpose = "goal") -> Completion:
-        return self._checked(self.inner.complete(prompt, purpose))
+    def complete(self, prompt: str, purpose: Purpose = "goal", frame: Frame | None = None) -> Completion:
+        """The inner backend's free text, or a :class:`~vap_bt.errors.TransportError` when its server
+        has stopped answering."""
+        return self._checked(self.inner.complete(prompt, purpose, frame))
 
     def _checked(self, answer):
         why = self.inner.silent

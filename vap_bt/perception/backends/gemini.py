@@ -29,7 +29,9 @@ without it (see :mod:`.base`). A rate limit is a 429 whose ``error.details`` hol
 
 A text-only request (:meth:`~.base.HttpVLM.complete`, goal parsing) has only the text part, no
 enum and no logprobs, thinking still off, ``maxOutputTokens`` = ``text_max_tokens``;
-``finishReason`` MAX_TOKENS means it was cut off.
+``finishReason`` MAX_TOKENS means it was cut off. A free-text request about a frame (the
+VLM-planner's next action) has the inline image before the text, as a question has, and is
+otherwise the same.
 
 Paraphrases for a predicate without any (:meth:`~.base.HttpVLM.paraphrase`) are asked with the
 same endpoint and a text-only body: one text part, ``temperature`` 0, a larger
@@ -96,17 +98,17 @@ class GeminiVLM(HttpVLM):
 
     def request(self, prompt: str, image: EncodedImage | None, options: tuple[str, ...],
                 features: frozenset[str]) -> dict:
-        text_only = image is None  # goal parsing: no inline data, no enum, no logprobs
+        free = not options  # free text (goal parsing, the VLM-planner): no enum, no logprobs
         config: dict[str, Any] = {"temperature": 0, "candidateCount": 1,
-                                  "maxOutputTokens": self.text_max_tokens if text_only else self.max_tokens}
-        if "enum" in features and not text_only:
+                                  "maxOutputTokens": self.text_max_tokens if free else self.max_tokens}
+        if "enum" in features and not free:
             config["responseMimeType"] = "text/x.enum"
             config["responseSchema"] = {"type": "STRING", "enum": list(options)}
         if "thinking" in features:
             config["thinkingConfig"] = {"thinkingBudget": 0}
-        if "logprobs" in features and self.top_logprobs > 0 and not text_only:
+        if "logprobs" in features and self.top_logprobs > 0 and not free:
             config["responseLogprobs"], config["logprobs"] = True, self.top_logprobs
-        parts = [] if text_only else [{"inline_data": {"mime_type": image.mime, "data": image.png_b64}}]
+        parts = [] if image is None else [{"inline_data": {"mime_type": image.mime, "data": image.png_b64}}]
         return {"contents": [{"role": "user", "parts": [*parts, {"text": prompt}]}], "generationConfig": config}
 
     def read(self, data: Any) -> Reply:

@@ -19,7 +19,9 @@ strictly like anyone's. A server that rejects an unknown field (OpenAI's own API
 
 A text-only request (:meth:`~.base.HttpVLM.complete`, goal parsing) is the same POST with the
 prompt as the message's plain string content, no image part, no constraint and no logprobs,
-``max_tokens`` = ``text_max_tokens``; ``finish_reason == "length"`` means it was cut off.
+``max_tokens`` = ``text_max_tokens``; ``finish_reason == "length"`` means it was cut off. A
+free-text request about a frame (the VLM-planner's next action) has the image part first, as a
+question has, and is otherwise the same.
 
 Paraphrases for a predicate without any (:meth:`~.base.HttpVLM.paraphrase`) are asked in a
 text-only request to the same endpoint: one user message with the text as its content,
@@ -72,6 +74,9 @@ class OpenAICompatVLM(HttpVLM):
             return {"model": self.model, "messages": [{"role": "user", "content": prompt}],
                     "temperature": 0, "max_tokens": self.text_max_tokens, "n": 1, "stream": False}
         content = [{"type": "image_url", "image_url": {"url": image.data_url()}}, {"type": "text", "text": prompt}]
+        if not options:  # free text about the frame (the VLM-planner's next action): nothing constrained
+            return {"model": self.model, "messages": [{"role": "user", "content": content}],
+                    "temperature": 0, "max_tokens": self.text_max_tokens, "n": 1, "stream": False}
         body: dict[str, Any] = {"model": self.model, "messages": [{"role": "user", "content": content}],
                                 "temperature": 0, "max_tokens": self.max_tokens, "n": 1, "stream": False}
         if "structured_outputs" in features:
