@@ -26,7 +26,7 @@ from typing import Any, Mapping
 
 from py_trees.common import Access
 
-from vap_bt.bt.record import GoalEvidence, Situation, Unchecked, Verification, Verified
+from vap_bt.bt.record import ActionCheck, GoalEvidence, Situation, Unchecked, Verification, Verified
 from vap_bt.domain.atoms import Atom
 
 
@@ -37,6 +37,8 @@ class Board:
     #: the check or skill that failed the tree, for the executive to handle (it clears it)
     situation: Situation | None = None
     verifications: list[Verification] = field(default_factory=list)
+    #: the action-level questions asked (the SuccessVQA/AffordanceVQA baselines: :mod:`vap_bt.bt.action_check`)
+    action_checks: list[ActionCheck] = field(default_factory=list)
     #: goal atoms the final look could not settle: success is not claimed over them (the
     #: executive looks again, and clears this for the next tree)
     unconfirmed_goal: list[Atom] = field(default_factory=list)
