@@ -2,8 +2,9 @@
 
 Each baseline runs symbolic episodes end to end and asks the kind of question it is named for —
 counted by the metering's purposes, against what the report says was checked; a SuccessVQA "no"
-after a grasp that Table II made fail takes the action back and the new plan retries it; the
-command line takes the names and refuses others in one line.
+after a grasp that Table II made fail takes the action back and the new plan retries it (and a
+wrong one is overruled by the gripper in the recovery); the command line takes the names and
+refuses others in one line.
 """
 
 from __future__ import annotations
@@ -114,6 +115,24 @@ def test_a_success_vqa_no_after_a_grasp_table_ii_made_fail_takes_it_back_and_ret
     assert {"holding(cup)"} & set(next(c["removed"] for c in rep["belief_changes"] if c["cause"] == "undo"))
     assert rep["plans"][1]["actions"][0] == grasp  # the new plan starts with the grasp again
     assert [a["action"] for a in rep["actions_executed"]].count(grasp) == 2
+    assert rep["success"] and rep["goal_satisfied"]
+
+
+def test_a_wrong_success_vqa_no_after_a_grasp_is_overruled_by_the_gripper():
+    """collect_cup seed 5, nothing injected: the model says the grasp failed; the recovery's
+    gripper, which holds the cup, puts the grasp back into belief, and the new plan goes on."""
+    task = load(TREES / "collect_cup.yaml")
+    session = Session(task, RunConfig.from_task(task, world="symbolic", verify="success_vqa"))
+    try:
+        rep = session.episode(5)
+    finally:
+        session.close()
+    assert not rep["injected"]
+    denied = next(c for c in rep["action_checks"] if c["value"] is False)
+    assert denied["action"] == "grasp(cup, coffee_table, living_room)" and denied["truth"] is True
+    causes = [c["cause"] for c in rep["belief_changes"]]
+    assert causes[causes.index("undo") + 1] == "apply"  # taken back, then believed again on the gripper's word
+    assert rep["plans"][1]["actions"][0].startswith("navigate")  # no second grasp
     assert rep["success"] and rep["goal_satisfied"]
 
 

@@ -688,14 +688,15 @@ class Executive:
     def _held_after_all(graph: SceneGraph, s: Situation) -> None:
         """The gripper holds something belief does not: what. After an action that was to take
         one thing into the hand, that thing — the action stopped after the fingers closed (a lift
-        or a withdrawal blocked), or a look judged the hand empty: one view against the fingers'
-        word — and the action's effects are believed as if it had succeeded. After a check that
+        or a withdrawal blocked), or a look judged the hand empty, or a SuccessVQA question said
+        the action failed: one view against the fingers' word — and the action's effects are
+        believed as if it had succeeded. After a check that
         the hand holds an item, or that it is empty, said no: the item, or the last one a check
         took out of the hand (store_firewood seed 4: a view judged the log not held, and the robot
         searched two rooms for the log in its own hand until the replanning budget ran out)."""
-        if s.action is not None and s.kind in ("execution", "effect"):
+        if s.action is not None and s.kind in ("execution", "effect", "action_failed"):
             took = [a for a in s.action.diff(graph.state()).added if graph.roles.is_held(a)]
-            if len(took) == 1 and (s.kind == "execution" or s.atom in took):
+            if len(took) == 1 and (s.kind != "effect" or s.atom in took):
                 graph.apply(s.action)
                 return
         if s.atom is None or s.observed is not False:
