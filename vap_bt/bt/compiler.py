@@ -32,7 +32,7 @@ the goal check saw (``GoalCheck`` records what each goal atom rests on).
 
 The verification strategy (:mod:`vap_bt.strategy`) says which of those a tree has: ``both``,
 ``pre``, ``eff`` (which includes ``goal``) or ``none`` remove whole phases; ``ok_robot`` has the
-phases of ``both``, made by checks that ask once (the executive's settings for it: one
+phases of ``both``, made by checks that ask once (the context sets their settings so: one
 paraphrase, no budget, no sufficiency question). The action-level baselines put one
 :class:`~vap_bt.bt.action_check.VerifyAction` in the ``pre`` phase (AffordanceVQA) or the
 ``eff`` phase (SuccessVQA), implying the atoms that phase's predicate checks would ask about;
@@ -101,7 +101,8 @@ def _action_check(ctx: ExecutionContext, phase: Phase, literals, action: GroundA
     implied = tuple(l.atom for l in _asked(ctx, phase, literals, action, knowledge) if l.positive)
     if not implied:
         return []
-    return [py_trees.composites.Sequence(phase, memory=True, children=[VerifyAction(ctx, phase, action, step, implied)])]
+    question = VerifyAction(ctx, phase, action, step, implied)
+    return [py_trees.composites.Sequence(phase, memory=True, children=[question])]
 
 
 def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowledge: DomainKnowledge,

@@ -62,7 +62,8 @@ def goal_evidence(verifications: Sequence[Verification], strategy: Strategy, goa
 def _atom_evidence(verifications: Sequence[Verification], strategy: Strategy, l: Literal, index: int | None,
                    profile: PerceptionProfile) -> GoalAtomEvidence:
     if index is None:  # no goal check asked about it: the profile's source, or the strategy, says why
-        reason = profile.unchecked_reason(l.atom) or f"not looked at: verification strategy {strategy.name!r} checks no goal"
+        reason = profile.unchecked_reason(l.atom) \
+            or f"not looked at: verification strategy {strategy.name!r} checks no goal"
         felt = profile.source(l.atom.predicate, len(l.atom.args)) == "proprioception"
         return GoalAtomEvidence(l.atom, l.positive, "felt" if felt else "unchecked", reason=reason)
     v = verifications[index]
