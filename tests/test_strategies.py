@@ -136,6 +136,25 @@ def test_a_wrong_success_vqa_no_after_a_grasp_is_overruled_by_the_gripper():
     assert rep["success"] and rep["goal_satisfied"]
 
 
+def test_an_action_affordance_vqa_keeps_denying_is_tried_against_the_answer():
+    """boil_water seed 4: the model keeps saying the cup cannot be taken out of the cabinet; after
+    looking afresh the same "no" puts the action on trial, the next "no" lets it run, and it works."""
+    task = load(TREES / "boil_water.yaml")
+    session = Session(task, RunConfig.from_task(task, world="symbolic", verify="affordance_vqa"))
+    try:
+        rep = session.episode(4)
+    finally:
+        session.close()
+    takeout = "takeout(cup, cabinet, kitchen)"
+    denied = [c for c in rep["action_checks"] if c["action"] == takeout and c["value"] is False]
+    infeasible = [s for s in rep["situations"] if s["kind"] == "action_infeasible" and s["action"] == takeout]
+    assert len(infeasible) >= 3 and len(denied) == len(infeasible) + 1  # the last "no" was tried against
+    assert all(c["truth"] for c in denied)  # the world says it could be done all along
+    ran = [a["state"] for a in rep["actions_executed"] if a["action"] == takeout]
+    assert ran and set(ran) == {"succeeded"}
+    assert rep["success"] and rep["goal_satisfied"]
+
+
 @pytest.fixture(scope="module")
 def cup_plan():
     task = load(TREES / "collect_cup.yaml").planning

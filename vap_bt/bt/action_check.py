@@ -30,7 +30,11 @@ What a "no" means, having no predicate to correct (the baselines' natural semant
   ``action_infeasible``; the action does not run, and the executive handles it as a skill that
   failed to act — the robot's placement for it is stale (the new plan re-approaches), its objects
   are re-located and, when lost, looked for — then replans. The same "no" from the same belief
-  makes the robot look afresh, and a third ends the episode, as a skill that keeps failing does.
+  makes the robot look afresh; a third puts the action on trial (the board's
+  ``actions_on_trial``): the next "no" lets it run, and its skill is the test — as a denied
+  precondition that leaves no plan is tried against the camera under the predicate strategies
+  (:meth:`~vap_bt.bt.executive.Executive._replan`). A model answers one picture the same way every
+  time, and the same plan brings the robot back to the same pictures.
 
 No answer (an abstention) lets the plan go on: belief stands. Each check is recorded on the
 board's ``action_checks`` (:class:`~vap_bt.bt.record.ActionCheck`) and handed to ``ctx.record``,
@@ -74,7 +78,8 @@ def action_query(phase: Phase, action: GroundAction, implied: tuple[Atom, ...]) 
 class VerifyAction(py_trees.behaviour.Behaviour):
     """Ask one action-level question of one fresh frame; FAILURE (a situation) when the answer is no."""
 
-    KEYS: ClassVar[dict[str, Access]] = {"action_checks": Access.WRITE, "situation": Access.WRITE}
+    KEYS: ClassVar[dict[str, Access]] = {"action_checks": Access.WRITE, "situation": Access.WRITE,
+                                         "actions_on_trial": Access.READ}
 
     def __init__(self, ctx: ExecutionContext, phase: Phase, action: GroundAction, step: int,
                  implied: tuple[Atom, ...]) -> None:
@@ -83,12 +88,13 @@ class VerifyAction(py_trees.behaviour.Behaviour):
         self.ctx, self.phase, self.action, self.step, self.implied = ctx, phase, action, step, implied
         self.board = ctx.board.client(type(self).__name__, self.KEYS)
         self.check: ActionCheck | None = None
+        self._tried = False  # a "no" this action is tried against (the board's actions_on_trial)
         self._frame: Future | None = None
         self._answer: Future | None = None
         self._observation: Frame | None = None
 
     def initialise(self) -> None:
-        self.check, self._answer, self._observation = None, None, None
+        self.check, self._answer, self._observation, self._tried = None, None, None, False
         self._frame = self.ctx.submit(self.ctx.camera.capture, self.ctx.aim(self.ctx.graph, self.query.objects))
         self.feedback_message = "capturing"
 
@@ -117,15 +123,17 @@ class VerifyAction(py_trees.behaviour.Behaviour):
         self.board.action_checks.append(self.check)
         self.ctx.record(self.check)
         self.feedback_message = {None: "no answer", True: "yes", False: "no"}[value]
-        if value is False:
+        self._tried = value is False and str(self.action) in self.board.actions_on_trial
+        if self._tried:
+            self.ctx.progress(f"    {self.query.prompt} no again: trying {self.action} against it")
+        elif value is False:
             kind = PHASES[self.phase][1]
             self.board.situation = Situation(kind, self.action, self.step, None, True, False, detail=self.query.prompt)
             self.ctx.progress(f"    situation: {kind}: {self.query.prompt} no")
         return self._status(self.check)
 
-    @staticmethod
-    def _status(check: ActionCheck) -> Status:
-        return Status.FAILURE if check.value is False else Status.SUCCESS
+    def _status(self, check: ActionCheck) -> Status:
+        return Status.FAILURE if check.value is False and not self._tried else Status.SUCCESS
 
     def terminate(self, new_status: Status) -> None:
         if new_status == Status.INVALID:  # halted mid-question: nothing more is sent

@@ -60,6 +60,10 @@ class Board:
     #: action itself is their test (its skill fails if the camera was right), so a check that
     #: contradicts one again lets the action run (the verification still says contradicted)
     on_trial: set[Atom] = field(default_factory=set)
+    #: actions an AffordanceVQA question kept saying cannot be done, after looking afresh: the
+    #: action itself is the test (its skill fails if the answer was right), so another "no" lets it
+    #: run (the check still says contradicted); by ``str(action)``
+    actions_on_trial: set[str] = field(default_factory=set)
     #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
     #: (the compiler's, not a behaviour's)
     unchecked: dict[tuple, Unchecked] = field(default_factory=dict)

@@ -304,6 +304,11 @@ class Executive:
                     # (the action's effects are checked) rather than give the episode up
                     board.on_belief.add(situation.atom)
                     self.progress(f"    could not see {situation.atom} after {times} looks: acting on belief")
+                elif stuck(situation, times) and situation.kind == "action_infeasible" \
+                        and str(situation.action) not in board.actions_on_trial:
+                    # looking afresh brought the robot back to the same "no": the skill is the test
+                    board.actions_on_trial.add(str(situation.action))
+                    self.progress(f"    {situation.action} said impossible {times} times: trying it against that")
                 elif stuck(situation, times):
                     out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
                                   "(looking afresh changed nothing)")

@@ -7,8 +7,8 @@ same observation and the same message) from the same belief says that repeating 
 help. :class:`RepeatWatch` counts such recurrences. On the first (:data:`LOOK_AFRESH`) the
 executive looks afresh; a skill that then fails the same way once more (:data:`STUCK`) stops the
 episode with the reason, instead of spending the replanning budget on the same motion: a motion
-planned from the same measurements fails the same way; so does an action an AffordanceVQA
-question keeps saying cannot be done (:mod:`vap_bt.bt.action_check`). A precondition the camera could not make
+planned from the same measurements fails the same way. An action an AffordanceVQA question keeps
+saying cannot be done is then tried against the answer (:mod:`vap_bt.bt.action_check`). A precondition the camera could not make
 out (``unseen``) that comes back the same after looking afresh makes the robot act on belief there
 (the action's effects are still checked): the same plan brings the robot to the same views (an
 item under furniture that its find pose never shows, a relation a model reads poorly), and more
