@@ -47,11 +47,12 @@ def cup():
 def tree_for(task, actions, mode: str):
     """The compiled tree of ``actions`` in verification ``mode`` (nothing is ticked)."""
     from vap_bt.bt.compiler import compile_plan
-    from vap_bt.bt.context import ExecutionContext, VerifyMode
+    from vap_bt.bt.context import ExecutionContext
     from vap_bt.scene.graph import SceneGraph
+    from vap_bt.strategy import Strategy
 
     ctx = ExecutionContext(graph=SceneGraph.of_facts(task.init), vlm=None,
-                           camera=None, skills=None, mode=VerifyMode.parse(mode))
+                           camera=None, skills=None, strategy=Strategy.parse(mode))
     return compile_plan(ctx, actions, task.goal, task.knowledge)
 
 

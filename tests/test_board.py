@@ -18,8 +18,8 @@ import pytest
 from py_trees.common import Access, Status
 
 from vap_bt.app.runner import RunConfig, Session
-from vap_bt.bt import (active_perception, apply_effects, execute_skill, feel_hand, goal_check, propose_action,
-                       recovery, verify_predicate)
+from vap_bt.bt import (action_check, active_perception, apply_effects, execute_skill, feel_hand, goal_check,
+                       propose_action, recovery, verify_predicate)
 from vap_bt.bt.board import KEYS, Board, BoardClient
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.execute_skill import ExecuteSkill
@@ -33,8 +33,8 @@ from vap_bt.taskfile import load
 from conftest import TREES, household_profile
 
 #: the modules whose behaviours the executive ticks: a plan's tree, a recovery's, and the VLM-planner's
-MODULES = (active_perception, apply_effects, execute_skill, feel_hand, goal_check, propose_action, recovery,
-           verify_predicate)
+MODULES = (action_check, active_perception, apply_effects, execute_skill, feel_hand, goal_check, propose_action,
+           recovery, verify_predicate)
 
 
 def behaviour_classes() -> list[type]:
@@ -128,10 +128,11 @@ def test_the_keys_each_behaviour_class_touches_in_episodes_are_the_keys_it_decla
 
     monkeypatch.setattr(BoardClient, "__getattr__", reading)
     monkeypatch.setattr(BoardClient, "__setattr__", writing)
-    for name, seeds, unseen in (("cut_lemon.yaml", range(3), "look"), ("collect_cup.yaml", range(2), "look")):
+    for name, seeds, verify in (("cut_lemon.yaml", range(3), "both"), ("collect_cup.yaml", range(2), "both"),
+                                ("collect_cup.yaml", range(1), "suc_aff")):  # the action-level questions
         task = load(TREES / name)
         cfg = RunConfig.from_task(task, world="symbolic", planner="search", injection=True, vlm_noise=2.0,
-                                  unseen=unseen)
+                                  verify=verify)
         session = Session(task, cfg)
         try:
             for seed in seeds:

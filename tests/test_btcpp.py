@@ -129,6 +129,7 @@ def run_in_btcpp(xml: str, tmp_path: Path, verdict=lambda ports: True) -> BtcppR
             "VerifyPredicate", leaf("VerifyPredicate:start", lambda n: S.RUNNING), leaf(
                 "VerifyPredicate", lambda n: S.SUCCESS if verdict(ports[n.uid()]) else S.FAILURE),
             lambda node: calls.append(("VerifyPredicate:halted", node.uid()))),
+        "VerifyAction": lambda: factory.register_simple_action("VerifyAction", leaf("VerifyAction")),
         "ActivePerception": lambda: factory.register_simple_decorator(
             "ActivePerception", lambda child, node: (calls.append(("ActivePerception", node.uid())), child)[1]),
         "GoalCheck": lambda: factory.register_simple_condition("GoalCheck", leaf("GoalCheck")),

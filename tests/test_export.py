@@ -44,3 +44,11 @@ def test_export_command_writes_a_file(cli, tmp_path):
     tags = {e.tag for e in doc.iter()}
     assert "ExecuteSkill" in tags and "VerifyPredicate" in tags
     assert not any(e.get("name") == "pre" for e in doc.iter()), "--verify eff has no precondition checks"
+
+
+def test_an_action_level_baseline_exports_its_questions(cup):
+    task, actions = cup
+    doc = ET.fromstring(to_btcpp_xml(tree_for(task, actions, "suc_aff")))
+    asked = [(e.get("phase"), e.get("action")) for e in doc.find("BehaviorTree").iter("VerifyAction")]
+    assert asked and {p for p, _ in asked} == {"pre", "eff"} and {a for _, a in asked} <= {a.name for a in actions}
+    assert not list(doc.iter("VerifyPredicate")) and doc.find("TreeNodesModel/Action[@ID='VerifyAction']") is not None

@@ -7,7 +7,8 @@ import pytest
 
 from vap_bt import taskfile
 from vap_bt.bt.compiler import compile_plan
-from vap_bt.bt.context import ExecutionContext, VerifyMode
+from vap_bt.bt.context import ExecutionContext
+from vap_bt.strategy import Strategy
 from vap_bt.bt.verify_predicate import VerifyPredicate
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.pddl import load_task
@@ -53,7 +54,7 @@ def test_household_profile_keeps_what_the_household_asked():
 def test_household_trees_check_exactly_the_vlm_sourced_atoms(cup):
     task, actions = cup
     ctx = ExecutionContext(graph=SceneGraph.of_facts(task.init), vlm=None, camera=None, skills=None,
-                           mode=VerifyMode.parse("both"))
+                           strategy=Strategy.parse("both"))
     root = compile_plan(ctx, actions, task.goal, task.knowledge)
     asked = {b.atom.predicate for b in root.iterate() if isinstance(b, VerifyPredicate)}
     assert asked and asked <= HOUSEHOLD_ASKED

@@ -128,6 +128,7 @@ def test_a_flag_wins_over_the_task_files_option_which_wins_over_the_default():
     (["--vlm-latency", "-1"], "--vlm-latency"),
     (["--max-replans", "many"], "--max-replans"),
     (["--protocol", "fast"], "--protocol"),
+    (["--verify", "magic"], "--verify"),
 ])
 def test_a_bad_flag_is_one_line_naming_it_and_exit_2(argv, flag, capsys):
     assert main(["run", str(TREES / "collect_cup.yaml"), *argv]) == EXIT_BAD_INPUT

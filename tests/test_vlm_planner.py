@@ -86,7 +86,7 @@ def test_the_vlm_names_each_action_the_skills_execute_it_and_the_world_confirms_
     server = PlannerServer(serve, SOLUTION)
     code, rep, err = run(cli, tmp_path, server)
     assert code == EXIT_OK, err
-    assert rep["strategy"] == "vlm_planner" and rep["success"] and rep["goal_satisfied"]
+    assert rep["strategy"]["name"] == "vlm_planner" and rep["success"] and rep["goal_satisfied"]
     assert rep["reason"] == "the VLM said done" and rep["plans"] == [] and rep["verifications"] == []
     assert "5 executed; named one at a time by the VLM (6 steps)" in err
     assert [a["action"] for a in rep["actions_executed"]] == [
@@ -156,7 +156,7 @@ def test_done_before_the_goal_holds_is_a_claimed_success_the_world_denies(cli, s
     server = PlannerServer(serve, ["(find floor_living_room cup living_room)", "done"])
     code, rep, err = run(cli, tmp_path, server)
     assert rep["success"] and rep["goal_satisfied"] is False and code == EXIT_GOAL_NOT_REACHED
-    assert rep["strategy"] == "vlm_planner" and len(rep["actions_executed"]) == 1
+    assert rep["strategy"]["name"] == "vlm_planner" and len(rep["actions_executed"]) == 1
 
 
 def test_the_step_budget_ends_an_episode_the_model_never_calls_done(cli, serve, tmp_path):

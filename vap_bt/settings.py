@@ -25,8 +25,9 @@ opens its Zenoh session (:class:`Zenoh`, read into a ``TransportSettings`` of th
 A new option is one field below (``tests/test_settings.py`` walks the fields and checks each
 reaches its commands' parsers, the task file's model and the run's config).
 
-``vap-bt --help`` reads this module, so it imports nothing heavy: pydantic and the standard
-library only (defaults owned by heavier modules are read when a config is built, not at import).
+``vap-bt --help`` reads this module, so it imports nothing heavy: pydantic, the standard
+library and the table of verification strategies (:mod:`vap_bt.strategy`, standard library
+only); defaults owned by heavier modules are read when a config is built, not at import.
 """
 
 from __future__ import annotations
@@ -37,6 +38,8 @@ from typing import Annotated, Any, Iterator, Literal, Protocol
 from pydantic import ConfigDict, Field, create_model
 from pydantic.dataclasses import dataclass as settings_model
 from pydantic.fields import FieldInfo
+
+from vap_bt.strategy import NAMES as STRATEGY_NAMES
 
 
 class StatedSettings(Protocol):
@@ -75,9 +78,8 @@ REJOIN_TIMEOUT_S = 30.0
 SNAPSHOT_TIMEOUT_S = 2.0
 
 World = Literal["symbolic", "pybullet"]
-#: which checks a plan's tree has (both, pre, eff, none: the closed-world baseline), or vlm_planner:
-#: no PDDL planner and no checks, the VLM names each next action (the paper's VLM-planner baseline)
-Verify = Literal["both", "pre", "eff", "none", "vlm_planner"]
+#: the verification strategies (:mod:`vap_bt.strategy` declares them)
+Verify = Literal[STRATEGY_NAMES]
 #: sim (world-side, offline) | sim-http | the HTTP backends of vap_bt.perception.backends
 Vlm = Literal["sim", "sim-http", "openai", "gemini"]
 Engine = Literal["fast-downward", "search"]
@@ -144,10 +146,11 @@ class RunConfig:
     executive's bounds. Built by :meth:`from_task` (command line over task file over default)."""
 
     verify: Annotated[Verify, Option("--verify", RUN_TREE, in_task=OPTIONS)] = Field(
-        "both", description="which checks the tree has: preconditions and effects, one of them, or none (the "
-                            "closed-world baseline); or vlm_planner: no planner and no checks, a real VLM names "
-                            "each next action (the VLM-planner baseline); default the task file's options.verify, "
-                            "else both")
+        "both", description="the verification strategy: which checks the tree has — preconditions and effects, one of "
+                            "them, or none (the closed-world baseline), or a baseline of the paper's comparison "
+                            "(success_vqa, affordance_vqa, suc_aff, ok_robot), or vlm_planner (no planner and no checks: a "
+                            "real VLM names each next action; docs/perception.md); default the task file's "
+                            "options.verify, else both")
     world: Annotated[World, Option("--world", in_task=TOP_LEVEL)] = Field(
         "symbolic", description="the world to run in (default: the task file's world:; the household's task "
                                 "files say pybullet)")

@@ -181,10 +181,11 @@ def _compiled_tree(args):
     Planning only: no world runs and nothing is perceived, so the tree is the one the executive
     would start from if the first survey saw exactly what the task file states."""
     from vap_bt.bt.compiler import compile_plan
-    from vap_bt.bt.context import ExecutionContext, VerifyMode
+    from vap_bt.bt.context import ExecutionContext
     from vap_bt.domain.planner import Planner
     from vap_bt.scene.graph import SceneGraph
     from vap_bt.settings import RunConfig
+    from vap_bt.strategy import Strategy
 
     task = _load_run_task(args)
     settings = RunConfig.chosen(task, **RunConfig.given(args, args.command))  # --verify over options.verify
@@ -196,7 +197,7 @@ def _compiled_tree(args):
         raise InputError("--verify", "vlm_planner compiles no tree: the VLM names each action as the run goes")
     plan = Planner(planning).plan()
     ctx = ExecutionContext(graph=SceneGraph.of_facts(planning.init), vlm=None,
-                           camera=None, skills=None, mode=VerifyMode.parse(settings["verify"]),
+                           camera=None, skills=None, strategy=Strategy.parse(settings["verify"]),
                            budget=settings["budget"], profile=task.profile)
     return compile_plan(ctx, plan.actions, planning.goal, planning.knowledge)
 

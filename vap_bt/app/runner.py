@@ -24,7 +24,6 @@ from dataclasses import asdict, dataclass, field, replace
 from typing import Any, Callable
 
 from vap_bt import plugins
-from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
@@ -44,6 +43,7 @@ from vap_bt.sim.disturbances import DisturbanceModel
 from vap_bt.sim.graph_score import score_graph
 from vap_bt.sim.situations import SituationModel
 from vap_bt.skill import Skill, performed_by_world
+from vap_bt.strategy import Strategy
 from vap_bt.taskfile import Task
 from vap_bt.world import World
 
@@ -216,6 +216,13 @@ def check_config(task: Task, cfg: RunConfig) -> GoalWords | None:
         # (the VLM-planner checks nothing, and its frames get a picture: show_pictures)
         raise InputError("--vlm", f"the {cfg.vlm} VLM answers from pictures and the symbolic world's frames "
                                   "have none: run it --world pybullet, or --verify none (it then only parses goals)")
+    strategy = Strategy.parse(cfg.verify)
+    if cfg.vlm == "sim-http" and (strategy.success or strategy.affordance):
+        # the endpoint reads a prompt back to the atoms it asks about; an action-level prompt names
+        # the action by its verb and two objects, and the atoms it implies depend on the state the
+        # plan expects: read back, it would be a guess (vap_bt.sim.vlm_endpoint)
+        raise InputError("--verify", f"{cfg.verify} asks action-level questions, which the sim-http endpoint "
+                                     "cannot read back to the facts they imply: run it --vlm sim")
     if cfg.vlm_latency and cfg.vlm != "sim-http":
         raise InputError("--vlm-latency", "only for --vlm sim-http (the simulated VLM behind its endpoint)")
     return goal_words(task, cfg)
@@ -280,9 +287,7 @@ def executive_settings(cfg: RunConfig, *, remote: bool) -> ExecutiveSettings:
     protocol = Protocol.parse(cfg.protocol)
     if cfg.early_stop:
         protocol = replace(protocol, early_stop=True)
-    vlm_plans = cfg.verify == "vlm_planner"  # no planner and no checks: vap_bt.bt.vlm_planner
-    return ExecutiveSettings(mode=VerifyMode.parse("none" if vlm_plans else cfg.verify), budget=cfg.budget,
-                             planner="vlm" if vlm_plans else "pddl", max_steps=cfg.max_steps,
+    return ExecutiveSettings(strategy=Strategy.parse(cfg.verify), budget=cfg.budget, max_steps=cfg.max_steps,
                              vote=VoteSettings(paraphrases=cfg.paraphrases, early_stop=protocol.early_stop),
                              max_replans=cfg.max_replans, max_seconds=cfg.max_seconds,
                              tick_period_s=TICK_PERIOD_S if remote else 0.0, unseen=cfg.unseen,
@@ -471,22 +476,28 @@ class Session:
         instances the robot looked at: its atom's objects resolved through the executive's own
         association in each view (:meth:`CaptureRecord.resolve`: which detection it took for which
         object), so that two bottles it named the other way round are scored as what it really
-        saw; an atom about a false positive it took for an object holds of nothing. Which settled
-        values matched it is counted for the report by :func:`vap_bt.report.verification_counts`."""
+        saw; an atom about a false positive it took for an object holds of nothing. An
+        action-level check (:class:`~vap_bt.bt.record.ActionCheck`) is scored as the conjunction
+        of the atoms its question implies. Which settled values matched it is counted for the
+        report by :func:`vap_bt.report.verification_counts`."""
         captures = getattr(self.world, "captures", None)  # a world in another process: names as names
         records = [(captures.get(r.view), r) for r in v.rounds] if captures is not None else []
-        atom: Atom | None = v.atom
-        for record, r in records:  # the latest view that identified them says
-            if record is not None and r.identified:
-                atom = record.resolve_atom(v.atom, r.identified)
-        truth = atom is not None and self.world.oracle.holds(atom)
+        truth = all(self._true_now(a, records) for a in v.atoms)
         first, r0 = records[0] if records else (None, None)
         if first is not None:
-            at_first = first.resolve_atom(v.atom, r0.identified) if r0.identified else v.atom
-            first_truth = at_first is not None and first.holds(at_first)
+            first_truth = all(_held_at(first, a, r0) for a in v.atoms)
         else:
             first_truth = truth
         self._truths[id(v)] = {"truth": truth, "first_truth": first_truth}
+
+    def _true_now(self, atom: Atom, records: list) -> bool:
+        """The world's value now of ``atom`` about the instances the latest view that identified
+        its objects took them for (see :meth:`_score_verification`)."""
+        resolved: Atom | None = atom
+        for record, r in records:  # the latest view that identified them says
+            if record is not None and r.identified:
+                resolved = record.resolve_atom(atom, r.identified)
+        return resolved is not None and self.world.oracle.holds(resolved)
 
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
@@ -523,10 +534,10 @@ class Session:
         world_name = self.world.name if self.world is not None else cfg.world
         detector = make_detector(cfg) if world_name == "symbolic" else getattr(self.world, "detector", None)
         verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in board.verifications]
+        action_checks = [{**c.to_json(), **self._truths.get(id(c), {})} for c in board.action_checks]
         return {
             "success": out.success,
             "goal_satisfied": self._holds(goal),
-            "strategy": cfg.verify,  # which checks the trees had, or the VLM-planner baseline
             "reason": out.reason,
             "no_initial_plan": out.no_initial_plan or None,
             # what the goal's last check rested on: looked at, felt, or belief alone
@@ -546,7 +557,8 @@ class Session:
             "vlm": self._vlm_report(cfg, vlm),
             "perception": {"graph": {"initial": scores[0] if scores else None, "resurveys": scores[1:]},
                            "surveys": [s.to_json() for s in out.surveys], "profile": self.profile.to_json(),
-                           "verifications": verification_counts(verifications)},
+                           "verifications": verification_counts(verifications),
+                           "action_checks": verification_counts(action_checks)},
             "plans": [p.to_json() for p in out.plans],
             # --verify vlm_planner: each step's prompts, frames, replies, re-asks and what came of them
             "vlm_planner": {"max_steps": cfg.max_steps, "steps": [p.to_json() for p in out.proposals]}
@@ -562,6 +574,10 @@ class Session:
             "ticks": out.ticks,
             "vlm_queries": vlm.total if vlm is not None else 0,
             "verifications": verifications,
+            # the action-level questions of the SuccessVQA/AffordanceVQA strategies (vap_bt.bt.action_check)
+            "action_checks": action_checks,
+            # which checks the trees had, or the VLM-planner baseline (vap_bt.strategy)
+            "strategy": asdict(Strategy.parse(cfg.verify)),
             "protocol": {"name": cfg.protocol, **Protocol.parse(cfg.protocol).describe(), "viewpoints": cfg.viewpoints,
                          "claim_risk": cfg.claim_risk, "calibration": dict(ctx.calibration.source)},
             "unchecked": [u.to_json() for u in board.unchecked.values()],
@@ -621,6 +637,13 @@ class Session:
         situation model (a remote one)."""
         model = getattr(self.world, "situations", None)
         return model.describe() if model is not None else []
+
+
+def _held_at(record, atom: Atom, r) -> bool:
+    """Whether ``atom``, about the instances round ``r`` took its objects for, held when
+    ``record``'s frame was captured."""
+    resolved = record.resolve_atom(atom, r.identified) if r.identified else atom
+    return resolved is not None and record.holds(resolved)
 
 
 def fused_clouds(executive: Executive) -> dict:

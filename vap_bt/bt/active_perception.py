@@ -194,7 +194,7 @@ class ActivePerception(py_trees.decorators.Decorator):
     def _chosen(self) -> Status:
         try:
             direction = choice(self._job.result())
-        except TransportError:  # the VLM's server is gone: the episode ends (verify_predicate._answer)
+        except TransportError:  # the VLM's server is gone: the episode ends (verify_predicate.answer_of)
             raise
         except Exception:  # noqa: BLE001 - no answer: another way is taken (see _move)
             direction = None

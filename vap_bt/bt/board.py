@@ -26,7 +26,7 @@ from typing import Any, Mapping
 
 from py_trees.common import Access
 
-from vap_bt.bt.record import GoalEvidence, Situation, Unchecked, Verification, Verified
+from vap_bt.bt.record import ActionCheck, GoalEvidence, Situation, Unchecked, Verification, Verified
 from vap_bt.domain.atoms import Atom
 
 
@@ -37,6 +37,8 @@ class Board:
     #: the check or skill that failed the tree, for the executive to handle (it clears it)
     situation: Situation | None = None
     verifications: list[Verification] = field(default_factory=list)
+    #: the action-level questions asked (the SuccessVQA/AffordanceVQA baselines: :mod:`vap_bt.bt.action_check`)
+    action_checks: list[ActionCheck] = field(default_factory=list)
     #: goal atoms the final look could not settle: success is not claimed over them (the
     #: executive looks again, and clears this for the next tree)
     unconfirmed_goal: list[Atom] = field(default_factory=list)
@@ -58,6 +60,10 @@ class Board:
     #: action itself is their test (its skill fails if the camera was right), so a check that
     #: contradicts one again lets the action run (the verification still says contradicted)
     on_trial: set[Atom] = field(default_factory=set)
+    #: actions an AffordanceVQA question kept saying cannot be done, after looking afresh: the
+    #: action itself is the test (its skill fails if the answer was right), so another "no" lets it
+    #: run (the check still says contradicted); by ``str(action)``
+    actions_on_trial: set[str] = field(default_factory=set)
     #: atoms the compiled trees leave unchecked, keyed by (phase, action, atom), in compile order
     #: (the compiler's, not a behaviour's)
     unchecked: dict[tuple, Unchecked] = field(default_factory=dict)

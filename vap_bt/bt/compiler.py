@@ -28,8 +28,15 @@ phase's last node: proprioception, no question to the camera). Before claiming s
 atoms are looked at once more (``goal``, with the effect checks) under every protocol — the lean
 protocol's reuse of an unchanged value never settles a goal check: an effect confirmed minutes
 ago may have been undone since (a bottle rolled off the counter), and success is claimed on what
-the goal check saw (``GoalCheck`` records what each goal atom rests on). The verification mode
-removes whole phases: ``both``, ``pre``, ``eff`` (which includes ``goal``) or ``none``. A phase
+the goal check saw (``GoalCheck`` records what each goal atom rests on).
+
+The verification strategy (:mod:`vap_bt.strategy`) says which of those a tree has: ``both``,
+``pre``, ``eff`` (which includes ``goal``) or ``none`` remove whole phases; ``ok_robot`` has the
+phases of ``both``, made by checks that ask once (the context sets their settings so: one
+paraphrase, no budget, no sufficiency question). The action-level baselines put one
+:class:`~vap_bt.bt.action_check.VerifyAction` in the ``pre`` phase (AffordanceVQA) or the
+``eff`` phase (SuccessVQA), implying the atoms that phase's predicate checks would ask about;
+they check no goal atom, and their tree claims the goal once the plan is through. A phase
 with nothing to check (``find`` has no precondition the camera judges) is left out rather than
 compiled to an empty sequence: an empty sequence does nothing in py_trees, clutters every view of
 the tree, and is a load error in BehaviorTree.CPP ("must have 1 or more children").
@@ -39,6 +46,7 @@ from __future__ import annotations
 
 import py_trees
 
+from vap_bt.bt.action_check import VerifyAction
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
 from vap_bt.bt.context import ExecutionContext, Phase, Unchecked
@@ -59,9 +67,10 @@ def profile_of(ctx: ExecutionContext, knowledge: DomainKnowledge) -> PerceptionP
     return ctx.profile
 
 
-def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None, step: int,
-            knowledge: DomainKnowledge) -> list[py_trees.composites.Sequence]:
-    """The phase's check sequence, as a list of one — or none when there is nothing to check."""
+def _asked(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None,
+           knowledge: DomainKnowledge) -> list[Literal]:
+    """The literals of ``literals`` the camera is asked about; the rest go on the board as
+    unchecked, with the profile's reason."""
     profile = profile_of(ctx, knowledge)
     asked = []
     for l in literals:
@@ -71,10 +80,29 @@ def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction 
         else:
             name = str(action) if action else "goal"
             ctx.board.unchecked.setdefault((phase, name, l), Unchecked(phase, name, l.atom, l.positive, reason))
+    return asked
+
+
+def _checks(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction | None, step: int,
+            knowledge: DomainKnowledge) -> list[py_trees.composites.Sequence]:
+    """The phase's check sequence, as a list of one — or none when there is nothing to check."""
+    asked = _asked(ctx, phase, literals, action, knowledge)
     if not asked:
         return []
     return [py_trees.composites.Sequence(phase, memory=True, children=[
         ActivePerception(ctx, VerifyPredicate(ctx, l.atom, l.positive), phase, action, step) for l in asked])]
+
+
+def _action_check(ctx: ExecutionContext, phase: Phase, literals, action: GroundAction, step: int,
+                  knowledge: DomainKnowledge) -> list[py_trees.composites.Sequence]:
+    """The phase's action-level question, implying the atoms its predicate checks would ask
+    about (the positive ones: :mod:`vap_bt.bt.action_check`), as a list of one — or none when it
+    would imply nothing the camera sees."""
+    implied = tuple(l.atom for l in _asked(ctx, phase, literals, action, knowledge) if l.positive)
+    if not implied:
+        return []
+    question = VerifyAction(ctx, phase, action, step, implied)
+    return [py_trees.composites.Sequence(phase, memory=True, children=[question])]
 
 
 def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowledge: DomainKnowledge,
@@ -83,10 +111,15 @@ def compile_action(ctx: ExecutionContext, action: GroundAction, step: int, knowl
     the current belief)."""
     expected = expected or expect(ctx.graph.state(), [action])[0]
     children: list[py_trees.behaviour.Behaviour] = []
-    if ctx.mode.pre:
+    strategy = ctx.strategy
+    if strategy.pre:
         children += _checks(ctx, "pre", expected.support, action, step, knowledge)
+    if strategy.affordance:
+        children += _action_check(ctx, "pre", expected.support, action, step, knowledge)
     children += [ExecuteSkill(ctx, action, step), ApplyEffects(ctx, action, expected.diff)]
-    if ctx.mode.eff:
+    if strategy.success:
+        children += _action_check(ctx, "eff", expected.effects, action, step, knowledge)
+    if strategy.eff:
         eff = _checks(ctx, "eff", expected.effects, action, step, knowledge)
         after = (expected.before - expected.diff.deleted) | expected.diff.added
         if any(profile_of(ctx, knowledge).roles.is_held(a) for a in after):
@@ -104,7 +137,7 @@ def compile_plan(ctx: ExecutionContext, plan: list[GroundAction], goal: tuple[Li
     states the plan expects, starting from the belief in ``ctx.graph``."""
     steps = expect(ctx.graph.state(), plan, goal)
     nodes = [compile_action(ctx, a, i, knowledge, e) for i, (a, e) in enumerate(zip(plan, steps))]
-    if ctx.mode.eff:
+    if ctx.strategy.eff:
         nodes += _checks(ctx, "goal", goal, None, len(plan), knowledge)
     nodes.append(GoalCheck(ctx, goal, len(plan), profile_of(ctx, knowledge)))
     return py_trees.composites.Sequence("plan", memory=True, children=nodes)

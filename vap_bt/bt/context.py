@@ -13,13 +13,13 @@ from __future__ import annotations
 
 import time
 from concurrent.futures import Executor, Future
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Literal
 
 from vap_bt.bt.board import Board
 from vap_bt.bt.inflight import InlineExecutor, body_executor
-from vap_bt.bt.record import (GoalAtomEvidence, GoalEvidence, Situation, SituationKind, Unchecked,  # noqa: F401
-                              Verification, Verified)
+from vap_bt.bt.record import (ActionCheck, GoalAtomEvidence, GoalEvidence, Situation, SituationKind,  # noqa: F401
+                              Unchecked, Verification, Verified)
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.roles import HOUSEHOLD, Roles
 from vap_bt.perception.evidence import CLAIM_RISK, Calibration, default_calibration
@@ -32,47 +32,38 @@ from vap_bt.perception.vlm import VLM
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.robot.camera import Aim, Camera
 from vap_bt.skill import SkillClient
+from vap_bt.strategy import STRATEGIES, Strategy
 
 #: what a precondition check that could not settle does (:class:`ExecutionContext.unseen`):
 #: "look" — stop before the action and look for what it is about, then replan (the default: a plan
 #: does not go on over a precondition nobody could see); "go_on" — believe it and act; "stop" —
 #: end the episode
 UnseenPolicy = Literal["look", "go_on", "stop"]
-#: who writes the plan (:class:`vap_bt.bt.executive.ExecutiveSettings`): "pddl" — the planner, and
-#: the trees check what :class:`VerifyMode` says; "vlm" — the VLM-planner baseline, the model names
-#: each next action and nothing is checked (:mod:`vap_bt.bt.vlm_planner`)
-PlanSource = Literal["pddl", "vlm"]
+#: how a strategy that asks once (OK-Robot's, :attr:`Strategy.single`) votes: one question, the
+#: first paraphrase, settled by its answer alone
+ONE_QUESTION = VoteSettings(paraphrases=1, agreement=1.0)
 
 
-@dataclass(frozen=True)
-class VerifyMode:
-    """Which checks the tree makes: preconditions before each action, effects after it (``--verify
-    both|pre|eff|none``)."""
-
-    pre: bool = True
-    eff: bool = True
-
-    @classmethod
-    def parse(cls, name: str) -> "VerifyMode":
-        """The mode named ``both``, ``pre``, ``eff`` or ``none``; a KeyError for any other name."""
-        return {"both": cls(True, True), "pre": cls(True, False), "eff": cls(False, True),
-                "none": cls(False, False)}[name]
-
-    @property
-    def name(self) -> str:
-        return {(True, True): "both", (True, False): "pre", (False, True): "eff", (False, False): "none"}[
-            (self.pre, self.eff)]
+def asking(strategy: Strategy, vote: VoteSettings, protocol: Protocol) -> tuple[VoteSettings, Protocol]:
+    """The vote and the protocol ``strategy``'s predicate questions are asked with: the run's,
+    or — for a strategy that asks once — one question and no view-sufficiency question."""
+    if not strategy.single:
+        return vote, protocol
+    return ONE_QUESTION, replace(protocol, sufficiency=False)
 
 
 @dataclass
 class ExecutionContext:
-    """The services and settings the behaviours of one episode are built with, and its board."""
+    """The services and settings the behaviours of one episode are built with, and its board. A
+    strategy that asks once (:attr:`Strategy.single`) sets the checks' settings its way: no
+    budget, no second look, one question, no view-sufficiency question."""
 
     graph: SceneGraph  # belief: read by the checks, changed by ApplyEffects (and the executive)
     vlm: VLM | None
     camera: Camera
     skills: SkillClient
-    mode: VerifyMode = field(default_factory=VerifyMode)
+    #: which checks the compiled trees make (:mod:`vap_bt.strategy`)
+    strategy: Strategy = STRATEGIES["both"]
     budget: int = 3  # K: viewpoint moves per verification
     vote: VoteSettings = field(default_factory=VoteSettings)
     progress: Callable[[str], None] = lambda msg: None
@@ -99,8 +90,9 @@ class ExecutionContext:
     claim_risk: float = CLAIM_RISK
     #: where work in flight runs (a thread pool against a remote model; inline in-process)
     executor: Executor = field(default_factory=InlineExecutor)
-    #: the runner's record of each verification (scored against the world there; returns nothing)
-    record: Callable[["Verification"], None] = lambda v: None
+    #: the runner's record of each verification and action-level check (scored against the world
+    #: there; returns nothing)
+    record: Callable[["Verification | ActionCheck"], None] = lambda v: None
     #: which predicates are asked of the VLM, and with which questions (None: the compiler reads
     #: the domain's own, :func:`vap_bt.perception.profile.resolve`)
     profile: PerceptionProfile | None = None
@@ -109,6 +101,12 @@ class ExecutionContext:
     t0: float = field(default_factory=time.perf_counter)
     #: where the body's word is asked (:meth:`ask_body`): made on first use, closed with :meth:`close`
     _body: Executor | None = field(default=None, init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        # a strategy that asks once looks once: no viewpoint move, no second look, one question
+        if self.strategy.single:
+            self.budget, self.second_look = 0, False
+            self.vote, self.protocol = asking(self.strategy, self.vote, self.protocol)
 
     @property
     def roles(self) -> Roles:

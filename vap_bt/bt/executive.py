@@ -7,11 +7,12 @@ context; the executive handles it in a recovery tree (:mod:`vap_bt.bt.recovery`:
 behaviour whose work is in flight, ticked, drawn in the live view and halted like the plan's) and
 then swaps in a new plan's tree:
 
-1. an effect that did not happen first undoes the action-driven update, so belief returns to
+1. an effect that did not happen (or an action a SuccessVQA question said did not succeed:
+   :mod:`vap_bt.bt.action_check`) first undoes the action-driven update, so belief returns to
    what held before the action;
 2. the contradicted atom is set to its observed value (observation-driven update);
-3. a skill that failed to act makes the robot's placement for it (the in-view role, the
-   household's ``inview``) stale, so that the
+3. a skill that failed to act (or an action an AffordanceVQA question said cannot be done now)
+   makes the robot's placement for it (the in-view role, the household's ``inview``) stale, so that the
    new plan approaches the target again rather than retrying from the same spot; so does a
    precondition the camera could not settle (a situation of kind ``unseen``: the action did not
    run because nobody could see whether it may) drops ``inview`` of the things it is about, so
@@ -32,7 +33,7 @@ then replans as for any failed action, or the episode ends "transport down" nami
 A goal given in words is read between the survey and the first plan (paper Alg. 1 line 2): the
 ``goal_parser`` (:mod:`vap_bt.perception.goal_parsing`) is handed the scene graph's objects.
 
-The VLM-planner baseline (settings ``planner="vlm"``, ``--verify vlm_planner``) shares the survey
+The VLM-planner baseline (``--verify vlm_planner``, :attr:`vap_bt.strategy.Strategy.vlm_plans`) shares the survey
 and the skill path and nothing after: no planner, no checks, no situations; the model names each
 next action (:mod:`vap_bt.bt.vlm_planner`).
 
@@ -63,7 +64,7 @@ from py_trees.common import Status
 
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
-from vap_bt.bt.context import ExecutionContext, PlanSource, VerifyMode
+from vap_bt.bt.context import ExecutionContext, asking
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
@@ -90,6 +91,7 @@ from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
 from vap_bt.settings import default as run_default
 from vap_bt.skill import SkillClient
+from vap_bt.strategy import STRATEGIES, Strategy
 
 #: times an observation that leaves no plan is doubted and looked at again before it stands: a
 #: settled check errs now and then (docs/perception.md), two more from new pictures seldom all do
@@ -108,7 +110,8 @@ class ExecutiveSettings:
     """What the executive is told of a run's settings (built from them by the runner:
     :func:`vap_bt.app.runner.executive_settings`); the defaults are the run's (:mod:`vap_bt.settings`)."""
 
-    mode: VerifyMode = field(default_factory=VerifyMode)
+    #: which checks the trees make (:mod:`vap_bt.strategy`)
+    strategy: Strategy = STRATEGIES[run_default("verify")]
     budget: int = run_default("budget")
     vote: VoteSettings = field(default_factory=VoteSettings)
     max_replans: int = run_default("max_replans")
@@ -126,9 +129,6 @@ class ExecutiveSettings:
     claim_risk: float = run_default("claim_risk")
     #: work in flight on a thread pool (a remote model or robot); False: done at once, in-process
     threads: bool = False
-    #: who writes the plan: "pddl" (the planner, checked as ``mode`` says) or "vlm" (the VLM-planner
-    #: baseline: the model names each next action and nothing is checked, vap_bt.bt.vlm_planner)
-    planner: PlanSource = "pddl"
     #: the VLM-planner's budget of steps (it has no plan whose length could bound it)
     max_steps: int = run_default("max_steps")
 
@@ -221,9 +221,9 @@ class Executive:
         #: the episode once it has a belief to plan from (before that, :meth:`so_far`)
         self.outcome: EpisodeOutcome | None = None
         self.phase = PHASES[0]  # which of PHASES the episode is in
-        if vlm is None and (self.s.mode.pre or self.s.mode.eff):
-            raise ValueError("verification needs a VLM; use verify mode 'none' to run without one")
-        if self.s.planner == "vlm" and not callable(getattr(vlm, "complete", None)):
+        if vlm is None and self.s.strategy.asks:
+            raise ValueError("verification needs a VLM; use the verification strategy 'none' to run without one")
+        if self.s.strategy.vlm_plans and not callable(getattr(vlm, "complete", None)):
             raise ValueError("the VLM-planner needs a VLM that writes text (a real backend)")
 
     # -- the loop ----------------------------------------------------------------------------
@@ -248,7 +248,7 @@ class Executive:
     def _run(self, executor) -> EpisodeOutcome:
         graph, survey = self._survey_in_tree()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
-                               mode=self.s.mode, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
+                               strategy=self.s.strategy, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
@@ -259,7 +259,7 @@ class Executive:
             self.phase = "goal parsing"
             self.task = self.task.with_state(self.task.init, self.goal_parser(sorted(graph.objects)))
             self.progress(f"goal from words: {', '.join(map(str, self.task.goal))}")
-        if self.s.planner == "vlm":
+        if self.s.strategy.vlm_plans:
             return self._run_vlm_planner(ctx, out)
         self.phase = "planning"
         try:
@@ -334,6 +334,11 @@ class Executive:
                     # (the action's effects are checked) rather than give the episode up
                     board.on_belief.add(situation.atom)
                     self.progress(f"    could not see {situation.atom} after {times} looks: acting on belief")
+                elif stuck(situation, times) and situation.kind == "action_infeasible" \
+                        and str(situation.action) not in board.actions_on_trial:
+                    # looking afresh brought the robot back to the same "no": the skill is the test
+                    board.actions_on_trial.add(str(situation.action))
+                    self.progress(f"    {situation.action} said impossible {times} times: trying it against that")
                 elif stuck(situation, times):
                     out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
                                   "(looking afresh changed nothing)")
@@ -572,8 +577,9 @@ class Executive:
                        and k.is_subtype(f.type, container)}
         candidates = [n for n in sorted(self.builder.evidence) if n in askable and k.is_subtype(self.task.objects[n], sig)]
         with make_executor(self.s.threads) as executor:
-            answers = survey_states(self.vlm, self.builder.best_frames(), candidates, self.s.vote, self.profile,
-                                    predicates=(opened,), protocol=self.s.protocol, undetectable=self.builder.undetectable(),
+            vote, protocol = asking(self.s.strategy, self.s.vote, self.s.protocol)
+            answers = survey_states(self.vlm, self.builder.best_frames(), candidates, vote, self.profile,
+                                    predicates=(opened,), protocol=protocol, undetectable=self.builder.undetectable(),
                                     executor=executor)
         complement = k.complements.get(opened)
         for a in answers:
@@ -637,11 +643,11 @@ class Executive:
     def _correct_belief(self, graph: SceneGraph, s: Situation) -> None:
         """Bring belief in line with what was observed (steps 1–3 of the module docstring)."""
         self._note_miss(graph, s)
-        if s.kind == "effect" and s.action is not None:
+        if s.kind in ("effect", "action_failed") and s.action is not None:
             graph.undo(s.action)
         if s.atom is not None and s.observed is not None:
             graph.correct(s.atom, s.observed, self.task.knowledge.complements.get(s.atom.predicate))
-        if s.kind == "execution" and s.action is not None:
+        if s.kind in ("execution", "action_infeasible") and s.action is not None:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == self.roles.in_view:
                     graph.correct(lit.atom, False)
@@ -717,14 +723,15 @@ class Executive:
     def _held_after_all(graph: SceneGraph, s: Situation) -> None:
         """The gripper holds something belief does not: what. After an action that was to take
         one thing into the hand, that thing — the action stopped after the fingers closed (a lift
-        or a withdrawal blocked), or a look judged the hand empty: one view against the fingers'
-        word — and the action's effects are believed as if it had succeeded. After a check that
+        or a withdrawal blocked), or a look judged the hand empty, or a SuccessVQA question said
+        the action failed: one view against the fingers' word — and the action's effects are
+        believed as if it had succeeded. After a check that
         the hand holds an item, or that it is empty, said no: the item, or the last one a check
         took out of the hand (store_firewood seed 4: a view judged the log not held, and the robot
         searched two rooms for the log in its own hand until the replanning budget ran out)."""
-        if s.action is not None and s.kind in ("execution", "effect"):
+        if s.action is not None and s.kind in ("execution", "effect", "action_failed"):
             took = [a for a in s.action.diff(graph.state()).added if graph.roles.is_held(a)]
-            if len(took) == 1 and (s.kind == "execution" or s.atom in took):
+            if len(took) == 1 and (s.kind != "effect" or s.atom in took):
                 graph.apply(s.action)
                 return
         if s.atom is None or s.observed is not False:

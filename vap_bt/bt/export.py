@@ -21,6 +21,7 @@ import xml.etree.ElementTree as ET
 
 import py_trees
 
+from vap_bt.bt.action_check import VerifyAction
 from vap_bt.bt.active_perception import ActivePerception
 from vap_bt.bt.apply_effects import ApplyEffects
 from vap_bt.bt.execute_skill import ExecuteSkill
@@ -33,6 +34,7 @@ NODE_MODELS: dict[str, tuple[str, tuple[str, ...]]] = {
     "ExecuteSkill": ("Action", ("action", "args")),
     "ApplyEffects": ("Action", ("action", "args")),
     "VerifyPredicate": ("Action", ("predicate", "args", "expected")),  # RUNNING while its round is in flight
+    "VerifyAction": ("Action", ("phase", "action", "args")),  # an action-level question (the baselines')
     "ActivePerception": ("Decorator", ("budget", "phase")),
     "GoalCheck": ("Condition", ("goal",)),
     "FeelHand": ("Condition", ("action", "args")),
@@ -57,6 +59,8 @@ def _element(node: py_trees.behaviour.Behaviour) -> ET.Element:
     elif isinstance(node, VerifyPredicate):
         el = ET.Element("VerifyPredicate", predicate=node.atom.predicate, args=_args(node.atom.args),
                         expected=str(node.expected).lower())
+    elif isinstance(node, VerifyAction):
+        el = ET.Element("VerifyAction", phase=node.phase, action=node.action.name, args=_args(node.action.args))
     elif isinstance(node, (ExecuteSkill, ApplyEffects, FeelHand)):
         el = ET.Element(type(node).__name__, action=node.action.name, args=_args(node.action.args))
     elif isinstance(node, GoalCheck):

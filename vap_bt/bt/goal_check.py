@@ -19,10 +19,11 @@ from typing import ClassVar, Sequence
 import py_trees
 from py_trees.common import Access, Status
 
-from vap_bt.bt.context import ExecutionContext, VerifyMode
+from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.record import GoalAtomEvidence, GoalEvidence, Situation, Verification
 from vap_bt.domain.atoms import Literal
 from vap_bt.perception.profile import PerceptionProfile
+from vap_bt.strategy import Strategy
 
 
 class GoalCheck(py_trees.behaviour.Behaviour):
@@ -38,7 +39,7 @@ class GoalCheck(py_trees.behaviour.Behaviour):
         self.board = ctx.board.client(type(self).__name__, self.KEYS)
 
     def update(self) -> Status:
-        self.board.goal_evidence = goal_evidence(self.board.verifications, self.ctx.mode, self.goal, self.profile)
+        self.board.goal_evidence = goal_evidence(self.board.verifications, self.ctx.strategy, self.goal, self.profile)
         missing = [l for l in self.goal if self.ctx.graph.holds(l.atom) != l.positive]
         if not missing:
             return Status.SUCCESS
@@ -48,20 +49,21 @@ class GoalCheck(py_trees.behaviour.Behaviour):
         return Status.FAILURE
 
 
-def goal_evidence(verifications: Sequence[Verification], mode: VerifyMode, goal: tuple[Literal, ...],
+def goal_evidence(verifications: Sequence[Verification], strategy: Strategy, goal: tuple[Literal, ...],
                   profile: PerceptionProfile) -> GoalEvidence:
     """What each goal literal rests on now, just after the tree's goal checks (``verifications``:
-    the episode's so far; ``mode``: which phases are verified). The latest goal check of an atom
+    the episode's so far; ``strategy``: which phases are verified). The latest goal check of an atom
     is this tree's: every tree checks every goal atom the camera is asked about (when effects are
     verified at all), right before this node."""
     last = {v.atom: i for i, v in enumerate(verifications) if v.phase == "goal"}
-    return GoalEvidence(tuple(_atom_evidence(verifications, mode, l, last.get(l.atom), profile) for l in goal))
+    return GoalEvidence(tuple(_atom_evidence(verifications, strategy, l, last.get(l.atom), profile) for l in goal))
 
 
-def _atom_evidence(verifications: Sequence[Verification], mode: VerifyMode, l: Literal, index: int | None,
+def _atom_evidence(verifications: Sequence[Verification], strategy: Strategy, l: Literal, index: int | None,
                    profile: PerceptionProfile) -> GoalAtomEvidence:
-    if index is None:  # no goal check asked about it: the profile's source, or the verification mode, says why
-        reason = profile.unchecked_reason(l.atom) or f"not looked at: verification mode {mode.name!r} checks no goal"
+    if index is None:  # no goal check asked about it: the profile's source, or the strategy, says why
+        reason = profile.unchecked_reason(l.atom) \
+            or f"not looked at: verification strategy {strategy.name!r} checks no goal"
         felt = profile.source(l.atom.predicate, len(l.atom.args)) == "proprioception"
         return GoalAtomEvidence(l.atom, l.positive, "felt" if felt else "unchecked", reason=reason)
     v = verifications[index]

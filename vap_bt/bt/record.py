@@ -16,7 +16,11 @@ from vap_bt.domain.roles import HOUSEHOLD
 from vap_bt.perception.judgement import Basis, Outcome, Phase
 from vap_bt.perception.verification import Round
 
-SituationKind = Literal["precondition", "effect", "execution", "goal", "unseen"]
+#: what went wrong: a check that settled against belief (of a precondition, an effect, the goal), a
+#: skill that failed, a precondition nobody could see; or an action-level question answered "no"
+#: (:mod:`vap_bt.bt.action_check`): the action did not succeed, or cannot be done now
+SituationKind = Literal["precondition", "effect", "execution", "goal", "unseen", "action_failed",
+                        "action_infeasible"]
 
 
 @dataclass
@@ -57,10 +61,56 @@ class Verification:
         when the model was asked it, and its viewpoint question when one followed."""
         return sum(len(r.answers) + (r.sufficient_by == "model") + (r.direction is not None) for r in self.rounds)
 
+    @property
+    def atoms(self) -> tuple[Atom, ...]:
+        """The atoms whose conjunction the check's value is about (the runner scores it so)."""
+        return (self.atom,)
+
     def to_json(self) -> dict:
         return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
                 "expected": self.expected, "value": self.value, "outcome": self.outcome, "basis": self.basis,
                 "views": len(self.rounds), "queries": self.queries, "rounds": [r.to_json() for r in self.rounds]}
+
+
+@dataclass
+class ActionCheck:
+    """One action-level question (SuccessVQA after an action, AffordanceVQA before it), answered:
+    the question, the atoms it implies (whose conjunction the simulated model judges, and the
+    runner scores it by), the answer and what became of it. ``value`` is the answer (None: the
+    model gave none, and belief stands)."""
+
+    phase: Phase  # "pre": affordance, "eff": success
+    action: str
+    question: str
+    implied: tuple[Atom, ...]
+    value: bool | None
+    outcome: Outcome  # confirmed (yes), contradicted (no), unsettled (no answer)
+    round: Round
+
+    @property
+    def atoms(self) -> tuple[Atom, ...]:
+        """The atoms whose conjunction the question is about."""
+        return self.implied
+
+    @property
+    def rounds(self) -> list[Round]:
+        """The check's one view (as a :class:`Verification`'s rounds)."""
+        return [self.round]
+
+    @property
+    def basis(self) -> Basis:
+        """The VLM's answer, or belief where it gave none."""
+        return "belief" if self.value is None else "vlm"
+
+    @property
+    def queries(self) -> int:
+        """The VLM queries the check asked: one."""
+        return len(self.round.answers)
+
+    def to_json(self) -> dict:
+        return {"phase": self.phase, "action": self.action, "question": self.question,
+                "implies": [str(a) for a in self.implied], "value": self.value, "outcome": self.outcome,
+                "basis": self.basis, "views": 1, "queries": self.queries, "round": self.round.to_json()}
 
 
 @dataclass(frozen=True)

@@ -7,7 +7,8 @@ same observation and the same message) from the same belief says that repeating 
 help. :class:`RepeatWatch` counts such recurrences. On the first (:data:`LOOK_AFRESH`) the
 executive looks afresh; a skill that then fails the same way once more (:data:`STUCK`) stops the
 episode with the reason, instead of spending the replanning budget on the same motion: a motion
-planned from the same measurements fails the same way. A precondition the camera could not make
+planned from the same measurements fails the same way. An action an AffordanceVQA question keeps
+saying cannot be done is then tried against the answer (:mod:`vap_bt.bt.action_check`). A precondition the camera could not make
 out (``unseen``) that comes back the same after looking afresh makes the robot act on belief there
 (the action's effects are still checked): the same plan brings the robot to the same views (an
 item under furniture that its find pose never shows, a relation a model reads poorly), and more
@@ -39,7 +40,7 @@ STUCK = 3
 
 def stuck(s: Situation, times: int) -> bool:
     """Whether a situation seen ``times`` from the same belief ends the episode."""
-    return s.kind in ("execution", "unseen") and times >= STUCK
+    return s.kind in ("execution", "action_infeasible", "unseen") and times >= STUCK
 
 
 class RepeatWatch:
@@ -65,6 +66,8 @@ def describe(s: Situation) -> str:
     """A situation in a few words, for the reason an episode stopped."""
     if s.kind == "execution":
         return f"execution of {s.action} failed ({s.detail})"
+    if s.kind in ("action_failed", "action_infeasible"):
+        return f"{s.kind.replace('_', ' ')} at {s.action}: {s.detail} no"
     if s.kind == "unseen":
         return f"could not see whether {s.atom} holds " + (f"before {s.action}" if s.action else "at the goal")
     return f"{s.kind} {s.atom} observed {s.observed}" + (f" at {s.action}" if s.action else "")

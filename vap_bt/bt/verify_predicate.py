@@ -3,7 +3,8 @@
 A round is work in flight (:mod:`vap_bt.bt.inflight`): a frame captured where belief puts the
 atom's objects, then the N paraphrased questions about that frame — sent as the verification
 protocol says (one after another, or in waves all in flight at once) — their vote, and, when the
-answers agree, the view-sufficiency question — unless the frame's detector did not find every
+answers agree, the view-sufficiency question (none in a protocol that never asks it: the view is
+then taken as sufficient) — unless the frame's detector did not find every
 object the atom names (rooms and floors aside): a view that does not show a thing cannot settle
 a question about it, so it is insufficient without asking. In a protocol that lets the detector
 answer (lean), a view that shows every one of them plainly (whole, or large) is sufficient
@@ -99,7 +100,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         if self._sufficiency is not None and self._voted is not None:
             if not self._sufficiency.done():
                 return Status.RUNNING
-            self._voted.sufficient, self._voted.sufficient_by = yes_no(_answer(self._sufficiency)), "model"
+            self._voted.sufficient, self._voted.sufficient_by = yes_no(answer_of(self._sufficiency)), "model"
             self._sufficiency = None
             return self._finish(self._voted)
         return Status.FAILURE if self.round is None else self._status(self.round)
@@ -116,7 +117,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
                 return self._judged_by_detector(r)
             self._plain = shown_plainly(self.observation, self.atom, self.ctx.undetectable,
                                         protocol.whole_share, protocol.large_share)
-        if protocol.concurrent and not self._plain:  # the sufficiency question rides the first wave
+        if protocol.concurrent and protocol.sufficiency and not self._plain:  # it rides the first wave
             self._ask_sufficiency(self._asker.questions[0])
         return self._ask()
 
@@ -127,7 +128,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
         asker = self._asker
         for i, f in list(self._answers.items()):
             if f.done():
-                asker.give(i, _answer(f))
+                asker.give(i, answer_of(f))
                 del self._answers[i]
         for i in asker.to_ask():
             self._answers[i] = self.ctx.submit(self.ctx.vlm.ask, asker.queries[i], self.observation)
@@ -145,6 +146,9 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
             return self._finish(r)
         if self._plain:  # everything asked about is plainly in view
             r.sufficient, r.sufficient_by = True, "detector"
+            return self._finish(r)
+        if not self.ctx.protocol.sufficiency:  # a protocol that never asks takes every view as good enough
+            r.sufficient, r.sufficient_by = True, "assumed"
             return self._finish(r)
         self._voted = r
         if self._sufficiency is None:
@@ -175,7 +179,7 @@ class VerifyPredicate(py_trees.behaviour.Behaviour):
             self._frame, self._sufficiency, self._answers, self._asker = None, None, {}, None
 
 
-def _answer(f: Future) -> Answer:
+def answer_of(f: Future) -> Answer:
     """A future's answer; a backend that raised (none should) is no answer, never a crash —
     except a TransportError: the VLM's server stopped answering (``StopWhenSilent``), and the
     episode ends "transport down" as when any part goes away, not on abstentions for ever."""

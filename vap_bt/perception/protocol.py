@@ -32,6 +32,9 @@ then the view-sufficiency question, for every check. ``lean`` changes only how m
   where it finds an object missing, the view is insufficient in every protocol, and lean asks
   nothing about it (answers about a view that does not show the thing vote nothing in the
   verdict);
+* **no sufficiency question** (``sufficiency`` False: no named protocol; the OK-Robot baseline's
+  checks, :mod:`vap_bt.strategy`) — every view the detector does not find wanting is taken as
+  sufficient without asking: a round's answers alone settle it;
 * **sufficiency in the first wave** — where the detector cannot answer it, the view-sufficiency
   question goes out with the round's first questions instead of after their answers (it is
   about the same frame): one round trip of waiting, not two, at the cost of a question wasted on
@@ -57,6 +60,7 @@ class Protocol:
     detector: bool = False
     whole_share: float = 0.005
     large_share: float = 1.0  # 1.0: no object is large enough to count without being whole
+    sufficiency: bool = True  # False: the view-sufficiency question is never asked (taken as yes)
 
     @classmethod
     def parse(cls, name: str) -> "Protocol":

@@ -74,12 +74,14 @@ def survey_states(vlm: VLM, frames: dict[str, list[Frame]], candidates: list[str
 def _round(vlm: VLM, frame: Frame, atom: Atom, vote: VoteSettings, profile: PerceptionProfile,
            protocol: Protocol | None, undetectable: frozenset[str]) -> Round:
     """One round about one of the sweep's frames; the view-sufficiency question only when the
-    answers agree and (where the protocol lets it) the detector does not already show the thing
-    plainly."""
+    answers agree, the protocol asks it at all, and (where the protocol lets it) the detector does
+    not already show the thing plainly."""
     r = vote_round(vlm, frame, atom, vote, profile, protocol)
     if not (r.consistent and r.vote is not None):
         return r
-    if protocol is not None and protocol.detector and shown_plainly(frame, atom, undetectable, protocol.whole_share,
+    if protocol is not None and not protocol.sufficiency:
+        r.sufficient, r.sufficient_by = True, "assumed"
+    elif protocol is not None and protocol.detector and shown_plainly(frame, atom, undetectable, protocol.whole_share,
                                                                      protocol.large_share):
         r.sufficient, r.sufficient_by = True, "detector"
     else:

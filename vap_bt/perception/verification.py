@@ -53,8 +53,9 @@ class Round:
     #: directions tried after this round that the robot could not move to (before ``direction``)
     refused: tuple[str, ...] = ()
     unshown: tuple[str, ...] = ()  # objects of the atom the frame's detector did not find
-    #: who judged the view: "model" (the sufficiency question was asked) or "detector" (it found an
-    #: object missing, or — where the protocol lets it — everything whole); None when not judged
+    #: who judged the view: "model" (the sufficiency question was asked), "detector" (it found an
+    #: object missing, or — where the protocol lets it — everything whole) or "assumed" (a protocol
+    #: that never asks: :attr:`Protocol.sufficiency`); None when not judged
     sufficient_by: str | None = None
     #: which of the frame's detections the robot took for each of the atom's objects (its own
     #: re-identification: name -> the detection's index), so a report can say what it looked at

@@ -29,7 +29,9 @@ model needs it:
 
 What it cannot identify it does not answer truly. An **unknown image** (not a capture the world
 still holds, a lossy copy, a URL to fetch, several images) or an **unread prompt** (not an
-appendix prompt over the profile's wording: an action-level question, a typo) gets what a model
+appendix prompt over the profile's wording: an action-level question — whose implied facts depend
+on arguments its phrase leaves out and on the state the plan expects, so that a run refuses the
+action-level strategies over this endpoint (docs/perception.md) —, a typo) gets what a model
 might say to a picture or a question it cannot make sense of: constrained to choices, a seeded
 uniform guess among them with equal logprobs for every choice (a guess stated as one); otherwise
 a hedge, "I can't tell from this image.", which the client reads as no answer. The same goes for

@@ -214,7 +214,7 @@ class TreeRecorder:
         self.stream.set_time(L.TICK, sequence=self._offset)
         self.stream.set_time(L.TIME, timestamp=time.time())
         self._text(L.EV_PLAN, f"episode {self.episodes}: {len(ctx.graph.facts)} facts believed, "
-                              f"verification {ctx.mode.name}, K={ctx.budget}")
+                              f"verification {ctx.strategy.name}, K={ctx.budget}")
         self._log_belief(ctx, None, where="initial survey")
 
     def _new_tree(self, tree: py_trees.trees.BehaviourTree) -> None:
