@@ -11,7 +11,7 @@ from tools.bench.viewpoint_cases import CASES, CaseBench
 from vap_bt.perception.viewpoints import AROUND_ORDER, STRATEGIES
 
 
-@pytest.mark.slow  # about 12 s: one pybullet household, three checks
+@pytest.mark.slow  # 12-17 s: one pybullet household, three checks
 def test_every_strategy_starts_from_the_same_picture_and_greedy_all_visits_what_the_camera_reaches():
     bench = CaseBench(CASES["occluder"])
     try:
