@@ -12,30 +12,32 @@ verification check is run from that identical state under each strategy (``vlm``
   height: ``inside(wood1, basket)``;
 * ``far`` — the cup on the coffee table (collect_cup) seen from across the room:
   ``on(cup, coffee_table)``;
-* ``edge`` — the egg on the cutting board (halve_egg) where belief puts it a hand's breadth off,
-  so that the frame aimed at the belief cuts it at the image's edge: ``on(egg, cutting_board)``;
+* ``edge`` — the egg at the cutting board's front corner (halve_egg), known only as "on the
+  cutting board", the robot close in front: the frame aimed at the board's middle cuts the egg at
+  its side: ``on(egg, cutting_board)``;
 * ``drawer`` — the knife in the drawer pulled half open (halve_egg), seen from the front:
   ``inside(knife, drawer)``.
 
 Each case is staged once (the world built for its task at world seed 0, things moved by hand as a
-test does, the robot stood at its stand and the camera aimed) and snapshotted with
+test does, the robot stood at its stand) and snapshotted with
 ``pybullet.saveState``; every run restores it, makes a fresh camera service (the skills'
 :class:`~skills.views.ViewService` on a fresh kit), and ticks an
 :class:`~vap_bt.bt.active_perception.ActivePerception` over a
 :class:`~vap_bt.bt.verify_predicate.VerifyPredicate` — the executive's own check, asking the
 world's simulated VLM (model fixed; its seed is the run's seed, so the same seed gives the same
 first view's answers under every strategy). What the check starts from is belief placed where
-the things are (the survey's job is not under test here; the ``edge`` case's belief is off on
-purpose): the tool reads the world's truth to stage, as a test does, and to score; the check
-perceives. Per case and overall it reports the H2 measure (:mod:`vap_bt.viewpoint_measure`):
+the things are (the survey's job is not under test here; in the ``edge`` case, where the task
+file's word places the egg): the tool reads the world's truth to stage, as a test does, and to
+score; the check perceives. Per case and overall it reports the H2 measure (:mod:`vap_bt.viewpoint_measure`):
 viewpoints per uncertain check (unresolved charged the budget K; greedy-all what it visited),
 resolution rate and settled accuracy, and the paired difference VLM-guided minus each greedy
-kind over the seeds with a 95 % t interval.
+kind over the seeds (95 %: a t interval for viewpoints, Newcombe's for the rates).
 
     .venv/bin/python tools/bench/viewpoint_cases.py [--seeds 30] [--cases occluder,basket,...]
-                                                    [--json docs/figures/viewpoint_cases.json]
+                                                    [--json docs/figures/viewpoint_cases_<commit>.json]
 
-Progress goes to stderr; the markdown table to stdout.
+Progress goes to stderr; the markdown table to stdout. An unknown case or fewer than one seed is
+one line on stderr and exit code 2.
 """
 
 from __future__ import annotations
@@ -43,7 +45,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import statistics
 import sys
 import time
 from dataclasses import dataclass, field
@@ -109,7 +110,7 @@ class Staged:
 
 # -- staging: the world's truth is read here, as a test stages a scene, never by the check -------
 
-def stand(world: PybulletWorld, point, distance: float, bearing: float, arm=None) -> None:
+def stand(world: PybulletWorld, point, distance: float, bearing: float) -> None:
     """Stand the robot ``distance`` m from ``point`` (x, y) in the direction ``bearing`` (rad, map
     frame) from it, facing it."""
     x, y = point[0] + distance * math.cos(bearing), point[1] + distance * math.sin(bearing)
@@ -133,13 +134,9 @@ def settle(world: PybulletWorld, steps: int = 60) -> None:
         world.step()
 
 
-def believed_where_they_are(world: PybulletWorld, atom: Atom, off=(0.0, 0.0, 0.0)) -> Staged:
-    """Belief puts each of the atom's things where it truly is (the item ``off`` by so much)."""
-    points = {}
-    for k, name in enumerate(atom.args):
-        p = np.asarray(world.aim_at((name,)).point, float) + (np.asarray(off) if k == 0 else 0.0)
-        points[name] = tuple(map(float, p))
-    return Staged(points)
+def believed_where_they_are(world: PybulletWorld, atom: Atom) -> Staged:
+    """Belief puts each of the atom's things where it truly is (where a camera aims at it)."""
+    return Staged({name: world.aim_at((name,)).point for name in atom.args})
 
 
 # -- one check from the snapshot -------------------------------------------------------------------
@@ -166,7 +163,7 @@ class CaseBench:
         self.body_q, self.opening, self.ticks = self.world.robot.q(), self.world.robot.opening, self.world.ticks
 
     def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
-        """Where belief puts ``names`` (their mean; the map's things where the map has them)."""
+        """Where belief puts ``names``: the middle of their staged points."""
         points = [self.staged.points[n] for n in names if n in self.staged.points]
         return Aim(tuple(names), tuple(map(float, np.mean(points, axis=0))) if points else None)
 
@@ -189,14 +186,17 @@ class CaseBench:
         ctx = ExecutionContext(graph=SceneGraph.of_facts(set(), roles=self.task.profile.roles),
                                vlm=sim_vlm(self.task, self.world, cfg), camera=camera, skills=None, budget=BUDGET,
                                aim=self.aim, undetectable=self.undetectable, profile=self.task.profile,
-                               viewpoints=ViewpointStrategy(strategy))
+                               viewpoints=ViewpointStrategy(strategy), feels=lambda atom: False)
         node = ActivePerception(ctx, VerifyPredicate(ctx, self.atom, self.case.expected), "pre", None, 0)
-        for _ in range(MAX_TICKS):
-            node.tick_once()
-            if node.status != Status.RUNNING:
-                break
-        else:
-            raise RuntimeError(f"{self.case.name}: the check did not end in {MAX_TICKS} ticks")
+        try:
+            for _ in range(MAX_TICKS):
+                node.tick_once()
+                if node.status != Status.RUNNING:
+                    break
+            else:
+                raise RuntimeError(f"{self.case.name}: the check did not end in {MAX_TICKS} ticks")
+        finally:
+            ctx.close()
         v = ctx.board.verifications[-1]
         return {**v.to_json(), "truth": self.truth}
 
