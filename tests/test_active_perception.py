@@ -17,7 +17,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.perception.evidence import Calibration
 from vap_bt.perception.judgement import Look
 from vap_bt.perception.verification import Round
-from vap_bt.perception.viewpoints import GREEDY_ORDER, ViewpointStrategy
+from vap_bt.perception.viewpoints import AROUND_ORDER, GREEDY_ORDER, ViewpointStrategy
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
 from vap_bt.scene.graph import SceneGraph
@@ -233,6 +233,46 @@ def test_the_greedy_round_skips_a_way_it_was_refused_before():
     status, node, ctx = run(child, camera, strategy="greedy")
     assert status == Status.SUCCESS
     assert camera.asked == ["left", "right", "behind"]  # after "left", "right" is refused: "behind" instead
+
+
+def test_greedy_all_visits_every_viewpoint_of_its_round_then_decides_from_all_the_views():
+    """The paper's greedy baseline: once the first view did not decide, every predefined
+    viewpoint is visited whatever each shows (the settled view at the first of them would have
+    stopped the stopping greedy), then all the views are weighed together: here three settled
+    views against the two that said yes outvote them (budget K = 1 does not cut the round short)."""
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False), view("yyyyy", True), view("nnnnn", True),
+                                         view("nnnnn", True), view("nnnnn", True), view("ynnnn", False),
+                                         view("nnnny", False)])
+    camera = Camera()
+    status, node, ctx = run(child, camera, strategy="greedy-all", budget=1)
+    assert camera.asked == list(AROUND_ORDER) and child.runs == 1 + len(AROUND_ORDER)
+    v = ctx.board.verifications[-1]
+    assert v.outcome == "contradicted" and v.value is False and status == Status.FAILURE
+    assert v.viewpoints == len(AROUND_ORDER) and v.first_settled is False
+
+    stopping = ScriptedCheck(CUP_ON_TABLE, child._script)
+    status, node, ctx = run(stopping, Camera(), strategy="greedy", budget=1)
+    assert stopping.runs == 2 and ctx.board.verifications[-1].outcome == "confirmed"
+
+
+def test_greedy_alls_viewpoints_are_the_directions_the_camera_can_reach():
+    """A direction the camera service refuses (a wall where the robot would stand, as close as a
+    view gets) is no viewpoint of the set: the count comes out of where the target is."""
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False)] * 5)
+    camera = Camera(refused={"behind", "closer"})
+    status, node, ctx = run(child, camera, strategy="greedy-all")
+    assert camera.asked == list(AROUND_ORDER)  # every direction asked of the camera once
+    v = ctx.board.verifications[-1]
+    assert child.runs == 5 and v.viewpoints == 4 and node.moves == 4
+    assert v.outcome == "confirmed" and v.first_settled is False  # five agreeing views, none against
+
+
+def test_greedy_all_does_not_move_when_the_first_view_decides():
+    child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True)])
+    camera = Camera()
+    status, node, ctx = run(child, camera, strategy="greedy-all")
+    assert status == Status.SUCCESS and camera.asked == [] and child.runs == 1
+    assert ctx.board.verifications[-1].first_settled is True and ctx.board.verifications[-1].viewpoints == 0
 
 
 def test_a_goal_counts_the_views_an_earlier_check_judged_it_on():

@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from tools.bench.intervals import mcnemar_p, paired_difference, wilson
+from tools.bench.intervals import mcnemar_p, paired_difference, paired_t, wilson
 
 
 def test_wilson_is_honest_at_none_of_n():
@@ -29,3 +29,11 @@ def test_the_exact_mcnemar_p_value():
     assert mcnemar_p(2, 9) == pytest.approx(2 * (1 + 11 + 55) / 2 ** 11)
     assert mcnemar_p(0, 0) == 1.0 and mcnemar_p(4, 4) == 1.0
     assert mcnemar_p(0, 10) == pytest.approx(2 / 2 ** 10) and math.isclose(mcnemar_p(10, 0), mcnemar_p(0, 10))
+
+
+def test_the_paired_t_interval_of_per_seed_differences():
+    """Differences 1, 2, 3: mean 2, sd 1, t(0.975, 2) = 4.303 -> 2 -/+ 4.303 / sqrt(3)."""
+    d, lo, hi = paired_t([1.0, 2.0, 3.0])
+    assert d == 2.0 and (lo, hi) == pytest.approx((2 - 4.3027 / math.sqrt(3), 2 + 4.3027 / math.sqrt(3)), abs=1e-3)
+    assert paired_t([-1.0, -1.0]) == (-1.0, -1.0, -1.0)  # no spread: no width
+    assert math.isnan(paired_t([])[0]) and paired_t([0.5])[1:] == (-math.inf, math.inf)

@@ -9,7 +9,7 @@ from vap_bt.perception.evidence import Calibration
 from vap_bt.perception.judgement import (JudgementRules, Settlement, Subject, conclude, evidence, judge,
                                          needs_second_look, reused)
 from vap_bt.perception.verification import Round, Verdict, viewpoint_query
-from vap_bt.perception.viewpoints import GREEDY_ORDER, ViewpointSearch, ViewpointStrategy
+from vap_bt.perception.viewpoints import AROUND_ORDER, GREEDY_ORDER, ViewpointSearch, ViewpointStrategy
 
 CUP_ON_TABLE = Atom("on", ("cup", "table"))
 HOLDING_CUP = Atom("holding", ("cup",))
@@ -115,6 +115,24 @@ def test_the_search_takes_the_strategys_direction_or_the_first_untried_of_the_ro
     search.moved()
     search.moved()
     assert search.spent and search.moves == 2
+
+
+def test_the_greedy_all_search_takes_its_whole_round_whatever_k_and_pools_the_views():
+    search = ViewpointSearch(ViewpointStrategy("greedy-all"), budget=2)
+    assert search.budget == len(AROUND_ORDER) and search.pools
+    seen = []
+    while (d := search.next(CUP_ON_TABLE, view("yyyyy", False), None)) is not None:
+        seen.append(search.pick(d))
+        search.moved()
+    assert seen == list(AROUND_ORDER) and search.spent
+    assert not ViewpointSearch(ViewpointStrategy("greedy"), budget=2).pools
+
+
+def test_an_unknown_viewpoint_strategy_is_refused_by_name():
+    import pytest
+
+    with pytest.raises(ValueError, match="'sideways'.*greedy-all"):
+        ViewpointStrategy("sideways")
 
 
 def test_the_greedy_search_goes_round_and_ends_when_every_way_was_tried():

@@ -129,6 +129,7 @@ def test_a_flag_wins_over_the_task_files_option_which_wins_over_the_default():
     (["--max-replans", "many"], "--max-replans"),
     (["--protocol", "fast"], "--protocol"),
     (["--verify", "magic"], "--verify"),
+    (["--viewpoints", "sideways"], "--viewpoints"),
 ])
 def test_a_bad_flag_is_one_line_naming_it_and_exit_2(argv, flag, capsys):
     assert main(["run", str(TREES / "collect_cup.yaml"), *argv]) == EXIT_BAD_INPUT
@@ -164,6 +165,16 @@ def test_a_new_setting_is_one_field_and_reaches_the_flag_the_task_file_and_the_c
     assert Extended.from_task(stated, **Extended.given(parser.parse_args(["--patience", "9"]), "run")).patience == 9
     with pytest.raises(SystemExit):
         parser.parse_args(["--patience", "-3"])  # the field's bound, said by argparse
+
+
+def test_the_viewpoints_choices_are_the_strategies_and_greedy_all_reaches_the_config():
+    from vap_bt.perception.viewpoints import STRATEGIES
+
+    info = next(i for n, i, _ in settings_fields(RunConfig) if n == "viewpoints")
+    assert typing.get_args(info.annotation) == STRATEGIES
+    task = taskfile.load(TREES / "collect_cup.yaml")
+    args = build_parser().parse_args(["run", str(TREES / "collect_cup.yaml"), "--viewpoints", "greedy-all"])
+    assert RunConfig.from_task(task, **RunConfig.given(args, "run")).viewpoints == "greedy-all"
 
 
 def test_the_vlm_choices_are_the_backends_the_runner_builds():

@@ -194,8 +194,10 @@ class RunConfig:
                              "flight at once, no re-asking what nothing changed, three agreeing answers or one "
                              "confident logprob answer where they confirm the plan, the detector's word on whether "
                              "a view shows enough; a surprise always gets the paper's full vote)")
-    viewpoints: Annotated[Literal["vlm", "greedy"], Option("--viewpoints")] = Field(
-        "vlm", description="where to look from next: the VLM's suggestion (default) or a fixed round (paper H2)")
+    viewpoints: Annotated[Literal["vlm", "greedy", "greedy-all"], Option("--viewpoints")] = Field(
+        "vlm", description="where to look from next: the VLM's suggestion (default), a fixed round stopping at the "
+                           "first view that decides (greedy), or every reachable viewpoint of the round before "
+                           "the views are weighed (greedy-all: the paper's H2 baseline)")
     second_look: Annotated[bool, Option("--one-look")] = Field(
         True, description="believe the first settled view of a surprise or a goal, as the paper's Alg. 2 does "
                           "(default: a second view from a new picture first)")

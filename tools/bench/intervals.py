@@ -48,3 +48,18 @@ def mcnemar_p(only_first: int, only_second: int) -> float:
         return 1.0
     tail = sum(math.comb(n, i) for i in range(k + 1)) / 2 ** n
     return min(1.0, 2 * tail)
+
+
+def paired_t(diffs: list[float], level: float = 0.95) -> tuple[float, float, float]:
+    """The mean of paired differences (one per seed or episode) with its Student t interval;
+    (nan, nan, nan) with no difference, and the mean with an unbounded interval with one."""
+    from scipy import stats
+
+    n = len(diffs)
+    if n == 0:
+        return math.nan, math.nan, math.nan
+    mean = sum(diffs) / n
+    if n == 1:
+        return mean, -math.inf, math.inf
+    half = stats.t.ppf((1 + level) / 2, n - 1) * stats.tstd(diffs) / math.sqrt(n) if len(set(diffs)) > 1 else 0.0
+    return mean, mean - half, mean + half

@@ -17,7 +17,8 @@ and the decorator fails, which fails the plan's tree and hands control to the ex
 
 While nothing is decided the decorator moves the camera — at most K times — and runs the child
 again: the viewpoint strategy (:mod:`vap_bt.perception.viewpoints`) gives the direction (the
-VLM's suggestion about the last frame, or the next of the greedy round), and the move is work in
+VLM's suggestion about the last frame, or the next of the greedy round; ``greedy-all`` visits
+every viewpoint of its round before its views are weighed together), and the move is work in
 flight like any other; the child is not ticked meanwhile. A direction the robot cannot move to
 is replaced at once by another (a frame from the same spot would show the same picture), and
 when no direction is left, or the check is about the hand or what it holds (the wrist camera
@@ -97,6 +98,9 @@ class ActivePerception(py_trees.decorators.Decorator):
         self._verdict: Verdict | None = None  # the views' verdict while the gripper is asked
         self._look: Look | None = None  # the child's last look (its frame is asked where to look next)
         self._reused: bool | None = None  # an earlier check's value this one stands on (lean)
+        #: whether the first view decided the check (None: not judged yet, or a check of the hand,
+        #: which no move shows better): the H2 measure's "uncertain" checks are those it did not
+        self._first_settled: bool | None = None
 
     @property
     def atom(self) -> Atom:
@@ -115,7 +119,7 @@ class ActivePerception(py_trees.decorators.Decorator):
         return self._stage
 
     def initialise(self) -> None:
-        self.rounds, self._job, self._stage, self._look = [], None, "look", None
+        self.rounds, self._job, self._stage, self._look, self._first_settled = [], None, "look", None, None
         self.search = ViewpointSearch(self.ctx.viewpoints, self.ctx.budget)
         # lean: verified before, and nothing since could have changed it. Never the goal's check:
         # success is claimed on it, so it looks (an earlier value is evidence only beside its own views)
@@ -166,10 +170,15 @@ class ActivePerception(py_trees.decorators.Decorator):
         return judgement.evidence(self.subject, self.rounds, self.board.verified.views(self.atom))
 
     def _decide(self, exhausted: bool) -> Status:
-        v = judgement.judge(self.subject, self._evidence(), self.rules, exhausted, self.atom in self.board.doubted)
+        # greedy-all, once the first view did not decide, weighs the views only when it has them all
+        pooling = self.search.pools and len(self.rounds) > 1 and not exhausted
+        v = None if pooling else judgement.judge(self.subject, self._evidence(), self.rules, exhausted,
+                                                 self.atom in self.board.doubted)
+        if len(self.rounds) == 1 and self._first_settled is None and not self._in_hand():
+            self._first_settled = v is not None and v.outcome != "unsettled"
         if v is None:  # look again: where, the strategy says (or the model, asked about the last frame)
             nxt = self.search.next(self.atom, self.rounds[-1], self.ctx.profile)
-            if isinstance(nxt, str):
+            if nxt is None or isinstance(nxt, str):
                 return self._move(nxt)
             return self._start("choose", self.ctx.submit(self.ctx.vlm.ask, nxt, self._look.frame))
         if self.ctx.feels(self.atom):  # the gripper may overrule: ask it, and wait without blocking
@@ -236,7 +245,7 @@ class ActivePerception(py_trees.decorators.Decorator):
         atom, expected, board = self.atom, self.subject.expected, self.board
         board.verified.saw(atom, self.rounds)
         v = Verification(self.phase, str(self.action) if self.action else "goal", atom, expected, s.value,
-                         s.outcome, list(self.rounds), s.basis)
+                         s.outcome, list(self.rounds), s.basis, self.search.moves, self._first_settled)
         board.verifications.append(v)
         self.ctx.record(v)
         if s.outcome != "unsettled":

@@ -54,6 +54,12 @@ class Verification:
     outcome: Outcome
     rounds: list[Round]
     basis: Basis
+    #: viewpoints moved to after the first view (a direction the robot could not reach is none)
+    viewpoints: int = 0
+    #: whether the first view decided the check; None where no view was judged (a reused value)
+    #: or none elsewhere could help (the hand's checks): the H2 measure's uncertain checks are
+    #: those whose first view did not (:mod:`vap_bt.viewpoint_measure`)
+    first_settled: bool | None = None
 
     @property
     def queries(self) -> int:
@@ -69,7 +75,8 @@ class Verification:
     def to_json(self) -> dict:
         return {"phase": self.phase, "action": self.action, "predicate": str(self.atom),
                 "expected": self.expected, "value": self.value, "outcome": self.outcome, "basis": self.basis,
-                "views": len(self.rounds), "queries": self.queries, "rounds": [r.to_json() for r in self.rounds]}
+                "views": len(self.rounds), "viewpoints": self.viewpoints, "first_settled": self.first_settled,
+                "queries": self.queries, "rounds": [r.to_json() for r in self.rounds]}
 
 
 @dataclass
