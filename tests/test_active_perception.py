@@ -17,7 +17,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.perception.evidence import Calibration
 from vap_bt.perception.judgement import Look
 from vap_bt.perception.verification import Round
-from vap_bt.perception.viewpoints import AROUND_ORDER, GREEDY_ORDER, ViewpointStrategy
+from vap_bt.perception.viewpoints import AROUND_ORDER, ViewpointStrategy
 from vap_bt.perception.vlm import Answer
 from vap_bt.robot.frame import Frame
 from vap_bt.scene.graph import SceneGraph
@@ -196,12 +196,12 @@ def test_a_refused_move_is_replaced_at_once_not_looked_again_from_the_same_spot(
     """The VLM says "closer" but the robot is as close as a view gets: another way is tried at
     once (the first of the predefined round), and only a real move spends the budget."""
     child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False), view("yyyyy", True)])
-    camera = Camera(refused={"closer", GREEDY_ORDER[0]})
+    camera = Camera(refused={"closer", AROUND_ORDER[0]})
     status, node, ctx = run(child, camera, Suggests("closer"), budget=1)
     assert status == Status.SUCCESS and child.runs == 2
-    assert camera.asked == ["closer", GREEDY_ORDER[0], GREEDY_ORDER[1]]
+    assert camera.asked == ["closer", AROUND_ORDER[0], AROUND_ORDER[1]]
     first = node.rounds[0]
-    assert first.refused == ("closer", GREEDY_ORDER[0]) and first.direction == GREEDY_ORDER[1] and first.moved
+    assert first.refused == ("closer", AROUND_ORDER[0]) and first.direction == AROUND_ORDER[1] and first.moved
     assert node.moves == 1
 
 
@@ -209,9 +209,9 @@ def test_with_no_way_to_a_new_view_the_views_it_has_decide():
     """Every direction refused: no second look from the same spot; one insufficient view is not
     enough to stand, so the check is unsettled (and, as a precondition, a situation to look)."""
     child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False)])
-    camera = Camera(refused=set(GREEDY_ORDER))
+    camera = Camera(refused=set(AROUND_ORDER))
     status, node, ctx = run(child, camera, Suggests("front"))
-    assert child.runs == 1 and sorted(camera.asked) == sorted(GREEDY_ORDER)
+    assert child.runs == 1 and sorted(camera.asked) == sorted(AROUND_ORDER)
     assert ctx.board.verifications[-1].outcome == "unsettled" and status == Status.FAILURE
     assert ctx.board.situation.kind == "unseen"
 
@@ -229,10 +229,10 @@ def test_what_the_hand_holds_is_not_looked_at_from_elsewhere_the_gripper_decides
 
 def test_the_greedy_round_skips_a_way_it_was_refused_before():
     child = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", False), view("yyyyy", False), view("yyyyy", True)])
-    camera = Camera(refused={"right"})
+    camera = Camera(refused={"above"})
     status, node, ctx = run(child, camera, strategy="greedy")
     assert status == Status.SUCCESS
-    assert camera.asked == ["left", "right", "behind"]  # after "left", "right" is refused: "behind" instead
+    assert camera.asked == ["left", "above", "closer"]  # after "left", "above" is refused: "closer" instead
 
 
 def test_greedy_all_visits_every_viewpoint_of_its_round_then_decides_from_all_the_views():

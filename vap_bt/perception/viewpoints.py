@@ -4,9 +4,9 @@ Three strategies, the paper's H2 comparison:
 
 * ``vlm`` (VAP-TAMP) — ask the viewpoint-selection prompt about the last frame and move the way
   the model says (left, right, front, behind, above, closer);
-* ``greedy`` (a *stopping* greedy) — go round predefined viewpoints in a fixed order, whatever
-  the frame showed (to the target's left, to its right, behind it, above it, closer, in front of
-  it), and stop at the first view that decides, within the budget K;
+* ``greedy`` (a *stopping* greedy) — go round the predefined viewpoints in greedy-all's order
+  (:data:`AROUND_ORDER`), whatever the frame showed, and stop at the first view that decides,
+  within the budget K;
 * ``greedy-all`` (the paper's baseline: "exhaustively visits predefined viewpoints arranged
   around the target object") — once the first view has not decided, visit *every* predefined
   viewpoint around the target, whatever any of them showed, and only then weigh all the views
@@ -38,12 +38,11 @@ from vap_bt.perception.verification import Round, target_of, viewpoint_query
 from vap_bt.perception.vlm import Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
 
-#: the greedy round of predefined viewpoints around the target
-GREEDY_ORDER: tuple[str, ...] = ("left", "right", "behind", "above", "closer", "front")
-#: greedy-all's round: the same six directions, ordered so that each move — the camera service
-#: moves relative to where the camera stands — reaches a picture not yet taken (after "left",
-#: "right" would return to the first view's stand): round to the left, up, in closer, across to
-#: the far side, back to a full view, and round again
+#: the round of predefined viewpoints around the target, which both greedy kinds go round and the
+#: model's suggestions fall back on: the six directions, ordered so that each move — the camera
+#: service moves relative to where the camera stands — reaches a picture not yet taken (after
+#: "left", "right" would return to the first view's stand): round to the left, up, in closer,
+#: across to the far side, back to a full view, and round again
 AROUND_ORDER: tuple[str, ...] = ("left", "above", "closer", "behind", "front", "right")
 #: the strategies' names, as ``--viewpoints`` takes them
 STRATEGIES: tuple[str, ...] = ("vlm", "greedy", "greedy-all")
@@ -65,29 +64,22 @@ class ViewpointStrategy:
         (``greedy-all``)."""
         return self.name == "greedy-all"
 
-    @property
-    def order(self) -> tuple[str, ...]:
-        """The predefined round: greedy-all's, or the one the others fall back on."""
-        return AROUND_ORDER if self.exhaustive else GREEDY_ORDER
-
     def budget(self, k: int) -> int:
         """The moves a check may make: K, or every viewpoint of the round for ``greedy-all``."""
-        return len(self.order) if self.exhaustive else k
+        return len(AROUND_ORDER) if self.exhaustive else k
 
     def next(self, move: int, atom: Atom, question: str, target: str,
              tried: frozenset[str] = frozenset()) -> str | Query | None:
         """The direction of the ``move``-th move (0-based), or the query that asks for it; for
-        ``greedy-all`` the first of its round not in ``tried`` (None once every one was)."""
-        if self.name == "greedy":
-            return GREEDY_ORDER[move % len(GREEDY_ORDER)]
-        if self.exhaustive:
+        either greedy the first of the round not in ``tried`` (None once every one was)."""
+        if self.name != "vlm":
             return self.instead(tried)
         return viewpoint_query(atom, question, target)
 
     def instead(self, tried: set[str] | frozenset[str]) -> str | None:
         """The direction to try where the chosen one could not be reached (or none was given):
         the first of the predefined round not in ``tried``; None once every one was."""
-        return next((d for d in self.order if d not in tried), None)
+        return next((d for d in AROUND_ORDER if d not in tried), None)
 
 
 class ViewpointSearch:
@@ -136,4 +128,4 @@ class ViewpointSearch:
         self.moves += 1
 
 
-assert set(GREEDY_ORDER) == set(AROUND_ORDER) == set(VIEW_DIRECTIONS)
+assert sorted(AROUND_ORDER) == sorted(VIEW_DIRECTIONS)
