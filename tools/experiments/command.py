@@ -24,6 +24,7 @@ import json
 import subprocess
 import sys
 import time
+import typing
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -37,6 +38,7 @@ from tools.progress import Progress, duration
 from vap_bt import taskfile
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, InputError
 from vap_bt.report import versions
+from vap_bt.settings import RunConfig
 
 ROOT = engine.ROOT
 #: the paper's simulated tasks: the default set
@@ -83,6 +85,22 @@ def parser(experiment: Experiment) -> argparse.ArgumentParser:
     return ap
 
 
+def choices(setting: str) -> tuple[str, ...]:
+    """The values a run setting allows, read from its declaration at run time (``verify``: the
+    verification strategies; ``viewpoints``: the viewpoint strategies), so that a strategy added to
+    the settings is an experiment's column without touching the experiments."""
+    return typing.get_args(RunConfig.__pydantic_fields__[setting].annotation)
+
+
+def chosen(given: list[str] | None, setting: str) -> list[str]:
+    """``given`` (an option's values) checked against the setting's values; all of them if None."""
+    allowed = choices(setting)
+    for word in given or ():
+        if word not in allowed:
+            raise InputError(f"--{setting}", f"unknown {setting} {word!r} (known: {', '.join(allowed)})")
+    return list(given or allowed)
+
+
 def tasks_named(given: list[str]) -> dict[str, str]:
     """Task names (or paper ids) -> {name: label}; an InputError naming the first unknown one."""
     known = {}
@@ -124,12 +142,15 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     try:
         campaign = Campaign(tasks_named(args.tasks), seeds_of(args.seeds), args.world,
                             args.out or ROOT / "docs" / "results" / experiment.name)
+        configurations = experiment.configurations(args)
+        if args.report_only and not (campaign.out / "episodes.jsonl").exists():
+            raise InputError("--out", f"no episodes.jsonl in {campaign.out} to report on (run the experiment first)")
     except InputError as exc:
         print(f"{experiment.name}: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     log = results.EpisodeLog(campaign.out / "episodes.jsonl")
     if not args.report_only:
-        run(experiment, campaign, experiment.configurations(args), log, args, fault)
+        run(experiment, campaign, configurations, log, args, fault)
     rows = [r for r in log.rows() if r["experiment"] == experiment.name]
     results.write_csv(rows, campaign.out / "episodes.csv")
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign))

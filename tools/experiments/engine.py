@@ -142,6 +142,8 @@ def episode_row(key: Key, fault: Callable[[Key], None] | None = None) -> dict:
     t0 = time.perf_counter()
     try:
         report = session.episode(key.seed)
+    except InputError as exc:  # the configuration cannot run here: said when the episode began
+        return results.not_runnable(key, exc)
     except Exception as exc:  # noqa: BLE001 - a crash is a result of the campaign, not its end
         return results.crashed(key, exc, time.perf_counter() - t0)
     return results.episode_row(key, report)
@@ -178,7 +180,7 @@ def run(client: Client, keys: Iterable[Key], emit: Callable[[dict], None],
 
 def workers(client: Client) -> int:
     """How many workers the client's scheduler has now."""
-    return len(client.scheduler_info(n_workers=-1)["workers"])
+    return len(client.scheduler_info()["workers"])
 
 
 def key_of(row: dict) -> Key:
