@@ -39,6 +39,7 @@ from vap_bt import taskfile
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, InputError
 from vap_bt.report import versions
 from vap_bt.settings import RunConfig
+from vap_bt.yaml_file import read_model
 
 ROOT = engine.ROOT
 #: the paper's simulated tasks: the default set
@@ -105,7 +106,7 @@ def tasks_named(given: list[str]) -> dict[str, str]:
     """Task names (or paper ids) -> {name: label}; an InputError naming the first unknown one."""
     known = {}
     for path in sorted((ROOT / "trees").glob("*.yaml")):
-        paper = taskfile.load(path).spec.paper_task
+        paper = read_model(path, taskfile.TaskFile, "task file", "name:, paper_task:, ...").paper_task  # the header only
         known[path.stem] = known[paper or path.stem] = (path.stem, f"{paper} {path.stem}" if paper else path.stem)
     chosen = {}
     for word in given:

@@ -31,6 +31,7 @@ from __future__ import annotations
 import logging
 import os
 import time
+import warnings
 from collections import OrderedDict
 from contextlib import contextmanager
 from dataclasses import asdict, dataclass
@@ -149,6 +150,23 @@ def episode_row(key: Key, fault: Callable[[Key], None] | None = None) -> dict:
     return results.episode_row(key, report)
 
 
+@dataclass(frozen=True)
+class CrashOnce:
+    """A fault for tests: the first episode to start after ``marker`` is gone kills its worker
+    process outright (no exception, no cleanup: as a segfault would), once across the cluster —
+    the marker file, created atomically, says it has happened."""
+
+    marker: str
+
+    def __call__(self, key: Key) -> None:
+        """Kill this worker unless the marker exists (and create it)."""
+        try:
+            os.close(os.open(self.marker, os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+        except FileExistsError:
+            return
+        os._exit(70)
+
+
 @contextmanager
 def open_client(address: str | None = None, workers: int | None = None) -> Iterator[Client]:
     """A client of the scheduler at ``address``, or of a LocalCluster of ``workers`` processes
@@ -159,7 +177,10 @@ def open_client(address: str | None = None, workers: int | None = None) -> Itera
             client.register_plugin(CloseSessions())
             yield client
         return
-    with dask.config.set({"distributed.scheduler.allowed-failures": ALLOWED_FAILURES}):
+    # without a dashboard the scheduler still serves its health routes, on the host given: when
+    # its usual port is taken (another cluster on the machine) it takes a free one and warns
+    with dask.config.set({"distributed.scheduler.allowed-failures": ALLOWED_FAILURES}), warnings.catch_warnings():
+        warnings.filterwarnings("ignore", "Port .* is already in use", UserWarning)
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
                                host="127.0.0.1", dashboard_address=None, silence_logs=logging.ERROR)
     with cluster, Client(cluster) as client:

@@ -86,7 +86,7 @@ class EpisodeLog:
         self.path.parent.mkdir(parents=True, exist_ok=True)
         if not resume or not self.path.exists():
             self.path.write_text("")
-        elif not self.path.read_text().endswith(("\n", "")):  # a line cut short: end it, it is dropped on read
+        elif (text := self.path.read_text()) and not text.endswith("\n"):  # a line cut short: end it (dropped on read)
             with self.path.open("a") as f:
                 f.write("\n")
 

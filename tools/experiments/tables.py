@@ -31,11 +31,15 @@ class Estimate:
     n: int
 
     def percent(self) -> str:
-        """``71.5 % [65.2, 77.1] (n=200)``: a rate as a table cell."""
+        """``71.5 % [65.2, 77.1] (n=200)``: a rate as a table cell (``–`` for no sample)."""
+        if not self.n:
+            return "–"
         return f"{100 * self.value:.1f} % [{100 * self.low:.1f}, {100 * self.high:.1f}] (n={self.n})"
 
     def plain(self, digits: int = 2) -> str:
-        """``2.41 [2.20, 2.63] (n=200)``: a mean as a table cell."""
+        """``2.41 [2.20, 2.63] (n=200)``: a mean as a table cell (``–`` for no sample)."""
+        if not self.n:
+            return "–"
         if math.isnan(self.low):
             return f"{self.value:.{digits}f} (n={self.n})"
         return f"{self.value:.{digits}f} [{self.low:.{digits}f}, {self.high:.{digits}f}] (n={self.n})"
@@ -54,11 +58,15 @@ NONE = Estimate(math.nan, math.nan, math.nan, 0)
 def rate(flags: Iterable[bool]) -> Estimate:
     """The share of true flags, with its Wilson score interval."""
     flags = list(flags)
-    if not flags:
+    return share(sum(map(bool, flags)), len(flags))
+
+
+def share(k: int, n: int) -> Estimate:
+    """``k`` of ``n``, with its Wilson score interval."""
+    if not n:
         return NONE
-    k = sum(map(bool, flags))
-    ci = stats.binomtest(k, len(flags)).proportion_ci(LEVEL, method="wilson")
-    return Estimate(k / len(flags), ci.low, ci.high, len(flags))
+    ci = stats.binomtest(k, n).proportion_ci(LEVEL, method="wilson")
+    return Estimate(k / n, ci.low, ci.high, n)
 
 
 def mean(values: Iterable[float]) -> Estimate:
