@@ -176,12 +176,15 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
             log.append(row)
             progress.step()
 
+        cpu0 = engine.cpu_times(client)
         engine.run(client, todo, emit, fault)
+        cpu = engine.cpu_since(client, cpu0)
     wall = time.perf_counter() - t0
     meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name,
             "world": campaign.world, "tasks": list(campaign.tasks), "seeds": _span(campaign.seeds),
             "configurations": [list(c) for c in configurations], "resumed": bool(done), "episodes": len(todo),
             "workers": n_workers, "cluster": args.address or "LocalCluster", "wall_s": round(wall, 1),
+            "workers_cpu_s": round(cpu, 1), "client_cpu_s": round(time.process_time(), 1),
             "wall": duration(wall), "episodes_per_hour": round(len(todo) / wall * 3600) if wall > 0 else None,
             "commit": _commit(), "versions": {**versions(), "dask": dask.__version__,
                                                "distributed": distributed.__version__}}

@@ -199,6 +199,18 @@ def run(client: Client, keys: Iterable[Key], emit: Callable[[dict], None],
         future.release()
 
 
+def cpu_times(client: Client) -> dict[str, float]:
+    """The CPU time each of the client's workers has used so far (by address): beside the wall
+    time it tells a campaign slowed by other load on the machine from a slow one."""
+    return client.run(time.process_time)
+
+
+def cpu_since(client: Client, before: dict[str, float]) -> float:
+    """The CPU seconds the workers used since ``before`` (:func:`cpu_times`); a worker started
+    since counts from zero, one that died since is not counted (a lower bound then)."""
+    return sum(t - before.get(w, 0.0) for w, t in cpu_times(client).items())
+
+
 def workers(client: Client) -> int:
     """How many workers the client's scheduler has now."""
     return len(client.scheduler_info()["workers"])
