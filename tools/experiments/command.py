@@ -163,6 +163,7 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
         log: results.EpisodeLog, args: argparse.Namespace, fault) -> None:
     """Run the campaign's missing episodes, appending each row to ``log``; then write run.json."""
     log.start(args.resume)
+    commit = _commit()  # now: the code that runs is this checkout's as the campaign starts
     done = log.keys()
     todo = [k for k in keys(experiment, campaign, configurations) if k not in done]
     t0 = time.perf_counter()
@@ -186,7 +187,7 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
             "workers": n_workers, "cluster": args.address or "LocalCluster", "wall_s": round(wall, 1),
             "workers_cpu_s": round(cpu, 1), "client_cpu_s": round(time.process_time(), 1),
             "wall": duration(wall), "episodes_per_hour": round(len(todo) / wall * 3600) if wall > 0 else None,
-            "commit": _commit(), "versions": {**versions(), "dask": dask.__version__,
+            "commit": commit, "versions": {**versions(), "dask": dask.__version__,
                                                "distributed": distributed.__version__}}
     (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
 
