@@ -68,8 +68,8 @@ def histogram_and_mean(path: Path, samples: Mapping[str, Sequence[float]], *, xl
 
 def _finish(fig, ax, path: Path, title: str, legend: bool) -> None:
     ax.grid(axis="y", alpha=0.3)
-    if legend:
-        ax.legend(fontsize=8, frameon=False)
+    if legend:  # below the axes, where it hides no bar
+        ax.legend(fontsize=8, frameon=False, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=4)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path)
