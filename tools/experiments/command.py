@@ -9,8 +9,8 @@ and how it reports its rows; :func:`main` does the rest, the same way for each:
 * the campaign — the keys not yet in ``episodes.jsonl`` (all of them unless ``--resume``) run on
   the cluster (:mod:`tools.experiments.engine`), each row appended as it finishes; progress on
   stderr (:mod:`tools.progress`);
-* the outputs — ``episodes.csv``, ``table.md`` and PNG plots from every row in the log (also
-  with ``--report-only``, from the rows alone), and ``run.json``: the command, seeds, commit,
+* the outputs — ``episodes.csv``, ``table.md`` and PNG plots from every row in the log, its
+  tasks in the paper's order (also with ``--report-only``, from the rows alone), and ``run.json``: the command, seeds, commit,
   versions, worker count, wall time and episodes per hour.
 
 Bad input (an unknown task, a malformed seed range) is one line on stderr naming the option,
@@ -25,7 +25,7 @@ import subprocess
 import sys
 import time
 import typing
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable
 
@@ -153,6 +153,9 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     if not args.report_only:
         run(experiment, campaign, configurations, log, args, fault)
     rows = [r for r in log.rows() if r["experiment"] == experiment.name]
+    # the report covers every row of the log (a resumed campaign may have run other tasks before)
+    named = tasks_named(sorted({r["task"] for r in rows}))
+    campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     results.write_csv(rows, campaign.out / "episodes.csv")
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign))
     print((campaign.out / "table.md").read_text())
