@@ -16,7 +16,7 @@ import sys
 import matplotlib.image
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, TREES
 
 sys.path.insert(0, str(ROOT))  # tools/ (the workers spawned from here inherit the path)
 from tools.experiments import engine, results  # noqa: E402
@@ -25,6 +25,8 @@ from tools.experiments.command import choices, main  # noqa: E402
 from tools.experiments.failures import FAILURES  # noqa: E402
 from tools.experiments.strategies import STRATEGIES  # noqa: E402
 from tools.experiments.viewpoints import VIEWPOINTS  # noqa: E402
+from vap_bt import taskfile  # noqa: E402
+from vap_bt.settings import RunConfig  # noqa: E402
 
 TASK = ["--tasks", "S4", "--seeds", "2"]
 
@@ -117,7 +119,7 @@ def test_viewpoints_counts_views_of_uncertain_checks(tmp_path, address):
     kinds = set(choices("viewpoints"))
     rows = rows_of(out)
     assert {r["viewpoints"] for r in rows} == kinds and len(rows) == 2 * len(kinds)
-    budget = 3
+    budget = RunConfig.from_task(taskfile.load(TREES / "halve_egg.yaml")).budget  # K: an unresolved check's charge
     views = [int(v) for r in rows for v in r["uncertain_viewpoints"].split(";") if v]
     assert views and all(0 <= v <= budget for v in views)
     table = (out / "table.md").read_text()
@@ -136,6 +138,45 @@ def test_failures_classes_every_failed_episode(tmp_path, address):
     table = (out / "table.md").read_text()
     assert "visual ambiguity" in table and "Situations per episode" in table and "## Diagnosis" in table
     assert_images(out, "failure_modes.png", "situations.png")
+
+
+def test_an_uncertain_check_counts_the_views_after_the_first_and_an_unresolved_one_the_budget():
+    from tools.experiments import measures
+
+    def check(rounds, outcome, value=True, truth=True, basis="vlm"):
+        return {"rounds": rounds, "outcome": outcome, "value": value, "truth": truth, "basis": basis,
+                "predicate": "p"}
+
+    sure = {"consistent": True, "sufficient": True, "vote": True}
+    unsure = {"consistent": False, "sufficient": None, "vote": True}
+    report = {"config": {"budget": 3}, "verifications": [
+        check([sure, sure], "confirmed"),  # settled on its first view (a second look to confirm): not uncertain
+        check([unsure, {**unsure, "consistent": True, "sufficient": False}, sure], "confirmed"),  # 2 views more
+        check([unsure] * 4, "unsettled", value=False, basis="belief"),  # never settled: charged K = 3
+        check([unsure, sure], "contradicted", value=False, truth=True),  # resolved, but wrong
+        check([], "felt", basis="proprioception")]}  # the gripper's: no view at all
+    assert measures.uncertain_checks(report) == [(2, True, True), (3, False, False), (1, True, False)]
+
+
+@pytest.mark.parametrize("claimed,holds,reason,kinds,wrong,mode", [
+    (True, True, "goal reached", [], False, None),
+    (True, False, "goal reached", [], False, "visual ambiguity"),  # a claimed success the world denies
+    (False, False, "stuck: could not see whether sliced(egg) holds at the goal", ["goal"], False, "visual ambiguity"),
+    (False, False, "replanning budget (20) exhausted", ["execution"] * 3, True, "visual ambiguity"),  # wrong belief kept
+    (False, False, "no plan after execution situation: no plan reaches the goal", ["execution"], False, "state/access"),
+    (False, False, "stuck: execution of placein(cup, microwave, kitchen) failed", ["execution"], False, "manipulation"),
+    (False, False, "replanning budget (20) exhausted", ["execution", "execution", "effect"], False, "manipulation"),
+    (False, False, "replanning budget (20) exhausted", ["effect", "effect", "execution"], False, "other"),
+    (False, False, "time budget (900 s) exhausted", [], False, "other"),
+])
+def test_a_failed_episode_is_classed_by_the_first_rule_that_applies(claimed, holds, reason, kinds, wrong, mode):
+    from tools.experiments import measures
+
+    checks = [{"predicate": "holding(cup)", "basis": "vlm", "value": True, "truth": True},
+              {"predicate": "holding(cup)", "basis": "vlm", "value": True, "truth": not wrong}]  # the last one counts
+    report = {"success": claimed, "goal_satisfied": holds, "reason": reason, "verifications": checks,
+              "situations": [{"kind": k} for k in kinds]}
+    assert measures.failure_mode(report) == mode
 
 
 #: the cheapest campaign: the closed-world baseline (no checks) on four seeds
