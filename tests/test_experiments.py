@@ -60,7 +60,7 @@ def assert_run_json(out, episodes: int) -> dict:
     return meta
 
 
-@pytest.mark.slow  # 54 s at a load average of 15 on 2 cores (the machine shared by six jobs)
+@pytest.mark.slow  # 18 s on 2 shared cores (54 s at a load average of 15)
 def test_ablation_runs_every_mode_on_the_cluster_and_writes_table_iii(tmp_path, address):
     out = tmp_path / "ablation"
     p = subprocess.run([sys.executable, str(ROOT / "tools/experiments/ablation.py"), *TASK, "--address", address,
@@ -77,7 +77,6 @@ def test_ablation_runs_every_mode_on_the_cluster_and_writes_table_iii(tmp_path, 
     assert_run_json(out, 8)
 
 
-@pytest.mark.slow  # 12 s at a load average of 15 on 2 cores
 def test_strategies_reads_its_strategies_from_the_settings(tmp_path, address):
     out = tmp_path / "strategies"
     assert main(STRATEGIES, [*TASK, "--address", address, "--out", str(out), "--verify", "both", "none"]) == 0
@@ -112,7 +111,6 @@ def test_a_strategy_that_cannot_run_here_is_said_not_runnable(monkeypatch):
     assert "| not runnable |" in table and "(n=1)" in table and "a test's stand-in" in table
 
 
-@pytest.mark.slow  # 17 s at a load average of 15 on 2 cores
 def test_viewpoints_counts_views_of_uncertain_checks(tmp_path, address):
     out = tmp_path / "viewpoints"
     assert main(VIEWPOINTS, [*TASK, "--address", address, "--out", str(out)]) == 0
@@ -128,7 +126,6 @@ def test_viewpoints_counts_views_of_uncertain_checks(tmp_path, address):
     assert_run_json(out, len(rows))
 
 
-@pytest.mark.slow  # 11 s at a load average of 15 on 2 cores
 def test_failures_classes_every_failed_episode(tmp_path, address):
     out = tmp_path / "failures"
     assert main(FAILURES, [*TASK, "--address", address, "--out", str(out), "--verify", "both", "none"]) == 0
@@ -196,7 +193,6 @@ def test_resume_runs_only_what_a_stopped_campaign_had_not_finished(tmp_path, add
     assert json.loads((out / "run.json").read_text())["episodes"] == 2 and len(rows_of(out)) == 4
 
 
-@pytest.mark.slow  # 15 s at a load average of 15 on 2 cores
 def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):
     marker = tmp_path / "crashed"
     out = tmp_path / "strategies"
@@ -206,7 +202,7 @@ def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):
     assert len(rows) == 4 and len({results.key_of(r) for r in rows}) == 4 and not any(r["error"] for r in rows)
 
 
-@pytest.mark.slow  # 74 s at a load average of 15 on 2 cores, with four seeds (now two)
+@pytest.mark.slow  # 10 s on 2 shared cores
 def test_an_episode_is_the_same_whatever_worker_runs_it(tmp_path, address):
     """The cluster's rows equal the same episodes run here, in order, in one process."""
     out = tmp_path / "strategies"
