@@ -111,6 +111,19 @@ def test_a_strategy_that_cannot_run_here_is_said_not_runnable(monkeypatch):
     assert "| not runnable |" in table and "(n=1)" in table and "a test's stand-in" in table
 
 
+def test_an_episode_that_raises_is_a_row_with_its_error_and_its_session_is_dropped(monkeypatch):
+    from vap_bt.app.runner import Session
+
+    def boom(self, seed=None):
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(engine, "SESSIONS", engine._Sessions())
+    monkeypatch.setattr(Session, "episode", boom)
+    row = engine.episode_row(engine.Key("strategies", "symbolic", "halve_egg", "none", "vlm", 0))
+    assert row["error"] == "RuntimeError: boom" and row["failure_mode"] == "crash" and row["success"] is False
+    assert not engine.SESSIONS.open  # the next episode gets a fresh session
+
+
 def test_viewpoints_counts_views_of_uncertain_checks(tmp_path, address):
     out = tmp_path / "viewpoints"
     assert main(VIEWPOINTS, [*TASK, "--address", address, "--out", str(out)]) == 0

@@ -91,6 +91,10 @@ class _Sessions:
         for config in mine[:max(0, len(mine) - KEEP_SESSIONS.get(world, 1))]:
             _close(self.open.pop(config))
 
+    def discard(self, key: Key) -> None:
+        """Close and forget ``key``'s session (one that raised mid-episode may be left half-way)."""
+        _close(self.open.pop(key.config(), None))
+
     def close(self) -> None:
         """Close every session (a pybullet world's physics server with it)."""
         while self.open:
@@ -119,8 +123,8 @@ def _close(session) -> None:
 
 
 class CloseSessions(WorkerPlugin):
-    """Closes a worker's warm sessions when it shuts down (pybullet worlds are processes' worth
-    of state, and a worker may be reused by another campaign)."""
+    """Closes a worker's warm sessions when it shuts down: a pybullet world holds a physics server
+    and its meshes, and a worker of a cluster one joins may outlive the campaign."""
 
     name = "vap-bt-close-sessions"
 
@@ -146,6 +150,7 @@ def episode_row(key: Key, fault: Callable[[Key], None] | None = None) -> dict:
     except InputError as exc:  # the configuration cannot run here: said when the episode began
         return results.not_runnable(key, exc)
     except Exception as exc:  # noqa: BLE001 - a crash is a result of the campaign, not its end
+        SESSIONS.discard(key)  # the next episode of this configuration starts from a fresh session
         return results.crashed(key, exc, time.perf_counter() - t0)
     return results.episode_row(key, report)
 
