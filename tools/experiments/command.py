@@ -14,7 +14,8 @@ and how it reports its rows; :func:`main` does the rest, the same way for each:
   versions, worker count, wall time and episodes per hour.
 
 Bad input (an unknown task, a malformed seed range) is one line on stderr naming the option,
-exit 2 (:data:`vap_bt.errors.EXIT_BAD_INPUT`), no traceback.
+exit 2 (:data:`vap_bt.errors.EXIT_BAD_INPUT`), no traceback. Ctrl-C stops the campaign with one
+line (exit 130); the rows written so far stay, and ``--resume`` runs the rest.
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ from tools.experiments import engine, results
 from tools.experiments.engine import Key
 from tools.progress import Progress, duration
 from vap_bt import taskfile
-from vap_bt.errors import EXIT_BAD_INPUT, EXIT_OK, InputError
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, InputError
 from vap_bt.report import versions
 from vap_bt.settings import RunConfig
 from vap_bt.yaml_file import read_model
@@ -151,7 +152,12 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
         return EXIT_BAD_INPUT
     log = results.EpisodeLog(campaign.out / "episodes.jsonl")
     if not args.report_only:
-        run(experiment, campaign, configurations, log, args, fault)
+        try:
+            run(experiment, campaign, configurations, log, args, fault)
+        except KeyboardInterrupt:  # the rows written so far are on disk; the episodes in flight are lost
+            print(f"{experiment.name}: interrupted; {len(log.rows())} rows kept in {log.path}, --resume runs the "
+                  "rest", file=sys.stderr)
+            return EXIT_INTERRUPTED
     rows = [r for r in log.rows() if r["experiment"] == experiment.name]
     # the report covers every row of the log (a resumed campaign may have run other tasks before)
     named = tasks_named(sorted({r["task"] for r in rows}))
