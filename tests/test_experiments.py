@@ -215,6 +215,20 @@ def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):
     assert len(rows) == 4 and len({results.key_of(r) for r in rows}) == 4 and not any(r["error"] for r in rows)
 
 
+def test_ctrl_c_keeps_the_rows_written_and_says_how_to_resume(tmp_path, address, monkeypatch, capsys):
+    real = engine.run
+
+    def stopped(client, keys, emit, fault=None):
+        real(client, keys[:2], emit)  # two episodes finish, then the user presses Ctrl-C
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(engine, "run", stopped)
+    out = tmp_path / "strategies"
+    assert main(STRATEGIES, [*QUICK, "--address", address, "--out", str(out)]) == 130
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith("strategies: interrupted; 2 rows kept")
+    assert len(results.EpisodeLog(out / "episodes.jsonl").rows()) == 2
+
+
 @pytest.mark.slow  # 10 s on 2 shared cores
 def test_an_episode_is_the_same_whatever_worker_runs_it(tmp_path, address):
     """The cluster's rows equal the same episodes run here, in order, in one process."""
