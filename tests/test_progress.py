@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import io
-import subprocess
 import sys
 
 import pytest
@@ -51,14 +50,3 @@ def test_rate_per_second_when_fast_and_a_label_for_a_second_loop():
                                           (3900, "1 h 05 min")])
 def test_durations_read_as_a_person_says_them(seconds, text):
     assert duration(seconds) == text
-
-
-@pytest.mark.slow
-def test_the_campaign_keeps_its_table_on_stdout_and_reports_progress_on_stderr():
-    p = subprocess.run([sys.executable, str(ROOT / "tools/experiments/campaign.py"), "--seeds", "2"],
-                       capture_output=True, text=True, timeout=600, cwd=ROOT)
-    assert p.returncode == 0, p.stderr[-2000:]
-    table = p.stdout.strip().splitlines()
-    assert table[0].split() == ["task", "success", "false", "situations", "replans", "q/action"]
-    assert len(table) == 1 + 9 + 2 and table[-1].startswith("18 episodes: success")  # 9 tasks, a blank, the total
-    assert "[" not in p.stdout and p.stderr.strip().splitlines()[-1].startswith("  [18/18 episodes  100%")

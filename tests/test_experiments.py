@@ -1,0 +1,250 @@
+"""tools/experiments: the four experiment commands on a Dask cluster of two workers, their
+outputs, resuming, a worker dying mid-campaign, and bad input.
+
+One LocalCluster of two worker processes serves the module (``--address``): the commands join
+it unchanged, as they would a cluster of machines. Each command runs one quick task (S4,
+halve_egg) on two seeds in the symbolic world.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import subprocess
+import sys
+
+import matplotlib.image
+import pytest
+
+from conftest import ROOT, TREES
+
+sys.path.insert(0, str(ROOT))  # tools/ (the workers spawned from here inherit the path)
+from tools.experiments import engine, results  # noqa: E402
+from tools.experiments.ablation import ABLATION, MODES  # noqa: E402
+from tools.experiments.command import choices, main  # noqa: E402
+from tools.experiments.failures import FAILURES  # noqa: E402
+from tools.experiments.strategies import STRATEGIES  # noqa: E402
+from tools.experiments.viewpoints import VIEWPOINTS  # noqa: E402
+from vap_bt import taskfile  # noqa: E402
+from vap_bt.settings import RunConfig  # noqa: E402
+
+TASK = ["--tasks", "S4", "--seeds", "2"]
+
+
+@pytest.fixture(scope="module")
+def address():
+    """A two-worker LocalCluster's scheduler address, for the module's campaigns to join."""
+    with engine.open_client(workers=2) as client:
+        assert engine.workers(client) == 2
+        yield client.scheduler.address
+
+
+def rows_of(out) -> list[dict]:
+    with open(out / "episodes.csv", newline="") as f:
+        reader = csv.DictReader(f)
+        assert tuple(reader.fieldnames) == results.COLUMNS
+        return list(reader)
+
+
+def assert_images(out, *names: str) -> None:
+    for name in names:
+        image = matplotlib.image.imread(out / name)
+        assert image.shape[0] > 100 and image.shape[1] > 100 and image.std() > 0, name  # not a blank canvas
+
+
+def assert_run_json(out, episodes: int) -> dict:
+    meta = json.loads((out / "run.json").read_text())
+    assert meta["episodes"] == episodes and meta["workers"] == 2 and meta["seeds"] == "0-1"
+    assert meta["tasks"] == ["halve_egg"] and meta["world"] == "symbolic" and len(meta["commit"]) >= 40
+    assert meta["wall_s"] > 0 and meta["episodes_per_hour"] > 0 and meta["versions"]["distributed"]
+    return meta
+
+
+@pytest.mark.slow  # 18 s on 2 shared cores (54 s at a load average of 15)
+def test_ablation_runs_every_mode_on_the_cluster_and_writes_table_iii(tmp_path, address):
+    out = tmp_path / "ablation"
+    p = subprocess.run([sys.executable, str(ROOT / "tools/experiments/ablation.py"), *TASK, "--address", address,
+                        "--out", str(out)], capture_output=True, text=True, timeout=300, cwd=ROOT)
+    assert p.returncode == 0, p.stderr[-2000:]
+    rows = rows_of(out)
+    assert sorted((r["strategy"], r["seed"]) for r in rows) == sorted((m, s) for m in MODES for s in "01")
+    assert all(r["runnable"] == "True" and r["vlm_version"].startswith("vlm-") for r in rows)
+    table = (out / "table.md").read_text()
+    assert p.stdout.strip() == table.strip()  # the table on stdout, the progress on stderr
+    assert "| S4 halve_egg |" in table and "(n=2)" in table and "Paired difference" in table
+    assert p.stderr.strip().splitlines()[-1].startswith("  [ablation: 8/8 episodes  100%")
+    assert_images(out, "table3.png")
+    assert_run_json(out, 8)
+
+
+def test_strategies_reads_its_strategies_from_the_settings(tmp_path, address):
+    out = tmp_path / "strategies"
+    assert main(STRATEGIES, [*TASK, "--address", address, "--out", str(out), "--verify", "both", "none"]) == 0
+    rows = rows_of(out)
+    assert len(rows) == 4 and {r["strategy"] for r in rows} == {"both", "none"}
+    assert {"both", "none"} <= set(choices("verify"))
+    table = (out / "table.md").read_text()
+    assert "| none | " in table and "wall time per episode" in table and "not runnable" not in table
+    assert_images(out, "strategies.png", "success_vs_time.png")
+    assert_run_json(out, 4)
+
+
+def test_a_strategy_that_cannot_run_here_is_said_not_runnable(monkeypatch):
+    """A configuration the runner refuses with an InputError (as it refuses a VLM planner without a
+    real VLM backend) is a row saying so, and the table says "not runnable" instead of a rate."""
+    from tools.experiments import compare
+    from vap_bt.app import runner
+    from vap_bt.errors import InputError
+
+    real = runner.check_config
+
+    def refuse_both(task, cfg):
+        if cfg.verify == "both":
+            raise InputError("--verify", "both needs a real VLM backend (a test's stand-in)")
+        return real(task, cfg)
+
+    monkeypatch.setattr(runner, "check_config", refuse_both)
+    monkeypatch.setattr(engine, "SESSIONS", engine._Sessions())
+    rows = [engine.episode_row(engine.Key("strategies", "symbolic", "halve_egg", s, "vlm", 0)) for s in ("both", "none")]
+    assert [r["runnable"] for r in rows] == [False, True] and rows[0]["success"] is None
+    table = compare.success_table(rows, {"halve_egg": "S4 halve_egg"}, ["both", "none"], "none")
+    assert "| not runnable |" in table and "(n=1)" in table and "a test's stand-in" in table
+
+
+def test_an_episode_that_raises_is_a_row_with_its_error_and_its_session_is_dropped(monkeypatch):
+    from vap_bt.app.runner import Session
+
+    def boom(self, seed=None):
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(engine, "SESSIONS", engine._Sessions())
+    monkeypatch.setattr(Session, "episode", boom)
+    row = engine.episode_row(engine.Key("strategies", "symbolic", "halve_egg", "none", "vlm", 0))
+    assert row["error"] == "RuntimeError: boom" and row["failure_mode"] == "crash" and row["success"] is False
+    assert not engine.SESSIONS.open  # the next episode gets a fresh session
+
+
+def test_viewpoints_counts_views_of_uncertain_checks(tmp_path, address):
+    out = tmp_path / "viewpoints"
+    assert main(VIEWPOINTS, [*TASK, "--address", address, "--out", str(out)]) == 0
+    kinds = set(choices("viewpoints"))
+    rows = rows_of(out)
+    assert {r["viewpoints"] for r in rows} == kinds and len(rows) == 2 * len(kinds)
+    budget = RunConfig.from_task(taskfile.load(TREES / "halve_egg.yaml")).budget  # K: an unresolved check's charge
+    views = [int(v) for r in rows for v in r["uncertain_viewpoints"].split(";") if v]
+    assert views and all(0 <= v <= budget for v in views)
+    table = (out / "table.md").read_text()
+    assert "viewpoints per uncertain check" in table and "settled accuracy" in table and "greedy − vlm" in table
+    assert_images(out, "viewpoints.png")
+    assert_run_json(out, len(rows))
+
+
+def test_failures_classes_every_failed_episode(tmp_path, address):
+    out = tmp_path / "failures"
+    assert main(FAILURES, [*TASK, "--address", address, "--out", str(out), "--verify", "both", "none"]) == 0
+    rows = rows_of(out)
+    assert len(rows) == 4
+    assert all((r["failure_mode"] == "") == (r["success"] == "True") for r in rows)
+    table = (out / "table.md").read_text()
+    assert "visual ambiguity" in table and "Situations per episode" in table and "## Diagnosis" in table
+    assert_images(out, "failure_modes.png", "situations.png")
+
+
+def test_an_uncertain_check_counts_the_views_after_the_first_and_an_unresolved_one_the_budget():
+    from tools.experiments import measures
+
+    def check(rounds, outcome, value=True, truth=True, basis="vlm"):
+        return {"rounds": rounds, "outcome": outcome, "value": value, "truth": truth, "basis": basis,
+                "predicate": "p"}
+
+    sure = {"consistent": True, "sufficient": True, "vote": True}
+    unsure = {"consistent": False, "sufficient": None, "vote": True}
+    report = {"config": {"budget": 3}, "verifications": [
+        check([sure, sure], "confirmed"),  # settled on its first view (a second look to confirm): not uncertain
+        check([unsure, {**unsure, "consistent": True, "sufficient": False}, sure], "confirmed"),  # 2 views more
+        check([unsure] * 4, "unsettled", value=False, basis="belief"),  # never settled: charged K = 3
+        check([unsure, sure], "contradicted", value=False, truth=True),  # resolved, but wrong
+        check([], "felt", basis="proprioception")]}  # the gripper's: no view at all
+    assert measures.uncertain_checks(report) == [(2, True, True), (3, False, False), (1, True, False)]
+
+
+@pytest.mark.parametrize("claimed,holds,reason,kinds,wrong,mode", [
+    (True, True, "goal reached", [], False, None),
+    (True, False, "goal reached", [], False, "visual ambiguity"),  # a claimed success the world denies
+    (False, False, "stuck: could not see whether sliced(egg) holds at the goal", ["goal"], False, "visual ambiguity"),
+    (False, False, "replanning budget (20) exhausted", ["execution"] * 3, True, "visual ambiguity"),  # wrong belief kept
+    (False, False, "no plan after execution situation: no plan reaches the goal", ["execution"], False, "state/access"),
+    (False, False, "stuck: execution of placein(cup, microwave, kitchen) failed", ["execution"], False, "manipulation"),
+    (False, False, "replanning budget (20) exhausted", ["execution", "execution", "effect"], False, "manipulation"),
+    (False, False, "replanning budget (20) exhausted", ["effect", "effect", "execution"], False, "other"),
+    (False, False, "time budget (900 s) exhausted", [], False, "other"),
+])
+def test_a_failed_episode_is_classed_by_the_first_rule_that_applies(claimed, holds, reason, kinds, wrong, mode):
+    from tools.experiments import measures
+
+    checks = [{"predicate": "holding(cup)", "basis": "vlm", "value": True, "truth": True},
+              {"predicate": "holding(cup)", "basis": "vlm", "value": True, "truth": not wrong}]  # the last one counts
+    report = {"success": claimed, "goal_satisfied": holds, "reason": reason, "verifications": checks,
+              "situations": [{"kind": k} for k in kinds]}
+    assert measures.failure_mode(report) == mode
+
+
+#: the cheapest campaign: the closed-world baseline (no checks) on four seeds
+QUICK = ["--tasks", "S4", "--seeds", "4", "--verify", "none"]
+
+
+def test_resume_runs_only_what_a_stopped_campaign_had_not_finished(tmp_path, address):
+    out = tmp_path / "strategies"
+    argv = [*QUICK, "--address", address, "--out", str(out)]
+    assert main(STRATEGIES, argv) == 0
+    log = out / "episodes.jsonl"
+    lines = log.read_text().splitlines()
+    log.write_text("\n".join(lines[:2]) + "\n" + lines[2][:40])  # stopped while writing the third row
+    assert main(STRATEGIES, [*argv, "--resume"]) == 0
+    rows = results.EpisodeLog(log).rows()
+    assert len(rows) == 4 and len({results.key_of(r) for r in rows}) == 4
+    assert json.loads((out / "run.json").read_text())["episodes"] == 2 and len(rows_of(out)) == 4
+
+
+def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):
+    marker = tmp_path / "crashed"
+    out = tmp_path / "strategies"
+    assert main(STRATEGIES, [*QUICK, "--address", address, "--out", str(out)], fault=engine.CrashOnce(str(marker))) == 0
+    assert marker.exists()  # a worker did die
+    rows = results.EpisodeLog(out / "episodes.jsonl").rows()
+    assert len(rows) == 4 and len({results.key_of(r) for r in rows}) == 4 and not any(r["error"] for r in rows)
+
+
+def test_ctrl_c_keeps_the_rows_written_and_says_how_to_resume(tmp_path, address, monkeypatch, capsys):
+    real = engine.run
+
+    def stopped(client, keys, emit, fault=None):
+        real(client, keys[:2], emit)  # two episodes finish, then the user presses Ctrl-C
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(engine, "run", stopped)
+    out = tmp_path / "strategies"
+    assert main(STRATEGIES, [*QUICK, "--address", address, "--out", str(out)]) == 130
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith("strategies: interrupted; 2 rows kept")
+    assert len(results.EpisodeLog(out / "episodes.jsonl").rows()) == 2
+
+
+@pytest.mark.slow  # 10 s on 2 shared cores
+def test_an_episode_is_the_same_whatever_worker_runs_it(tmp_path, address):
+    """The cluster's rows equal the same episodes run here, in order, in one process."""
+    out = tmp_path / "strategies"
+    assert main(STRATEGIES, [*QUICK, "--address", address, "--out", str(out), "--verify", "none", "eff",
+                             "--seeds", "2"]) == 0
+    there = sorted(results.EpisodeLog(out / "episodes.jsonl").rows(), key=results.key_of)
+    here = [json.loads(json.dumps(engine.episode_row(results.key_of(r)))) for r in there]
+    strip = lambda r: {k: v for k, v in r.items() if k != "wall_s"}  # noqa: E731
+    assert len(there) == 4 and [strip(r) for r in here] == [strip(r) for r in there]
+
+
+@pytest.mark.parametrize("argv,option", [(["--tasks", "boil_wter"], "--tasks"), (["--seeds", "9-3"], "--seeds"),
+                                         (["--verify", "bogus"], "--verify")])
+def test_bad_input_is_one_line_and_exit_2(argv, option, capsys, tmp_path):
+    assert main(STRATEGIES, [*argv, "--out", str(tmp_path)]) == 2  # returned: no exception, no traceback
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and err.startswith(f"strategies: {option}: "), err
+    assert not list(tmp_path.iterdir())  # nothing started, nothing written

@@ -1,0 +1,214 @@
+"""What every experiment command shares: its options, the campaign loop, and its outputs.
+
+An experiment (:class:`Experiment`) says which (strategy, viewpoints) configurations it runs
+and how it reports its rows; :func:`main` does the rest, the same way for each:
+
+* options — ``--world``, ``--tasks`` (names, or the paper's ids S1-S5 / T1-T4, read from the task
+  files' ``paper_task``), ``--seeds`` (``N``: seeds 0..N-1, or ``A-B``: A..B inclusive),
+  ``--out``, ``--resume``, ``--report-only``, ``--workers``, ``--address``;
+* the campaign — the keys not yet in ``episodes.jsonl`` (all of them unless ``--resume``) run on
+  the cluster (:mod:`tools.experiments.engine`), each row appended as it finishes; progress on
+  stderr (:mod:`tools.progress`);
+* the outputs — ``episodes.csv``, ``table.md`` and PNG plots from every row in the log, its
+  tasks in the paper's order (also with ``--report-only``, from the rows alone), and ``run.json``: the command, seeds, commit,
+  versions, worker count, wall time and episodes per hour.
+
+Bad input (an unknown task, a malformed seed range) is one line on stderr naming the option,
+exit 2 (:data:`vap_bt.errors.EXIT_BAD_INPUT`), no traceback. Ctrl-C stops the campaign with one
+line (exit 130); the rows written so far stay, and ``--resume`` runs the rest.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import time
+import typing
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Callable
+
+import dask
+import distributed
+
+from tools.experiments import engine, results
+from tools.experiments.engine import Key
+from tools.progress import Progress, duration
+from vap_bt import taskfile
+from vap_bt.errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, InputError
+from vap_bt.report import versions
+from vap_bt.settings import RunConfig
+from vap_bt.yaml_file import read_model
+
+ROOT = engine.ROOT
+#: the paper's simulated tasks: the default set
+DEFAULT_TASKS = ("S1", "S2", "S3", "S4", "S5")
+
+
+@dataclass(frozen=True)
+class Campaign:
+    """What a command line asks for, resolved: tasks (name -> label), seeds, world, output directory."""
+
+    tasks: dict[str, str]  # task name -> its label in tables ("S1 boil_water")
+    seeds: list[int]
+    world: str
+    out: Path
+
+
+@dataclass(frozen=True)
+class Experiment:
+    """One experiment: its name, its configurations, and how it writes ``table.md`` and plots."""
+
+    name: str
+    description: str
+    #: the (strategy, viewpoints) configurations it compares, from the parsed options
+    configurations: Callable[[argparse.Namespace], list[tuple[str, str]]]
+    #: writes the plots into the campaign's directory and returns table.md's text
+    report: Callable[[list[dict], Campaign], str]
+    #: adds the experiment's own options to the parser
+    options: Callable[[argparse.ArgumentParser], None] = field(default=lambda parser: None)
+
+
+def parser(experiment: Experiment) -> argparse.ArgumentParser:
+    """The command's options: the common ones and the experiment's own."""
+    ap = argparse.ArgumentParser(prog=f"tools/experiments/{experiment.name}.py", description=experiment.description)
+    ap.add_argument("--world", choices=("symbolic", "pybullet"), default="symbolic")
+    ap.add_argument("--tasks", nargs="+", default=list(DEFAULT_TASKS), metavar="TASK",
+                    help="task names (trees/<name>.yaml) or the paper's ids: S1-S5, T1-T4 (default S1-S5)")
+    ap.add_argument("--seeds", default="50", help="N: seeds 0..N-1; A-B: seeds A..B inclusive (default 50)")
+    ap.add_argument("--out", type=Path, help=f"output directory (default docs/results/{experiment.name})")
+    ap.add_argument("--resume", action="store_true", help="keep episodes.jsonl and run only the missing episodes")
+    ap.add_argument("--report-only", action="store_true", help="write the table and plots from existing rows")
+    ap.add_argument("--workers", type=int, help="LocalCluster worker processes (default: one per core)")
+    ap.add_argument("--address", help="join this Dask scheduler (tcp://host:port) instead of a LocalCluster")
+    experiment.options(ap)
+    return ap
+
+
+def choices(setting: str) -> tuple[str, ...]:
+    """The values a run setting allows, read from its declaration at run time (``verify``: the
+    verification strategies; ``viewpoints``: the viewpoint strategies), so that a strategy added to
+    the settings is an experiment's column without touching the experiments."""
+    return typing.get_args(RunConfig.__pydantic_fields__[setting].annotation)
+
+
+def chosen(given: list[str] | None, setting: str) -> list[str]:
+    """``given`` (an option's values) checked against the setting's values; all of them if None."""
+    allowed = choices(setting)
+    for word in given or ():
+        if word not in allowed:
+            raise InputError(f"--{setting}", f"unknown {setting} {word!r} (known: {', '.join(allowed)})")
+    return list(given or allowed)
+
+
+def tasks_named(given: list[str]) -> dict[str, str]:
+    """Task names (or paper ids) -> {name: label}; an InputError naming the first unknown one."""
+    known = {}
+    for path in sorted((ROOT / "trees").glob("*.yaml")):
+        paper = read_model(path, taskfile.TaskFile, "task file", "name:, paper_task:, ...").paper_task  # the header only
+        known[path.stem] = known[paper or path.stem] = (path.stem, f"{paper} {path.stem}" if paper else path.stem)
+    chosen = {}
+    for word in given:
+        if word not in known:
+            raise InputError("--tasks", f"unknown task {word!r} (known: {', '.join(sorted(known))})")
+        name, label = known[word]
+        chosen[name] = label
+    return chosen
+
+
+def seeds_of(text: str) -> list[int]:
+    """``N`` -> 0..N-1; ``A-B`` -> A..B inclusive; an InputError for anything else."""
+    try:
+        if "-" in text:
+            first, last = (int(x) for x in text.split("-"))
+            if first <= last:
+                return list(range(first, last + 1))
+        elif int(text) > 0:
+            return list(range(int(text)))
+    except ValueError:
+        pass
+    raise InputError("--seeds", f"{text!r} is not a count (50) or a range (1000-1199)")
+
+
+def keys(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]]) -> list[Key]:
+    """Every episode of the campaign, grouped by configuration (a worker's sessions stay warm)."""
+    return [Key(experiment.name, campaign.world, task, strategy, viewpoints, seed)
+            for task in campaign.tasks for strategy, viewpoints in configurations for seed in campaign.seeds]
+
+
+def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[[Key], None] | None = None) -> int:
+    """Run the experiment's command line; ``fault`` is a test's hook (see :func:`engine.episode_row`)."""
+    args = parser(experiment).parse_args(argv)
+    try:
+        campaign = Campaign(tasks_named(args.tasks), seeds_of(args.seeds), args.world,
+                            args.out or ROOT / "docs" / "results" / experiment.name)
+        configurations = experiment.configurations(args)
+        if args.report_only and not (campaign.out / "episodes.jsonl").exists():
+            raise InputError("--out", f"no episodes.jsonl in {campaign.out} to report on (run the experiment first)")
+    except InputError as exc:
+        print(f"{experiment.name}: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    log = results.EpisodeLog(campaign.out / "episodes.jsonl")
+    if not args.report_only:
+        try:
+            run(experiment, campaign, configurations, log, args, fault)
+        except KeyboardInterrupt:  # the rows written so far are on disk; the episodes in flight are lost
+            print(f"{experiment.name}: interrupted; {len(log.rows())} rows kept in {log.path}, --resume runs the "
+                  "rest", file=sys.stderr)
+            return EXIT_INTERRUPTED
+    rows = [r for r in log.rows() if r["experiment"] == experiment.name]
+    # the report covers every row of the log (a resumed campaign may have run other tasks before)
+    named = tasks_named(sorted({r["task"] for r in rows}))
+    campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
+    results.write_csv(rows, campaign.out / "episodes.csv")
+    (campaign.out / "table.md").write_text(experiment.report(rows, campaign))
+    print((campaign.out / "table.md").read_text())
+    return EXIT_OK
+
+
+def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
+        log: results.EpisodeLog, args: argparse.Namespace, fault) -> None:
+    """Run the campaign's missing episodes, appending each row to ``log``; then write run.json."""
+    log.start(args.resume)
+    commit = _commit()  # now: the code that runs is this checkout's as the campaign starts
+    done = log.keys()
+    todo = [k for k in keys(experiment, campaign, configurations) if k not in done]
+    t0 = time.perf_counter()
+    with engine.open_client(args.address, args.workers) as client:
+        n_workers = engine.workers(client)
+        progress = Progress(len(todo), "episodes", label=experiment.name)
+        print(f"  [{experiment.name}: {len(todo)} episodes on {n_workers} workers"
+              f"{f', {len(done)} already done' if done else ''}]", file=sys.stderr, flush=True)
+
+        def emit(row: dict) -> None:
+            log.append(row)
+            progress.step()
+
+        cpu0 = engine.cpu_times(client)
+        engine.run(client, todo, emit, fault)
+        cpu = engine.cpu_since(client, cpu0)
+    wall = time.perf_counter() - t0
+    meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name,
+            "world": campaign.world, "tasks": list(campaign.tasks), "seeds": _span(campaign.seeds),
+            "configurations": [list(c) for c in configurations], "resumed": bool(done), "episodes": len(todo),
+            "workers": n_workers, "cluster": args.address or "LocalCluster", "wall_s": round(wall, 1),
+            "workers_cpu_s": round(cpu, 1), "client_cpu_s": round(time.process_time(), 1),
+            "wall": duration(wall), "episodes_per_hour": round(len(todo) / wall * 3600) if wall > 0 else None,
+            "commit": commit, "versions": {**versions(), "dask": dask.__version__,
+                                               "distributed": distributed.__version__}}
+    (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
+
+
+def _span(seeds: list[int]) -> str | list[int]:
+    """``0-199`` for a contiguous run of seeds, else the list."""
+    return f"{seeds[0]}-{seeds[-1]}" if seeds == list(range(seeds[0], seeds[-1] + 1)) else seeds
+
+
+def _commit() -> str:
+    """The checkout's commit, ``+dirty`` when tracked files differ from it."""
+    def git(*a: str) -> str:
+        return subprocess.run(["git", *a], cwd=ROOT, capture_output=True, text=True).stdout.strip()
+
+    return git("rev-parse", "HEAD") + ("+dirty" if git("status", "--porcelain", "--untracked-files=no") else "")

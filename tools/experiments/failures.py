@@ -1,0 +1,74 @@
+"""Why episodes fail: the failure-mode distribution per verification strategy, situations per
+task, and the diagnosis confusion matrix, for every strategy the settings declare.
+
+    .venv/bin/python tools/experiments/failures.py --seeds 200 [--verify both none]
+
+Each failed episode is classed from its report — visual ambiguity, state/access, manipulation,
+other, crash — by the rules in :mod:`tools.experiments.measures`. Where the reports' situations
+carry ``diagnosis`` and ``diagnosis_truth``, the matrix counts diagnoses (columns) against the
+world's cause (rows); where they do not, table.md says so. Writes table.md,
+failure_modes.png, situations.png, episodes.jsonl/.csv and run.json under
+docs/results/failures/ (``--out``).
+"""
+
+from __future__ import annotations
+
+import sys
+from collections import Counter
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the checkout's root: tools/, vap_bt/
+
+from tools.experiments import compare, plots, tables  # noqa: E402
+from tools.experiments.command import Campaign, Experiment, chosen, main  # noqa: E402
+from tools.experiments.measures import FAILURE_MODES  # noqa: E402
+from tools.experiments.strategies import options, strategies_in  # noqa: E402
+from vap_bt.settings import default  # noqa: E402
+
+NO_DIAGNOSIS = "No diagnosis in these reports (their situations carry no `diagnosis`/`diagnosis_truth`)."
+
+
+def report(rows: list[dict], campaign: Campaign) -> str:
+    """The three tables and two plots."""
+    strategies = [s for s in strategies_in(rows) if compare.runnable(rows, s)]
+    mine = {s: [r for r in rows if r["strategy"] == s] for s in strategies}
+    shares = {s: [tables.share(sum(r["failure_mode"] == m for r in mine[s]), len(mine[s])) for m in FAILURE_MODES]
+              for s in strategies}
+    modes = tables.markdown(["strategy", "failed", *FAILURE_MODES],
+                            [[s, tables.rate(not r["success"] for r in mine[s]).percent(),
+                              *(e.percent() for e in shares[s])] for s in strategies])
+    seeds = compare.seeds_per_cell(rows)
+    plots.grouped_bars(campaign.out / "failure_modes.png", list(FAILURE_MODES), shares, percent=True,
+                       ylabel="share of episodes, %", title=f"Failure modes, {campaign.world} world, {seeds} seeds")
+    cells = compare.by(rows, "task", "strategy")
+    situations = {s: [tables.mean(r["situations"] for r in cells[(t, s)]) for t in campaign.tasks]
+                  for s in strategies}
+    plots.grouped_bars(campaign.out / "situations.png", [campaign.tasks[t].replace(" ", "\n", 1) for t in campaign.tasks],
+                       situations, ylabel="situations per episode", title=f"Situations per task, {seeds} seeds")
+    per_task = tables.markdown(["task", *strategies], [[label, *(situations[s][i].plain(2) for s in strategies)]
+                                                       for i, label in enumerate(campaign.tasks.values())])
+    return (f"# Failure modes, {campaign.world} world, {seeds} seeds per task and strategy\n\n"
+            "Share of all episodes (Wilson 95 % intervals); the classes are defined in "
+            "tools/experiments/measures.py.\n\n" + modes + "\n![failure modes](failure_modes.png)\n\n"
+            "## Situations per episode, by task (mean, 95 % t interval)\n\n" + per_task
+            + "\n![situations](situations.png)\n\n## Diagnosis\n\n" + confusion(rows) + "\n")
+
+
+def confusion(rows: list[dict]) -> str:
+    """The diagnosis confusion matrix over every situation of the rows (the world's cause by row,
+    the executive's diagnosis by column), or a line saying the reports have none."""
+    pairs = Counter(tuple(p) for r in rows for p in r["diagnoses"] or ())
+    if not pairs:
+        return NO_DIAGNOSIS
+    said = sorted({d for d, _ in pairs})
+    truths = sorted({t for _, t in pairs})
+    right = sum(n for (d, t), n in pairs.items() if d == t)
+    return (tables.markdown(["world's cause \\ diagnosis", *said], [[t, *(pairs[(d, t)] for d in said)] for t in truths])
+            + f"\nDiagnosed right: {tables.share(right, sum(pairs.values())).percent()}\n")
+
+
+FAILURES = Experiment("failures", __doc__.splitlines()[0], options=options, report=report,
+                      configurations=lambda args: [(s, default("viewpoints")) for s in chosen(args.verify, "verify")])
+
+if __name__ == "__main__":
+    sys.exit(main(FAILURES))

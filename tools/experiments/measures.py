@@ -1,0 +1,97 @@
+"""Per-episode measures read off a report: viewpoints per uncertain check, failure mode, diagnoses.
+
+**Uncertain checks** (H2). A check (one entry of the report's ``verifications``) that looked —
+its basis is the VLM's verdict or, when nothing settled, belief — is *uncertain* when its first
+view did not settle it: that round's answers were not consistent, or the view was not judged
+sufficient, or no vote came out (``Round.settled`` in :mod:`vap_bt.perception.verification`).
+A check whose first view settled is not counted, even when the protocol took a second look to
+confirm a surprise: no uncertainty was resolved. For each uncertain check:
+
+* ``viewpoints`` — the views it moved to after the first (its rounds minus one); an unresolved
+  check (outcome ``unsettled``) is charged the full budget K (``config.budget``), as it spent it;
+* ``resolved`` — it settled a value (any outcome but ``unsettled``);
+* ``correct`` — a resolved check's value is the world's (``truth``, which the runner attaches).
+
+**Failure mode** of an episode that did not succeed, first rule that applies:
+
+1. ``visual ambiguity`` — it claimed the goal and the world denies it; or it stopped because it
+   could not see an atom (``stuck: could not see ...``); or a wrong belief was never corrected:
+   the last looked-at check of some atom settled a value the world denies;
+2. ``state/access`` — no plan (``no initial plan``, ``no plan after ...``): the state as believed
+   leaves no way to the goal, or a place or thing cannot be reached;
+3. ``manipulation`` — skill failures used up the replans: it ended ``stuck: execution of ...``
+   or with the replanning budget exhausted while most of its situations were execution failures;
+4. ``other`` — the rest (the time budget, a stuck check loop of another kind, a transport down);
+   an episode that raised is ``crash``.
+
+**Diagnoses.** Where a report's situations carry ``diagnosis`` and ``diagnosis_truth`` (what
+the executive concluded went wrong, and what the world says did), each pair; None when the report
+has no such keys (the table then says so).
+"""
+
+from __future__ import annotations
+
+VISUAL, ACCESS, MANIPULATION, OTHER, CRASH = "visual ambiguity", "state/access", "manipulation", "other", "crash"
+#: failure modes, in the order tables and plots list them
+FAILURE_MODES = (VISUAL, ACCESS, MANIPULATION, OTHER, CRASH)
+#: the row columns this module adds
+COLUMNS = ("uncertain_viewpoints", "uncertain_resolved", "uncertain_correct", "failure_mode", "diagnoses")
+#: the verification bases that mean the check looked (a felt or reused value did not)
+LOOKED = ("vlm", "belief")
+
+
+def of(report: dict) -> dict:
+    """Every measure of one episode's report, as row columns."""
+    checks = uncertain_checks(report)
+    return {"uncertain_viewpoints": [c[0] for c in checks], "uncertain_resolved": sum(c[1] for c in checks),
+            "uncertain_correct": sum(c[2] for c in checks), "failure_mode": failure_mode(report),
+            "diagnoses": diagnoses(report)}
+
+
+def settled_first(check: dict) -> bool:
+    """Whether a check's first view settled it (consistent answers, a sufficient view, a vote)."""
+    first = check["rounds"][0] if check["rounds"] else None
+    return bool(first and first["consistent"] and first["sufficient"] is True and first["vote"] is not None)
+
+
+def uncertain_checks(report: dict) -> list[tuple[int, bool, bool]]:
+    """``(viewpoints, resolved, correct)`` for each uncertain check of the episode, in order."""
+    budget = report["config"]["budget"]
+    out = []
+    for check in report["verifications"]:
+        if check["basis"] not in LOOKED or not check["rounds"] or settled_first(check):
+            continue
+        resolved = check["outcome"] != "unsettled"
+        views = len(check["rounds"]) - 1 if resolved else budget
+        out.append((views, resolved, resolved and check["value"] == check.get("truth")))
+    return out
+
+
+def failure_mode(report: dict) -> str | None:
+    """Why an episode failed, by the rules of the module docstring (None: it succeeded)."""
+    claimed, holds = report["success"], report["goal_satisfied"]
+    if claimed and holds:
+        return None
+    reason = report["reason"] or ""
+    if claimed or reason.startswith("stuck: could not see") or wrong_belief_kept(report):
+        return VISUAL
+    if reason.startswith(("no initial plan", "no plan after")):
+        return ACCESS
+    kinds = [s["kind"] for s in report["situations"]]
+    if reason.startswith("stuck: execution") or (
+            reason.startswith("replanning budget") and 2 * kinds.count("execution") >= len(kinds)):
+        return MANIPULATION
+    return OTHER
+
+
+def wrong_belief_kept(report: dict) -> bool:
+    """Whether the last looked-at check of some atom settled a value the world denies."""
+    last = {c["predicate"]: c for c in report["verifications"] if c["basis"] == "vlm" and "truth" in c}
+    return any(c["value"] != c["truth"] for c in last.values())
+
+
+def diagnoses(report: dict) -> list[list[str]] | None:
+    """``[diagnosis, diagnosis_truth]`` of each situation that has them; None when none has the keys."""
+    pairs = [[str(s["diagnosis"]), str(s["diagnosis_truth"])] for s in report["situations"]
+             if "diagnosis" in s and "diagnosis_truth" in s]
+    return pairs if pairs or not report["situations"] else None
