@@ -26,6 +26,7 @@ from tools.experiments.failures import FAILURES  # noqa: E402
 from tools.experiments.strategies import STRATEGIES  # noqa: E402
 from tools.experiments.viewpoints import VIEWPOINTS  # noqa: E402
 from vap_bt import taskfile  # noqa: E402
+from vap_bt.perception.viewpoints import AROUND_ORDER  # noqa: E402
 from vap_bt.settings import RunConfig  # noqa: E402
 
 TASK = ["--tasks", "S4", "--seeds", "2"]
@@ -131,8 +132,11 @@ def test_viewpoints_counts_views_of_uncertain_checks(tmp_path, address):
     rows = rows_of(out)
     assert {r["viewpoints"] for r in rows} == kinds and len(rows) == 2 * len(kinds)
     budget = RunConfig.from_task(taskfile.load(TREES / "halve_egg.yaml")).budget  # K: an unresolved check's charge
-    views = [int(v) for r in rows for v in r["uncertain_viewpoints"].split(";") if v]
-    assert views and all(0 <= v <= budget for v in views)
+    views = {k: [int(v) for r in rows if r["viewpoints"] == k for v in r["uncertain_viewpoints"].split(";") if v]
+             for k in kinds}
+    # K caps what a check is charged, but greedy-all's: it visits its whole round (six without geometry)
+    assert all(views[k] and all(0 <= v <= budget for v in views[k]) for k in kinds - {"greedy-all"})
+    assert views["greedy-all"] and all(0 <= v <= len(AROUND_ORDER) for v in views["greedy-all"])
     table = (out / "table.md").read_text()
     assert "viewpoints per uncertain check" in table and "settled accuracy" in table and "greedy − vlm" in table
     assert_images(out, "viewpoints.png")
@@ -150,22 +154,26 @@ def test_failures_classes_every_failed_episode(tmp_path, address):
     assert_images(out, "failure_modes.png", "situations.png")
 
 
-def test_an_uncertain_check_counts_the_views_after_the_first_and_an_unresolved_one_the_budget():
+def test_the_rows_count_uncertain_checks_as_the_viewpoint_measure_does():
+    """The rows' H2 columns are vap_bt.viewpoint_measure's: only checks whose first view did not
+    decide, charged their moves, an unresolved one K (greedy-all: what it visited)."""
     from tools.experiments import measures
 
-    def check(rounds, outcome, value=True, truth=True, basis="vlm"):
-        return {"rounds": rounds, "outcome": outcome, "value": value, "truth": truth, "basis": basis,
-                "predicate": "p"}
+    def check(first_settled, viewpoints, outcome, value=True, truth=True, basis="vlm"):
+        return {"phase": "pre", "action": "a", "predicate": "p", "first_settled": first_settled,
+                "viewpoints": viewpoints, "outcome": outcome, "value": value, "truth": truth, "basis": basis}
 
-    sure = {"consistent": True, "sufficient": True, "vote": True}
-    unsure = {"consistent": False, "sufficient": None, "vote": True}
-    report = {"config": {"budget": 3}, "verifications": [
-        check([sure, sure], "confirmed"),  # settled on its first view (a second look to confirm): not uncertain
-        check([unsure, {**unsure, "consistent": True, "sufficient": False}, sure], "confirmed"),  # 2 views more
-        check([unsure] * 4, "unsettled", value=False, basis="belief"),  # never settled: charged K = 3
-        check([unsure, sure], "contradicted", value=False, truth=True),  # resolved, but wrong
-        check([], "felt", basis="proprioception")]}  # the gripper's: no view at all
-    assert measures.uncertain_checks(report) == [(2, True, True), (3, False, False), (1, True, False)]
+    checks = [check(True, 1, "confirmed"),  # decided on its first view (a second look to confirm): not counted
+              check(False, 2, "confirmed"),  # two moves, right
+              check(False, 1, "unsettled", value=False, basis="belief"),  # never decided: charged K = 3
+              check(False, 1, "contradicted", value=False, truth=True),  # decided, wrong
+              check(None, 0, "felt", basis="proprioception")]  # the gripper's: no view counted
+    report = {"config": {"budget": 3, "viewpoints": "vlm"}, "verifications": checks, "success": True,
+              "goal_satisfied": True, "reason": "goal reached", "situations": []}
+    row = measures.of(report)
+    assert (row["uncertain_viewpoints"], row["uncertain_resolved"], row["uncertain_correct"]) == ([2, 3, 1], 2, 1)
+    greedy_all = measures.of({**report, "config": {"budget": 3, "viewpoints": "greedy-all"}})
+    assert greedy_all["uncertain_viewpoints"] == [2, 1, 1]  # what it visited, resolved or not
 
 
 @pytest.mark.parametrize("claimed,holds,reason,kinds,wrong,mode", [

@@ -1,16 +1,9 @@
 """Per-episode measures read off a report: viewpoints per uncertain check, failure mode, diagnoses.
 
-**Uncertain checks** (H2). A check (one entry of the report's ``verifications``) that looked —
-its basis is the VLM's verdict or, when nothing settled, belief — is *uncertain* when its first
-view did not settle it: that round's answers were not consistent, or the view was not judged
-sufficient, or no vote came out (``Round.settled`` in :mod:`vap_bt.perception.verification`).
-A check whose first view settled is not counted, even when the protocol took a second look to
-confirm a surprise: no uncertainty was resolved. For each uncertain check:
-
-* ``viewpoints`` — the views it moved to after the first (its rounds minus one); an unresolved
-  check (outcome ``unsettled``) is charged the full budget K (``config.budget``), as it spent it;
-* ``resolved`` — it settled a value (any outcome but ``unsettled``);
-* ``correct`` — a resolved check's value is the world's (``truth``, which the runner attaches).
+**Uncertain checks** (H2) are :mod:`vap_bt.viewpoint_measure`'s: a looked-at check whose first
+view did not decide it, charged the viewpoints it moved to (an unresolved one the budget K, but
+``greedy-all``'s what it visited); ``resolved`` when its views decided a value, ``correct`` when
+that value is the world's (the ``truth`` the runner attaches).
 
 **Failure mode** of an episode that did not succeed, first rule that applies:
 
@@ -31,40 +24,21 @@ has no such keys (the table then says so).
 
 from __future__ import annotations
 
+from vap_bt.viewpoint_measure import uncertain_checks
+
 VISUAL, ACCESS, MANIPULATION, OTHER, CRASH = "visual ambiguity", "state/access", "manipulation", "other", "crash"
 #: failure modes, in the order tables and plots list them
 FAILURE_MODES = (VISUAL, ACCESS, MANIPULATION, OTHER, CRASH)
 #: the row columns this module adds
 COLUMNS = ("uncertain_viewpoints", "uncertain_resolved", "uncertain_correct", "failure_mode", "diagnoses")
-#: the verification bases that mean the check looked (a felt or reused value did not)
-LOOKED = ("vlm", "belief")
 
 
 def of(report: dict) -> dict:
     """Every measure of one episode's report, as row columns."""
     checks = uncertain_checks(report)
-    return {"uncertain_viewpoints": [c[0] for c in checks], "uncertain_resolved": sum(c[1] for c in checks),
-            "uncertain_correct": sum(c[2] for c in checks), "failure_mode": failure_mode(report),
+    return {"uncertain_viewpoints": [c.charged for c in checks], "uncertain_resolved": sum(c.resolved for c in checks),
+            "uncertain_correct": sum(bool(c.correct) for c in checks), "failure_mode": failure_mode(report),
             "diagnoses": diagnoses(report)}
-
-
-def settled_first(check: dict) -> bool:
-    """Whether a check's first view settled it (consistent answers, a sufficient view, a vote)."""
-    first = check["rounds"][0] if check["rounds"] else None
-    return bool(first and first["consistent"] and first["sufficient"] is True and first["vote"] is not None)
-
-
-def uncertain_checks(report: dict) -> list[tuple[int, bool, bool]]:
-    """``(viewpoints, resolved, correct)`` for each uncertain check of the episode, in order."""
-    budget = report["config"]["budget"]
-    out = []
-    for check in report["verifications"]:
-        if check["basis"] not in LOOKED or not check["rounds"] or settled_first(check):
-            continue
-        resolved = check["outcome"] != "unsettled"
-        views = len(check["rounds"]) - 1 if resolved else budget
-        out.append((views, resolved, resolved and check["value"] == check.get("truth")))
-    return out
 
 
 def failure_mode(report: dict) -> str | None:
