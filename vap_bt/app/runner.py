@@ -36,12 +36,13 @@ from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import MeteredVLM, Paraphraser
-from vap_bt.report import verification_counts, versions
+from vap_bt.report import diagnosis_summary, verification_counts, versions
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.settings import RunConfig, Vlm
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.disturbances import DisturbanceModel
 from vap_bt.sim.graph_score import score_graph
+from vap_bt.sim.situation_truth import Raised, situation_truths
 from vap_bt.sim.situations import SituationModel
 from vap_bt.skill import Skill, performed_by_world
 from vap_bt.taskfile import Task
@@ -283,7 +284,7 @@ class Session:
     task: Task
     cfg: RunConfig
     progress: Callable[[str], None] = lambda m: None
-    recorder: Any = None  # a vap_bt.viz.TreeRecorder (on_tree + note), or None
+    recorder: Any = None  # a vap_bt.viz.TreeRecorder (on_tree, note, scored), or None
     #: a TransportSettings: the world, skills and VLM run in other processes (``vap-bt run --connect``)
     remote: Any = None
     planner: Planner = field(init=False)
@@ -311,6 +312,7 @@ class Session:
         self._first_request = 0
         self.profile = self.task.profile
         self._truths: dict[int, dict] = {}
+        self._raised: dict[int, Raised] = {}
 
     def _start(self) -> None:
         """The planner, the VLM, the world and the transport, in that order."""
@@ -371,9 +373,10 @@ class Session:
                               on_tree=self.recorder.on_tree if self.recorder is not None else None,
                               prior=self.task.prior, geometry=make_geometry(cfg),
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
-                              on_verification=self._score_verification,
+                              on_verification=self._score_verification, on_situation=self._note_situation,
                               goal_parser=self._goal_parser, profile=self.profile)
         self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
+        self._raised: dict[int, Raised] = {}  # id(situation) -> where it falls in the world's record
         if self.recorder is not None:  # the live view's 3-D scene shows the fused clouds beside the boxes
             self.recorder.clouds = lambda: fused_clouds(executive)
         return executive, metered
@@ -406,7 +409,10 @@ class Session:
             outcome.reason = f"transport down: {exc}"
             self.progress(f"stopped: transport down ({exc})")
         wall = time.perf_counter() - t0
-        return self._report(cfg, outcome, metered, scores, wall, executive.phase)
+        rep = self._report(cfg, outcome, metered, scores, wall, executive.phase)
+        if self.recorder is not None:  # the live view: each diagnosis with the truth beside it
+            self.recorder.scored(outcome.situations, [s["diagnosis_truth"] for s in rep["situations"]])
+        return rep
 
     def _interrupted(self, cfg: RunConfig, executive: Executive | None, metered: MeteredVLM | None,
                      scores: list[dict], t0: float) -> EpisodeInterrupted:
@@ -471,6 +477,21 @@ class Session:
             first_truth = truth
         self._truths[id(v)] = {"truth": truth, "first_truth": first_truth}
 
+    def _note_situation(self, s) -> None:
+        """Where a situation falls in the world's record: how many of the world's events had
+        happened when the executive took it up (for :meth:`_situations`)."""
+        objects = frozenset((*(s.atom.args if s.atom else ()), *(s.action.args if s.action else ())))
+        self._raised[id(s)] = Raised(objects, len(self.world.oracle.injected()))
+
+    def _situations(self, situations: list) -> list[dict]:
+        """The report's ``situations``: each with the executive's diagnosis and, beside it, the
+        truth the world's record gives (:mod:`vap_bt.sim.situation_truth`) and the indices in
+        ``injected`` of the events it rests on."""
+        events = self.world.oracle.injected() if self.world is not None else []
+        raised = [self._raised.get(id(s), Raised(frozenset(), len(events))) for s in situations]
+        return [{**s.to_json(), "diagnosis_truth": t.diagnosis, "truth_events": list(t.events)}
+                for s, t in zip(situations, situation_truths(raised, events))]
+
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
         perceived = set(survey.sweep.detected)
@@ -506,6 +527,7 @@ class Session:
         world_name = self.world.name if self.world is not None else cfg.world
         detector = make_detector(cfg) if world_name == "symbolic" else getattr(self.world, "detector", None)
         verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in board.verifications]
+        situations = self._situations(out.situations)
         return {
             "success": out.success,
             "goal_satisfied": self._holds(goal),
@@ -531,7 +553,8 @@ class Session:
                            "verifications": verification_counts(verifications)},
             "plans": [p.to_json() for p in out.plans],
             "actions_executed": board.actions,
-            "situations": [s.to_json() for s in out.situations],
+            "situations": situations,
+            "diagnosis": diagnosis_summary(situations),
             "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
                           "affected": list(i.affected)}
                          for i in (self.world.oracle.injected() if self.world is not None else [])],

@@ -1,0 +1,127 @@
+"""Situation diagnosis: what a situation stems from, as the executive reads it from its own records.
+
+The paper (Sec. II) tells three sources of a situation apart: a **perception error** (belief was
+wrong, or the view that raised the situation was; nothing changed in the world), a **world
+change** (the world changed under the plan: a person moved a thing, shut a door) and an
+**execution failure** (the robot's own action did not do what it should). The executive is never
+told which it was — the runner scores its diagnosis against the world's record afterwards
+(:mod:`vap_bt.sim.situation_truth`) — so the rule reads only what the executive itself observed:
+
+1. a skill that reports failure (kind ``execution``) → ``execution_failure``;
+2. a held thing lost after an action that was to keep it or make it held (the gripper felt it
+   gone: :class:`~vap_bt.bt.feel_hand.FeelHand`) → ``execution_failure``;
+3. a thing not in sight where the robot stood to see it (the in-view role, the household's
+   ``inview``, of any phase: the effect of a ``find`` whose skill reported the robot there, or a
+   precondition) is about where belief put the thing, not about the move: it is read as rule 5
+   reads the thing's believed location;
+4. an effect that did not happen — an effect-phase situation about an atom the action was to add
+   or delete — → ``execution_failure``;
+5. otherwise — a precondition, the goal, what the camera could not make out — what belief rested
+   on decides. If a sense (a settled check's views, the survey's or a re-location's frames, the
+   gripper) last showed the atom with its believed value *after the robot's last action that
+   could have changed it* (:class:`Sightings`), belief was grounded when it was formed and
+   nothing the robot did changed it since: the world changed → ``world_change``. If no sense
+   confirmed it since — belief rested on the task file's prior, an action's assumed effects or
+   the closed world's defaults, or the last view said otherwise — the belief was what was wrong
+   → ``perception_error``.
+
+The rule cannot tell a view that erred from a world that changed: a wrong "no" about an atom a
+view confirmed earlier reads as a world change, and a person moving a thing right after the
+robot put it down reads as an execution failure. That is what the report's ``diagnosis_truth``
+beside each diagnosis measures.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable, get_args
+
+from vap_bt.bt.record import Diagnosis, Situation, may_change
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.knowledge import GroundAction
+from vap_bt.domain.roles import HOUSEHOLD
+from vap_bt.scene.graph import SceneGraph
+
+#: the three diagnoses, in the paper's order
+DIAGNOSES: tuple[str, ...] = get_args(Diagnosis)
+
+
+@dataclass(frozen=True)
+class Sighting:
+    """What a sense last showed of an atom: its ``value``, and which sense (``check``, ``survey``,
+    ``re-location``, ``gripper``)."""
+
+    value: bool
+    sense: str
+
+
+class Sightings:
+    """Each atom's last sighting since the last action that could have changed it: what a
+    situation's diagnosis asks of belief (was it confirmed by a view, or only assumed?).
+
+    An action forgets what it could have changed — any atom its effects could add or delete, and
+    the hand's atoms (the planner's frame assumption, as :class:`~vap_bt.bt.record.Verified`
+    forgets the views an atom was judged on) — whatever its outcome, so what remains was seen
+    after the robot last acted on it. An action that only names a thing does not touch it: a
+    ``find`` of a cup leaves where the cup was seen as seen."""
+
+    def __init__(self, hand: frozenset[str] = HOUSEHOLD.hand) -> None:
+        #: the hand's predicates: any action can change them (the hand can lose things on any move)
+        self.hand = hand
+        self._seen: dict[Atom, Sighting] = {}
+
+    def saw(self, atoms: Iterable[Atom], value: bool, sense: str) -> None:
+        """``sense`` showed ``atoms`` with ``value`` just now."""
+        for atom in atoms:
+            self._seen[atom] = Sighting(value, sense)
+
+    def get(self, atom: Atom) -> Sighting | None:
+        """The atom's last sighting since an action could have changed it, or None."""
+        return self._seen.get(atom)
+
+    def executed(self, action: GroundAction) -> None:
+        """``action`` ran (or tried to): what it could have changed was not seen since."""
+        self._seen = {a: s for a, s in self._seen.items() if not may_change(action, a, self.hand)}
+
+
+def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Diagnosis, str]:
+    """The diagnosis of situation ``s`` and its basis in words, by the rule of the module
+    docstring, from ``sightings`` and belief (``graph``) as they were when ``s`` was raised."""
+    roles = graph.roles
+    if s.kind == "execution":
+        return "execution_failure", f"the skill of {s.action} reported failure"
+    if s.atom is None:  # no situation of the executive's lacks both; said rather than guessed
+        return "perception_error", "nothing observed to go on"
+    if s.kind == "effect" and s.observed is False and roles.is_held(s.atom) \
+            and (s.action is None or s.atom not in s.action.may_add):
+        return "execution_failure", f"{s.atom.args[0]} was lost from the hand during {s.action or 'the last action'}"
+    if s.atom.predicate == roles.in_view and s.atom.args:
+        thing = s.atom.args[0]
+        return _grounded(sorted(graph.location(thing)), sightings, f"{thing} not in sight where belief put it: ")
+    if s.kind == "effect" and s.action is not None and s.atom in s.action.may_add | s.action.may_delete:
+        return "execution_failure", f"{s.action} was to make {'' if s.expected else 'not '}{s.atom} and did not"
+    return _grounded([s.atom] if s.expected else [], sightings, "", absent=None if s.expected else s.atom)
+
+
+def _grounded(atoms: list[Atom], sightings: Sightings, why: str, absent: Atom | None = None
+              ) -> tuple[Diagnosis, str]:
+    """Rule 5: ``world_change`` when a sense showed every one of ``atoms`` true (and ``absent``,
+    if given, false) since the robot last acted on it, else ``perception_error``."""
+    believed = [(a, True) for a in atoms] + ([(absent, False)] if absent is not None else [])
+    if not believed:
+        return "perception_error", why + "belief placed it nowhere"
+    for atom, value in believed:
+        seen = sightings.get(atom)
+        if seen is None:
+            return "perception_error", (why + f"belief in {atom} rested on no view since the robot last acted "
+                                        "on it (the task file's prior, an assumed effect or a default)")
+        if seen.value != value:
+            return "perception_error", why + f"the {seen.sense} last showed {atom} {_word(seen.value)}: belief disagreed"
+    senses = sorted({sightings.get(a).sense for a, _ in believed})
+    shown = ", ".join(f"{'' if v else 'not '}{a}" for a, v in believed)
+    return "world_change", (why + f"{shown} was shown by the {' and '.join(senses)} since the robot last "
+                            "acted on it")
+
+
+def _word(value: bool) -> str:
+    return "true" if value else "false"
