@@ -10,14 +10,16 @@ told which it was — the runner scores its diagnosis against the world's record
 1. a skill that reports failure (kind ``execution``) → ``execution_failure``;
 2. a held thing lost after an action that was to keep it or make it held (the gripper felt it
    gone: :class:`~vap_bt.bt.feel_hand.FeelHand`) → ``execution_failure``;
-3. a thing not in sight where the robot stood to see it (the in-view role, the household's
+3. what the camera could not make out (kind ``unseen``) → ``perception_error``: nothing was
+   observed to differ from belief, perception only fell short (the paper's error "correctable
+   through active perception");
+4. a thing not in sight where the robot stood to see it (the in-view role, the household's
    ``inview``, of any phase: the effect of a ``find`` whose skill reported the robot there, or a
-   precondition) is about where belief put the thing, not about the move: it is read as rule 5
+   precondition) is about where belief put the thing, not about the move: it is read as rule 6
    reads the thing's believed location;
-4. an effect that did not happen — an effect-phase situation about an atom the action was to add
+5. an effect that did not happen — an effect-phase situation about an atom the action was to add
    or delete — → ``execution_failure``;
-5. otherwise — a precondition, the goal, what the camera could not make out — what belief rested
-   on decides. If a sense (a settled check's views, the survey's or a re-location's frames, the
+6. otherwise — a precondition or the goal contradicted — what belief rested on decides. If a sense (a settled check's views, the survey's or a re-location's frames, the
    gripper) last showed the atom with its believed value *after the robot's last action that
    could have changed it* (:class:`Sightings`), belief was grounded when it was formed and
    nothing the robot did changed it since: the world changed → ``world_change``. If no sense
@@ -25,8 +27,14 @@ told which it was — the runner scores its diagnosis against the world's record
    the closed world's defaults, or the last view said otherwise — the belief was what was wrong
    → ``perception_error``.
 
-The rule cannot tell a view that erred from a world that changed: a wrong "no" about an atom a
-view confirmed earlier reads as a world change, and a person moving a thing right after the
+A world change is reviewed once the situation is handled (:func:`review`): the recovery re-locates
+the things the situation is about from fresh frames, and when those put every thing whose place
+the situation was about (its in-view or location atom) exactly where belief had it before, nothing
+moved — the view that raised the situation erred → ``perception_error``.
+
+The rule cannot always tell a view that erred from a world that changed: a wrong "no" about an
+atom a view confirmed earlier, which no re-location settles (a door's leaf, a lemon's state),
+reads as a world change, and a person moving a thing right after the
 robot put it down reads as an execution failure. That is what the report's ``diagnosis_truth``
 beside each diagnosis measures.
 """
@@ -92,6 +100,8 @@ def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Dia
         return "execution_failure", f"the skill of {s.action} reported failure"
     if s.atom is None:  # no situation of the executive's lacks both; said rather than guessed
         return "perception_error", "nothing observed to go on"
+    if s.kind == "unseen":
+        return "perception_error", f"the camera could not make out {s.atom}: nothing seen differed from belief"
     if s.kind == "effect" and s.observed is False and roles.is_held(s.atom) \
             and (s.action is None or s.atom not in s.action.may_add):
         return "execution_failure", f"{s.atom.args[0]} was lost from the hand during {s.action or 'the last action'}"
@@ -101,6 +111,27 @@ def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Dia
     if s.kind == "effect" and s.action is not None and s.atom in s.action.may_add | s.action.may_delete:
         return "execution_failure", f"{s.action} was to make {'' if s.expected else 'not '}{s.atom} and did not"
     return _grounded([s.atom] if s.expected else [], sightings, "", absent=None if s.expected else s.atom)
+
+
+def placed(s: Situation, graph: SceneGraph) -> dict[str, frozenset[Atom]]:
+    """Where belief puts each thing whose place situation ``s`` is about (its in-view or location
+    atom's first argument), for :func:`review` after the recovery."""
+    roles = graph.roles
+    if s.atom is None or not s.atom.args or s.atom.predicate not in roles.location | {roles.in_view}:
+        return {}
+    return {s.atom.args[0]: frozenset(graph.location(s.atom.args[0]))}
+
+
+def review(s: Situation, before: dict[str, frozenset[Atom]], seen_again: set[str], graph: SceneGraph) -> None:
+    """Revise a ``world_change`` diagnosis of ``s`` once it is handled: when the recovery re-located
+    every thing of ``before`` (``seen_again``) exactly where belief had it before the situation
+    (``before``, from :func:`placed`), nothing moved and the view that raised it erred."""
+    if s.diagnosis != "world_change" or not before or not set(before) <= seen_again:
+        return
+    if all(before[o] and frozenset(graph.location(o)) == where for o, where in before.items()):
+        where = ", ".join(str(a) for o in sorted(before) for a in sorted(before[o]))
+        s.diagnosis, s.diagnosis_basis = "perception_error", (f"re-located where belief had it ({where}): "
+                                                              "nothing moved, the view that raised it erred")
 
 
 def _grounded(atoms: list[Atom], sightings: Sightings, why: str, absent: Atom | None = None

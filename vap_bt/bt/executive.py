@@ -60,7 +60,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
 from vap_bt.bt.context import ExecutionContext, VerifyMode
-from vap_bt.bt.diagnosis import Sightings, diagnose
+from vap_bt.bt.diagnosis import Sightings, diagnose, placed, review
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
@@ -209,6 +209,7 @@ class Executive:
         self._prior_graph = SceneGraph.of_facts(prior, roles=self.roles)  # what the task file says, until then
         #: what the senses last showed of each atom, for a situation's diagnosis (vap_bt.bt.diagnosis)
         self.sightings = Sightings(self.roles.hand)
+        self._seen_again: set[str] = set()  # the items the recovery under way re-located from a fresh frame
         #: the episode once it has a belief to plan from (before that, :meth:`so_far`)
         self.outcome: EpisodeOutcome | None = None
         self.phase = PHASES[0]  # which of PHASES the episode is in
@@ -299,6 +300,7 @@ class Executive:
                 self.phase = "replanning"
                 out.situations.append(situation)
                 self.on_situation(situation)
+                before = placed(situation, graph)  # for the diagnosis' review once it is handled
                 if situation.kind == "execution" and situation.action is not None:
                     self._rejoin(situation.action.name)  # raises TransportError: nobody drives it
                 if situation.kind == "unseen" and self.s.unseen == "stop":
@@ -323,6 +325,7 @@ class Executive:
                     board.doubted |= {lit.atom for lit in situation.action.preconditions
                                       if lit.positive and lit.atom.predicate != self.roles.in_view}
                 recovered, survey = self._recover(graph, situation, times, out, deadline)
+                review(situation, before, self._seen_again, graph)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
                 if survey is not None:
@@ -581,6 +584,7 @@ class Executive:
         belief (``times``), a look round before the same plan. Returns whether it finished before
         the time budget ran out, and the re-survey it took, if any."""
         executor, halt = self.executor, self._halt
+        self._seen_again = set()
         steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, halt)]
         if s.kind == "unseen" and s.atom is not None:
             steps.append(Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
@@ -750,6 +754,7 @@ class Executive:
         change = graph.relocate(o, observed)
         graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
         self.sightings.saw(graph.location(o), True, "re-location")
+        self._seen_again.add(o)
         self.sightings.saw(change.removed - graph.facts, False, "re-location")
 
     def _worked(self, s: Situation) -> tuple[str, ...]:
