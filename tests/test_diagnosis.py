@@ -122,6 +122,23 @@ def test_the_rule_reads_what_the_senses_showed_since_the_robot_last_acted():
     assert diagnosis(Situation("unseen", grasp, 1, on, True, None)) == "perception_error"  # nothing seen to differ
 
 
+def test_a_world_change_a_later_look_overturns_before_any_action_is_a_perception_error():
+    k = load(TREES / "collect_cup.yaml").planning.knowledge
+    grasp = k.ground("grasp", ("cup", "coffee_table", "living_room"))
+    on = Atom("on", ("cup", "coffee_table"))
+    sightings = Sightings()
+    kept, overturned = (Situation("precondition", grasp, 1, on, True, False, diagnosis="world_change")
+                        for _ in range(2))
+    sightings.watch(kept)
+    sightings.saw((on,), False, "check")  # the situation's own observation: it stands
+    sightings.executed(grasp)  # the grasp could have changed it: no later look overturns it
+    sightings.saw((on,), True, "check")
+    assert kept.diagnosis == "world_change"
+    sightings.watch(overturned)
+    sightings.saw((on,), True, "re-location")  # seen as belief had it, nothing done in between
+    assert overturned.diagnosis == "perception_error" and "again before any action" in overturned.diagnosis_basis
+
+
 def test_a_world_change_the_recovery_re_located_unchanged_is_revised_to_a_perception_error():
     k = load(TREES / "collect_cup.yaml").planning.knowledge
     find = k.ground("find", ("floor_living_room", "cup", "living_room"))

@@ -27,10 +27,11 @@ told which it was — the runner scores its diagnosis against the world's record
    the closed world's defaults, or the last view said otherwise — the belief was what was wrong
    → ``perception_error``.
 
-A world change is reviewed once the situation is handled (:func:`review`): the recovery re-locates
-the things the situation is about from fresh frames, and when those put every thing whose place
-the situation was about (its in-view or location atom) exactly where belief had it before, nothing
-moved — the view that raised the situation erred → ``perception_error``.
+A world change is reviewed by the looks that follow it: when a later look shows the atom with
+the value belief had before the situation, before any action could change it
+(:meth:`Sightings.watch`), or when the recovery's fresh frames re-locate every thing whose place
+the situation was about (its in-view or location atom) exactly where belief had it before
+(:func:`review`), nothing changed — the view that raised the situation erred → ``perception_error``.
 
 The rule cannot always tell a view that erred from a world that changed: a wrong "no" about an
 atom a view confirmed earlier, which no re-location settles (a door's leaf, a lemon's state),
@@ -77,11 +78,24 @@ class Sightings:
         #: the hand's predicates: any action can change them (the hand can lose things on any move)
         self.hand = hand
         self._seen: dict[Atom, Sighting] = {}
+        #: world changes a later look may show were a view's error (until an action could change their atom)
+        self._watched: list[Situation] = []
 
     def saw(self, atoms: Iterable[Atom], value: bool, sense: str) -> None:
-        """``sense`` showed ``atoms`` with ``value`` just now."""
+        """``sense`` showed ``atoms`` with ``value`` just now; a watched world change whose atom it
+        shows as belief had it before is revised to a perception error."""
         for atom in atoms:
             self._seen[atom] = Sighting(value, sense)
+            for s in [s for s in self._watched if s.atom == atom and s.expected == value]:
+                self._watched.remove(s)
+                s.diagnosis, s.diagnosis_basis = "perception_error", (
+                    f"the {sense} showed {atom} {_word(value)} again before any action could change it: "
+                    "the view that raised it erred")
+
+    def watch(self, s: Situation) -> None:
+        """Keep ``s``, diagnosed a world change, for a later look to overturn (:meth:`saw`)."""
+        if s.diagnosis == "world_change" and s.atom is not None:
+            self._watched.append(s)
 
     def get(self, atom: Atom) -> Sighting | None:
         """The atom's last sighting since an action could have changed it, or None."""
@@ -90,6 +104,7 @@ class Sightings:
     def executed(self, action: GroundAction) -> None:
         """``action`` ran (or tried to): what it could have changed was not seen since."""
         self._seen = {a: s for a, s in self._seen.items() if not may_change(action, a, self.hand)}
+        self._watched = [s for s in self._watched if not may_change(action, s.atom, self.hand)]
 
 
 def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Diagnosis, str]:

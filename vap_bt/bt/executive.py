@@ -354,6 +354,7 @@ class Executive:
         what the senses had shown before it."""
         if s.diagnosis is None:
             s.diagnosis, s.diagnosis_basis = diagnose(s, self.sightings, self.graph)
+            self.sightings.watch(s)  # a later look may show the view that raised it erred
         return s
 
     def _rejoin(self, action: str) -> None:
