@@ -166,3 +166,14 @@ def test_the_truth_takes_each_event_once_in_the_world_s_order():
               Raised(frozenset({"cup"}), 2)]  # nothing new about the cup
     assert [(t.diagnosis, t.events) for t in situation_truths(raised, events)] == [
         ("execution_failure", (0,)), ("perception_error", ()), ("world_change", (1,)), ("perception_error", ())]
+
+
+def test_the_bench_prints_the_share_right_and_the_matrix_of_its_episodes(capsys):
+    from tools.bench import diagnosis as bench
+
+    assert bench.main(["--seeds", "1", "--tasks", "boil_water", "--disturbance", "0"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    right, total = (int(w) for w in lines[0].split(" situations")[0].split(" of "))
+    rows = {line.split(" | ")[0][2:]: [int(x) for x in line.strip(" |").split(" | ")[1:]] for line in lines[4:]}
+    assert set(rows) == set(DIAGNOSES) and lines[2] == "| truth \\ diagnosis | " + " | ".join(DIAGNOSES) + " |"
+    assert sum(map(sum, rows.values())) == total > 0 and sum(rows[d][i] for i, d in enumerate(DIAGNOSES)) == right
