@@ -81,6 +81,12 @@ def test_every_situation_of_a_batch_carries_a_legal_diagnosis_and_truth(name):
         assert sum(n for row in d["confusion"].values() for n in row.values()) == d["total"]
 
 
+def test_the_report_names_the_diagnoses_the_executive_gives():
+    from vap_bt import report
+
+    assert report.DIAGNOSES == DIAGNOSES == ("perception_error", "world_change", "execution_failure")
+
+
 def test_the_confusion_helper_sums_the_situations_of_many_reports():
     def rep(*pairs):
         return {"situations": [{"diagnosis": d, "diagnosis_truth": t} for d, t in pairs]}

@@ -19,13 +19,14 @@ told which it was — the runner scores its diagnosis against the world's record
    reads the thing's believed location;
 5. an effect that did not happen — an effect-phase situation about an atom the action was to add
    or delete — → ``execution_failure``;
-6. otherwise — a precondition or the goal contradicted — what belief rested on decides. If a sense (a settled check's views, the survey's or a re-location's frames, the
-   gripper) last showed the atom with its believed value *after the robot's last action that
-   could have changed it* (:class:`Sightings`), belief was grounded when it was formed and
-   nothing the robot did changed it since: the world changed → ``world_change``. If no sense
-   confirmed it since — belief rested on the task file's prior, an action's assumed effects or
-   the closed world's defaults, or the last view said otherwise — the belief was what was wrong
-   → ``perception_error``.
+6. otherwise — a precondition or the goal contradicted — what belief rested on decides. If a
+   sense (a settled check's views, the survey's or a re-location's frames, the gripper) last
+   showed the atom with its believed value *after the robot's last action that could have
+   changed it* (:class:`Sightings`), belief was grounded when it was formed and nothing the
+   robot did changed it since: the world changed → ``world_change``. If no sense confirmed it
+   since — belief rested on the task file's prior, an action's assumed effects or the closed
+   world's defaults, or the last view said otherwise — the belief was what was wrong →
+   ``perception_error``.
 
 A world change is reviewed by the looks that follow it: when a later look shows the atom with
 the value belief had before the situation, before any action could change it
@@ -34,10 +35,11 @@ the situation was about (its in-view or location atom) exactly where belief had 
 (:func:`review`), nothing changed — the view that raised the situation erred → ``perception_error``.
 
 The rule cannot always tell a view that erred from a world that changed: a wrong "no" about an
-atom a view confirmed earlier, which no re-location settles (a door's leaf, a lemon's state),
-reads as a world change, and a person moving a thing right after the
-robot put it down reads as an execution failure. That is what the report's ``diagnosis_truth``
-beside each diagnosis measures.
+atom a view confirmed earlier, which no later look settles (a door's leaf, a lemon's state), reads
+as a world change; a thing a person took away, looked for where belief put it, often reads as
+"could not make it out" (rule 3); and a person moving a thing right after the robot put it down
+reads as an execution failure. That is what the report's ``diagnosis_truth`` beside each
+diagnosis measures (``tools/bench/diagnosis.py``).
 """
 
 from __future__ import annotations
