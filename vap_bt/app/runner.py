@@ -26,6 +26,7 @@ from typing import Any, Callable
 from vap_bt import plugins
 from vap_bt.bt.context import VerifyMode
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
+from vap_bt.bt.record import Situation
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
@@ -477,13 +478,13 @@ class Session:
             first_truth = truth
         self._truths[id(v)] = {"truth": truth, "first_truth": first_truth}
 
-    def _note_situation(self, s) -> None:
+    def _note_situation(self, s: Situation) -> None:
         """Where a situation falls in the world's record: how many of the world's events had
         happened when the executive took it up (for :meth:`_situations`)."""
         objects = frozenset((*(s.atom.args if s.atom else ()), *(s.action.args if s.action else ())))
         self._raised[id(s)] = Raised(objects, len(self.world.oracle.injected()))
 
-    def _situations(self, situations: list) -> list[dict]:
+    def _situations(self, situations: list[Situation]) -> list[dict]:
         """The report's ``situations``: each with the executive's diagnosis and, beside it, the
         truth the world's record gives (:mod:`vap_bt.sim.situation_truth`) and the indices in
         ``injected`` of the events it rests on."""
