@@ -179,9 +179,10 @@ def test_no_object_the_executive_holds_can_reach_the_oracle():
         session.close()
     assert report["success"] and held
     executive = held[0]
-    # the runner's instrumentation (progress lines, the rerun recorder, the survey and the
-    # verification scorers) is handed information and returns none; it is where the walk stops
-    hooks = {id(executive.progress), id(executive.on_tree), id(executive.on_survey), id(executive.on_verification)}
+    # the runner's instrumentation (progress lines, the rerun recorder, the survey, verification
+    # and situation scorers) is handed information and returns none; it is where the walk stops
+    hooks = {id(executive.progress), id(executive.on_tree), id(executive.on_survey), id(executive.on_verification),
+             id(executive.on_situation)}
     found = [type(o).__name__ for o in reachable(executive, skip=hooks) if isinstance(o, (FunctionOracle, SymbolicWorld))]
     assert not found, found
     # and the check itself can see an oracle where there is one

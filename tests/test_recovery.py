@@ -88,6 +88,9 @@ class Trees:
     def note(self, text: str) -> None:
         pass
 
+    def scored(self, situations, truths) -> None:
+        pass
+
 
 def test_every_situation_is_handled_in_a_recovery_tree_the_executive_ticks():
     from vap_bt import taskfile

@@ -110,6 +110,8 @@ def test_a_success_vqa_no_after_a_grasp_table_ii_made_fail_takes_it_back_and_ret
     first = rep["situations"][0]
     assert (first["kind"], first["action"], first["predicate"]) == ("action_failed", grasp, None)
     assert first["detail"] == "Did the robot successfully grasp the cup the coffee table?"
+    # the model's "no" to the whole action reads as the action failing, and the world's record agrees
+    assert (first["diagnosis"], first["diagnosis_truth"]) == ("execution_failure", "execution_failure")
     denied = next(c for c in rep["action_checks"] if c["value"] is False)
     assert denied["action"] == grasp and denied["truth"] is False  # the world agrees: it failed
     assert {"holding(cup)"} & set(next(c["removed"] for c in rep["belief_changes"] if c["cause"] == "undo"))

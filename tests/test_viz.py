@@ -170,10 +170,17 @@ def test_text_log_tells_verifications_rounds_actions_and_situations(recorded):
     for page, v in zip(verdicts, ctx.board.verifications):
         assert page.splitlines()[0] == f"# {'' if v.expected else 'not '}{v.atom}" and f": **{v.outcome}**" in page
     sit = texts(rows, "/events/situations")
-    assert len(sit) == len(outcome.situations) == 1
-    kind = outcome.situations[0].kind  # plotted by kind, on axes of its own
+    (situation,) = outcome.situations
+    kind = situation.kind  # plotted by kind, on axes of its own
     assert [r["Scalars:scalars"][0] for r in rows[f"/stats/situations/{kind}"]] == [1.0]
-    assert str(outcome.situations[0].atom) in sit[0] and rows["/events/situations"][0]["TextLog:level"] == ["WARN"]
+    assert str(situation.atom) in sit[0] and rows["/events/situations"][0]["TextLog:level"] == ["WARN"]
+    # raised, it says what the executive diagnosed; after the episode, the same line with the truth
+    # the world's record gives beside it, then how many were right
+    assert f"diagnosed {situation.diagnosis}: {situation.diagnosis_basis}" in sit[0] and "truth" not in sit[0]
+    assert len(sit) == 3 and sit[1].startswith(sit[0] + " — truth ")
+    right = sit[1].endswith("(right)")
+    assert right or sit[1].endswith("(wrong)")
+    assert sit[2] == f"diagnosis: {int(right)} of 1 situations as the world's record says"
     actions = texts(rows, "/events/actions")
     assert sum("start" in a for a in actions) == len(ctx.board.actions)
     assert sum("succeeded" in a for a in actions) == sum(e["state"] == "succeeded" for e in ctx.board.actions)

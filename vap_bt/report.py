@@ -11,6 +11,11 @@ goal's last check looked at it (a VLM verdict), felt it (proprioception) or left
 a sense gave at the time (:func:`verification_counts`); a value reused from an earlier check is
 counted apart and never as verified.
 
+Every situation carries the executive's ``diagnosis`` (perception error, world change or
+execution failure: :mod:`vap_bt.bt.diagnosis`) and the world's ``diagnosis_truth``
+(:mod:`vap_bt.sim.situation_truth`); ``diagnosis`` sums them per episode
+(:func:`diagnosis_summary`) and :func:`confusion_matrix` over many reports.
+
 A run stopped by Ctrl-C, at whatever moment, writes the same report with what was known by then
 (:class:`vap_bt.app.runner.EpisodeInterrupted`): the same keys, so that a reader needs no second
 schema; ``interrupted`` says it was stopped and ``phase`` what the episode was doing.
@@ -56,6 +61,30 @@ def verification_counts(verifications: list[dict]) -> dict:
     return {"n": len(sensed), "correct": right(sensed), "looked": len(looked), "looked_correct": right(looked),
             "unsettled": sum(v["basis"] == "belief" for v in verifications),
             "reused": sum(v["basis"] == "reused" for v in verifications)}
+
+
+#: a situation's diagnosis and its truth take these values (vap_bt.bt.diagnosis, vap_bt.sim.situation_truth)
+DIAGNOSES = ("perception_error", "world_change", "execution_failure")
+
+
+def diagnosis_summary(situations: list[dict]) -> dict:
+    """The report's ``diagnosis``: of its ``situations`` (each with ``diagnosis`` and
+    ``diagnosis_truth``), how many were diagnosed as the world's record says (``correct``), out of
+    ``total``, and the ``confusion`` matrix, shaped as :func:`confusion_matrix`'s."""
+    confusion = {t: {d: 0 for d in DIAGNOSES} for t in DIAGNOSES}
+    for s in situations:
+        confusion[s["diagnosis_truth"]][s["diagnosis"]] += 1
+    return {"correct": sum(confusion[d][d] for d in DIAGNOSES), "total": len(situations), "confusion": confusion}
+
+
+def confusion_matrix(reports) -> dict:
+    """The diagnoses of every situation of ``reports`` (episode reports, or anything with their
+    ``situations``) against the truth: ``{"correct": n, "total": n, "confusion": {truth:
+    {diagnosis: count}}}``, both levels keyed by all three of :data:`DIAGNOSES` (zeros included),
+    so ``confusion["world_change"]["perception_error"]`` counts the world changes the executive
+    took for perception errors; ``correct`` is the diagonal's sum. Reports without situations (or
+    without the key: an episode that crashed) add nothing."""
+    return diagnosis_summary([s for rep in reports for s in rep.get("situations") or ()])
 
 
 def command_line() -> str:

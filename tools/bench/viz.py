@@ -47,6 +47,9 @@ class TimedRecorder:
     def note(self, text: str) -> None:
         self.recorder.note(text)
 
+    def scored(self, situations, truths) -> None:
+        self.recorder.scored(situations, truths)
+
 
 def episodes(tasks, n: int, recorder=None) -> float:
     sessions = [Session(t, RunConfig.from_task(t, world="symbolic", vlm_noise=1.0, transport="inproc"),

@@ -25,6 +25,7 @@ from typing import Any, Callable
 
 from vap_bt import plugins
 from vap_bt.bt.executive import EpisodeOutcome, Executive, ExecutiveSettings, Survey
+from vap_bt.bt.record import Situation
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.planner import Planner
 from vap_bt.errors import InputError, TransportError
@@ -35,12 +36,13 @@ from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.profile import PerceptionProfile, resolve
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import MeteredVLM, Paraphraser
-from vap_bt.report import verification_counts, versions
+from vap_bt.report import diagnosis_summary, verification_counts, versions
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.settings import RunConfig, Vlm
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.disturbances import DisturbanceModel
 from vap_bt.sim.graph_score import score_graph
+from vap_bt.sim.situation_truth import Raised, situation_truths
 from vap_bt.sim.situations import SituationModel
 from vap_bt.skill import Skill, performed_by_world
 from vap_bt.strategy import Strategy
@@ -302,7 +304,7 @@ class Session:
     task: Task
     cfg: RunConfig
     progress: Callable[[str], None] = lambda m: None
-    recorder: Any = None  # a vap_bt.viz.TreeRecorder (on_tree + note), or None
+    recorder: Any = None  # a vap_bt.viz.TreeRecorder (on_tree, note, scored), or None
     #: a TransportSettings: the world, skills and VLM run in other processes (``vap-bt run --connect``)
     remote: Any = None
     planner: Planner = field(init=False)
@@ -330,6 +332,7 @@ class Session:
         self._first_request = 0
         self.profile = self.task.profile
         self._truths: dict[int, dict] = {}
+        self._raised: dict[int, Raised] = {}
 
     def _start(self) -> None:
         """The planner, the VLM, the world and the transport, in that order."""
@@ -392,10 +395,11 @@ class Session:
                               on_tree=self.recorder.on_tree if self.recorder is not None else None,
                               prior=self.task.prior, geometry=make_geometry(cfg),
                               on_survey=lambda survey, graph: scores.append(self._score(survey, graph)),
-                              on_verification=self._score_verification,
+                              on_verification=self._score_verification, on_situation=self._note_situation,
                               goal_parser=self._goal_parser, profile=self.profile,
                               instruction=self.task.spec.instruction.strip())
         self._truths: dict[int, dict] = {}  # id(verification) -> the world's values (the runner's only)
+        self._raised: dict[int, Raised] = {}  # id(situation) -> where it falls in the world's record
         if self.recorder is not None:  # the live view's 3-D scene shows the fused clouds beside the boxes
             self.recorder.clouds = lambda: fused_clouds(executive)
         return executive, metered
@@ -428,7 +432,10 @@ class Session:
             outcome.reason = f"transport down: {exc}"
             self.progress(f"stopped: transport down ({exc})")
         wall = time.perf_counter() - t0
-        return self._report(cfg, outcome, metered, scores, wall, executive.phase)
+        rep = self._report(cfg, outcome, metered, scores, wall, executive.phase)
+        if self.recorder is not None:  # the live view: each diagnosis with the truth beside it
+            self.recorder.scored(outcome.situations, [s["diagnosis_truth"] for s in rep["situations"]])
+        return rep
 
     def _interrupted(self, cfg: RunConfig, executive: Executive | None, metered: MeteredVLM | None,
                      scores: list[dict], t0: float) -> EpisodeInterrupted:
@@ -499,6 +506,21 @@ class Session:
                 resolved = record.resolve_atom(atom, r.identified)
         return resolved is not None and self.world.oracle.holds(resolved)
 
+    def _note_situation(self, s: Situation) -> None:
+        """Where a situation falls in the world's record: how many of the world's events had
+        happened when the executive took it up (for :meth:`_situations`)."""
+        objects = frozenset((*(s.atom.args if s.atom else ()), *(s.action.args if s.action else ())))
+        self._raised[id(s)] = Raised(objects, len(self.world.oracle.injected()))
+
+    def _situations(self, situations: list[Situation]) -> list[dict]:
+        """The report's ``situations``: each with the executive's diagnosis and, beside it, the
+        truth the world's record gives (:mod:`vap_bt.sim.situation_truth`) and the indices in
+        ``injected`` of the events it rests on."""
+        events = self.world.oracle.injected() if self.world is not None else []
+        raised = [self._raised.get(id(s), Raised(frozenset(), len(events))) for s in situations]
+        return [{**s.to_json(), "diagnosis_truth": t.diagnosis, "truth_events": list(t.events)}
+                for s, t in zip(situations, situation_truths(raised, events))]
+
     def _score(self, survey: Survey, graph: SceneGraph) -> dict:
         """Score a freshly built graph against the world now (the executive never sees this)."""
         perceived = set(survey.sweep.detected)
@@ -535,6 +557,7 @@ class Session:
         detector = make_detector(cfg) if world_name == "symbolic" else getattr(self.world, "detector", None)
         verifications = [{**v.to_json(), **self._truths.get(id(v), {})} for v in board.verifications]
         action_checks = [{**c.to_json(), **self._truths.get(id(c), {})} for c in board.action_checks]
+        situations = self._situations(out.situations)
         return {
             "success": out.success,
             "goal_satisfied": self._holds(goal),
@@ -564,7 +587,8 @@ class Session:
             "vlm_planner": {"max_steps": cfg.max_steps, "steps": [p.to_json() for p in out.proposals]}
             if cfg.verify == "vlm_planner" else None,
             "actions_executed": board.actions,
-            "situations": [s.to_json() for s in out.situations],
+            "situations": situations,
+            "diagnosis": diagnosis_summary(situations),
             "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
                           "affected": list(i.affected)}
                          for i in (self.world.oracle.injected() if self.world is not None else [])],

@@ -81,7 +81,8 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     KEYS: ClassVar[dict[str, Access]] = {
         "verifications": Access.WRITE, "situation": Access.WRITE, "unconfirmed_goal": Access.WRITE,
-        "verified": Access.WRITE, "doubted": Access.WRITE, "on_belief": Access.READ, "on_trial": Access.READ}
+        "verified": Access.WRITE, "doubted": Access.WRITE, "on_belief": Access.READ, "on_trial": Access.READ,
+        "sightings": Access.WRITE}
 
     def __init__(self, ctx: ExecutionContext, child: py_trees.behaviour.Behaviour, phase: Phase,
                  action: GroundAction | None, step: int) -> None:
@@ -260,12 +261,22 @@ class ActivePerception(py_trees.decorators.Decorator):
                                         detail=f"could not see whether {atom} holds")
             self.ctx.progress(f"    situation: could not see {'' if expected else 'not '}{atom}")
             return Status.FAILURE
+        # what a sense showed and belief takes in (a contradiction that raises a situation is taken
+        # in, and so seen, when the executive corrects belief: its diagnosis reads what came before)
+        if s.outcome in ("confirmed", "felt"):
+            board.sightings.saw((atom,), s.value, _sense(s))
         if s.outcome != "contradicted":  # confirmed, felt, reused, or unsettled where the plan may go on
             return Status.SUCCESS
         if self.phase == "pre" and atom in board.on_trial:
+            board.sightings.saw((atom,), s.value, _sense(s))
             self.ctx.progress(f"    {atom} observed {s.value} again: trying {self.action} against it")
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]
         board.situation = Situation(kind, self.action, self.step, atom, expected, s.value)
         self.ctx.progress(f"    situation: {kind} {'' if expected else 'not '}{atom} observed {s.value}")
         return Status.FAILURE
+
+
+def _sense(s: Settlement) -> str:
+    """Which sense settled a check: the gripper (proprioception), or the camera's views."""
+    return "gripper" if s.basis == "proprioception" else "check"

@@ -26,6 +26,7 @@ from typing import Any, Mapping
 
 from py_trees.common import Access
 
+from vap_bt.bt.diagnosis import Sightings
 from vap_bt.bt.record import ActionCheck, GoalEvidence, Situation, Unchecked, Verification, Verified
 from vap_bt.domain.atoms import Atom
 
@@ -49,6 +50,9 @@ class Board:
     actions: list[dict] = field(default_factory=list)
     #: values verified earlier and not changeable since, and the views each atom was judged on
     verified: Verified = field(default_factory=Verified)
+    #: what a sense last showed of each atom since an action could have changed it (a situation's
+    #: diagnosis asks whether belief was confirmed by a view: :mod:`vap_bt.bt.diagnosis`)
+    sightings: Sightings = field(default_factory=Sightings)
     #: preconditions the camera could not make out however often the robot looked again: it acts on
     #: belief there (the action's effects are checked), as the ``go_on`` policy does everywhere
     on_belief: set[Atom] = field(default_factory=set)

@@ -25,7 +25,7 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
     """Send one plan action to its skill server and follow the goal to its result."""
 
     KEYS: ClassVar[dict[str, Access]] = {"verified": Access.WRITE, "actions": Access.WRITE,
-                                         "situation": Access.WRITE}
+                                         "situation": Access.WRITE, "sightings": Access.WRITE}
 
     def __init__(self, ctx: ExecutionContext, action: GroundAction, step: int) -> None:
         super().__init__(name=f"execute {action}")
@@ -49,6 +49,7 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
             return Status.RUNNING
         result = self.handle.result()
         self.board.verified.executed(self.action)  # whatever it did, what it touched must be looked at again
+        self.board.sightings.executed(self.action)  # and what was seen of it is no longer what is
         ok = state == GoalState.SUCCEEDED and result is not None and result.success
         self.board.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
                                  "message": result.message if result else "", "sent_s": self._sent_at,

@@ -65,6 +65,7 @@ from py_trees.common import Status
 from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
 from vap_bt.bt.context import ExecutionContext, asking
+from vap_bt.bt.diagnosis import Sightings, diagnose, placed, review
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
@@ -187,6 +188,7 @@ class Executive:
                  geometry: Callable[..., Geometry] | None = None,
                  on_survey: Callable[[Survey, SceneGraph], None] | None = None,
                  on_verification: Callable[[Verification], None] | None = None,
+                 on_situation: Callable[[Situation], None] | None = None,
                  goal_parser: Callable[[list[str]], tuple[Literal, ...]] | None = None,
                  profile: PerceptionProfile | None = None, instruction: str = "") -> None:
         self.task, self.planner, self.skills, self.body, self.vlm = task, planner, skills, body, vlm
@@ -205,6 +207,8 @@ class Executive:
         self.on_tree = on_tree or (lambda tree, tick: None)
         self.on_survey = on_survey or (lambda survey, graph: None)
         self.on_verification = on_verification or (lambda v: None)
+        #: told of each situation as the executive takes it up (the runner scores its diagnosis)
+        self.on_situation = on_situation or (lambda s: None)
         self.prior = frozenset(prior)
         self.geometry = geometry
         #: ParseGoal (vap_bt.perception.goal_parsing): the goal from words, over the graph's objects
@@ -218,6 +222,9 @@ class Executive:
         #: stands makes it stale, so the new plan re-approaches), the hand's, where things are
         self.roles = self.profile.roles
         self._prior_graph = SceneGraph.of_facts(prior, roles=self.roles)  # what the task file says, until then
+        #: what the senses last showed of each atom, for a situation's diagnosis (vap_bt.bt.diagnosis)
+        self.sightings = Sightings(self.roles.hand)
+        self._seen_again: set[str] = set()  # the items the recovery under way re-located from a fresh frame
         #: the episode once it has a belief to plan from (before that, :meth:`so_far`)
         self.outcome: EpisodeOutcome | None = None
         self.phase = PHASES[0]  # which of PHASES the episode is in
@@ -252,7 +259,8 @@ class Executive:
                                aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
-                               board=Board(verified=Verified(self.s.protocol.reuse, self.roles.hand)), executor=executor,
+                               board=Board(verified=Verified(self.s.protocol.reuse, self.roles.hand),
+                                           sightings=self.sightings), executor=executor,
                                record=self.on_verification, profile=self.profile)
         out = self.outcome = EpisodeOutcome(False, "", [], [], 0, [], [survey], 0, graph, ctx)
         if self.goal_parser is not None:  # Alg. 1 line 2: ParseGoal comes after BuildSceneGraph
@@ -303,6 +311,8 @@ class Executive:
             while time.monotonic() < deadline:
                 tree.tick()
                 out.ticks += 1
+                if board.situation is not None:  # diagnosed before the live view shows it
+                    self._diagnose(board.situation)
                 self.on_tree(tree, out.ticks)
                 status = tree.root.status
                 if status == Status.SUCCESS and not board.unconfirmed_goal:
@@ -313,7 +323,7 @@ class Executive:
                         time.sleep(self.s.tick_period_s)
                     continue
                 if status == Status.SUCCESS:  # the tree got through, but the camera could not confirm the goal
-                    situation = unconfirmed_goal(board.unconfirmed_goal, len(plan.actions))
+                    situation = self._diagnose(unconfirmed_goal(board.unconfirmed_goal, len(plan.actions)))
                     board.unconfirmed_goal.clear()
                 else:
                     situation, board.situation = board.situation, None
@@ -322,6 +332,8 @@ class Executive:
                     return out
                 self.phase = "replanning"
                 out.situations.append(situation)
+                self.on_situation(situation)
+                before = placed(situation, graph)  # for the diagnosis' review once it is handled
                 if situation.kind == "execution" and situation.action is not None:
                     self._rejoin(situation.action.name)  # raises TransportError: nobody drives it
                 if situation.kind == "unseen" and self.s.unseen == "stop":
@@ -351,6 +363,7 @@ class Executive:
                     board.doubted |= {lit.atom for lit in situation.action.preconditions
                                       if lit.positive and lit.atom.predicate != self.roles.in_view}
                 recovered, survey = self._recover(graph, situation, times, out, deadline)
+                review(situation, before, self._seen_again, graph)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
                 if survey is not None:
@@ -373,6 +386,14 @@ class Executive:
             return out
         finally:
             self.halt(tree)
+
+    def _diagnose(self, s: Situation) -> Situation:
+        """``s`` with the executive's diagnosis of it (:mod:`vap_bt.bt.diagnosis`), made once: from
+        what the senses had shown before it."""
+        if s.diagnosis is None:
+            s.diagnosis, s.diagnosis_basis = diagnose(s, self.sightings, self.graph)
+            self.sightings.watch(s)  # a later look may show the view that raised it erred
+        return s
 
     def _rejoin(self, action: str) -> None:
         """Wait for ``action``'s robot to have a skill server again, if the client can tell
@@ -507,6 +528,10 @@ class Executive:
         for n, obj in graph.objects.items():
             if obj.centroid is not None and n not in prior_only:  # the prior's place is not where it was seen
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
+        for o in items:  # what the frames showed of each item (nothing of one only the prior places)
+            self.sightings.saw(self.builder.observed(o), True, "survey")
+        self.sightings.saw(belief.robot_facts(state, sweep, site_map, self.roles), True, "survey")
+        self.sightings.saw(belief.hand_facts(state, self.builder), True, "gripper")
         self.graph = graph
         return graph, sweep, prior_only
 
@@ -585,6 +610,7 @@ class Executive:
         for a in answers:
             if a.value is not None:
                 graph.correct(a.atom, a.value)
+                self.sightings.saw((a.atom,), a.value, "survey")
                 if complement:  # open and closed are exclusive: the answer settles both
                     graph.correct(Atom(complement, a.atom.args), not a.value)
         return answers
@@ -598,6 +624,7 @@ class Executive:
         belief (``times``), a look round before the same plan. Returns whether it finished before
         the time budget ran out, and the re-survey it took, if any."""
         executor, halt = self.executor, self._halt
+        self._seen_again = set()
         steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, halt)]
         if s.kind == "unseen" and s.atom is not None:
             steps.append(Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
@@ -647,6 +674,7 @@ class Executive:
             graph.undo(s.action)
         if s.atom is not None and s.observed is not None:
             graph.correct(s.atom, s.observed, self.task.knowledge.complements.get(s.atom.predicate))
+            self.sightings.saw((s.atom,), s.observed, "check")  # what the situation's check showed
         if s.kind in ("execution", "action_infeasible") and s.action is not None:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == self.roles.in_view:
@@ -714,6 +742,7 @@ class Executive:
         held = sorted(a for a in graph.facts if self.roles.is_held(a))
         for a in held:
             graph.correct(a, False, cause="gripper")
+        self.sightings.saw(held, False, "gripper")
         empty = self.roles.hand_empty
         if empty is not None and Atom(empty) not in graph.facts:
             graph.correct(Atom(empty), True, cause="gripper")
@@ -756,11 +785,18 @@ class Executive:
                 continue  # belief holds it and the gripper feels something: it is in the hand
             observed = self.builder.observed(o, in_hand) if o in seen else set()
             if self._placed_anew(o, in_hand):
-                graph.relocate(o, observed)
-                graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
+                self._relocated(graph, o, observed)
             elif self._at_miss(o) or self._expected_in_sight(graph, o):
                 lost.append(o)  # the camera turned toward where belief puts it, and it is not there
         return lost
+
+    def _relocated(self, graph: SceneGraph, o: str, observed: set[Atom]) -> None:
+        """Believe ``o`` where a frame shows it now (``observed``), and that it was seen there."""
+        change = graph.relocate(o, observed)
+        graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
+        self.sightings.saw(graph.location(o), True, "re-location")
+        self._seen_again.add(o)
+        self.sightings.saw(change.removed - graph.facts, False, "re-location")
 
     def _worked(self, s: Situation) -> tuple[str, ...]:
         """The pieces of furniture the situation's action worked at (a fridge a pie was taken
@@ -811,8 +847,7 @@ class Executive:
         for o in items:
             observed = self.builder.observed(o, in_hand)
             if o not in in_hand and self.builder.placed(o, in_hand):
-                graph.relocate(o, observed)
-                graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
+                self._relocated(graph, o, observed)
         graph.replace_predicates(self.roles.robot, belief.robot_facts(self.body.state(), sweep, self.builder.site_map,
                                                                       self.roles), "survey")
         survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())

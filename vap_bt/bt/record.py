@@ -21,6 +21,8 @@ from vap_bt.perception.verification import Round
 #: (:mod:`vap_bt.bt.action_check`): the action did not succeed, or cannot be done now
 SituationKind = Literal["precondition", "effect", "execution", "goal", "unseen", "action_failed",
                         "action_infeasible"]
+#: what a situation stems from (paper Sec. II), as the executive diagnoses it (:mod:`vap_bt.bt.diagnosis`)
+Diagnosis = Literal["perception_error", "world_change", "execution_failure"]
 
 
 @dataclass
@@ -34,11 +36,15 @@ class Situation:
     expected: bool | None = None
     observed: bool | None = None
     detail: str = ""
+    #: what the executive makes of it, from its own records, and why (None: not diagnosed yet)
+    diagnosis: Diagnosis | None = None
+    diagnosis_basis: str = ""
 
     def to_json(self) -> dict:
         return {"kind": self.kind, "action": str(self.action) if self.action else None,
                 "predicate": str(self.atom) if self.atom else None,
-                "expected": self.expected, "observed": self.observed, "detail": self.detail}
+                "expected": self.expected, "observed": self.observed, "detail": self.detail,
+                "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
 
 
 @dataclass
@@ -222,10 +228,18 @@ class Verified:
 
     def executed(self, action: GroundAction) -> None:
         """``action`` ran (or tried to): forget what it could have changed."""
-        args, changed = set(action.args), action.may_add | action.may_delete
+        self._values = {a: v for a, v in self._values.items() if not acted_on(action, a, self.hand)}
+        self._rounds = {a: r for a, r in self._rounds.items() if not may_change(action, a, self.hand)}
 
-        def changeable(a: Atom) -> bool:
-            return a in changed or a.predicate in self.hand or not a.args
 
-        self._values = {a: v for a, v in self._values.items() if not (args & set(a.args) or changeable(a))}
-        self._rounds = {a: r for a, r in self._rounds.items() if not changeable(a)}
+def may_change(action: GroundAction, atom: Atom, hand: frozenset[str]) -> bool:
+    """Whether ``action``'s effects (conditional ones included) could add or delete ``atom``, or
+    ``atom`` is the hand's (one of the ``hand`` predicates, or without arguments): the hand can
+    lose things on any move."""
+    return atom in action.may_add or atom in action.may_delete or atom.predicate in hand or not atom.args
+
+
+def acted_on(action: GroundAction, atom: Atom, hand: frozenset[str]) -> bool:
+    """Whether ``action`` could have changed ``atom`` in any way: it names one of the atom's
+    objects, or :func:`may_change` says so."""
+    return not set(action.args).isdisjoint(atom.args) or may_change(action, atom, hand)

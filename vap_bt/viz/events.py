@@ -140,11 +140,16 @@ def verification_text(v: Verification) -> tuple[str, str]:
     return text, (WARN if v.outcome == "contradicted" else INFO)
 
 
-def situation_text(s: Situation) -> str:
-    """The line of a situation: its kind, step and action, and the observation that raised it."""
+def situation_text(s: Situation, truth: str | None = None) -> str:
+    """The line of a situation: its kind, step and action, the observation that raised it, and
+    what the executive diagnosed it as (and why); after the episode, ``truth``: what the world's
+    record says it was."""
     what = f" {'' if s.expected else 'not '}{s.atom} observed {str(s.observed).lower()}" if s.atom else ""
     detail = f" ({s.detail})" if s.detail else ""
-    return f"situation: {s.kind} at step {s.step}" + (f" {s.action}" if s.action else "") + what + detail
+    diagnosis = f" — diagnosed {s.diagnosis}: {s.diagnosis_basis}" if s.diagnosis else ""
+    scored = f" — truth {truth} ({'right' if truth == s.diagnosis else 'wrong'})" if truth else ""
+    return f"situation: {s.kind} at step {s.step}" + (f" {s.action}" if s.action else "") + what + detail \
+        + diagnosis + scored
 
 
 def change_text(c: Change) -> str:

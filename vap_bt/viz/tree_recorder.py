@@ -165,6 +165,14 @@ class TreeRecorder:
         """Log a line of the run's own progress (e.g. tee the executive's ``progress`` here)."""
         self._text(L.EV_PLAN, text, level)
 
+    def scored(self, situations: Sequence[Situation], truths: Sequence[str]) -> None:
+        """After the episode: each situation once more, its diagnosis with the truth the world's
+        record gives beside it (``truths``, in the same order), then how many were right."""
+        for s, truth in zip(situations, truths):
+            self._text(L.EV_SITUATIONS, ev.situation_text(s, truth), ev.INFO if truth == s.diagnosis else ev.WARN)
+        right = sum(truth == s.diagnosis for s, truth in zip(situations, truths))
+        self._text(L.EV_SITUATIONS, f"diagnosis: {right} of {len(truths)} situations as the world's record says")
+
     def close(self) -> None:
         """Flush and close the sink (a saved file gets its footer; a served stream ends)."""
         if self._ctx is not None:  # queries asked after the last tick (a last look at the goal)

@@ -1,0 +1,184 @@
+"""Situation diagnosis: what a situation stems from, as the executive reads it from its own records.
+
+The paper (Sec. II) tells three sources of a situation apart: a **perception error** (belief was
+wrong, or the view that raised the situation was; nothing changed in the world), a **world
+change** (the world changed under the plan: a person moved a thing, shut a door) and an
+**execution failure** (the robot's own action did not do what it should). The executive is never
+told which it was — the runner scores its diagnosis against the world's record afterwards
+(:mod:`vap_bt.sim.situation_truth`) — so the rule reads only what the executive itself observed:
+
+1. a skill that reports failure (kind ``execution``) → ``execution_failure``;
+2. a held thing lost after an action that was to keep it or make it held (the gripper felt it
+   gone: :class:`~vap_bt.bt.feel_hand.FeelHand`) → ``execution_failure``;
+3. what the camera could not make out (kind ``unseen``) → ``perception_error``: nothing was
+   observed to differ from belief, perception only fell short (the paper's error "correctable
+   through active perception");
+4. a thing not in sight where the robot stood to see it (the in-view role, the household's
+   ``inview``, of any phase: the effect of a ``find`` whose skill reported the robot there, or a
+   precondition) is about where belief put the thing, not about the move: it is read as rule 6
+   reads the thing's believed location;
+5. an effect that did not happen — an effect-phase situation about an atom the action was to add
+   or delete — → ``execution_failure``;
+6. otherwise — a precondition or the goal contradicted — what belief rested on decides. If a
+   sense (a settled check's views, the survey's or a re-location's frames, the gripper) last
+   showed the atom with its believed value *after the robot's last action that could have
+   changed it* (:class:`Sightings`), belief was grounded when it was formed and nothing the
+   robot did changed it since: the world changed → ``world_change``. If no sense confirmed it
+   since — belief rested on the task file's prior, an action's assumed effects or the closed
+   world's defaults, or the last view said otherwise — the belief was what was wrong →
+   ``perception_error``.
+
+The action-level baselines' situations (:mod:`vap_bt.bt.action_check`) name no atom: SuccessVQA's
+"no" says the action's outcome failed → ``execution_failure``; AffordanceVQA's "no" says some
+precondition does not hold → rule 6 over the action's positive preconditions together.
+
+A world change is reviewed by the looks that follow it: when a later look shows the atom with
+the value belief had before the situation, before any action could change it
+(:meth:`Sightings.watch`), or when the recovery's fresh frames re-locate every thing whose place
+the situation was about (its in-view or location atom) exactly where belief had it before
+(:func:`review`), nothing changed — the view that raised the situation erred → ``perception_error``.
+
+The rule cannot always tell a view that erred from a world that changed: a wrong "no" about an
+atom a view confirmed earlier, which no later look settles (a door's leaf, a lemon's state), reads
+as a world change; a thing a person took away, looked for where belief put it, often reads as
+"could not make it out" (rule 3); and a person moving a thing right after the robot put it down
+reads as an execution failure. That is what the report's ``diagnosis_truth`` beside each
+diagnosis measures (``tools/bench/diagnosis.py``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable, get_args
+
+from vap_bt.bt.record import Diagnosis, Situation, may_change
+from vap_bt.domain.atoms import Atom
+from vap_bt.domain.knowledge import GroundAction
+from vap_bt.domain.roles import HOUSEHOLD
+from vap_bt.scene.graph import SceneGraph
+
+#: the three diagnoses, in the paper's order
+DIAGNOSES: tuple[str, ...] = get_args(Diagnosis)
+
+
+@dataclass(frozen=True)
+class Sighting:
+    """What a sense last showed of an atom: its ``value``, and which sense (``check``, ``survey``,
+    ``re-location``, ``gripper``)."""
+
+    value: bool
+    sense: str
+
+
+class Sightings:
+    """Each atom's last sighting since the last action that could have changed it: what a
+    situation's diagnosis asks of belief (was it confirmed by a view, or only assumed?).
+
+    An action forgets what it could have changed — any atom its effects could add or delete, and
+    the hand's atoms (the planner's frame assumption, as :class:`~vap_bt.bt.record.Verified`
+    forgets the views an atom was judged on) — whatever its outcome, so what remains was seen
+    after the robot last acted on it. An action that only names a thing does not touch it: a
+    ``find`` of a cup leaves where the cup was seen as seen."""
+
+    def __init__(self, hand: frozenset[str] = HOUSEHOLD.hand) -> None:
+        #: the hand's predicates: any action can change them (the hand can lose things on any move)
+        self.hand = hand
+        self._seen: dict[Atom, Sighting] = {}
+        #: world changes a later look may show were a view's error (until an action could change their atom)
+        self._watched: list[Situation] = []
+
+    def saw(self, atoms: Iterable[Atom], value: bool, sense: str) -> None:
+        """``sense`` showed ``atoms`` with ``value`` just now; a watched world change whose atom it
+        shows as belief had it before is revised to a perception error."""
+        for atom in atoms:
+            self._seen[atom] = Sighting(value, sense)
+            for s in [s for s in self._watched if s.atom == atom and s.expected == value]:
+                self._watched.remove(s)
+                s.diagnosis, s.diagnosis_basis = "perception_error", (
+                    f"the {sense} showed {atom} {_word(value)} again before any action could change it: "
+                    "the view that raised it erred")
+
+    def watch(self, s: Situation) -> None:
+        """Keep ``s``, diagnosed a world change, for a later look to overturn (:meth:`saw`)."""
+        if s.diagnosis == "world_change" and s.atom is not None:
+            self._watched.append(s)
+
+    def get(self, atom: Atom) -> Sighting | None:
+        """The atom's last sighting since an action could have changed it, or None."""
+        return self._seen.get(atom)
+
+    def executed(self, action: GroundAction) -> None:
+        """``action`` ran (or tried to): what it could have changed was not seen since."""
+        self._seen = {a: s for a, s in self._seen.items() if not may_change(action, a, self.hand)}
+        self._watched = [s for s in self._watched if not may_change(action, s.atom, self.hand)]
+
+
+def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Diagnosis, str]:
+    """The diagnosis of situation ``s`` and its basis in words, by the rule of the module
+    docstring, from ``sightings`` and belief (``graph``) as they were when ``s`` was raised."""
+    roles = graph.roles
+    if s.kind == "execution":
+        return "execution_failure", f"the skill of {s.action} reported failure"
+    if s.kind == "action_failed":  # SuccessVQA's "no": the action's whole outcome, not one atom
+        return "execution_failure", f"the model said {s.action} did not succeed"
+    if s.kind == "action_infeasible" and s.action is not None:  # AffordanceVQA's "no": some precondition
+        needed = [lit.atom for lit in s.action.preconditions if lit.positive]
+        return _grounded(needed, sightings, f"the model said {s.action} cannot be done now: ")
+    if s.atom is None:  # no situation of the executive's lacks both; said rather than guessed
+        return "perception_error", "nothing observed to go on"
+    if s.kind == "unseen":
+        return "perception_error", f"the camera could not make out {s.atom}: nothing seen differed from belief"
+    if s.kind == "effect" and s.observed is False and roles.is_held(s.atom) \
+            and (s.action is None or s.atom not in s.action.may_add):
+        return "execution_failure", f"{s.atom.args[0]} was lost from the hand during {s.action or 'the last action'}"
+    if s.atom.predicate == roles.in_view and s.atom.args:
+        thing = s.atom.args[0]
+        return _grounded(sorted(graph.location(thing)), sightings, f"{thing} not in sight where belief put it: ")
+    if s.kind == "effect" and s.action is not None and s.atom in s.action.may_add | s.action.may_delete:
+        return "execution_failure", f"{s.action} was to make {'' if s.expected else 'not '}{s.atom} and did not"
+    return _grounded([s.atom] if s.expected else [], sightings, "", absent=None if s.expected else s.atom)
+
+
+def placed(s: Situation, graph: SceneGraph) -> dict[str, frozenset[Atom]]:
+    """Where belief puts each thing whose place situation ``s`` is about (its in-view or location
+    atom's first argument), for :func:`review` after the recovery."""
+    roles = graph.roles
+    if s.atom is None or not s.atom.args or s.atom.predicate not in roles.location | {roles.in_view}:
+        return {}
+    return {s.atom.args[0]: frozenset(graph.location(s.atom.args[0]))}
+
+
+def review(s: Situation, before: dict[str, frozenset[Atom]], seen_again: set[str], graph: SceneGraph) -> None:
+    """Revise a ``world_change`` diagnosis of ``s`` once it is handled: when the recovery re-located
+    every thing of ``before`` (``seen_again``) exactly where belief had it before the situation
+    (``before``, from :func:`placed`), nothing moved and the view that raised it erred."""
+    if s.diagnosis != "world_change" or not before or not set(before) <= seen_again:
+        return
+    if all(before[o] and frozenset(graph.location(o)) == where for o, where in before.items()):
+        where = ", ".join(str(a) for o in sorted(before) for a in sorted(before[o]))
+        s.diagnosis, s.diagnosis_basis = "perception_error", (f"re-located where belief had it ({where}): "
+                                                              "nothing moved, the view that raised it erred")
+
+
+def _grounded(atoms: list[Atom], sightings: Sightings, why: str, absent: Atom | None = None
+              ) -> tuple[Diagnosis, str]:
+    """Rule 5: ``world_change`` when a sense showed every one of ``atoms`` true (and ``absent``,
+    if given, false) since the robot last acted on it, else ``perception_error``."""
+    believed = [(a, True) for a in atoms] + ([(absent, False)] if absent is not None else [])
+    if not believed:
+        return "perception_error", why + "belief placed it nowhere"
+    for atom, value in believed:
+        seen = sightings.get(atom)
+        if seen is None:
+            return "perception_error", (why + f"belief in {atom} rested on no view since the robot last acted "
+                                        "on it (the task file's prior, an assumed effect or a default)")
+        if seen.value != value:
+            return "perception_error", why + f"the {seen.sense} last showed {atom} {_word(seen.value)}: belief disagreed"
+    senses = sorted({sightings.get(a).sense for a, _ in believed})
+    shown = ", ".join(f"{'' if v else 'not '}{a}" for a, v in believed)
+    return "world_change", (why + f"{shown} was shown by the {' and '.join(senses)} since the robot last "
+                            "acted on it")
+
+
+def _word(value: bool) -> str:
+    return "true" if value else "false"
