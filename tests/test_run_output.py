@@ -182,7 +182,7 @@ def test_a_task_file_naming_pybullet_for_a_pddl_problem_is_one_line_and_exit_2(c
     assert err.startswith(f"vap-bt: {task}: field world: ") and "builds the household from scene:" in err
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=30)
 def test_without_world_a_household_task_runs_in_pybullet_and_json_stays_clean():
     """The installed command, as a script calls it: no --world, so the task file's pybullet; stdout
     is exactly the JSON (pybullet's own start-up line goes to stderr). Without checks (``--verify
