@@ -9,7 +9,7 @@ run stops, exit 1, with its report"; a restarted server is picked up and the epi
 bounded end, a report whose reason names the part at fault, no traceback, and no process left
 in any of the parts' process groups.
 
-The restarted server, the longest of them (about two minutes), is in
+The restarted server, the longest of them (the episode goes on after the fault), is in
 tests/test_process_restart.py, so that the suite's workers can run it beside these.
 
 tests/test_processes.py kills the arm's server mid-takeout and times the goal's failure;
