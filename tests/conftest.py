@@ -74,18 +74,32 @@ def load_json(text: str) -> dict:
 
 
 
+#: what a test marked ``slow`` without ``seconds=`` counts for in the files' order: a physics
+#: episode of a few actions, a campaign of symbolic episodes
+SLOW_S = 10
+
+
+def slow_seconds(item) -> float:
+    """About how long ``item`` takes on CI, for ordering: its ``slow`` marker's ``seconds=`` (given
+    where a test takes well over :data:`SLOW_S`: a process episode, a browser), else
+    :data:`SLOW_S` for a slow test and 0 for any other."""
+    marker = item.get_closest_marker("slow")
+    return 0 if marker is None else marker.kwargs.get("seconds", SLOW_S)
+
+
 def pytest_collection_modifyitems(config, items):
-    """Heaviest files first. The suite runs one file per pytest-xdist worker (``--dist loadfile``),
+    """Longest files first. The suite runs one file per pytest-xdist worker (``--dist loadfile``),
     and xdist by default hands out files with the most tests first, which leaves the slow
     one-test files (a restarted skill server: a minute of real processes) for last, on one worker
-    while the other idles. Files are ordered instead by how many of their tests are marked
-    ``slow`` (most first), collection order otherwise; tools/test.sh turns xdist's reordering off.
-    The order is the same on every worker (xdist requires it)."""
+    while the other idles. Files are ordered instead by the seconds their slow tests take
+    (:func:`slow_seconds`; most first), collection order otherwise; tools/test.sh turns xdist's
+    reordering off. Counting slow tests alone put a file of one 80-second test behind files of
+    three 5-second ones. The order is the same on every worker (xdist requires it)."""
     def file_of(item):
         return item.nodeid.split("::")[0]
 
-    slow, first = collections.Counter(), {}
+    seconds, first = collections.Counter(), {}
     for k, item in enumerate(items):
-        slow[file_of(item)] += item.get_closest_marker("slow") is not None
+        seconds[file_of(item)] += slow_seconds(item)
         first.setdefault(file_of(item), k)
-    items.sort(key=lambda item: (-slow[file_of(item)], first[file_of(item)]))
+    items.sort(key=lambda item: (-seconds[file_of(item)], first[file_of(item)]))

@@ -87,7 +87,7 @@ def boil(tmp_path_factory) -> Recorded:
 
 # ---- read back -------------------------------------------------------------------------------
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=20)  # the recording's episode
 def test_the_recording_holds_the_final_tree_a_frame_and_a_verifications_questions(boil):
     from vap_bt.domain.atoms import Atom
 
@@ -156,7 +156,7 @@ def _drawing_at(rows: dict, tick: int) -> dict:
     return [d for d in tree_rows(rows) if d["tick"] <= tick][-1]
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=80)
 def test_the_web_viewer_shows_the_recording_and_draws_the_tree(boil, tmp_path):
     last_tick = boil.report["ticks"]
     with viewer(boil.path, last_tick, tmp_path) as page:
@@ -193,16 +193,30 @@ def _scrub(page, target: int) -> int:
     """Set the viewer's time to about ``target`` by clicking the time strip, whose pixel-to-tick
     scale is read off two calibration clicks; returns the tick the viewer then shows."""
     xs, ticks = (0.3 * WIDTH, 0.7 * WIDTH), []
+    shown = ViewerState.read(page).current[1]
     for x in xs:
         page.mouse.click(x, TIME_STRIP_Y)
-        time.sleep(1.0)
-        ticks.append(ViewerState.read(page).current[1])
+        shown = _moved_from(page, shown)
+        ticks.append(shown)
     assert ticks[1] > ticks[0], f"clicking the time strip did not move the time: {ticks}"
     x = xs[0] + (target - ticks[0]) * (xs[1] - xs[0]) / (ticks[1] - ticks[0])
     page.mouse.click(x, TIME_STRIP_Y)
     page.mouse.move(WIDTH / 2, HEIGHT / 2)
-    time.sleep(3.0)
+    _moved_from(page, shown)
+    page.wait_for_timeout(1000)  # the panels draw at the new time before a screenshot is taken
     return ViewerState.read(page).current[1]
+
+
+def _moved_from(page, tick: int, timeout_s: float = 5.0) -> int:
+    """The tick the viewer shows once a click has moved its time off ``tick`` (polled: a fixed
+    second after each click was most of a scrub's time), or the one it shows after ``timeout_s``
+    (a click that landed on the tick shown already)."""
+    deadline = time.monotonic() + timeout_s
+    while True:
+        page.wait_for_timeout(200)
+        shown = ViewerState.read(page).current[1]
+        if shown != tick or time.monotonic() > deadline:
+            return shown
 
 
 def _check_stretches(rows: dict) -> list[tuple[int, int, str]]:
@@ -253,7 +267,7 @@ def _the_verification_panel_follows_the_tree(page, rows: dict, tmp_path: Path) -
     assert scores[highlighted] >= 0.8 and best == highlighted, (shown, highlighted, scores, text[:400])
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=30)
 def test_a_20_action_plan_is_drawn_whole_in_the_tree_panel(tmp_path):
     """The recorder itself, fed a compiled 20-action tree as ticking leaves it (action k running,
     the ones before it done), one tick per action: every label of the drawing lies inside the

@@ -156,26 +156,39 @@ def test_placein_puts_the_held_item_into_the_container(worlds, sensors):
     assert seen(w, ("wood1", "basket"))["wood1"] >= 0.5
 
 
-@skills_fail("seed 4's survey believes the shut oven open (the VLM's error); after the placein finds no "
-             "arm pose the executive doubts open(oven), looks again and opens it, but the placein into "
-             "the open oven from that stance finds no arm pose either, three times")
+@pytest.mark.slow(seconds=20)
+@skills_fail("seed 4's survey believes the shut oven open (the VLM's error), and the first placein, into "
+             "the shut oven, finds no arm pose; in the whole episode the executive then doubts open(oven), "
+             "looks again and opens it, but the placein into the open oven from that stance finds no arm "
+             "pose either")
 def test_an_item_held_from_above_goes_into_the_oven_leaned():
     """The oven's opening is 0.3 m high: a pie taken from above cannot go in upright (the wrist
     rides over the hand and strikes the face above the opening). heat_pie's seed 4 takes the pie
     off the counter from above; upright, every placein stopped on the blocked arm and the episode
-    ended stuck. Leaned in, the pie is let go tilted and settles inside."""
-    from vap_bt.app.runner import RunConfig, Session
+    ended stuck. Leaned in, the pie is let go tilted and settles inside.
+
+    The episode stops at the first placein into the oven that fails (as a Ctrl-C would: the report
+    so far): every placein must succeed, so the test is decided there, and the rest of the episode
+    (a re-survey, the oven opened, more placeins: 25 of its 45 s on CI) could not change that."""
+    from vap_bt.app.runner import EpisodeInterrupted, RunConfig, Session
     from vap_bt.taskfile import load
 
+    def stop_at_a_failed_placein(line: str) -> None:
+        if line.lstrip().startswith("situation: execution of placein(apple_pie, oven"):
+            raise KeyboardInterrupt
+
     task = load(TREES / "heat_pie.yaml")
-    session = Session(task, RunConfig.from_task(task, world="pybullet", seed=4, injection=False, transport="inproc"))
+    session = Session(task, RunConfig.from_task(task, world="pybullet", seed=4, injection=False, transport="inproc"),
+                      progress=stop_at_a_failed_placein)
     try:
         r = session.episode()
+    except EpisodeInterrupted as stopped:
+        r = stopped.report
     finally:
         session.close()
     placed = [a for a in r["actions_executed"] if a["action"].startswith("placein(apple_pie, oven")]
-    assert r["success"] and r["goal_satisfied"], r["reason"]
     assert placed and all(a["state"] == "succeeded" for a in placed), placed
+    assert r["success"] and r["goal_satisfied"], r["reason"]
 
 
 @machine_dependent(TAKEOUT_STRIKES)

@@ -60,6 +60,20 @@ def test_replan_reuses_the_tail_of_the_previous_plan():
     assert again.engine == "reuse" and again.actions == plan.actions[1:]
 
 
+def test_replan_after_the_whole_plan_ran_is_the_empty_tail_when_the_goal_holds():
+    """The tree got through but the camera did not confirm the goal: the replan from a belief in
+    which the goal holds is the previous plan's empty tail, found without a search."""
+    task = load(TREES / "collect_cup.yaml").planning
+    planner = Planner(task, first_engine="search")
+    plan = planner.plan()
+    state = task.init
+    for a in plan.actions:
+        state = a.apply(state)
+    again = planner.replan(state, plan.actions[len(plan):])
+    assert again.engine == "reuse" and again.actions == []
+    assert planner.replan(task.init, []).engine == "cache"  # an empty tail that does not reach the goal
+
+
 def test_replan_searches_when_the_tail_no_longer_works():
     task = load(TREES / "collect_cup.yaml").planning
     planner = Planner(task, first_engine="search")

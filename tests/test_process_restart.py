@@ -13,11 +13,15 @@ import pytest
 
 from tools.bench.process_faults import run_fault
 
-pytestmark = [pytest.mark.slow, pytest.mark.timeout(600)]
+pytestmark = [pytest.mark.slow(seconds=45), pytest.mark.timeout(600)]
 
 
 def test_a_restarted_arm_server_is_picked_up_and_the_episode_goes_on(tmp_path):
-    r = run_fault("restart", tmp_path, "--seed", "1")  # seed 1: a shorter episode than the bench's seed 0
+    # seed 1: a shorter episode than the bench's seed 0. One replan, the restart's: the plan after
+    # it runs until its next situation (or the goal) and the episode ends there, exit 1 on the
+    # budget. The rest of the episode (the microwave looked into again and again: 67 s of the
+    # 107 s after the fault in one run) showed nothing about the restart
+    r = run_fault("restart", tmp_path, "--seed", "1", "--max-replans", "1")
     print(r.line())
     assert "Traceback" not in r.stderr, r.stderr
     assert r.orphans == 0

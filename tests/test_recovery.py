@@ -130,3 +130,15 @@ def test_the_live_view_draws_the_recovery_and_says_each_step(tmp_path):
         "correct belief: done", "feel the hand: done", "re-locate what it is about: done", "look for what is lost: done"]
     drawn = [r["GraphNodes:labels"] for r in rows["/tree"] if r.get("GraphNodes:labels")]
     assert any(labels[0].split("\n")[0].endswith(f"recover: {lines[start][len('recovering: '):]}") for labels in drawn)
+
+
+def test_a_replans_line_times_the_planner_apart_from_the_recovery_before_it():
+    """A replan's seconds run from the situation to the new tree and take in the recovery's looks;
+    the progress line gives the planner's own time beside its engine, and the whole only apart
+    (a 0-action plan found in 21 ms after a 17 s re-survey read as a 17 s search)."""
+    from vap_bt.bt.executive import replan_timing
+    from vap_bt.domain.planner import Plan
+
+    plan = Plan([], "search", 0.0212)
+    assert replan_timing(plan, 17.57) == "search, 21.2 ms; 17.6 s from the situation, with the recovery"
+    assert replan_timing(plan, 0.0412) == "search, 21.2 ms"  # no looks: the planner is the wait

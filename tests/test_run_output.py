@@ -182,14 +182,17 @@ def test_a_task_file_naming_pybullet_for_a_pddl_problem_is_one_line_and_exit_2(c
     assert err.startswith(f"vap-bt: {task}: field world: ") and "builds the household from scene:" in err
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=30)
 def test_without_world_a_household_task_runs_in_pybullet_and_json_stays_clean():
     """The installed command, as a script calls it: no --world, so the task file's pybullet; stdout
-    is exactly the JSON (pybullet's own start-up line goes to stderr)."""
+    is exactly the JSON (pybullet's own start-up line goes to stderr). Without checks (``--verify
+    none``): what could write to stdout below Python — pybullet rendering frames, open3d building
+    the scene graph from them — runs in the survey and the skills already, and the checks, half
+    the episode's time, add only more of the same frames."""
     exe = ROOT / ".venv" / "bin" / "vap-bt"
     cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "vap_bt"]
     p = subprocess.run([*cmd, "run", str(TREES / "collect_cup.yaml"), "--no-injection", "--transport", "inproc",
-                        "--json", "-q"], capture_output=True, text=True, timeout=600, cwd=ROOT)
+                        "--verify", "none", "--json", "-q"], capture_output=True, text=True, timeout=600, cwd=ROOT)
     summary = json.loads(p.stdout)
     assert summary["world"] == "pybullet" and p.returncode == (0 if summary["success"] and summary["goal_satisfied"]
                                                                else EXIT_GOAL_NOT_REACHED), p.stderr[-2000:]

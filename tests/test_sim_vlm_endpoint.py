@@ -273,7 +273,7 @@ def test_a_symbolic_run_through_the_endpoint_is_the_in_process_run(protocol):
     assert {r["outcome"] for r in over_http["vlm"]["requests"]} == {"answer"}
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=55)
 def test_a_pybullet_run_through_the_endpoint_is_the_in_process_run():
     # an episode in which the model never abstains (the counts below say so): under constrained
     # decoding the endpoint turns an abstention into a seeded guess, as a hosted API would, and the

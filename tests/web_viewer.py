@@ -250,7 +250,9 @@ def shot(page, path: Path) -> np.ndarray:
     """A screenshot of the page, saved at ``path``, as RGB."""
     import cv2
 
-    page.screenshot(path=str(path))
+    # a full-size frame drawn by SwiftShader took over Playwright's default 30 s on this 2-core
+    # machine at a load of 13 (other suites running); when it is quick, this waits no longer
+    page.screenshot(path=str(path), timeout=120_000)
     return cv2.cvtColor(cv2.imread(str(path)), cv2.COLOR_BGR2RGB)
 
 

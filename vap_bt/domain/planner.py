@@ -135,7 +135,9 @@ class Planner:
         """A plan from a corrected state, trying reuse, the cache and in-process search first."""
         task = self.task.with_state(state, goal)
         t0 = time.perf_counter()
-        if previous:
+        # an empty ``previous`` is a plan run to its end (the goal left unconfirmed): its empty
+        # tail is the answer when the goal holds in belief, without a search and its validation
+        if previous is not None:
             suffix = self._shortest_valid_suffix(task, previous)
             if suffix is not None:
                 return Plan(suffix, "reuse", time.perf_counter() - t0)
