@@ -61,7 +61,7 @@ def assert_run_json(out, episodes: int) -> dict:
     return meta
 
 
-@pytest.mark.slow  # 18 s on 2 shared cores (54 s at a load average of 15)
+@pytest.mark.slow(seconds=45)  # 18 s on 2 shared cores (54 s at a load average of 15)
 def test_ablation_runs_every_mode_on_the_cluster_and_writes_table_iii(tmp_path, address):
     out = tmp_path / "ablation"
     p = subprocess.run([sys.executable, str(ROOT / "tools/experiments/ablation.py"), *TASK, "--address", address,
@@ -237,7 +237,7 @@ def test_ctrl_c_keeps_the_rows_written_and_says_how_to_resume(tmp_path, address,
     assert len(results.EpisodeLog(out / "episodes.jsonl").rows()) == 2
 
 
-@pytest.mark.slow  # 10 s on 2 shared cores
+@pytest.mark.slow(seconds=20)  # 10 s on 2 shared cores
 def test_an_episode_is_the_same_whatever_worker_runs_it(tmp_path, address):
     """The cluster's rows equal the same episodes run here, in order, in one process."""
     out = tmp_path / "strategies"

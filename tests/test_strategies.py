@@ -53,7 +53,7 @@ def reports() -> dict[tuple[str, str], dict]:
     return out
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=3)  # the shared fixture: 8 episodes, about 16 s for the file
 @pytest.mark.parametrize("task", ["collect_cup", "cut_lemon"])
 @pytest.mark.parametrize("strategy", BASELINES)
 def test_each_baseline_runs_an_episode_to_its_end_and_the_report_names_it(reports, task, strategy):
@@ -63,7 +63,7 @@ def test_each_baseline_runs_an_episode_to_its_end_and_the_report_names_it(report
     assert rep["success"] == (rep["reason"] == "goal reached")
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=3)  # the shared fixture: 8 episodes, about 16 s for the file
 @pytest.mark.parametrize("task", ["collect_cup", "cut_lemon"])
 @pytest.mark.parametrize("strategy", ["success_vqa", "affordance_vqa", "suc_aff"])
 def test_the_action_level_baselines_ask_one_action_question_per_action_and_no_predicate(reports, task, strategy):
@@ -84,7 +84,7 @@ def test_the_action_level_baselines_ask_one_action_question_per_action_and_no_pr
         assert c["truth"] in (True, False)
 
 
-@pytest.mark.slow
+@pytest.mark.slow(seconds=3)  # the shared fixture: 8 episodes, about 16 s for the file
 @pytest.mark.parametrize("task", ["collect_cup", "cut_lemon"])
 def test_ok_robot_asks_one_question_per_checked_atom_from_one_view(reports, task):
     rep = reports[task, "ok_robot"]
