@@ -249,7 +249,9 @@ def test_judges_the_instance_the_executive_marked():
     world = SimpleNamespace(captures=SimpleNamespace(get=recs.get), oracle=oracle)
     for view, value, right in (("f", True, True), ("f", False, False), ("g", False, True)):
         runner = SimpleNamespace(world=world, _truths={})
-        v = SimpleNamespace(outcome="confirmed", atom=on, value=value, rounds=[Round(view, identified={"bottle1": 0})])
+        runner._true_now = lambda atom, records: Session._true_now(runner, atom, records)
+        v = SimpleNamespace(outcome="confirmed", atom=on, atoms=(on,), value=value,
+                            rounds=[Round(view, identified={"bottle1": 0})])
         Session._score_verification(runner, v)
         assert (runner._truths[id(v)]["truth"] == value) == right, (view, value)
         assert runner._truths[id(v)]["truth"] == (view == "f") == runner._truths[id(v)]["first_truth"]
