@@ -30,7 +30,10 @@ pytestmark = pytest.mark.timeout(300)
 
 ROOT = Path(__file__).resolve().parents[1]
 TASK = str(ROOT / "trees" / "boil_water.yaml")
-SEED = "0"  # boil_water without injection succeeds on this seed embedded as well
+#: boil_water without injection reaches its takeout fourth on this seed (find, open, find, takeout):
+#: the kill test's subject is a goal in flight, not the episode, so the sooner the takeout the better
+#: (seed 0's view of the cup inside the cabinet stays unsettled for a few replans first)
+SEED = "1"
 
 
 _vap_bt, _start = vap_bt, start  # the parts as tools/bench/process_faults.py starts them
