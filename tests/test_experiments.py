@@ -152,6 +152,12 @@ def test_failures_classes_every_failed_episode(tmp_path, address):
     table = (out / "table.md").read_text()
     assert "visual ambiguity" in table and "Situations per episode" in table and "## Diagnosis" in table
     assert_images(out, "failure_modes.png", "situations.png")
+    # the same episodes read from another campaign's rows (--rows): the same tables, nothing run
+    again = tmp_path / "again"
+    assert main(FAILURES, [*TASK, "--out", str(again), "--rows", str(out / "episodes.jsonl"),
+                           "--verify", "both", "none"]) == 0
+    assert (again / "table.md").read_text() == table and not (again / "episodes.jsonl").exists()
+    assert json.loads((again / "run.json").read_text())["rows_from"] == str(out / "episodes.jsonl")
 
 
 def test_the_rows_count_uncertain_checks_as_the_viewpoint_measure_does():

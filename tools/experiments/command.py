@@ -5,13 +5,17 @@ and how it reports its rows; :func:`main` does the rest, the same way for each:
 
 * options — ``--world``, ``--tasks`` (names, or the paper's ids S1-S5 / T1-T4, read from the task
   files' ``paper_task``), ``--seeds`` (``N``: seeds 0..N-1, or ``A-B``: A..B inclusive),
-  ``--out``, ``--resume``, ``--report-only``, ``--workers``, ``--address``;
+  ``--out``, ``--resume``, ``--report-only``, ``--rows``, ``--workers``, ``--address``;
 * the campaign — the keys not yet in ``episodes.jsonl`` (all of them unless ``--resume``) run on
   the cluster (:mod:`tools.experiments.engine`), each row appended as it finishes; progress on
   stderr (:mod:`tools.progress`);
 * the outputs — ``episodes.csv``, ``table.md`` and PNG plots from every row in the log, its
   tasks in the paper's order (also with ``--report-only``, from the rows alone), and ``run.json``: the command, seeds, commit,
   versions, worker count, wall time and episodes per hour.
+
+``--rows FILE`` reads another campaign's episodes instead of running any: an episode is a pure
+function of its world, task, strategy, viewpoints and seed, so the failure modes of the strategies'
+episodes are the strategies campaign's rows read another way, not 8000 episodes run twice.
 
 Bad input (an unknown task, a malformed seed range) is one line on stderr naming the option,
 exit 2 (:data:`vap_bt.errors.EXIT_BAD_INPUT`), no traceback. Ctrl-C stops the campaign with one
@@ -81,6 +85,9 @@ def parser(experiment: Experiment) -> argparse.ArgumentParser:
     ap.add_argument("--out", type=Path, help=f"output directory (default docs/results/{experiment.name})")
     ap.add_argument("--resume", action="store_true", help="keep episodes.jsonl and run only the missing episodes")
     ap.add_argument("--report-only", action="store_true", help="write the table and plots from existing rows")
+    ap.add_argument("--rows", type=Path, metavar="FILE",
+                    help="report on another campaign's episodes.jsonl (the same episodes, read this experiment's "
+                         "way: failures from strategies'), running nothing")
     ap.add_argument("--workers", type=int, help="LocalCluster worker processes (default: one per core)")
     ap.add_argument("--address", help="join this Dask scheduler (tcp://host:port) instead of a LocalCluster")
     experiment.options(ap)
@@ -147,9 +154,13 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
         configurations = experiment.configurations(args)
         if args.report_only and not (campaign.out / "episodes.jsonl").exists():
             raise InputError("--out", f"no episodes.jsonl in {campaign.out} to report on (run the experiment first)")
+        if args.rows is not None and not args.rows.is_file():
+            raise InputError("--rows", f"no such file: {args.rows}")
     except InputError as exc:
         print(f"{experiment.name}: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    if args.rows is not None:
+        return report_from(experiment, campaign, configurations, results.EpisodeLog(args.rows))
     log = results.EpisodeLog(campaign.out / "episodes.jsonl")
     if not args.report_only:
         try:
@@ -164,6 +175,27 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     results.write_csv(rows, campaign.out / "episodes.csv")
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign))
+    print((campaign.out / "table.md").read_text())
+    return EXIT_OK
+
+
+def report_from(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
+                source: results.EpisodeLog) -> int:
+    """``--rows``: this experiment's table and plots from another campaign's rows of the same
+    configurations and tasks (whatever experiment ran them), and a run.json saying where they came from."""
+    wanted = set(configurations)
+    rows = [r for r in source.rows() if (r["strategy"], r["viewpoints"]) in wanted and r["task"] in campaign.tasks]
+    if not rows:
+        print(f"{experiment.name}: --rows: {source.path} has no episode of these configurations and tasks",
+              file=sys.stderr)
+        return EXIT_BAD_INPUT
+    named = tasks_named(sorted({r["task"] for r in rows}))
+    campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
+    campaign.out.mkdir(parents=True, exist_ok=True)
+    (campaign.out / "table.md").write_text(experiment.report(rows, campaign))
+    meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name, "rows_from": str(source.path),
+            "episodes": len(rows), "seeds": _span(sorted({r["seed"] for r in rows})), "commit": _commit()}
+    (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
     print((campaign.out / "table.md").read_text())
     return EXIT_OK
 

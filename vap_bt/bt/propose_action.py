@@ -21,8 +21,8 @@ from py_trees.common import Access, Status
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.inflight import cancel_all, in_flight
 from vap_bt.domain.task import PlanningTask
-from vap_bt.perception.action_proposal import Proposal, ProposalAttempt, judge, next_action_prompt, reask
-from vap_bt.perception.vlm import Completion, TextModel
+from vap_bt.perception.action_proposal import Proposal, judge, next_action_prompt, reask
+from vap_bt.perception.vlm import Attempt, Completion, TextModel
 from vap_bt.robot.frame import Frame
 
 
@@ -62,8 +62,8 @@ class ProposeNextAction(py_trees.behaviour.Behaviour):
         prompt, frame, reply = self._job.result()  # a server gone raises here, and ends the episode
         self._job = None
         action, error = judge(reply, self.task, self._objects)
-        self.proposal.attempts.append(ProposalAttempt(prompt, frame.frame_id, reply.text, reply.outcome, error,
-                                                      reply.latency_s))
+        self.proposal.attempts.append(Attempt(prompt, reply.text, reply.outcome, error, reply.latency_s,
+                                              frame.frame_id))
         if error is None:
             self.proposal.action, self.proposal.done = action, action is None
             self.feedback_message = "done" if action is None else str(action)

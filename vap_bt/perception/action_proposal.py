@@ -35,7 +35,7 @@ from vap_bt.domain.knowledge import GroundAction
 from vap_bt.domain.task import PlanningTask
 from vap_bt.perception.goal_parsing import predicate_list
 from vap_bt.perception.prompts import book
-from vap_bt.perception.vlm import Completion
+from vap_bt.perception.vlm import Attempt, Completion
 
 #: the reply that says the goal is reached (the episode then claims success)
 DONE = "done"
@@ -141,29 +141,13 @@ def action_errors(action: Atom, task: PlanningTask, objects: Iterable[str]) -> s
     return None
 
 
-@dataclass(frozen=True)
-class ProposalAttempt:
-    """One request of a step: the prompt, the frame shown, the raw reply and what was wrong with it."""
-
-    prompt: str
-    frame_id: str
-    reply: str | None  # the model's raw text; None when no reply came back
-    outcome: str  # the request's outcome (see vap_bt.perception.backends.record)
-    error: str | None  # why the reply is not an action; None: accepted
-    latency_s: float | None = None
-
-    def to_json(self) -> dict:
-        return {"prompt": self.prompt, "frame_id": self.frame_id, "reply": self.reply, "outcome": self.outcome,
-                "error": self.error, "latency_s": None if self.latency_s is None else round(self.latency_s, 4)}
-
-
 @dataclass
 class Proposal:
     """One step of the VLM-planner: its requests and what came of them — an action, ``done``, or
     neither (``error`` says why)."""
 
     step: int
-    attempts: list[ProposalAttempt] = field(default_factory=list)
+    attempts: list[Attempt] = field(default_factory=list)
     action: GroundAction | None = None
     done: bool = False
     #: what its skill reported, once the action has been executed ("succeeded", "failed: ...")

@@ -39,7 +39,7 @@ from vap_bt.domain.knowledge import DomainKnowledge
 from vap_bt.domain.task import PlanningTask
 from vap_bt.errors import InputError
 from vap_bt.perception.prompts import book
-from vap_bt.perception.vlm import Completion, TextModel
+from vap_bt.perception.vlm import Attempt, Completion, TextModel
 
 #: the answer format the appendix asks for, said back to the model and to the user
 FORMAT = "predicate(object1, object2), predicate(object), ..."
@@ -63,21 +63,6 @@ class GoalParseError(InputError):
         self.record = record
 
 
-@dataclass(frozen=True)
-class GoalAttempt:
-    """One request of goal parsing: what was asked, the raw reply and what was wrong with it."""
-
-    prompt: str
-    reply: str | None  # the model's raw text; None when no reply came back
-    outcome: str  # the request's outcome (see vap_bt.perception.backends.record)
-    error: str | None  # why the reply is not a goal; None: accepted
-    latency_s: float | None = None
-
-    def to_json(self) -> dict:
-        return {"prompt": self.prompt, "reply": self.reply, "outcome": self.outcome, "error": self.error,
-                "latency_s": None if self.latency_s is None else round(self.latency_s, 4)}
-
-
 @dataclass
 class GoalParse:
     """Everything goal parsing did, for the report: the inputs, each attempt and the goal."""
@@ -87,7 +72,7 @@ class GoalParse:
     backend: str
     objects: tuple[str, ...] = ()
     predicates: str = ""
-    attempts: list[GoalAttempt] = field(default_factory=list)
+    attempts: list[Attempt] = field(default_factory=list)
     goal: tuple[Literal, ...] | None = None  # None: not (yet) parsed
 
     @property
@@ -192,7 +177,7 @@ class GoalParser:
         for _ in range(2):  # the question, and once more with the error
             reply = self.model.complete(prompt, "goal")
             goal, error = self._judge(reply, objects)
-            rec.attempts.append(GoalAttempt(prompt, reply.text, reply.outcome, error, reply.latency_s))
+            rec.attempts.append(Attempt(prompt, reply.text, reply.outcome, error, reply.latency_s))
             if error is None:
                 rec.goal = goal
                 return goal

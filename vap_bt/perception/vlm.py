@@ -45,6 +45,26 @@ class Query:
 
 
 @dataclass(frozen=True)
+class Attempt:
+    """One request of an exchange that asks a model for text and reads it strictly (goal parsing,
+    the VLM-planner's next action): the prompt, the raw reply, the request's ``outcome``
+    (:mod:`vap_bt.perception.backends.record` lists them), what was wrong with the reply (None: accepted), and the frame shown (None:
+    text only)."""
+
+    prompt: str
+    reply: str | None  # the model's raw text; None when no reply came back
+    outcome: str
+    error: str | None
+    latency_s: float | None = None
+    frame_id: str | None = None
+
+    def to_json(self) -> dict:
+        return {"prompt": self.prompt, **({"frame_id": self.frame_id} if self.frame_id is not None else {}),
+                "reply": self.reply, "outcome": self.outcome, "error": self.error,
+                "latency_s": None if self.latency_s is None else round(self.latency_s, 4)}
+
+
+@dataclass(frozen=True)
 class Answer:
     """A model's reply, read strictly.
 
