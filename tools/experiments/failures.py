@@ -55,16 +55,25 @@ def report(rows: list[dict], campaign: Campaign) -> str:
 
 
 def confusion(rows: list[dict]) -> str:
-    """The diagnosis confusion matrix over every situation of the rows (the world's cause by row,
-    the executive's diagnosis by column), or a line saying the reports have none."""
-    pairs = Counter(tuple(p) for r in rows for p in r["diagnoses"] or ())
-    if not pairs:
+    """How often each strategy's diagnoses match the world's record, and the confusion matrix of
+    each (the world's cause by row, the executive's diagnosis by column); or a line saying the
+    reports have none. Per strategy, not pooled: the diagnosis rule reads what each strategy's
+    checks saw, and a baseline's single answers give it less to go on."""
+    strategies = [s for s in strategies_in(rows) if any(r["diagnoses"] for r in rows if r["strategy"] == s)]
+    if not strategies:
         return NO_DIAGNOSIS
-    said = sorted({d for d, _ in pairs})
-    truths = sorted({t for _, t in pairs})
-    right = sum(n for (d, t), n in pairs.items() if d == t)
-    return (tables.markdown(["world's cause \\ diagnosis", *said], [[t, *(pairs[(d, t)] for d in said)] for t in truths])
-            + f"\nDiagnosed right: {tables.share(right, sum(pairs.values())).percent()}\n")
+    pairs = {s: Counter(tuple(p) for r in rows if r["strategy"] == s for p in r["diagnoses"] or ())
+             for s in strategies}
+    right = {s: tables.share(sum(n for (d, t), n in pairs[s].items() if d == t), sum(pairs[s].values()))
+             for s in strategies}
+    out = ("Situations whose diagnosis matches the world's record, per strategy:\n\n"
+           + tables.markdown(["strategy", "diagnosed right"], [[s, right[s].percent()] for s in strategies]))
+    for s in strategies:
+        said = sorted({d for d, _ in pairs[s]})
+        truths = sorted({t for _, t in pairs[s]})
+        out += (f"\n{s}:\n\n" + tables.markdown(["world's cause \\ diagnosis", *said],
+                                                 [[t, *(pairs[s][(d, t)] for d in said)] for t in truths]))
+    return out
 
 
 FAILURES = Experiment("failures", __doc__.splitlines()[0], options=options, report=report,
