@@ -143,7 +143,11 @@ def _watch(session: zenoh.Session) -> int:
     """One line per token that comes or goes, until SIGINT or SIGTERM."""
     stop = threading.Event()
     if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGTERM, lambda *_: stop.set())
+        # both handlers set here: a process started with SIGINT ignored (by a parent that ignores
+        # it: a test runner's worker, nohup) inherits the ignoring, and Python then installs no
+        # KeyboardInterrupt of its own, so Ctrl-C would never end the watch
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, lambda *_: stop.set())
 
     def on_sample(sample: zenoh.Sample) -> None:  # Zenoh's thread: one short print, nothing more
         seen = classify(str(sample.key_expr))
@@ -158,7 +162,7 @@ def _watch(session: zenoh.Session) -> int:
     try:
         while not stop.wait(0.5):  # short waits keep Ctrl-C responsive
             pass
-    except KeyboardInterrupt:
+    except KeyboardInterrupt:  # off the main thread no handler was set: Python's own
         pass
     finally:
         subscriber.undeclare()
