@@ -217,7 +217,12 @@ def test_resume_runs_only_what_a_stopped_campaign_had_not_finished(tmp_path, add
     assert main(STRATEGIES, [*argv, "--resume"]) == 0
     rows = results.EpisodeLog(log).rows()
     assert len(rows) == 4 and len({results.key_of(r) for r in rows}) == 4
-    assert json.loads((out / "run.json").read_text())["episodes"] == 2 and len(rows_of(out)) == 4
+    meta = json.loads((out / "run.json").read_text())
+    assert meta["episodes"] == 2 and len(rows_of(out)) == 4
+    # both sittings are on record, and every row says which code ran it, as the table does
+    assert [s["episodes"] for s in meta["sittings"]] == [4, 2]
+    assert {r["commit"] for r in rows} == {meta["commit"]} and len(meta["commit"]) >= 40
+    assert f"Episodes run on: {meta['commit'][:12]}" in (out / "table.md").read_text()
 
 
 def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):

@@ -11,7 +11,9 @@ and how it reports its rows; :func:`main` does the rest, the same way for each:
   stderr (:mod:`tools.progress`);
 * the outputs — ``episodes.csv``, ``table.md`` and PNG plots from every row in the log, its
   tasks in the paper's order (also with ``--report-only``, from the rows alone), and ``run.json``: the command, seeds, commit,
-  versions, worker count, wall time and episodes per hour.
+  versions, worker count, wall time and episodes per hour, and the same for each earlier sitting of a
+  resumed campaign (``sittings``). Each row records the commit it ran on, and table.md ends with
+  them: a campaign that spans sittings may span changes to the code, and its table says so.
 
 ``--rows FILE`` reads another campaign's episodes instead of running any: an episode is a pure
 function of its world, task, strategy, viewpoints and seed, so the failure modes of the strategies'
@@ -174,7 +176,7 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     named = tasks_named(sorted({r["task"] for r in rows}))
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     results.write_csv(rows, campaign.out / "episodes.csv")
-    (campaign.out / "table.md").write_text(experiment.report(rows, campaign))
+    (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
     print((campaign.out / "table.md").read_text())
     return EXIT_OK
 
@@ -192,7 +194,7 @@ def report_from(experiment: Experiment, campaign: Campaign, configurations: list
     named = tasks_named(sorted({r["task"] for r in rows}))
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     campaign.out.mkdir(parents=True, exist_ok=True)
-    (campaign.out / "table.md").write_text(experiment.report(rows, campaign))
+    (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
     meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name, "rows_from": str(source.path),
             "episodes": len(rows), "seeds": _span(sorted({r["seed"] for r in rows})), "commit": _commit()}
     (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
@@ -205,6 +207,7 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
     """Run the campaign's missing episodes, appending each row to ``log``; then write run.json."""
     log.start(args.resume)
     commit = _commit()  # now: the code that runs is this checkout's as the campaign starts
+    started = time.strftime("%Y-%m-%dT%H:%M:%S%z")
     done = log.keys()
     todo = [k for k in keys(experiment, campaign, configurations) if k not in done]
     t0 = time.perf_counter()
@@ -215,7 +218,7 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
               f"{f', {len(done)} already done' if done else ''}]", file=sys.stderr, flush=True)
 
         def emit(row: dict) -> None:
-            log.append(row)
+            log.append({**row, "commit": commit})  # which code ran it: a campaign may span sittings and commits
             progress.step()
 
         cpu0 = engine.cpu_times(client)
@@ -228,9 +231,37 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
             "workers": n_workers, "cluster": args.address or "LocalCluster", "wall_s": round(wall, 1),
             "workers_cpu_s": round(cpu, 1), "client_cpu_s": round(time.process_time(), 1),
             "wall": duration(wall), "episodes_per_hour": round(len(todo) / wall * 3600) if wall > 0 else None,
-            "commit": commit, "versions": {**versions(), "dask": dask.__version__,
-                                               "distributed": distributed.__version__}}
+            "commit": commit, "started": started, "versions": {**versions(), "dask": dask.__version__,
+                                                                   "distributed": distributed.__version__}}
+    # a resumed campaign keeps the record of its earlier sittings: each one's command, commit and rate
+    meta["sittings"] = _sittings(campaign.out / "run.json") if done else []
+    meta["sittings"].append({k: meta[k] for k in SITTING})
     (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
+
+
+#: what run.json keeps of each sitting of a campaign
+SITTING = ("command", "started", "commit", "episodes", "workers", "cluster", "wall", "wall_s", "episodes_per_hour")
+
+
+def _sittings(path: Path) -> list[dict]:
+    """The earlier sittings recorded in a campaign's run.json (one, from its top-level fields, when
+    it was written before sittings were kept; none when there is no readable run.json)."""
+    try:
+        meta = json.loads(path.read_text())
+    except (OSError, json.JSONDecodeError):
+        return []
+    return meta.get("sittings") or [{k: meta.get(k) for k in SITTING}]
+
+
+def provenance(rows: list[dict]) -> str:
+    """table.md's last line: the commits its rows were run on (a campaign resumed on changed code
+    mixes versions of the executive, and its table must say so)."""
+    counts: dict[str, int] = {}
+    for row in rows:
+        commit = row.get("commit") or "unrecorded"
+        counts[commit] = counts.get(commit, 0) + 1
+    listed = ", ".join(f"{c[:12]}{c[40:]} ({n} episodes)" for c, n in counts.items())
+    return f"\nEpisodes run on: {listed}.\n"
 
 
 def _span(seeds: list[int]) -> str | list[int]:
