@@ -141,10 +141,19 @@ def seeds_of(text: str) -> list[int]:
     raise InputError("--seeds", f"{text!r} is not a count (50) or a range (1000-1199)")
 
 
+#: seeds per block of a campaign's order (see :func:`keys`)
+SEED_BLOCK = 10
+
+
 def keys(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]]) -> list[Key]:
-    """Every episode of the campaign, grouped by configuration (a worker's sessions stay warm)."""
+    """Every episode of the campaign, in blocks of :data:`SEED_BLOCK` seeds: within a block grouped
+    by configuration, so a worker's sessions stay warm for ten episodes; block after block, so a
+    campaign stopped part-way (a pybullet one spans sittings) has every cell at nearly the same
+    count of seeds, not some cells full and others empty."""
+    blocks = [campaign.seeds[i:i + SEED_BLOCK] for i in range(0, len(campaign.seeds), SEED_BLOCK)]
     return [Key(experiment.name, campaign.world, task, strategy, viewpoints, seed)
-            for task in campaign.tasks for strategy, viewpoints in configurations for seed in campaign.seeds]
+            for block in blocks for task in campaign.tasks for strategy, viewpoints in configurations
+            for seed in block]
 
 
 def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[[Key], None] | None = None) -> int:
