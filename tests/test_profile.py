@@ -92,6 +92,10 @@ GOOD_ON = """predicates:
     ("domain: household\npredicates: {}", "domain", "defines 'ferry'"),
     (GOOD_ON + "  at-ferry/1:\n    source: vlm\n    paraphrases: ['Is the {X} on the ferry?', 'a {X}?', "
                "'b {X}?', 'c {X}?', 'd {X}?']\n", "predicates.on/1.paraphrases", "also a paraphrase of at-ferry/1"),
+    ("actions: {sail: 'sail to the {Y}'}", "actions.sail", "an action's name and arity"),
+    ("actions: {sail/1: 'sail to the {X}'}", "actions.sail/1", "takes 2 parameters: write sail/2"),
+    ("actions: {fly/2: 'fly to the {Y}'}", "actions.fly/2", "no action 'fly'"),
+    ("actions: {board/2: 'put the {X} on the {Z}'}", "actions.board/2", "names {Z}, but the predicate takes 2"),
 ])
 def test_a_bad_profile_is_one_input_error_naming_file_and_field(tmp_path, text, field, words):
     path = write(tmp_path, text)
@@ -132,6 +136,19 @@ def test_a_task_files_profile_overrides_the_one_beside_the_domain(tmp_path):
     # without it, the ferry's own profile beside the domain file
     task.write_text(f"name: ferry\ndomain: {FERRY[0]}\nproblem: {FERRY[1]}\n")
     assert taskfile.load(task).perception_file == DOMAINS / "ferry-domain.perception.yaml"
+
+
+def test_the_action_level_questions_say_each_action_as_the_profile_does(tmp_path):
+    """The household's profile phrases every action of its domain; an action a profile leaves out
+    is said with every argument named, never cut to the first two."""
+    household = household_profile()
+    assert household.action_phrase("grasp", ("cup", "coffee_table", "kitchen")) == "grasp the cup from the coffee table"
+    assert household.action_phrase("fill", ("cup", "kitchen_sink")) == "fill the cup at the kitchen sink"
+    assert {name for name, _ in household.actions} == set(taskfile.load(TREES / "collect_cup.yaml").planning.knowledge.schemas)
+    path = write(tmp_path, "actions: {board/2: 'drive the {X} onto the ferry at the {Y}'}")
+    ferry_ = profiles.resolve(ferry().knowledge, path)
+    assert ferry_.action_phrase("board", ("c1", "l0")) == "drive the c1 onto the ferry at the l0"
+    assert ferry_.action_phrase("sail", ("l0", "l1")) == "sail the l0 and the l1"
 
 
 # -- arity-keyed paraphrases -----------------------------------------------------------------------

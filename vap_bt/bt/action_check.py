@@ -58,6 +58,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception import prompts
 from vap_bt.perception.judgement import Phase
+from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.verification import Round, stand_of, yes_no
 from vap_bt.perception.vlm import Query
 from vap_bt.robot.frame import Frame
@@ -67,12 +68,14 @@ PHASES: dict[Phase, tuple[str, str]] = {"pre": ("affordance_vqa", "action_infeas
                                         "eff": ("success_vqa", "action_failed")}
 
 
-def action_query(phase: Phase, action: GroundAction, implied: tuple[Atom, ...]) -> Query:
-    """The action-level question of ``phase`` about ``action``, implying ``implied``."""
+def action_query(phase: Phase, action: GroundAction, implied: tuple[Atom, ...],
+                 profile: PerceptionProfile | None = None) -> Query:
+    """The action-level question of ``phase`` about ``action``, implying ``implied``; the action said
+    as the domain's perception profile says it."""
     template = getattr(prompts.book(), PHASES[phase][0])
     objects = tuple(dict.fromkeys(o for a in implied for o in a.args))
-    return Query(template.format(action=prompts.action_phrase(action.name, action.args)), purpose="action",
-                 about=implied, objects=objects)
+    phrase = (profile.action_phrase if profile is not None else prompts.action_phrase)(action.name, action.args)
+    return Query(template.format(action=phrase), purpose="action", about=implied, objects=objects)
 
 
 class VerifyAction(py_trees.behaviour.Behaviour):
@@ -83,7 +86,7 @@ class VerifyAction(py_trees.behaviour.Behaviour):
 
     def __init__(self, ctx: ExecutionContext, phase: Phase, action: GroundAction, step: int,
                  implied: tuple[Atom, ...]) -> None:
-        self.query = action_query(phase, action, implied)
+        self.query = action_query(phase, action, implied, ctx.profile)
         super().__init__(name=self.query.prompt)
         self.ctx, self.phase, self.action, self.step, self.implied = ctx, phase, action, step, implied
         self.board = ctx.board.client(type(self).__name__, self.KEYS)

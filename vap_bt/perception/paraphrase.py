@@ -51,8 +51,10 @@ def fields_of(template: str) -> list[tuple[str, str | None]]:
     return [(lit, name) for lit, name, _, _ in string.Formatter().parse(template)]
 
 
-def template_problem(template: str, arity: int) -> str | None:
-    """Why ``template`` is not a usable paraphrase of a predicate of ``arity`` arguments (None: it is)."""
+def template_problem(template: str, arity: int, phrase: bool = False) -> str | None:
+    """Why ``template`` is not a usable paraphrase of a predicate of ``arity`` arguments (None: it is);
+    ``phrase=True`` checks an action's phrase instead, which goes inside a question and may leave
+    arguments out (it need not name the room the robot is in)."""
     if not isinstance(template, str) or not template.strip():
         return "an empty paraphrase"
     try:
@@ -72,9 +74,9 @@ def template_problem(template: str, arity: int) -> str | None:
             return f"{template!r}: write {{{name}}} plainly, without a format spec or conversion"
         used.add(name)
     missing = [p for p in wanted if p not in used]
-    if missing:
+    if missing and not phrase:
         return f"{template!r} leaves out {', '.join(f'{{{p}}}' for p in missing)}: every argument must be named"
-    if not template.rstrip().endswith("?"):
+    if not phrase and not template.rstrip().endswith("?"):
         return f"{template!r} is not a question (it must end with '?')"
     return None
 

@@ -43,6 +43,13 @@ carried about and which is a room::
 A role the file leaves out gets the household's name, where the domain has that predicate with
 the role's arity (else None: off).
 
+A profile also says how the action-level baselines (SuccessVQA, AffordanceVQA) say each action
+(``actions:``, keyed ``name/arity``, the same placeholders; an action left out is said with every
+argument named)::
+
+    actions:
+      grasp/3: "grasp the {X} from the {Y}"
+
 A file is checked in two steps, each fault one :class:`~vap_bt.errors.InputError` naming the
 file and the field (exit code 2): its shape by pydantic and the paraphrases' placeholders
 (:func:`load_spec`), then against the domain — the predicate exists with that arity, no two
@@ -64,8 +71,8 @@ from vap_bt.domain.knowledge import DomainKnowledge
 from vap_bt.domain.roles import ARITY, HOUSEHOLD, Roles
 from vap_bt.errors import InputError
 from vap_bt.perception.paraphrase import (
-    TEMPLATE_COUNT, paraphrases_problem, placeholder, template_paraphrases, usable)
-from vap_bt.perception.prompts import spoken
+    TEMPLATE_COUNT, paraphrases_problem, placeholder, template_paraphrases, template_problem, usable)
+from vap_bt.perception.prompts import action_phrase, spoken
 from vap_bt.perception.vlm import Paraphraser
 from vap_bt.yaml_file import read_model
 
@@ -76,6 +83,7 @@ SUFFIX = ".perception.yaml"
 MIN_PARAPHRASES = TEMPLATE_COUNT
 _KEY = re.compile(r"^([A-Za-z][A-Za-z0-9_\-]*)/(\d+)$")
 _KEY_HINT = "keys are a predicate's name and arity, like on/2 or hand_empty/0"
+_ACTION_KEY_HINT = "keys are an action's name and arity, like grasp/3 or open/1"
 _DOMAIN_NAME = re.compile(r"\(\s*define\s*\(\s*domain\s+([^\s()]+)", re.I)
 
 
@@ -117,6 +125,9 @@ class ProfileSpec(BaseModel):
     domain: str | None = Field(None, description="the PDDL domain's name; checked against the domain file when given")
     predicates: dict[str, PredicateSpec] = Field(default_factory=dict)
     roles: RolesSpec = Field(default_factory=RolesSpec, description="which predicate plays each role (vap_bt.domain.roles)")
+    actions: dict[str, str] = Field(default_factory=dict, description=(
+        "how an action-level question (SuccessVQA, AffordanceVQA) says each action: name/arity -> a phrase, "
+        "{X} its first argument, {Y} its second, ...; an action left out is said by prompts.action_phrase"))
 
 
 def load_spec(path: str | Path) -> ProfileSpec:
@@ -149,6 +160,13 @@ def load_spec(path: str | Path) -> ProfileSpec:
         if len(entry.paraphrases) < MIN_PARAPHRASES:
             raise InputError(where, f"{len(entry.paraphrases)} given; give at least {MIN_PARAPHRASES} (the vote "
                                     f"asks up to N = {MIN_PARAPHRASES}), or none to have them generated")
+    for key, phrase in spec.actions.items():
+        m = _KEY.match(key)
+        if m is None:
+            raise InputError(f"{path}: field actions.{key}", _ACTION_KEY_HINT)
+        why = template_problem(phrase, int(m.group(2)), phrase=True)
+        if why:
+            raise InputError(f"{path}: field actions.{key}", why)
     return spec
 
 
@@ -224,6 +242,16 @@ class PerceptionProfile:
     file: Path | None = None
     #: which predicate plays each role the executive acts on (default: the household's names)
     roles: Roles = field(default_factory=Roles)
+    #: how action-level questions say an action, by (name, arity): a ``str.format`` phrase
+    actions: Mapping[tuple[str, int], str] = field(default_factory=dict)
+
+    def action_phrase(self, name: str, args: Sequence[str]) -> str:
+        """``grasp(cup, coffee_table, kitchen)`` as the profile says it ("grasp the cup from the coffee
+        table"), or plainly when it has no phrase for the action."""
+        template = self.actions.get((name, len(args)))
+        if template is None:
+            return action_phrase(name, tuple(args))
+        return template.format(**{placeholder(i): spoken(a) for i, a in enumerate(args)})
 
     def get(self, name: str, arity: int) -> PredicatePerception | None:
         """How ``name/arity`` is perceived; None for a predicate the domain does not have."""
@@ -290,7 +318,8 @@ def resolve(knowledge: DomainKnowledge, path: str | Path | None = None,
         taken |= set(p.paraphrases)
     _check_distinct(out.values(), where)
     roles = _roles(spec.roles, knowledge, where)
-    return PerceptionProfile(out, Path(path) if path is not None else None, roles)
+    actions = {(key.rsplit("/", 1)[0], int(key.rsplit("/", 1)[1])): phrase for key, phrase in spec.actions.items()}
+    return PerceptionProfile(out, Path(path) if path is not None else None, roles, actions)
 
 
 def _perception(name: str, types: tuple[str, ...], entry: PredicateSpec,
@@ -340,6 +369,16 @@ def _check_domain(spec: ProfileSpec, knowledge: DomainKnowledge, where: str) -> 
             raise InputError(f"{where}: field predicates.{key}",
                              f"the domain's {name} takes {len(sig)} argument{'s' if len(sig) != 1 else ''}: "
                              f"write {name}/{len(sig)}")
+    for key in spec.actions:
+        name, arity = key.rsplit("/", 1)
+        schema = knowledge.schemas.get(name)
+        if schema is None:
+            raise InputError(f"{where}: field actions.{key}",
+                             f"the domain has no action {name!r} (it has {', '.join(sorted(knowledge.schemas))})")
+        if len(schema.parameters) != int(arity):
+            n = len(schema.parameters)
+            raise InputError(f"{where}: field actions.{key}",
+                             f"the domain's {name} takes {n} parameter{'s' if n != 1 else ''}: write {name}/{n}")
 
 
 def _roles(spec: RolesSpec, knowledge: DomainKnowledge, where: str) -> Roles:
