@@ -52,6 +52,21 @@ def test_a_cup_a_person_moved_after_the_robot_saw_it_is_a_world_change_by_both_r
     assert r["success"] and r["goal_satisfied"], r["reason"]
 
 
+def test_a_cup_a_person_took_away_from_under_the_robot_s_eyes_is_a_world_change_by_both_readings():
+    s = session(TREES / "collect_cup.yaml", injection=False, **EXACT)
+    # the robot drives to the cup the survey saw on the coffee table; then a person takes it to
+    # the kitchen's floor: the grasp's check cannot make the cup out (an unseen situation), the
+    # look at the coffee table does not show it, and the search finds it in the kitchen
+    s.world.disturbances = [Disturbance(MOVED, 0, "cup", "floor_kitchen")]
+    r = s.episode(0)
+    (moved,) = [i for i, e in enumerate(r["injected"]) if e["kind"] == MOVED]
+    (first, *_) = [x for x in r["situations"] if x["truth_events"] == [moved]]
+    assert first["kind"] == "unseen" and first["predicate"] == "inview(cup)", first
+    assert (first["diagnosis"], first["diagnosis_truth"]) == ("world_change", "world_change"), first
+    assert "on(cup, coffee_table)" in first["diagnosis_basis"] and "on(cup, floor_kitchen)" in first["diagnosis_basis"]
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+
+
 def test_a_wrong_prior_the_survey_could_not_see_past_is_a_perception_error_by_both_readings(tmp_path):
     # the user says the cup is on the counter; it is in the closed cabinet, where no sweep sees it
     text = (TREES / "variants" / "boil_water_cup_on_counter.yaml").read_text()
