@@ -52,6 +52,21 @@ def test_a_cup_a_person_moved_after_the_robot_saw_it_is_a_world_change_by_both_r
     assert r["success"] and r["goal_satisfied"], r["reason"]
 
 
+def test_a_cup_a_person_took_away_from_under_the_robot_s_eyes_is_a_world_change_by_both_readings():
+    s = session(TREES / "collect_cup.yaml", injection=False, **EXACT)
+    # the robot drives to the cup the survey saw on the coffee table; then a person takes it to
+    # the kitchen's floor: the grasp's check cannot make the cup out (an unseen situation), the
+    # look at the coffee table does not show it, and the search finds it in the kitchen
+    s.world.disturbances = [Disturbance(MOVED, 0, "cup", "floor_kitchen")]
+    r = s.episode(0)
+    (moved,) = [i for i, e in enumerate(r["injected"]) if e["kind"] == MOVED]
+    (first, *_) = [x for x in r["situations"] if x["truth_events"] == [moved]]
+    assert first["kind"] == "unseen" and first["predicate"] == "inview(cup)", first
+    assert (first["diagnosis"], first["diagnosis_truth"]) == ("world_change", "world_change"), first
+    assert "on(cup, coffee_table)" in first["diagnosis_basis"] and "on(cup, floor_kitchen)" in first["diagnosis_basis"]
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+
+
 def test_a_wrong_prior_the_survey_could_not_see_past_is_a_perception_error_by_both_readings(tmp_path):
     # the user says the cup is on the counter; it is in the closed cabinet, where no sweep sees it
     text = (TREES / "variants" / "boil_water_cup_on_counter.yaml").read_text()
@@ -152,7 +167,7 @@ def test_a_world_change_the_recovery_re_located_unchanged_is_revised_to_a_percep
     graph = SceneGraph.of_facts(where | {Atom("inview", ("cup",))})
     s = Situation("effect", find, 0, Atom("inview", ("cup",)), True, False, diagnosis="world_change")
     before = placed(s, graph)
-    assert before == {"cup": frozenset(where)}
+    assert before.where == {"cup": frozenset(where)} and before.seen == {}  # no sightings given
     review(s, before, set(), graph)  # not re-located: the diagnosis stands
     assert s.diagnosis == "world_change"
     graph.relocate("cup", {Atom("on", ("cup", "floor_living_room")), Atom("in_room", ("cup", "living_room"))})
@@ -161,6 +176,64 @@ def test_a_world_change_the_recovery_re_located_unchanged_is_revised_to_a_percep
     graph.relocate("cup", where)
     review(s, before, {"cup"}, graph)  # found where belief had it: the view erred
     assert s.diagnosis == "perception_error" and s.diagnosis_basis.startswith("re-located where belief had it")
+
+
+def test_a_thing_seen_at_a_missed_there_and_found_at_b_is_a_world_change():
+    # the survey saw the cup on the coffee table; the grasp's check could not make it out; the
+    # recovery's look at the coffee table did not show it, and the search found it on the floor
+    k = load(TREES / "collect_cup.yaml").planning.knowledge
+    grasp = k.ground("grasp", ("cup", "coffee_table", "living_room"))
+    find = k.ground("find", ("floor_living_room", "cup", "living_room"))
+    where = {Atom("on", ("cup", "coffee_table")), Atom("in_room", ("cup", "living_room"))}
+    floor = {Atom("on", ("cup", "floor_living_room")), Atom("in_room", ("cup", "living_room"))}
+
+    def case(seen_by_survey: bool, acted: bool = False):
+        graph, sightings = SceneGraph.of_facts(where | {Atom("inview", ("cup",))}), Sightings()
+        if seen_by_survey:
+            sightings.saw(where, True, "survey")
+        sightings.executed(find)  # naming the cup does not move it
+        if acted:
+            sightings.executed(grasp)  # a grasp of it could have
+        s = Situation("unseen", grasp, 1, Atom("inview", ("cup",)), True, None)
+        s.diagnosis, s.diagnosis_basis = diagnose(s, sightings, graph)
+        assert s.diagnosis == "perception_error"  # nothing seen differed from belief, yet
+        return s, placed(s, graph, sightings), graph
+
+    s, before, graph = case(seen_by_survey=True)
+    assert before.seen == {"cup": "survey"}
+    graph.relocate("cup", floor)
+    review(s, before, {"cup"}, graph, missed=set())  # the look showed it (a support mis-read): no sign it moved
+    assert s.diagnosis == "perception_error"
+    review(s, before, {"cup"}, graph, missed={"cup"})  # not at A when looked at, found at B
+    assert s.diagnosis == "world_change" and s.diagnosis_basis.startswith("the survey showed"), s.diagnosis_basis
+    s, before, graph = case(seen_by_survey=True)
+    review(s, before, {"cup"}, graph, missed={"cup"})  # missed, then found where it was: the look erred
+    assert s.diagnosis == "perception_error"
+    for s, before, graph in (case(seen_by_survey=False), case(seen_by_survey=True, acted=True)):
+        assert before.seen == {}  # belief's place rested on no view since the robot acted on it
+        graph.relocate("cup", floor)
+        review(s, before, {"cup"}, graph, missed={"cup"})  # a wrong belief, as well as a move
+        assert s.diagnosis == "perception_error"
+
+
+def test_an_effect_a_later_sense_shows_done_before_any_action_is_a_perception_error():
+    k = load(TREES / "collect_cup.yaml").planning.knowledge
+    grasp = k.ground("grasp", ("cup", "coffee_table", "living_room"))
+    navigate = k.ground("navigate", ("living_room", "kitchen", "door_lk", "cup"))
+    holding = Atom("holding", ("cup",))
+    graph, sightings = SceneGraph.of_facts({Atom("on", ("cup", "coffee_table"))}), Sightings()
+    kept, overturned = (Situation("effect", grasp, 1, holding, True, False) for _ in range(2))
+    for s in (kept, overturned):
+        s.diagnosis, s.diagnosis_basis = diagnose(s, sightings, graph)
+        assert s.diagnosis == "execution_failure"
+    sightings.watch(kept)
+    sightings.executed(navigate)  # any move could lose what the hand holds: a later feel says nothing
+    sightings.saw((holding,), True, "gripper")
+    assert kept.diagnosis == "execution_failure"
+    sightings.watch(overturned)
+    sightings.saw((holding,), False, "check")  # the situation's own view: it stands
+    sightings.saw((holding,), True, "gripper")  # the fingers hold it: the grasp worked, the look erred
+    assert overturned.diagnosis == "perception_error" and "gripper" in overturned.diagnosis_basis
 
 
 def test_the_truth_takes_each_event_once_in_the_world_s_order():

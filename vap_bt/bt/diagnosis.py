@@ -12,7 +12,7 @@ told which it was — the runner scores its diagnosis against the world's record
    gone: :class:`~vap_bt.bt.feel_hand.FeelHand`) → ``execution_failure``;
 3. what the camera could not make out (kind ``unseen``) → ``perception_error``: nothing was
    observed to differ from belief, perception only fell short (the paper's error "correctable
-   through active perception");
+   through active perception") — until the recovery's looks say otherwise (below);
 4. a thing not in sight where the robot stood to see it (the in-view role, the household's
    ``inview``, of any phase: the effect of a ``find`` whose skill reported the robot there, or a
    precondition) is about where belief put the thing, not about the move: it is read as rule 6
@@ -32,23 +32,36 @@ The action-level baselines' situations (:mod:`vap_bt.bt.action_check`) name no a
 "no" says the action's outcome failed → ``execution_failure``; AffordanceVQA's "no" says some
 precondition does not hold → rule 6 over the action's positive preconditions together.
 
-A world change is reviewed by the looks that follow it: when a later look shows the atom with
-the value belief had before the situation, before any action could change it
-(:meth:`Sightings.watch`), or when the recovery's fresh frames re-locate every thing whose place
-the situation was about (its in-view or location atom) exactly where belief had it before
-(:func:`review`), nothing changed — the view that raised the situation erred → ``perception_error``.
+A diagnosis is reviewed by the looks that follow it, before any action could change what it is
+about (:meth:`Sightings.watch`, :func:`review`):
+
+* a world change, when a later look shows the atom with the value belief had before the
+  situation, or when the recovery's fresh frames re-locate every thing whose place the situation
+  was about (its in-view or location atom) exactly where belief had it before: nothing changed —
+  the view that raised the situation erred → ``perception_error``;
+* an effect that did not happen, when a later sense shows the effect after all (the gripper feels
+  the thing the look judged not taken, a re-location finds the thing where the action was to put
+  it): the action did it — the view that raised the situation erred → ``perception_error``;
+* a perception error about where a thing is (a thing not made out, or not in sight), when belief's
+  place for it had been shown by a sense since the robot last acted on it, the recovery's look
+  aimed at that place did not show it, and its search found it somewhere else: the thing was seen
+  at A, is not at A and is at B, and the robot did nothing to it in between — it was moved →
+  ``world_change``. A look that did show the thing (a support mis-read, a thing right beside where
+  belief had it) or a search that found it where it was is no sign that it moved.
 
 The rule cannot always tell a view that erred from a world that changed: a wrong "no" about an
 atom a view confirmed earlier, which no later look settles (a door's leaf, a lemon's state), reads
-as a world change; a thing a person took away, looked for where belief put it, often reads as
-"could not make it out" (rule 3); and a person moving a thing right after the robot put it down
-reads as an execution failure. That is what the report's ``diagnosis_truth`` beside each
-diagnosis measures (``tools/bench/diagnosis.py``).
+as a world change; a thing a person took away that belief placed on no view of its own (the task
+file's prior, an assumed effect) reads as a perception error, as a wrong prior would; a thing
+whose support a view mis-read (read on the floor beside the table it stands on) is looked for on
+the floor, not seen there and found on the table: it reads as moved; and a person moving a thing
+or shutting a leaf right after the robot put it there reads as an execution failure. That is
+what the report's ``diagnosis_truth`` beside each diagnosis measures (``tools/bench/diagnosis.py``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Iterable, get_args
 
 from vap_bt.bt.record import Diagnosis, Situation, may_change
@@ -88,8 +101,9 @@ class Sightings:
         self._watched: list[Situation] = []
 
     def saw(self, atoms: Iterable[Atom], value: bool, sense: str) -> None:
-        """``sense`` showed ``atoms`` with ``value`` just now; a watched world change whose atom it
-        shows as belief had it before is revised to a perception error."""
+        """``sense`` showed ``atoms`` with ``value`` just now; a watched situation whose atom it
+        shows as expected (a world change: as belief had it before; an effect: done after all) is
+        revised to a perception error."""
         for atom in atoms:
             self._seen[atom] = Sighting(value, sense)
             for s in [s for s in self._watched if s.atom == atom and s.expected == value]:
@@ -99,8 +113,11 @@ class Sightings:
                     "the view that raised it erred")
 
     def watch(self, s: Situation) -> None:
-        """Keep ``s``, diagnosed a world change, for a later look to overturn (:meth:`saw`)."""
-        if s.diagnosis == "world_change" and s.atom is not None:
+        """Keep ``s`` for a later look to overturn (:meth:`saw`) if it is a world change, or an
+        effect read as not done (the later look says the view erred, not the world or the action)."""
+        if s.atom is None or s.expected is None:
+            return
+        if s.diagnosis == "world_change" or s.diagnosis == "execution_failure" and s.kind == "effect":
             self._watched.append(s)
 
     def get(self, atom: Atom) -> Sighting | None:
@@ -139,25 +156,59 @@ def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Dia
     return _grounded([s.atom] if s.expected else [], sightings, "", absent=None if s.expected else s.atom)
 
 
-def placed(s: Situation, graph: SceneGraph) -> dict[str, frozenset[Atom]]:
+@dataclass(frozen=True)
+class Placed:
+    """Where belief put each thing a situation is about when it was raised (``where``), and which
+    of those places a sense had shown since the robot last acted on them, with the senses that
+    showed it (``seen``): what :func:`review` compares the recovery's looks with."""
+
+    where: dict[str, frozenset[Atom]]
+    seen: dict[str, str] = field(default_factory=dict)
+
+
+def placed(s: Situation, graph: SceneGraph, sightings: Sightings | None = None) -> Placed:
     """Where belief puts each thing whose place situation ``s`` is about (its in-view or location
-    atom's first argument), for :func:`review` after the recovery."""
+    atom's first argument), and whether ``sightings`` showed it there since the robot last acted
+    on it, for :func:`review` after the recovery."""
     roles = graph.roles
     if s.atom is None or not s.atom.args or s.atom.predicate not in roles.location | {roles.in_view}:
-        return {}
-    return {s.atom.args[0]: frozenset(graph.location(s.atom.args[0]))}
+        return Placed({})
+    thing = s.atom.args[0]
+    where = frozenset(graph.location(thing))
+    shown = [sightings.get(a) for a in sorted(where)] if sightings is not None else [None]
+    if not where or not all(seen is not None and seen.value for seen in shown):
+        return Placed({thing: where})
+    return Placed({thing: where}, {thing: " and ".join(sorted({seen.sense for seen in shown}))})
 
 
-def review(s: Situation, before: dict[str, frozenset[Atom]], seen_again: set[str], graph: SceneGraph) -> None:
-    """Revise a ``world_change`` diagnosis of ``s`` once it is handled: when the recovery re-located
-    every thing of ``before`` (``seen_again``) exactly where belief had it before the situation
-    (``before``, from :func:`placed`), nothing moved and the view that raised it erred."""
-    if s.diagnosis != "world_change" or not before or not set(before) <= seen_again:
+def review(s: Situation, before: Placed, seen_again: set[str], graph: SceneGraph,
+           missed: set[str] = frozenset()) -> None:
+    """Revise the diagnosis of ``s`` once it is handled, from where the recovery's looks found the
+    things of ``before`` (from :func:`placed`): ``seen_again``, those re-located from a fresh
+    frame; ``missed``, those a look aimed at belief's place for them did not show.
+
+    A ``world_change`` whose things were all re-located exactly where belief had them: nothing
+    moved, the view that raised it erred → ``perception_error``. A ``perception_error`` whose
+    things were all seen at their place since the robot last acted on them, missed there and
+    re-located elsewhere: they were moved → ``world_change``. (That the look at belief's place
+    *showed* the thing is not taken to say it had not moved: a look shows more than the spot it
+    is aimed at, and a thing a person put down nearby is in its picture too.)"""
+    things = set(before.where)
+    if not things or not things <= seen_again:
         return
-    if all(before[o] and frozenset(graph.location(o)) == where for o, where in before.items()):
-        where = ", ".join(str(a) for o in sorted(before) for a in sorted(before[o]))
+    now = {o: frozenset(graph.location(o)) for o in things}
+    if s.diagnosis == "world_change" and all(before.where[o] and now[o] == before.where[o] for o in things):
+        where = ", ".join(str(a) for o in sorted(things) for a in sorted(before.where[o]))
         s.diagnosis, s.diagnosis_basis = "perception_error", (f"re-located where belief had it ({where}): "
                                                               "nothing moved, the view that raised it erred")
+    elif s.diagnosis == "perception_error" and things <= set(before.seen) & missed \
+            and all(now[o] != before.where[o] for o in things):
+        was = ", ".join(str(a) for o in sorted(things) for a in sorted(before.where[o]))
+        found = ", ".join(str(a) for o in sorted(things) for a in sorted(now[o]))
+        senses = " and ".join(sorted(set(before.seen.values())))
+        s.diagnosis, s.diagnosis_basis = "world_change", (
+            f"the {senses} showed {was} since the robot last acted on it, a look there did not, "
+            f"and it was found at {found}: moved")
 
 
 def _grounded(atoms: list[Atom], sightings: Sightings, why: str, absent: Atom | None = None

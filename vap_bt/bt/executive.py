@@ -225,6 +225,7 @@ class Executive:
         #: what the senses last showed of each atom, for a situation's diagnosis (vap_bt.bt.diagnosis)
         self.sightings = Sightings(self.roles.hand)
         self._seen_again: set[str] = set()  # the items the recovery under way re-located from a fresh frame
+        self._missed: set[str] = set()  # the items its look aimed at belief's place for them did not show
         #: the episode once it has a belief to plan from (before that, :meth:`so_far`)
         self.outcome: EpisodeOutcome | None = None
         self.phase = PHASES[0]  # which of PHASES the episode is in
@@ -333,7 +334,7 @@ class Executive:
                 self.phase = "replanning"
                 out.situations.append(situation)
                 self.on_situation(situation)
-                before = placed(situation, graph)  # for the diagnosis' review once it is handled
+                before = placed(situation, graph, self.sightings)  # for the diagnosis' review once it is handled
                 if situation.kind == "execution" and situation.action is not None:
                     self._rejoin(situation.action.name)  # raises TransportError: nobody drives it
                 if situation.kind == "unseen" and self.s.unseen == "stop":
@@ -363,7 +364,7 @@ class Executive:
                     board.doubted |= {lit.atom for lit in situation.action.preconditions
                                       if lit.positive and lit.atom.predicate != self.roles.in_view}
                 recovered, survey = self._recover(graph, situation, times, out, deadline)
-                review(situation, before, self._seen_again, graph)
+                review(situation, before, self._seen_again, graph, self._missed)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
                 if survey is not None:
@@ -624,7 +625,7 @@ class Executive:
         belief (``times``), a look round before the same plan. Returns whether it finished before
         the time budget ran out, and the re-survey it took, if any."""
         executor, halt = self.executor, self._halt
-        self._seen_again = set()
+        self._seen_again, self._missed = set(), set()
         steps = [Step("correct belief", lambda: self._correct_belief(graph, s), executor, halt)]
         if s.kind == "unseen" and s.atom is not None:
             steps.append(Step(f"look at {', '.join(s.atom.args)}", lambda: self._look_at(graph, s.atom.args),
@@ -736,6 +737,8 @@ class Executive:
         felt = self.body.state().gripper_holding
         if felt and not any(self.roles.is_held(a) for a in graph.facts):
             self._held_after_all(graph, s)
+            # what belief now has in the hand, the fingers hold: a look that judged it not taken erred
+            self.sightings.saw([a for a in graph.facts if self.roles.is_held(a)], True, "gripper")
             return []
         if felt is not False:
             return []
@@ -788,6 +791,8 @@ class Executive:
                 self._relocated(graph, o, observed)
             elif self._at_miss(o) or self._expected_in_sight(graph, o):
                 lost.append(o)  # the camera turned toward where belief puts it, and it is not there
+                if o not in seen:  # not seen at all (not only where a check found it missing)
+                    self._missed.add(o)
         return lost
 
     def _relocated(self, graph: SceneGraph, o: str, observed: set[Atom]) -> None:
