@@ -110,6 +110,11 @@ class Body:
         #: of the map from the last stance may no longer hold (the kit's scene model decides)
         self.base_moved: Callable[[], None] = lambda: None
         self._checker: CollisionChecker | None = None
+        #: path_clear's answers for the scene and held item as they are now, by the two joint
+        #: vectors: a way is checked when an arm pose is chosen (:meth:`reachable`) and again when
+        #: the arm is sent along it (:meth:`through`), and the collision checks were a tenth of a
+        #: pybullet episode's CPU, half of them asked before. Emptied with the checker
+        self._clear: dict[bytes, bool] = {}
         self._scene: SceneBoxes = SceneBoxes.empty()
         self._held: Attached | None = None
 
@@ -158,7 +163,7 @@ class Body:
 
     def set_scene(self, boxes: SceneBoxes) -> None:
         """The furniture and walls (map frame) that IK solutions must keep clear of."""
-        self._scene, self._checker = boxes, None
+        self._scene, self._checker, self._clear = boxes, None, {}
 
     def hold(self, pose: np.ndarray | None, size=None) -> None:
         """The item in the hand as a box (its centre's ``pose`` in the tcp frame, its ``size``), or
@@ -168,7 +173,7 @@ class Body:
             return
         # a new checker for any other item (an Attached holds arrays: no == between two of them)
         self._held = None if pose is None else Attached("tcp", np.asarray(pose, float), np.asarray(size, float))
-        self._checker = None
+        self._checker, self._clear = None, {}
 
     def _collision(self, base_pose) -> CollisionChecker | None:
         if not len(self._scene):
@@ -224,9 +229,16 @@ class Body:
         """Whether the arm's straight joint-space way from ``qa`` to ``qb`` (body joints, the base
         where it is) keeps clear of the scene. An arm that starts touching something may leave
         it: only the way after its first free sample counts."""
-        checker = self._collision(qa[:3])
-        if checker is None:
+        if not len(self._scene):
             return True
+        key = np.concatenate((qa, qb)).astype(float).tobytes()
+        clear = self._clear.get(key)
+        if clear is None:  # the answer is the checker's alone: the same for the same two poses
+            clear = self._clear[key] = self._check_way(self._collision(qa[:3]), qa, qb)
+        return clear
+
+    @staticmethod
+    def _check_way(checker: CollisionChecker, qa: np.ndarray, qb: np.ndarray) -> bool:
         n = max(2, int(np.max(np.abs(qb[3:] - qa[3:])) / PATH_STEP) + 1)
         leaving = True
         for s in np.linspace(0.0, 1.0, n + 1)[1:]:

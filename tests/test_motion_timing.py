@@ -59,3 +59,19 @@ def test_a_move_too_short_for_toppra_still_ends_where_asked(length):
     traj = time_path(np.array([a, b]), LIMITS.scaled(0.5), dt=0.01)
     assert np.allclose(traj.q[0], a, atol=1e-12) and np.allclose(traj.q[-1], b, atol=1e-12)
     assert limit_usage(traj, LIMITS).within(1e-9)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_samples_are_toppras_own_bit_for_bit(seed):
+    # time_path probes toppra's trajectory a whole array at a time (timing._Samples) instead of
+    # through toppra's per-sample loop: every number must be the one toppra's call gives, or an
+    # episode's motions (and everything after them) would change
+    from vap_bt.motion.timing import _Samples, _parametrize, _sample_times
+
+    rng = np.random.default_rng(seed)
+    timed = _parametrize(random_path(rng, n=4 + seed), LIMITS.scaled(0.8))
+    native = float(timed.duration)
+    for tau in (np.linspace(0.0, native, 4000), np.minimum(_sample_times(native, 1.01, 1 / 60) / 1.01, native)):
+        probe = _Samples(timed, tau)
+        for ours, order in ((probe.q(), 0), (probe.qd, 1), (probe.qdd, 2)):
+            assert np.array_equal(ours, timed(tau, order)), f"order {order} differs"

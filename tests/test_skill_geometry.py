@@ -368,3 +368,26 @@ def test_a_view_closer_halves_the_distance_down_to_the_nearest_view():
     near = _moved_to("closer", (2.0, 0.0, 0.0), p)  # 1 m off: a quarter-metre step, to the nearest view
     assert np.isclose(p[0] - near[0], CLOSEST)
     assert _moved_to("closer", (p[0] - CLOSEST - 0.01, 0.0, 0.0), p) is None  # already as close as a view gets
+
+
+def test_a_ways_answer_holds_for_the_scene_it_was_checked_in_only():
+    # Body.path_clear keeps its answers (a way is checked when the pose is chosen and again when
+    # the arm goes): a new scene or another held item must be checked afresh
+    from vap_bt.motion.collision import SceneBoxes
+
+    body = Body(None, None, None)
+    room = SceneModel(SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 3.0)),))).solid_boxes()
+    qa = np.array([2.0, 1.5, 0.0, *body.cfg.arm.home])
+    qb = qa.copy()
+    qb[3] += 1.0  # the shoulder turns the hand round
+    tcp = body.kin_mobile.fk(qb, "tcp")[:3, 3]
+    block = SceneBoxes.from_aabbs(np.concatenate((tcp - 0.05, tcp + 0.05)))
+    blocked = SceneBoxes(np.concatenate((room.poses, block.poses)), np.concatenate((room.sizes, block.sizes)))
+    body.set_scene(room)
+    assert body.path_clear(qa, qb) and body.path_clear(qa, qb)  # asked again: the same answer
+    body.set_scene(blocked)
+    assert not body.path_clear(qa, qb)  # a box where the hand ends up
+    body.hold(np.eye(4), (0.06, 0.06, 0.08))
+    assert not body.path_clear(qa, qb)
+    body.set_scene(room)
+    assert body.path_clear(qa, qb)

@@ -71,10 +71,43 @@ def _step(a: np.ndarray, b: np.ndarray, dt: float) -> Trajectory:
     return Trajectory(np.array([0.0, dt]), q, zero, zero)
 
 
-def _slowdown(timed, tau: np.ndarray, limits: Limits) -> float:
-    """Smallest k >= 1 such that q(t / k), probed at path times ``tau``, is within the limits."""
-    v = np.max(np.abs(timed(tau, 1)) / limits.velocity)
-    a = np.max(np.abs(timed(tau, 2)) / limits.acceleration)
+class _Samples:
+    """A toppra trajectory (``ParametrizeConstAccel``) probed at path times ``tau``: its
+    positions, velocities and accelerations, exactly as ``timed(tau, order)`` gives them.
+
+    toppra evaluates its time parametrization in a Python loop, one sample at a time, and again
+    for every order asked: timing a path probes 4000 samples for velocity and acceleration
+    and then the samples it keeps, and the loop was 9 % of a pybullet episode's CPU. Here the
+    same arithmetic runs on whole arrays, once per ``tau`` for every order, the same operations
+    in the same order, so every number is the one toppra's own call gives (the tests compare
+    them bit for bit). One operation differs in kind: toppra squares a numpy scalar, which is
+    the C library's ``pow``, where ``array ** 2`` multiplies (``x * x``, one rounding away
+    in about one sample of a thousand): ``np.float_power`` calls ``pow`` as the scalar does."""
+
+    def __init__(self, timed, tau: np.ndarray) -> None:
+        self.tau = tau
+        self._path = timed._path
+        # toppra's ParametrizeConstAccel._eval_params, a whole array at a time
+        idx = np.searchsorted(timed._ts, tau, side="right") - 1
+        idx[idx == len(timed._us)] -= 1  # the last instant lies in the last interval
+        dt = tau - timed._ts[idx]
+        u, v = timed._us[idx], timed._velocities[idx]
+        self.ss = timed._ss[idx] + dt * v + 0.5 * np.float_power(dt, 2) * u
+        vs, us = (v + dt * u)[:, np.newaxis], u[:, np.newaxis]
+        # toppra's __call__ for orders 1 and 2 (the path's first derivative serves both)
+        d1 = self._path(self.ss, 1)
+        self.qd = np.multiply(d1, vs)
+        self.qdd = np.multiply(self._path(self.ss, 2), vs ** 2) + np.multiply(d1, us)
+
+    def q(self) -> np.ndarray:
+        """The positions (order 0)."""
+        return self._path(self.ss)
+
+
+def _slowdown(probe: _Samples, limits: Limits) -> float:
+    """Smallest k >= 1 such that q(t / k), probed at the path times of ``probe``, is within the limits."""
+    v = np.max(np.abs(probe.qd) / limits.velocity)
+    a = np.max(np.abs(probe.qdd) / limits.acceleration)
     return max(1.0, float(v), float(np.sqrt(a)))
 
 
@@ -90,14 +123,36 @@ def time_path(
     gridpoints: int | None = None,
 ) -> Trajectory:
     """Fastest rest-to-rest trajectory through ``waypoints`` (K, dof), sampled every ``dt`` s."""
-    import toppra as ta  # on first use: its 2 s (matplotlib with it) are no cost to a run that moves no arm
-    import toppra.algorithm as algo
-    import toppra.constraint as constraint
-
     waypoints = np.asarray(waypoints, dtype=float)
     path_q = _dedupe(waypoints)
     if len(path_q) < 2:
         return _at_rest(path_q[0]) if np.array_equal(waypoints[-1], path_q[0]) else _step(path_q[0], waypoints[-1], dt)
+    timed = _parametrize(path_q, limits, gridpoints)
+    native = float(timed.duration)
+    # Peaks sit at grid points, where acceleration jumps: probe finely, then probe the actual
+    # samples of the slowed trajectory and stretch again if one still pokes out (rarely twice).
+    k = _slowdown(_Samples(timed, np.linspace(0.0, native, 4000)), limits)
+    probe = None
+    for _ in range(4):
+        probe = _Samples(timed, np.minimum(_sample_times(native, k, dt) / k, native))
+        extra = _slowdown(probe, limits) / k  # peak usage of the slowed samples
+        if extra <= 1.0:
+            break
+        k *= extra * (1.0 + 1e-9)
+        probe = None  # stretched again: the samples are others
+    t = _sample_times(native, k, dt)
+    if probe is None:
+        probe = _Samples(timed, np.minimum(t / k, native))
+    return Trajectory(t, probe.q(), probe.qd / k, probe.qdd / (k * k))
+
+
+def _parametrize(path_q: np.ndarray, limits: Limits, gridpoints: int | None = None):
+    """toppra's fastest traversal of the spline through ``path_q`` (at least two distinct
+    waypoints), at its own pace: a ``ParametrizeConstAccel`` trajectory; TimingError if none."""
+    import toppra as ta  # on first use: its 2 s (matplotlib with it) are no cost to a run that moves no arm
+    import toppra.algorithm as algo
+    import toppra.constraint as constraint
+
     path = ta.SplineInterpolator(_path_parameter(path_q), path_q)
     v, a = limits.velocity, limits.acceleration
     constraints = [
@@ -110,16 +165,4 @@ def time_path(
     timed = instance.compute_trajectory(0.0, 0.0)
     if timed is None:
         raise TimingError("toppra: no feasible time parametrization")
-    native = float(timed.duration)
-    # Peaks sit at grid points, where acceleration jumps: probe finely, then probe the actual
-    # samples of the slowed trajectory and stretch again if one still pokes out (rarely twice).
-    k = _slowdown(timed, np.linspace(0.0, native, 4000), limits)
-    for _ in range(4):
-        tau = np.minimum(_sample_times(native, k, dt) / k, native)
-        extra = _slowdown(timed, tau, limits) / k  # peak usage of the slowed samples
-        if extra <= 1.0:
-            break
-        k *= extra * (1.0 + 1e-9)
-    t = _sample_times(native, k, dt)
-    tau = np.minimum(t / k, native)
-    return Trajectory(t, timed(tau), timed(tau, 1) / k, timed(tau, 2) / (k * k))
+    return timed
