@@ -138,3 +138,47 @@ def test_fast_downward_runs_side_by_side_in_one_folder(tmp_path):
     for (_, p), proc, (out, err) in zip(problems, procs, outs):
         assert proc.returncode == 0 and "fast-downward" in out + err and "0: " in out, f"{p}: {err[-400:]}"
     assert not list(tmp_path.iterdir())  # nothing left in the working folder
+
+
+
+#: a household task of each room and some public domains: action costs (elevators), conditional
+#: effects and negative preconditions (briefcase, lamps)
+KIND_PROBLEMS = [("household", "collect_cup.yaml"), ("household", "gather_kindling.yaml")] + [
+    ("pddl", d, p) for d, p in [("blocksworld-domain.pddl", "blocksworld-p6.pddl"),
+                                ("elevators-domain.pddl", "elevators-p1.pddl"),
+                                ("briefcase-domain.pddl", "briefcase-p1.pddl"),
+                                ("lamps-domain.pddl", "lamps-p1.pddl")]]
+
+
+@pytest.mark.parametrize("source", KIND_PROBLEMS, ids=lambda s: s[-1])
+def test_the_validators_cached_problem_kind_is_the_kind_computed_afresh(source):
+    """validation.with_known_kind computes a task problem's kind once per read problem and goal;
+    the validator must see the kind unified-planning would compute for the problem in the state
+    at hand. States: the initial state, the plan's last, and four with ten random atoms (rigid
+    ones included) made true or false; goals: the task's, its first literal alone, and that
+    literal negated (a negative goal is a feature of the kind). Each read is a copy, which the
+    validator may change without changing the next read."""
+    import random
+
+    from vap_bt.domain.atoms import Literal
+    from vap_bt.domain.validation import with_known_kind
+
+    task = load(TREES / source[1]).planning if source[0] == "household" else \
+        load_task(DOMAINS / source[1], DOMAINS / source[2])
+    planner = Planner(task, first_engine="search")
+    end = task.init
+    for a in planner.plan().actions:
+        end = a.apply(end)
+    atoms = sorted(planner.grounded.atoms)
+    rng = random.Random(0)
+    states = [task.init, end] + [frozenset(set(s) ^ set(rng.sample(atoms, min(10, len(atoms)))))
+                                 for s in (task.init, task.init, end, end)]
+    first = task.goal[0]
+    for goal in (task.goal, (first,), (Literal(first.atom, not first.positive),)):
+        for s in states:
+            t = task.with_state(s, goal)
+            fresh = t.to_up().kind
+            cached = with_known_kind(t, t.to_up())
+            assert cached.kind == fresh, f"{sorted(map(str, s))} {goal}"
+            cached.kind.unset_typing("FLAT_TYPING")
+            assert cached.kind == fresh

@@ -23,7 +23,7 @@ import pytest
 
 from tools.bench.process_faults import Result, run_fault
 
-pytestmark = [pytest.mark.slow(seconds=25), pytest.mark.timeout(600)]
+pytestmark = [pytest.mark.slow(seconds=35), pytest.mark.timeout(600)]
 
 #: the executive's waits, shortened from their 30 s defaults (which the benchmark keeps) so the
 #: suite does not sit through them: a server that vanished is given up after REJOIN_S, a frame

@@ -13,7 +13,7 @@ import pytest
 
 from tools.bench.process_faults import run_fault
 
-pytestmark = [pytest.mark.slow(seconds=45), pytest.mark.timeout(600)]
+pytestmark = [pytest.mark.slow(seconds=35), pytest.mark.timeout(600)]
 
 
 def test_a_restarted_arm_server_is_picked_up_and_the_episode_goes_on(tmp_path):

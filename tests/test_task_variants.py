@@ -92,7 +92,7 @@ def test_with_injection_the_variants_mostly_reach_their_goals():
     assert reached / total >= 0.6, (reached, total)
 
 
-@pytest.mark.slow(seconds=40)
+@pytest.mark.slow(seconds=55)  # gather_kindling 67 s in the full run of 2026-12-05
 @pytest.mark.parametrize("name,seed", [
     # seed 2: the goal confirmed after one replan. Seed 0 lost sight of bottle1 on the counter
     # after the last placeon and searched both rooms for it, twice and more (over 50 s of CPU
