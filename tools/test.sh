@@ -9,6 +9,11 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh || exit 1
+# The suite starts a few hundred Python processes (CLI runs, skill servers, worlds): with bytecode
+# writing off (PYTHONDONTWRITEBYTECODE, set on some machines) each one compiled the package from
+# source again (0.15 CPU-s each) and pytest re-rewrote every test module per worker. The caches go
+# into __pycache__/, which git ignores.
+unset PYTHONDONTWRITEBYTECODE
 .venv/bin/python -m pytest -q -n "${VAP_BT_TEST_WORKERS:-$(( $(nproc) + 1 ))}" --dist loadfile --no-loadscope-reorder "$@"
 code=$?
 if [ "$code" -eq 5 ]; then
