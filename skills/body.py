@@ -223,12 +223,15 @@ class Body:
     def path_clear(self, qa: np.ndarray, qb: np.ndarray) -> bool:
         """Whether the arm's straight joint-space way from ``qa`` to ``qb`` (body joints, the base
         where it is) keeps clear of the scene. An arm that starts touching something may leave
-        it: only the way after its first free sample counts."""
+        it: only the way after its first free sample counts. One that starts clear must stay
+        clear: taken as leaving from the start, a way from a free pose whose first sample was
+        already in a fridge's front went on through it (the carry out of a grasp at the fridge's
+        foot, heat_pie seed 0), and the arm struck it."""
         checker = self._collision(qa[:3])
         if checker is None:
             return True
         n = max(2, int(np.max(np.abs(qb[3:] - qa[3:])) / PATH_STEP) + 1)
-        leaving = True
+        leaving = checker.in_collision(qa[3:])
         for s in np.linspace(0.0, 1.0, n + 1)[1:]:
             hit = checker.in_collision(qa[3:] + (qb[3:] - qa[3:]) * s)
             if hit and not leaving:

@@ -368,3 +368,33 @@ def test_a_view_closer_halves_the_distance_down_to_the_nearest_view():
     near = _moved_to("closer", (2.0, 0.0, 0.0), p)  # 1 m off: a quarter-metre step, to the nearest view
     assert np.isclose(p[0] - near[0], CLOSEST)
     assert _moved_to("closer", (p[0] - CLOSEST - 0.01, 0.0, 0.0), p) is None  # already as close as a view gets
+
+
+def test_a_joint_way_from_a_clear_pose_into_the_scene_and_out_again_is_not_clear():
+    # heat_pie seed 0: the way from a grasp at a fridge's foot to the carry pose started clear,
+    # was in the fridge's front from its first sample on and out of it before its end; taken as an
+    # arm leaving a contact, it was passed, and the arm struck the fridge
+    from vap_bt.motion.collision import SceneBoxes
+
+    body = Body(None, None, None)
+    slab = np.array([[0.4, 0.25, 0.0, 0.5, 1.2, 2.0]])  # a wall ahead and to the left of the base
+    body.set_scene(SceneBoxes.from_aabbs(slab))
+    checker = body._collision((0.0, 0.0, 0.0))
+    home = np.array([0.0, 0.0, 0.0, *body.cfg.arm.home])
+
+    def turned(pan: float) -> np.ndarray:
+        q = home.copy()
+        q[3] += pan
+        return q
+
+    # the shoulder turned until the arm just touches the wall (bisection), a hair short of that
+    lo, hi = 0.0, 0.5
+    assert not checker.in_collision(turned(lo)[3:]) and checker.in_collision(turned(hi)[3:])
+    for _ in range(30):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if checker.in_collision(turned(mid)[3:]) else (mid, hi)
+    qa, qb = turned(lo), turned(lo + 1.2)  # on round through the wall, to its far side
+    assert not checker.in_collision(qa[3:]) and not checker.in_collision(qb[3:])
+    assert not body.path_clear(qa, qb)
+    # an arm that starts in the wall may still leave it, and must then stay out
+    assert body.path_clear(turned(0.5), home)
