@@ -398,3 +398,28 @@ def test_a_joint_way_from_a_clear_pose_into_the_scene_and_out_again_is_not_clear
     assert not body.path_clear(qa, qb)
     # an arm that starts in the wall may still leave it, and must then stay out
     assert body.path_clear(turned(0.5), home)
+
+
+def test_a_straight_line_does_not_flip_the_wrist_round_between_two_steps():
+    # heat_pie seed 0: a hand lowered straight down beside a fridge; where the wrist's branch
+    # of the arm met the fridge, IK answered the next step with the wrist half a turn round (the
+    # shoulder and the elbow barely moved), and the spline through that swept the fingers into
+    # the floor. A line follows one branch, or stops where that branch does
+    from vap_bt.motion.collision import SceneBoxes
+
+    body = Body(None, None, None)
+    home = np.array([0.0, 0.0, 0.0, *body.cfg.arm.home])
+    top = se3.frame_zx((0, 0, -1), (1, 0, 0), (0.6, 0.0, 0.4))  # the hand down, in front of the base
+    bottom = top.copy()
+    bottom[2, 3] = 0.15
+    q0 = body.solve(top, seed=home, collide=False)
+    free = body.line_way(top, bottom, q0, steps=4)
+    assert len(free) == 4  # in the open, the line goes all the way on one branch
+    # a block where that branch's wrist comes to be low down (behind the hand, on the base's side)
+    body.set_scene(SceneBoxes.from_aabbs(np.array([[0.40, -0.05, 0.36, 0.47, 0.12, 0.44]])))
+    checker = body._collision((0.0, 0.0, 0.0))
+    assert not checker.in_collision(q0[3:]) and checker.in_collision(free[-1][3:])
+    line = body.line_way(top, bottom, q0, steps=4, collide=True)
+    assert 0 < len(line) < 4  # stopped where the branch meets the block
+    wrist = [q0[6:]] + [q[6:] for q in line]
+    assert all(np.max(np.abs(b - a)) < 0.8 for a, b in zip(wrist, wrist[1:]))  # the hand does not turn
