@@ -90,6 +90,9 @@ PAD_END = 0.025  # the pads stay this far in from the end of an item taken off i
 DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
+#: m in front of the pose under the tap (out of the sink's front) whence the vessel goes in under
+#: it: the tap's arm ends a couple of centimetres past its outlet, and the cup is 0.07 m across
+TAP_FRONT = 0.15
 #: m past the switch's face the closed fingertips are sent: where the switch is, as a look and the
 #: map place it, is right to a centimetre or two (a microwave's front seen 1.3 cm proud of the
 #: map's box, the map registered 1 cm off), and a press aimed 1.2 cm in front of it touched nothing
@@ -824,11 +827,24 @@ class Hands:
         top = corners.mean(axis=0)
         top[2] = corners[:, 2].max()
         T[:3, 3] += tap - np.array([0.0, 0.0, TAP_BELOW]) - top
+        # in front of the tap first, the vessel's top already under the tap's height, then straight
+        # in under it: the map has the tap's outlet, not its arm, and a joint-space move straight
+        # to the pose under it swung the cup in from above — it caught on the tap's arm and was
+        # dragged up out of the fingers (boil_water seed 0: "filled" never held), or the arm
+        # stopped against it (blocked, 0.32 rad behind)
+        front = np.array([f.front[0], f.front[1], 0.0])
+        pre = T.copy()
+        pre[:3, 3] += front / np.linalg.norm(front) * TAP_FRONT
         self.progress(0.3, "under the tap")
-        if not self.body.goto_pose(T):
+        if not self.body.goto_pose(pre):
+            self.carry()
+            return Outcome(False, f"{sink}: tap out of reach")
+        if not self.body.line(T, steps=3, speed=0.3, collide=True):
+            self.body.line(pre, steps=3, speed=0.4)
             self.carry()
             return Outcome(False, f"{sink}: tap out of reach")
         self.body.hold_still(FILL_WAIT)
+        self.body.line(pre, steps=3, speed=0.4)  # out the way it went in
         self.carry()
         return Outcome(True)
 
