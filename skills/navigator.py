@@ -265,11 +265,14 @@ class Navigator:
         from above, :meth:`~skills.body.Body.from_above`, is the motion's last resort, not counted;
         ``straight``: each after the first along a straight line from the one before, the arm
         clear of the scene all along: a place's last stretch down onto a counter swept the upper
-        arm into the counter's edge from a stand whose end poses were clear)."""
+        arm into the counter's edge from a stand whose end poses were clear). A target None is
+        one the skill has no pose for from this base: not reached."""
         seed = self.body.q()
         seed[:3] = pose
         prev = None
         for k, T in enumerate(targets):
+            if T is None:
+                return False
             q = self.body.reachable(T, seed=seed) if routed and k == 0 else self.body.solve(T, seed=seed)
             if q is None:
                 return False
