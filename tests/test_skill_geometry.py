@@ -423,3 +423,32 @@ def test_a_straight_line_does_not_flip_the_wrist_round_between_two_steps():
     assert 0 < len(line) < 4  # stopped where the branch meets the block
     wrist = [q0[6:]] + [q[6:] for q in line]
     assert all(np.max(np.abs(b - a)) < 0.8 for a, b in zip(wrist, wrist[1:]))  # the hand does not turn
+
+
+def test_a_drive_goes_round_an_item_dropped_on_its_straight_way():
+    # gather_kindling seed 1 with injection: a stick slipped from the hand and lay across the
+    # corridor's line; every via pose (behind the goal, round a corner) lay on that line too,
+    # and each trip along it failed ("no clear way ... the base would run into an obstacle")
+    class Parked(Body):
+        def __init__(self, pose):
+            super().__init__(None, None, None)
+            self._q = np.array([*pose, *self.cfg.arm.home])
+
+        def q(self):
+            return self._q.copy()
+
+        def base_pose(self):
+            return tuple(map(float, self._q[:3]))
+
+    scene = SceneModel(SiteMap((RoomInfo("garden", "floor_garden", (4.6, 0.0, 9.2, 4.4)),)))
+    scene.floor_items["stick"] = Obb.aabb((6.6, 1.485, 0.0), (6.9, 1.515, 0.03))  # across the way
+    here, goal = (6.74, 2.2, -np.pi / 2), (6.74, 0.78, -np.pi / 2)
+    nav = Navigator(Parked(here), scene, None)
+    assert base_free(here, scene.obstacles(), 0.015, low=scene.low_obstacles())
+    assert base_free(goal, scene.obstacles(), 0.015, low=scene.low_obstacles())
+    assert not nav.straight_free(goal)
+    path = nav.base_path(goal)
+    assert path is not None and np.allclose(path[-1], goal)
+    legs = [np.array(here), *map(np.array, path)]
+    for a, b in zip(legs, legs[1:]):  # the base keeps off the stick all the way
+        assert all(base_free(a + (b - a) * s, [], 0.0, low=scene.low_obstacles()) for s in np.linspace(0.0, 1.0, 30))
