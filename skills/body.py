@@ -38,8 +38,11 @@ NO_MOVE = 1e-3
 #: centimetres each): more is IK answering from another branch of the arm (the shoulder swung
 #: 1.3 rad, the wrist half a turn round), and a spline through that jump sweeps the arm and
 #: overshot a wrist past its limit (boil_water on real sensors: the takeout's way into the cabinet
-#: was refused whole). The wrist's joints are not held to it: a line whose end turns the hand
-#: turns them that much per step
+#: was refused whole). The wrist's joints are held to it plus the angle the hand itself turns over
+#: the step: a line whose end turns the hand turns them that much, and no more — IK answering the
+#: next step with the wrist flipped (the branch that keeps it was in the furniture) turned the
+#: hand half a turn round between two steps of a straight line down, and the spline through that
+#: swept the fingers into the floor (heat_pie seed 0, a pie at a fridge's foot)
 LINE_JOINT_JUMP = 0.8
 #: of the arm's limits: backing off a strike, slowly
 BACK_OFF_SPEED = 0.3
@@ -228,7 +231,10 @@ class Body:
     def path_clear(self, qa: np.ndarray, qb: np.ndarray) -> bool:
         """Whether the arm's straight joint-space way from ``qa`` to ``qb`` (body joints, the base
         where it is) keeps clear of the scene. An arm that starts touching something may leave
-        it: only the way after its first free sample counts."""
+        it: only the way after its first free sample counts. One that starts clear must stay
+        clear: taken as leaving from the start, a way from a free pose whose first sample was
+        already in a fridge's front went on through it (the carry out of a grasp at the fridge's
+        foot, heat_pie seed 0), and the arm struck it."""
         if not len(self._scene):
             return True
         key = np.concatenate((qa, qb)).astype(float).tobytes()
@@ -240,7 +246,7 @@ class Body:
     @staticmethod
     def _check_way(checker: CollisionChecker, qa: np.ndarray, qb: np.ndarray) -> bool:
         n = max(2, int(np.max(np.abs(qb[3:] - qa[3:])) / PATH_STEP) + 1)
-        leaving = True
+        leaving = checker.in_collision(qa[3:])
         for s in np.linspace(0.0, 1.0, n + 1)[1:]:
             hit = checker.in_collision(qa[3:] + (qb[3:] - qa[3:]) * s)
             if hit and not leaving:
@@ -404,12 +410,16 @@ class Body:
         ``seed``); as far as IK follows the line: fewer than ``steps`` where it stops. Plans, does
         not move."""
         qs: list[np.ndarray] = []
+        before = np.asarray(start, float)
         for k in range(1, steps + 1):
-            q = self.solve(se3.interpolate(start, target, k / steps), frame, seed, collide=collide)
-            if q is None or _turned_by(q[3:6], seed[3:6]) > LINE_JOINT_JUMP:
+            T = se3.interpolate(start, target, k / steps)
+            q = self.solve(T, frame, seed, collide=collide)
+            turn = _rotation_angle(before[:3, :3].T @ T[:3, :3])  # the hand's own turn over this step
+            if q is None or _turned_by(q[3:6], seed[3:6]) > LINE_JOINT_JUMP \
+                    or _turned_by(q[6:], seed[6:]) > LINE_JOINT_JUMP + turn:
                 break  # IK lost the line, or left it for another branch of the arm
             qs.append(q)
-            seed = q
+            seed, before = q, T
         return qs
 
     def drive(self, poses: list[tuple[float, float, float]], speed: float = 1.0) -> None:
@@ -451,6 +461,11 @@ class Body:
 def _turned_by(q: np.ndarray, ref: np.ndarray) -> float:
     """The largest joint change from ``ref`` to ``q``, each the short way round (rad)."""
     return float(np.max(np.abs(np.remainder(np.asarray(q) - ref + np.pi, 2 * np.pi) - np.pi)))
+
+
+def _rotation_angle(R: np.ndarray) -> float:
+    """The angle (rad) of a rotation matrix."""
+    return float(np.arccos(np.clip((np.trace(R) - 1.0) / 2.0, -1.0, 1.0)))
 
 
 def _nearest_turn(q: np.ndarray, ref: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:

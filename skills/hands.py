@@ -80,6 +80,16 @@ REGARD_EYE = 0.15
 SUPPORT_SNAP = (-0.03, 0.06)  # a seen bottom this near a known support's top is taken as on it
 LIFT = {"top": 0.12, "front": 0.02}
 GRASP_STANDS = 3  # work poses a grasp tries before it gives up (the arm's reach is checked at each)
+#: rad a hand from above leans back towards the robot (turned about the axis its fingers close
+#: along, so the pads still close across the item) when no upright hand reaches an item on the
+#: floor: upright, the wrist rides 0.1-0.2 m above the hand and the forearm comes down steeply to
+#: it, and at the foot of a tall piece (a pie 1.6 cm off a fridge's front) every branch of the arm
+#: put the wrist or the forearm into the piece's front; leaned, the wrist stays out over the base
+#: side. Leaned, the hand still lifts the item straight up (:meth:`grasp`)
+GRASP_LEANS = (0.6, 0.9)
+#: (sine) the fingers' axis must lie this far across the way from the robot to the item for a
+#: lean about it to bring the wrist back towards the robot
+LEAN_ACROSS = 0.5
 PLACE_STANDS = 2  # work poses a place (a push) takes: the second for the spot (the item) where a look shows it
 #: a long item on the floor is taken off its middle when no hand reaches that (the middle of a
 #: knife that slid half under a table is under its top): this share of the way from its middle
@@ -90,6 +100,9 @@ PAD_END = 0.025  # the pads stay this far in from the end of an item taken off i
 DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
+#: m in front of the pose under the tap (out of the sink's front) whence the vessel goes in under
+#: it: the tap's arm ends a couple of centimetres past its outlet, and the cup is 0.07 m across
+TAP_FRONT = 0.15
 #: m past the switch's face the closed fingertips are sent: where the switch is, as a look and the
 #: map place it, is right to a centimetre or two (a microwave's front seen 1.3 cm proud of the
 #: map's box, the map registered 1 cm off), and a press aimed 1.2 cm in front of it touched nothing
@@ -263,12 +276,15 @@ class Hands:
     # -- grasping ----------------------------------------------------------------------------
 
     def grasp_frame(self, seen: Seen, where: Where, sideways: bool = False, base=None,
-                    off=(0.0, 0.0), turned: bool = False) -> tuple[np.ndarray, np.ndarray]:
+                    off=(0.0, 0.0), turned: bool = False, lean: float = 0.0) -> tuple[np.ndarray, np.ndarray] | None:
         """Grasp pose of the tcp and the approach direction for an item as seen: level from the
         front out of a front-open container (or when asked: to put it into one next), else from
         above across its narrow side — the fingers' sides as for the base at ``base`` (x, y, yaw;
         default where it is), ``off`` (x, y) along it from its middle (:meth:`slides`); ``turned``,
-        the hand half a turn round about the approach (the pads swap sides, the camera moves)."""
+        the hand half a turn round about the approach (the pads swap sides, the camera moves);
+        ``lean``, a hand from above leaned back towards the robot by that angle about the axis
+        the fingers close along (:data:`GRASP_LEANS`) — None when that axis points at the robot,
+        where such a lean does not move the wrist back."""
         q = None if base is None else np.array([*base, *np.zeros(6)])
         c, bottom = seen.centroid.copy(), self.bottom(seen, where)
         box = self.scene.furniture.get(where.inside or "")
@@ -296,7 +312,16 @@ class Hands:
         p[:2] += off
         # fingertips (0.02 m beyond the tcp) reach below the top, but stay off the support
         p[2] = max(seen.top - 0.03, c[2], bottom + 0.022)
-        return se3.frame_zx(z, np.cross(across, z), p), z
+        G = se3.frame_zx(z, np.cross(across, z), p)
+        if lean:
+            # turned about the fingers' axis, the approach gains a part away from the robot: the
+            # hand comes down over the item from the robot's side, its wrist back over the base
+            away = -self.nav.toward_robot(c, where.place, base)
+            side = float(np.cross(across, z) @ away)
+            if abs(side) < LEAN_ACROSS:
+                return None
+            G[:3, :3] = se3.axis_angle(across, math.copysign(lean, side)) @ G[:3, :3]
+        return G, G[:3, 2].copy()
 
     def grasp(self, name: str, point, where: Where, sideways: bool = False) -> Outcome:
         """Take ``name`` (believed at ``point``, on or in ``where``) into the hand; ``sideways``:
@@ -312,13 +337,22 @@ class Hands:
             stand = self.stand_to_grasp(seen, where, sideways, stood)
             if stand is None:  # nowhere else to stand that the arm would reach it from
                 return Outcome(False, f"{name}: no arm pose reaches it")
-            way, off, turned = stand
+            way, off, turned, lean = stand
             stood.append(self.body.base_pose())
             closer = self.eyes.measure(name, seen.centroid, inside=where.inside)  # a second look from where the hand works
             if closer is not None:
                 seen = closer
                 looks.append((seen, self.body.mark()))
-            G, a = self.grasp_frame(self._carried(looks[-1]), where, way, off=off, turned=turned)
+            look = self._carried(looks[-1])
+            G, a = (self.grasp_frame(look, where, way, off=off, turned=turned, lean=lean)
+                    or self.grasp_frame(look, where, way, off=off, turned=turned))
+            if where.on in self.scene.site.floors() and not self._reaches_grasp(G, a):
+                # what the second look measured (a centimetre nearer a fridge's front) can put the
+                # hand the stand was chosen for out of reach, where another hand of the tries
+                # reaches from right here: that one, before the base moves on
+                G, a, lean = next(((*fr, v[3]) for v in self._grasp_tries(look, where, sideways)
+                                   for fr in [self.grasp_frame(look, where, v[0], off=v[1], turned=v[2], lean=v[3])]
+                                   if fr is not None and self._reaches_grasp(*fr)), (G, a, lean))
             self.progress(0.1, "pre-grasp")
             self.body.fingers(self.body.cfg.gripper.stroke)
             reached = self.reach_pre(G, a, where.inside, APPROACH)
@@ -343,12 +377,13 @@ class Hands:
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
-        back[2, 3] += LIFT[how(a)]
+        kind = "top" if lean else how(a)  # a hand leaned from above lifts the item straight up
+        back[2, 3] += LIFT[kind]
         self.body.line(back, steps=3, speed=0.3)
         box = self.scene.furniture.get(where.place or "")
         if box is not None and box.info.cavity is not None:
             self.withdraw(where.place)
-        elif how(a) == "front":
+        elif kind == "front":
             back[:3, 3] -= np.array([a[0], a[1], 0.0]) * 0.12
             self.body.line(back, steps=3, speed=0.3)
         if not self.body.holding():
@@ -360,15 +395,38 @@ class Hands:
         return Outcome(True)
 
     def stand_to_grasp(self, seen: Seen, where: Where, sideways: bool,
-                       stood=()) -> tuple[bool, np.ndarray, bool] | None:
+                       stood=()) -> tuple[bool, np.ndarray, bool, float] | None:
         """Drive to a work pose for grasping ``seen``, away from the poses ``stood`` at already;
-        returns whether the hand takes it from the side, where along it from its middle, and
-        whether from above with the hand half a turn round (:meth:`grasp_frame`)
-        (None: no pose left to try). An item on the floor that the hand cannot reach from above
-        (a wall, a leaf or a piece of furniture beside or over it) is taken level from the side
-        instead, from where the arm reaches that (unless it is too flat for the pads to hold from
-        the side), or from above off its middle (:meth:`slides`).
+        returns whether the hand takes it from the side, where along it from its middle,
+        whether from above with the hand half a turn round, and how far a hand from above leans
+        back (:meth:`grasp_frame`) (None: no pose left to try). An item on the floor that the
+        hand cannot reach from above (a wall, a leaf or a piece of furniture beside or over it)
+        is taken level from the side instead, from where the arm reaches that (unless it is too
+        flat for the pads to hold from the side), or from above off its middle (:meth:`slides`),
+        or from above with the hand leaned back towards the robot (:data:`GRASP_LEANS`).
         On the first stand, when neither way reaches, the pose for the first way (the motion finds out)."""
+        floor = where.on in self.scene.site.floors()
+        tries = self._grasp_tries(seen, where, sideways)
+        for way, off, turned, lean in tries:
+            # down by the floor the arm folds past furniture on its way: its joint way is checked too
+            pose = self.nav.reaching_pose(*self._work_request(seen, where, way, off, turned, lean), avoid=stood,
+                                          routed=floor)
+            if pose is not None:
+                # folded first: a look leaves the arm reaching out where it looked (down at the
+                # foot of a fridge, the forearm up along its front), and the last stretch of a
+                # drive to a work pose lets the arm over what the base stands at (a table's top),
+                # so the base turning in beside the fridge swept the forearm into its front
+                self.body.home()
+                self.nav.approach(pose)
+                return way, off, turned, lean
+        if stood:
+            return None
+        self.nav.approach(self.nav.work_pose(*self._work_request(seen, where, tries[0][0])))
+        return tries[0][0], np.zeros(2), False, 0.0
+
+    def _grasp_tries(self, seen: Seen, where: Where, sideways: bool) -> list[tuple[bool, np.ndarray, bool, float]]:
+        """The hands :meth:`stand_to_grasp` tries for ``seen``, best first: (from the side, where
+        along it from its middle, turned half round, lean)."""
         floor = where.on in self.scene.site.floors()
         low = seen.top - self.bottom(seen, where) < SIDE_LEVEL_HEIGHT  # a plate: no side for the pads to take
         ways = (sideways,) if sideways or low or not floor else (False, True)
@@ -376,19 +434,18 @@ class Hands:
         # a level hand takes it by the side nearest the robot: no sliding along, no turning round;
         # from above, the hand half a turn round is the same grasp of a two-finger gripper with the
         # wrist camera on the other side (by a fridge's foot one side of it is under the door)
-        tries = [(way, off, turned) for off in offs for way in ways
+        tries = [(way, off, turned, 0.0) for off in offs for way in ways
                  for turned in ((False,) if way else (False, True)) if not (way and off.any())]
-        for way, off, turned in tries:
-            # down by the floor the arm folds past furniture on its way: its joint way is checked too
-            pose = self.nav.reaching_pose(*self._work_request(seen, where, way, off, turned), avoid=stood,
-                                          routed=floor)
-            if pose is not None:
-                self.nav.approach(pose)
-                return way, off, turned
-        if stood:
-            return None
-        self.nav.approach(self.nav.work_pose(*self._work_request(seen, where, ways[0])))
-        return ways[0], np.zeros(2), False
+        if floor:  # the hand leaned back is the last resort: it holds the item less squarely
+            tries += [(False, off, turned, lean) for lean in GRASP_LEANS for off in offs for turned in (False, True)]
+        return tries
+
+    def _reaches_grasp(self, G: np.ndarray, a: np.ndarray) -> bool:
+        """Whether the arm reaches the pre-grasp (by a clear way from how it is) and the grasp
+        ``G`` from where the base stands (plans, does not move)."""
+        pre = G.copy()
+        pre[:3, 3] -= a * APPROACH
+        return self.nav.reaches(self.body.base_pose(), [pre, G], routed=True)
 
     @staticmethod
     def slides(seen: Seen) -> list[np.ndarray]:
@@ -406,16 +463,20 @@ class Hands:
         return out + [along * reach * SLIDE_SHARE * s for s in (1.0, -1.0)]
 
     def _work_request(self, seen: Seen, where: Where, sideways: bool, off=(0.0, 0.0),
-                      turned: bool = False) -> tuple:
+                      turned: bool = False, lean: float = 0.0) -> tuple:
         """What :meth:`Navigator.work_pose` takes for a grasp of ``seen``: the point, the way to
-        the robot, the approach, the support, and the pre-grasp and grasp poses from a base pose."""
+        the robot, the approach, the support, and the pre-grasp and grasp poses from a base pose
+        (none from a base the lean does not suit: :meth:`grasp_frame`)."""
         G, a = self.grasp_frame(seen, where, sideways, off=off, turned=turned)
 
-        def targets(base) -> tuple[np.ndarray, np.ndarray]:
-            G, a = self.grasp_frame(seen, where, sideways, base, off=off, turned=turned)
+        def targets(base) -> list[np.ndarray]:
+            framed = self.grasp_frame(seen, where, sideways, base, off=off, turned=turned, lean=lean)
+            if framed is None:
+                return [None]
+            G, a = framed
             pre = G.copy()
             pre[:3, 3] -= a * APPROACH
-            return pre, G
+            return [pre, G]
 
         return G[:3, 3], self.nav.toward_robot(G[:3, 3], where.place), how(a), where.place, targets
 
@@ -824,11 +885,24 @@ class Hands:
         top = corners.mean(axis=0)
         top[2] = corners[:, 2].max()
         T[:3, 3] += tap - np.array([0.0, 0.0, TAP_BELOW]) - top
+        # in front of the tap first, the vessel's top already under the tap's height, then straight
+        # in under it: the map has the tap's outlet, not its arm, and a joint-space move straight
+        # to the pose under it swung the cup in from above — it caught on the tap's arm and was
+        # dragged up out of the fingers (boil_water seed 0: "filled" never held), or the arm
+        # stopped against it (blocked, 0.32 rad behind)
+        front = np.array([f.front[0], f.front[1], 0.0])
+        pre = T.copy()
+        pre[:3, 3] += front / np.linalg.norm(front) * TAP_FRONT
         self.progress(0.3, "under the tap")
-        if not self.body.goto_pose(T):
+        if not self.body.goto_pose(pre):
+            self.carry()
+            return Outcome(False, f"{sink}: tap out of reach")
+        if not self.body.line(T, steps=3, speed=0.3, collide=True):
+            self.body.line(pre, steps=3, speed=0.4)
             self.carry()
             return Outcome(False, f"{sink}: tap out of reach")
         self.body.hold_still(FILL_WAIT)
+        self.body.line(pre, steps=3, speed=0.4)  # out the way it went in
         self.carry()
         return Outcome(True)
 

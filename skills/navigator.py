@@ -44,6 +44,11 @@ AROUND = (0.0, math.pi / 4, -math.pi / 4, math.pi / 2, -math.pi / 2, 3 * math.pi
 #: m between a work pose tried again and one the arm failed to work from (a different stand)
 AVOID_RADIUS = 0.1
 DETOUR_BACKOFFS = (0.5, 0.8, 1.1)  # via poses behind the goal when the straight way is blocked
+#: via poses off to either side of the straight way (m), at these shares of it, when neither the
+#: straight way nor one by the vias behind the goal or round a corner is clear: an item dropped
+#: on the way (a stick that slipped from the hand on the corridor's line) lies across every
+#: one of those when the goal is straight ahead (gather_kindling seed 1: "no clear way")
+DETOUR_ASIDE, DETOUR_ALONG = (0.4, 0.7, 1.0), (0.5, 0.75, 0.25)
 LEAVE_SLACK = 0.1  # a drive may start close to an obstacle (a work pose): checked once this far away
 HAND_RADIUS = 0.07  # the gripper round its tcp, seen from above
 WRIST_BEHIND = 0.15  # the wrist behind the tcp along the hand's axis
@@ -265,11 +270,14 @@ class Navigator:
         from above, :meth:`~skills.body.Body.from_above`, is the motion's last resort, not counted;
         ``straight``: each after the first along a straight line from the one before, the arm
         clear of the scene all along: a place's last stretch down onto a counter swept the upper
-        arm into the counter's edge from a stand whose end poses were clear)."""
+        arm into the counter's edge from a stand whose end poses were clear). A target None is
+        one the skill has no pose for from this base: not reached."""
         seed = self.body.q()
         seed[:3] = pose
         prev = None
         for k, T in enumerate(targets):
+            if T is None:
+                return False
             q = self.body.reachable(T, seed=seed) if routed and k == 0 else self.body.solve(T, seed=seed)
             if q is None:
                 return False
@@ -413,7 +421,8 @@ class Navigator:
     def base_path(self, pose: Pose, reach_over: bool = True) -> list[Pose] | None:
         """Poses to drive through to ``pose`` without the base or the arm above it running into a
         wall, furniture or an open leaf: straight if that is clear, else through a via pose
-        (backed off from the goal along its heading, or round a corner); None if none is.
+        (backed off from the goal along its heading, or round a corner, or off to one side of
+        the straight way); None if none is.
         With ``reach_over`` the arm may reach over what stands in front of the goal (a work pose);
         a stop on the way (a corridor or door pose of a trip) gets no such slack."""
         here = np.array(self.body.base_pose(), float)
@@ -430,9 +439,14 @@ class Navigator:
         # out of a work pose (the arm over a table, the base close by): straight back first
         facing = np.array([math.cos(here[2]), math.sin(here[2]), 0.0])
         backs = [here - facing * k for k in DETOUR_BACKOFFS]
+        way = (goal - here)[:2]
+        across = np.array([-way[1], way[0], 0.0]) / max(float(np.linalg.norm(way)), 1e-9)
+        aside = [here + (goal - here) * t + across * side * d
+                 for d in DETOUR_ASIDE for t in DETOUR_ALONG for side in (1.0, -1.0)]
         paths = [[goal], *([v, goal] for v in vias), [turned, goal], *([turned, v, goal] for v in vias),
                  *([turned, turned - heading * k, v, goal] for k in DETOUR_BACKOFFS for v in vias[:len(DETOUR_BACKOFFS)]),
-                 *([b, goal] for b in backs), *([b, v, goal] for b in backs for v in vias)]
+                 *([b, goal] for b in backs), *([b, v, goal] for b in backs for v in vias),
+                 *([a, goal] for a in aside), *([turned, a, goal] for a in aside)]
         # the arm may reach over things only near the goal; failing that anywhere, near each stop
         # (it can swing into an open leaf there, but that is still better than the straight way)
         for slack_at_stops in (False, True):

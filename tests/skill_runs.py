@@ -28,7 +28,7 @@ TREES = Path(__file__).resolve().parents[1] / "trees"
 
 def pybullet(name, situations=None, sensors: str = "exact", seed: int = 0, **kw):
     """The pybullet world of ``trees/<name>.yaml`` (or of a task file path) laid out by ``seed``,
-    small images; with exact depth and localisation, or (``sensors="real"``) the world's default
+    small images unless ``image_size`` says otherwise; with exact depth and localisation, or (``sensors="real"``) the world's default
     sensor models."""
     from vap_bt.sim.depth_noise import DepthNoiseModel
     from vap_bt.sim.localization import LocalizationModel
@@ -42,8 +42,8 @@ def pybullet(name, situations=None, sensors: str = "exact", seed: int = 0, **kw)
         kw.setdefault("localization", LocalizationModel.perfect())
 
     task = load(name if isinstance(name, Path) else TREES / f"{name}.yaml")
-    return PybulletWorld(task, seed=seed, injection=situations is not None, situations=situations,
-                         image_size=(160, 120), **kw)
+    kw.setdefault("image_size", (160, 120))
+    return PybulletWorld(task, seed=seed, injection=situations is not None, situations=situations, **kw)
 
 
 def believed(world, names: tuple[str, ...]) -> tuple[Hint, ...]:

@@ -391,3 +391,87 @@ def test_a_ways_answer_holds_for_the_scene_it_was_checked_in_only():
     assert not body.path_clear(qa, qb)
     body.set_scene(room)
     assert body.path_clear(qa, qb)
+
+
+def test_a_joint_way_from_a_clear_pose_into_the_scene_and_out_again_is_not_clear():
+    # heat_pie seed 0: the way from a grasp at a fridge's foot to the carry pose started clear,
+    # was in the fridge's front from its first sample on and out of it before its end; taken as an
+    # arm leaving a contact, it was passed, and the arm struck the fridge
+    from vap_bt.motion.collision import SceneBoxes
+
+    body = Body(None, None, None)
+    slab = np.array([[0.4, 0.25, 0.0, 0.5, 1.2, 2.0]])  # a wall ahead and to the left of the base
+    body.set_scene(SceneBoxes.from_aabbs(slab))
+    checker = body._collision((0.0, 0.0, 0.0))
+    home = np.array([0.0, 0.0, 0.0, *body.cfg.arm.home])
+
+    def turned(pan: float) -> np.ndarray:
+        q = home.copy()
+        q[3] += pan
+        return q
+
+    # the shoulder turned until the arm just touches the wall (bisection), a hair short of that
+    lo, hi = 0.0, 0.5
+    assert not checker.in_collision(turned(lo)[3:]) and checker.in_collision(turned(hi)[3:])
+    for _ in range(30):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if checker.in_collision(turned(mid)[3:]) else (mid, hi)
+    qa, qb = turned(lo), turned(lo + 1.2)  # on round through the wall, to its far side
+    assert not checker.in_collision(qa[3:]) and not checker.in_collision(qb[3:])
+    assert not body.path_clear(qa, qb)
+    # an arm that starts in the wall may still leave it, and must then stay out
+    assert body.path_clear(turned(0.5), home)
+
+
+def test_a_straight_line_does_not_flip_the_wrist_round_between_two_steps():
+    # heat_pie seed 0: a hand lowered straight down beside a fridge; where the wrist's branch
+    # of the arm met the fridge, IK answered the next step with the wrist half a turn round (the
+    # shoulder and the elbow barely moved), and the spline through that swept the fingers into
+    # the floor. A line follows one branch, or stops where that branch does
+    from vap_bt.motion.collision import SceneBoxes
+
+    body = Body(None, None, None)
+    home = np.array([0.0, 0.0, 0.0, *body.cfg.arm.home])
+    top = se3.frame_zx((0, 0, -1), (1, 0, 0), (0.6, 0.0, 0.4))  # the hand down, in front of the base
+    bottom = top.copy()
+    bottom[2, 3] = 0.15
+    q0 = body.solve(top, seed=home, collide=False)
+    free = body.line_way(top, bottom, q0, steps=4)
+    assert len(free) == 4  # in the open, the line goes all the way on one branch
+    # a block where that branch's wrist comes to be low down (behind the hand, on the base's side)
+    body.set_scene(SceneBoxes.from_aabbs(np.array([[0.40, -0.05, 0.36, 0.47, 0.12, 0.44]])))
+    checker = body._collision((0.0, 0.0, 0.0))
+    assert not checker.in_collision(q0[3:]) and checker.in_collision(free[-1][3:])
+    line = body.line_way(top, bottom, q0, steps=4, collide=True)
+    assert 0 < len(line) < 4  # stopped where the branch meets the block
+    wrist = [q0[6:]] + [q[6:] for q in line]
+    assert all(np.max(np.abs(b - a)) < 0.8 for a, b in zip(wrist, wrist[1:]))  # the hand does not turn
+
+
+def test_a_drive_goes_round_an_item_dropped_on_its_straight_way():
+    # gather_kindling seed 1 with injection: a stick slipped from the hand and lay across the
+    # corridor's line; every via pose (behind the goal, round a corner) lay on that line too,
+    # and each trip along it failed ("no clear way ... the base would run into an obstacle")
+    class Parked(Body):
+        def __init__(self, pose):
+            super().__init__(None, None, None)
+            self._q = np.array([*pose, *self.cfg.arm.home])
+
+        def q(self):
+            return self._q.copy()
+
+        def base_pose(self):
+            return tuple(map(float, self._q[:3]))
+
+    scene = SceneModel(SiteMap((RoomInfo("garden", "floor_garden", (4.6, 0.0, 9.2, 4.4)),)))
+    scene.floor_items["stick"] = Obb.aabb((6.6, 1.485, 0.0), (6.9, 1.515, 0.03))  # across the way
+    here, goal = (6.74, 2.2, -np.pi / 2), (6.74, 0.78, -np.pi / 2)
+    nav = Navigator(Parked(here), scene, None)
+    assert base_free(here, scene.obstacles(), 0.015, low=scene.low_obstacles())
+    assert base_free(goal, scene.obstacles(), 0.015, low=scene.low_obstacles())
+    assert not nav.straight_free(goal)
+    path = nav.base_path(goal)
+    assert path is not None and np.allclose(path[-1], goal)
+    legs = [np.array(here), *map(np.array, path)]
+    for a, b in zip(legs, legs[1:]):  # the base keeps off the stick all the way
+        assert all(base_free(a + (b - a) * s, [], 0.0, low=scene.low_obstacles()) for s in np.linspace(0.0, 1.0, 30))
