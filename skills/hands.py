@@ -415,8 +415,12 @@ class Hands:
                 # folded first: a look leaves the arm reaching out where it looked (down at the
                 # foot of a fridge, the forearm up along its front), and the last stretch of a
                 # drive to a work pose lets the arm over what the base stands at (a table's top),
-                # so the base turning in beside the fridge swept the forearm into its front
-                self.body.home()
+                # so the base turning in beside the fridge swept the forearm into its front.
+                # Only down by the floor: folding before every grasp changed how a cup off a table
+                # was held, and collect_cup seed 0 then set it on the counter where no view
+                # showed it (13 "could not see" situations, the goal never confirmed)
+                if floor:
+                    self.body.home()
                 self.nav.approach(pose)
                 return way, off, turned, lean
         if stood:
