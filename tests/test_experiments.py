@@ -221,6 +221,28 @@ def test_a_campaign_stopped_part_way_has_every_cell_at_nearly_the_same_count():
     assert [k.seed for k in first[:SEED_BLOCK]] == list(range(SEED_BLOCK)) and len({k.config() for k in first[:SEED_BLOCK]}) == 1
 
 
+def test_the_commit_is_dirty_only_for_changes_that_could_change_an_episode(tmp_path, monkeypatch):
+    """A campaign's rows and tables (docs/results) and the text beside them are written while
+    campaigns run: they do not make the next campaign's commit "+dirty"; a changed module does."""
+    from tools.experiments import command
+
+    def git(*a: str) -> None:
+        subprocess.run(["git", "-c", "user.name=t", "-c", "user.email=t@t", *a], cwd=tmp_path, check=True,
+                       capture_output=True)
+
+    (tmp_path / "docs" / "results").mkdir(parents=True)
+    (tmp_path / "docs" / "results" / "episodes.jsonl").write_text("{}\n")
+    (tmp_path / "skill.py").write_text("X = 1\n")
+    git("init", "-q")
+    git("add", ".")
+    git("commit", "-qm", "c")
+    monkeypatch.setattr(command, "ROOT", tmp_path)
+    (tmp_path / "docs" / "results" / "episodes.jsonl").write_text("")  # a campaign starting afresh
+    assert not command._commit().endswith("+dirty") and len(command._commit()) == 40
+    (tmp_path / "skill.py").write_text("X = 2\n")
+    assert command._commit().endswith("+dirty")
+
+
 def test_resume_runs_only_what_a_stopped_campaign_had_not_finished(tmp_path, address):
     out = tmp_path / "strategies"
     argv = [*QUICK, "--address", address, "--out", str(out)]

@@ -214,8 +214,8 @@ def report_from(experiment: Experiment, campaign: Campaign, configurations: list
 def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
         log: results.EpisodeLog, args: argparse.Namespace, fault) -> None:
     """Run the campaign's missing episodes, appending each row to ``log``; then write run.json."""
+    commit = _commit()  # before the log is touched: the code that runs is this checkout's as the campaign starts
     log.start(args.resume)
-    commit = _commit()  # now: the code that runs is this checkout's as the campaign starts
     started = time.strftime("%Y-%m-%dT%H:%M:%S%z")
     done = log.keys()
     todo = [k for k in keys(experiment, campaign, configurations) if k not in done]
@@ -279,8 +279,11 @@ def _span(seeds: list[int]) -> str | list[int]:
 
 
 def _commit() -> str:
-    """The checkout's commit, ``+dirty`` when tracked files differ from it."""
+    """The checkout's commit, ``+dirty`` when tracked files that could change an episode differ
+    from it: not those under docs/ (a campaign's own rows and tables, the text being written
+    beside them), which made every campaign after the first of a sitting "+dirty"."""
     def git(*a: str) -> str:
         return subprocess.run(["git", *a], cwd=ROOT, capture_output=True, text=True).stdout.strip()
 
-    return git("rev-parse", "HEAD") + ("+dirty" if git("status", "--porcelain", "--untracked-files=no") else "")
+    changed = git("status", "--porcelain", "--untracked-files=no", "--", ".", ":(exclude)docs")
+    return git("rev-parse", "HEAD") + ("+dirty" if changed else "")
