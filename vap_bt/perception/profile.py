@@ -359,26 +359,24 @@ def _check_domain(spec: ProfileSpec, knowledge: DomainKnowledge, where: str) -> 
         if m and m.group(1).lower() != spec.domain.lower():
             raise InputError(f"{where}: field domain", f"this profile is for {spec.domain!r}, "
                                                        f"but {knowledge.domain_file} defines {m.group(1)!r}")
-    for key in spec.predicates:
+    _check_named(spec.predicates, "predicates", "predicate", "argument",
+                 {name: len(sig) for name, sig in knowledge.predicates.items()}, where)
+    _check_named(spec.actions, "actions", "action", "parameter",
+                 {name: len(schema.parameters) for name, schema in knowledge.schemas.items()}, where)
+
+
+def _check_named(keys, section: str, noun: str, part: str, arities: dict[str, int], where: str) -> None:
+    """Every ``name/arity`` key of a profile's ``section`` names a ``noun`` of the domain with that
+    many ``part``s: one InputError naming the field otherwise."""
+    for key in keys:
         name, arity = key.rsplit("/", 1)
-        sig = knowledge.predicates.get(name)
-        if sig is None:
-            raise InputError(f"{where}: field predicates.{key}",
-                             f"the domain has no predicate {name!r} (it has {', '.join(sorted(knowledge.predicates))})")
-        if len(sig) != int(arity):
-            raise InputError(f"{where}: field predicates.{key}",
-                             f"the domain's {name} takes {len(sig)} argument{'s' if len(sig) != 1 else ''}: "
-                             f"write {name}/{len(sig)}")
-    for key in spec.actions:
-        name, arity = key.rsplit("/", 1)
-        schema = knowledge.schemas.get(name)
-        if schema is None:
-            raise InputError(f"{where}: field actions.{key}",
-                             f"the domain has no action {name!r} (it has {', '.join(sorted(knowledge.schemas))})")
-        if len(schema.parameters) != int(arity):
-            n = len(schema.parameters)
-            raise InputError(f"{where}: field actions.{key}",
-                             f"the domain's {name} takes {n} parameter{'s' if n != 1 else ''}: write {name}/{n}")
+        if name not in arities:
+            raise InputError(f"{where}: field {section}.{key}",
+                             f"the domain has no {noun} {name!r} (it has {', '.join(sorted(arities))})")
+        n = arities[name]
+        if n != int(arity):
+            raise InputError(f"{where}: field {section}.{key}",
+                             f"the domain's {name} takes {n} {part}{'s' if n != 1 else ''}: write {name}/{n}")
 
 
 def _roles(spec: RolesSpec, knowledge: DomainKnowledge, where: str) -> Roles:
