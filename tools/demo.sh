@@ -12,10 +12,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
 mkdir -p out
-# seed 2 by default. Not every seed reaches the goal in pybullet (docs/RESULTS.md, "Pybullet"):
+# seed 0 by default. Not every seed reaches the goal in pybullet (docs/RESULTS.md, "Pybullet"):
 # at 6fa9cd8, seed 4 (the default until then) loses the cup when open(microwave) sets it down to
-# free the hand; seed 0 reaches the goal after many replans, seed 2 in three plans
-seed="${SEED:-2}"
+# free the hand; seed 0 reaches the goal in both worlds (in pybullet after seven situations it
+# recovers from), seed 2 in pybullet but not in the symbolic world (filled(cup) never settled)
+seed="${SEED:-0}"
 status=0
 echo "== 1/2: pybullet household, no injected situations ==" >&2
 .venv/bin/vap-bt run trees/boil_water.yaml --world pybullet --no-injection --seed "$seed" \
