@@ -416,10 +416,11 @@ class Hands:
                 # foot of a fridge, the forearm up along its front), and the last stretch of a
                 # drive to a work pose lets the arm over what the base stands at (a table's top),
                 # so the base turning in beside the fridge swept the forearm into its front.
-                # Only down by the floor: folding before every grasp changed how a cup off a table
-                # was held, and collect_cup seed 0 then set it on the counter where no view
-                # showed it (13 "could not see" situations, the goal never confirmed)
-                if floor:
+                # Down by the floor and at a container's front only: folding before a grasp off a
+                # table changed how collect_cup seed 0 held its cup, and it then set it on the
+                # counter where no view showed it (13 "could not see" situations); not folding
+                # before the takeout from the cabinet left the tap out of reach for the fill
+                if floor or where.inside:
                     self.body.home()
                 self.nav.approach(pose)
                 return way, off, turned, lean
