@@ -14,7 +14,7 @@ bash tools/setup.sh
 mkdir -p out
 # seed 1 by default. Not every seed reaches the goal in pybullet (docs/RESULTS.md, "Pybullet"):
 # the default has moved with the skills (4 until 6fa9cd8: it then lost the cup when open(microwave)
-# set it down to free the hand; 0 at c3fd0a5 does not confirm filled(cup)); seed 1 reaches the
+# set it down to free the hand; 0 at 0b833f6 does not confirm filled(cup)); seed 1 reaches the
 # goal in both worlds at the commit that made it the default
 seed="${SEED:-1}"
 status=0
