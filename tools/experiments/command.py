@@ -32,6 +32,7 @@ import subprocess
 import sys
 import time
 import typing
+from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable
@@ -265,10 +266,7 @@ def _sittings(path: Path) -> list[dict]:
 def provenance(rows: list[dict]) -> str:
     """table.md's last line: the commits its rows were run on (a campaign resumed on changed code
     mixes versions of the executive, and its table must say so)."""
-    counts: dict[str, int] = {}
-    for row in rows:
-        commit = row.get("commit") or "unrecorded"
-        counts[commit] = counts.get(commit, 0) + 1
+    counts = Counter(row.get("commit") or "unrecorded" for row in rows)
     listed = ", ".join(f"{c[:12]}{c[40:]} ({n} episodes)" for c, n in counts.items())
     return f"\nEpisodes run on: {listed}.\n"
 

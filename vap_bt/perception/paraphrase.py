@@ -101,7 +101,8 @@ def words_of(name: str) -> str:
     return name.replace("_", " ").replace("-", " ")
 
 
-def _listing(parts: list[str]) -> str:
+def listing(parts: list[str]) -> str:
+    """Words listed as said: "a", "a and b", "a, b and c"."""
     return parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
 
 
@@ -127,8 +128,8 @@ def template_paraphrases(predicate: str, arg_types: Sequence[str], n: int = TEMP
                  f"Is '{w}' true in this image?",
                  f"Can you confirm from this image that '{w}' holds?"]
     else:
-        subject, rest = args[0], (" " + _listing(args[1:])) if len(args) > 1 else ""
-        every = _listing(args)
+        subject, rest = args[0], (" " + listing(args[1:])) if len(args) > 1 else ""
+        every = listing(args)
         forms = [f"Is {subject} {w}{rest}?",
                  f"Does this image show {subject} {w}{rest}?",
                  f"In this view, is {subject} {w}{rest}?",

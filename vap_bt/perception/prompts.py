@@ -14,6 +14,8 @@ from importlib import resources
 
 import yaml
 
+from vap_bt.perception.paraphrase import listing
+
 
 @dataclass(frozen=True)
 class PromptBook:
@@ -61,6 +63,5 @@ def action_phrase(name: str, args: tuple[str, ...]) -> str:
     """An action said plainly when its domain's perception profile has no phrase for it:
     ``drive_truck(t1, c1, c2)`` -> "drive truck the t1, the c1 and the c2" (every argument named:
     a question that leaves one out may be about another action)."""
-    named = [f"the {spoken(a)}" for a in args]
-    listing = named[0] if len(named) == 1 else ", ".join(named[:-1]) + " and " + named[-1] if named else ""
-    return " ".join(filter(None, [spoken(name), listing]))
+    named = listing([f"the {spoken(a)}" for a in args]) if args else ""
+    return " ".join(filter(None, [spoken(name), named]))
