@@ -282,6 +282,9 @@ def test_ctrl_c_keeps_the_rows_written_and_says_how_to_resume(tmp_path, address,
     assert main(STRATEGIES, [*QUICK, "--address", address, "--out", str(out)]) == 130
     assert capsys.readouterr().err.strip().splitlines()[-1].startswith("strategies: interrupted; 2 rows kept")
     assert len(results.EpisodeLog(out / "episodes.jsonl").rows()) == 2
+    # the stopped sitting is on record too, so a campaign resumed later keeps its command and commit
+    sitting = json.loads((out / "run.json").read_text())["sittings"][-1]
+    assert sitting["interrupted"] is True and sitting["episodes"] == 2
 
 
 @pytest.mark.slow(seconds=20)  # 10 s on 2 shared cores

@@ -12,7 +12,7 @@ and how it reports its rows; :func:`main` does the rest, the same way for each:
 * the outputs — ``episodes.csv``, ``table.md`` and PNG plots from every row in the log, its
   tasks in the paper's order (also with ``--report-only``, from the rows alone), and ``run.json``: the command, seeds, commit,
   versions, worker count, wall time and episodes per hour, and the same for each earlier sitting of a
-  resumed campaign (``sittings``). Each row records the commit it ran on, and table.md ends with
+  resumed campaign (``sittings``; a sitting Ctrl-C stopped is recorded too, ``interrupted``). Each row records the commit it ran on, and table.md ends with
   them: a campaign that spans sittings may span changes to the code, and its table says so.
 
 ``--rows FILE`` reads another campaign's episodes instead of running any: an episode is a pure
@@ -214,13 +214,14 @@ def report_from(experiment: Experiment, campaign: Campaign, configurations: list
 
 def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
         log: results.EpisodeLog, args: argparse.Namespace, fault) -> None:
-    """Run the campaign's missing episodes, appending each row to ``log``; then write run.json."""
+    """Run the campaign's missing episodes, appending each row to ``log``; then write run.json,
+    also when Ctrl-C stopped the sitting (marked ``interrupted``; the KeyboardInterrupt goes on)."""
     commit = _commit()  # before the log is touched: the code that runs is this checkout's as the campaign starts
     log.start(args.resume)
     started = time.strftime("%Y-%m-%dT%H:%M:%S%z")
     done = log.keys()
     todo = [k for k in keys(experiment, campaign, configurations) if k not in done]
-    t0 = time.perf_counter()
+    t0, written, stopped = time.perf_counter(), 0, False
     with engine.open_client(args.address, args.workers) as client:
         n_workers = engine.workers(client)
         progress = Progress(len(todo), "episodes", label=experiment.name)
@@ -228,29 +229,37 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
               f"{f', {len(done)} already done' if done else ''}]", file=sys.stderr, flush=True)
 
         def emit(row: dict) -> None:
+            nonlocal written
             log.append({**row, "commit": commit})  # which code ran it: a campaign may span sittings and commits
+            written += 1
             progress.step()
 
         cpu0 = engine.cpu_times(client)
-        engine.run(client, todo, emit, fault)
-        cpu = engine.cpu_since(client, cpu0)
+        try:
+            engine.run(client, todo, emit, fault)
+        except KeyboardInterrupt:
+            stopped = True  # the sitting is still recorded below: its rows are in the log, and say which commit
+        cpu = engine.cpu_since(client, cpu0) if not stopped else None
     wall = time.perf_counter() - t0
     meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name,
             "world": campaign.world, "tasks": list(campaign.tasks), "seeds": _span(campaign.seeds),
-            "configurations": [list(c) for c in configurations], "resumed": bool(done), "episodes": len(todo),
-            "workers": n_workers, "cluster": args.address or "LocalCluster", "wall_s": round(wall, 1),
-            "workers_cpu_s": round(cpu, 1), "client_cpu_s": round(time.process_time(), 1),
-            "wall": duration(wall), "episodes_per_hour": round(len(todo) / wall * 3600) if wall > 0 else None,
+            "configurations": [list(c) for c in configurations], "resumed": bool(done), "episodes": written,
+            "interrupted": stopped, "workers": n_workers, "cluster": args.address or "LocalCluster",
+            "wall_s": round(wall, 1), "workers_cpu_s": round(cpu, 1) if cpu is not None else None,
+            "client_cpu_s": round(time.process_time(), 1), "wall": duration(wall),
+            "episodes_per_hour": round(written / wall * 3600) if wall > 0 else None,
             "commit": commit, "started": started, "versions": {**versions(), "dask": dask.__version__,
                                                                    "distributed": distributed.__version__}}
     # a resumed campaign keeps the record of its earlier sittings: each one's command, commit and rate
     meta["sittings"] = _sittings(campaign.out / "run.json") if done else []
     meta["sittings"].append({k: meta[k] for k in SITTING})
     (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
+    if stopped:
+        raise KeyboardInterrupt
 
 
 #: what run.json keeps of each sitting of a campaign
-SITTING = ("command", "started", "commit", "episodes", "workers", "cluster", "wall", "wall_s", "episodes_per_hour")
+SITTING = ("command", "started", "commit", "episodes", "interrupted", "workers", "cluster", "wall", "wall_s", "episodes_per_hour")
 
 
 def _sittings(path: Path) -> list[dict]:
