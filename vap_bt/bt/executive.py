@@ -257,7 +257,7 @@ class Executive:
         graph, survey = self._survey_in_tree()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                strategy=self.s.strategy, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
+                               aim=self.builder.aim, approach=self._look_at, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
                                board=Board(verified=Verified(self.s.protocol.reuse, self.roles.hand),
@@ -701,14 +701,15 @@ class Executive:
         items = list(dict.fromkeys(o for o in names if self._portable(o)))
         return self._resurvey(graph, items, f"{describe(s)} again", self._worked(s))
 
-    def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
+    def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> bool:
         """Go and look at what a check could not make out: the sweep's own view of a piece of
         furniture or a door; about an item in or on a container open at the top, the container's
         top from close by (a log in a basket shows from above: three views of the basket's front
         judged it outside, store_firewood seed 4); about items only, a view from close by of where
         belief puts them. From close by, another stand each time (the same stand would show the
         same picture, which a model answers the same way). What could not be made out is not in
-        view: the new plan re-approaches it."""
+        view: the new plan re-approaches it. Returns whether the robot reached a view (belief's
+        robot facts are then those of where it stands)."""
         for a in names:
             if Atom(self.roles.in_view, (a,)) in graph.facts:
                 graph.correct(Atom(self.roles.in_view, (a,)), False)
@@ -729,6 +730,7 @@ class Executive:
             graph.replace_predicates(self.roles.robot - {self.roles.in_view},
                                      belief.robot_facts(self.body.state(), sweep, self.builder.site_map, self.roles),
                                      "look")
+        return view is not None
 
     def _feel_hand(self, graph: SceneGraph, s: Situation) -> list[str]:
         """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
