@@ -86,8 +86,9 @@ from vap_bt.robot.camera import Aim, Body, Camera
 from vap_bt.scene import belief
 from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import SceneGraph
-from vap_bt.scene.identity import Identifier, IdentifyingCamera
+from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
+from vap_bt.scene.trail import lost_on_the_way
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
 from vap_bt.settings import default as run_default
@@ -200,6 +201,10 @@ class Executive:
         self._searching: set[str] = set()  # objects being looked for: placed nowhere
         #: how often the robot went to look from close by at each set of items (a new stand each time)
         self._near_looks: Counter[tuple[str, ...]] = Counter()
+        #: where the base stood when the gripper last said it held each thing, and, while a search
+        #: looks for what the hand lost on the way, where belief puts it (:mod:`vap_bt.scene.trail`)
+        self._held_at: dict[str, tuple[float, float]] = {}
+        self._lost_ways: dict[str, Believed] = {}
         #: where checks did not find items a measurement had put there (a false positive's spot)
         self.misses = Misses()
         self.s = settings or ExecutiveSettings()
@@ -572,6 +577,8 @@ class Executive:
         belief = {}
         for n in self.task.objects:
             if n in unplaced:
+                if n in self._lost_ways:  # the hand lost it on the way: it lies near the way
+                    belief[n] = self._lost_ways[n]
                 continue
             b = self.builder.believed(graph, n, seen_first=self.graph is None or n in self._searching)
             if b is not None:
@@ -637,10 +644,14 @@ class Executive:
 
         def look_for() -> Survey | None:
             if relocate.result:
-                return self._resurvey(graph, relocate.result, worked=self._worked(s))
+                return self._resurvey(graph, relocate.result, worked=self._worked(s), carried=carried(feel.result))
             if times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
                 return self._look_afresh(graph, s)
             return None
+
+        def carried(dropped: list[str]) -> tuple[str, ...]:  # what left the hand: belief's, or the check's
+            held = s.atom is not None and self.roles.is_held(s.atom) and s.observed is False
+            return tuple(dict.fromkeys([*dropped, *((s.atom.args[0],) if held else ())]))
 
         search = Step("look for what is lost", look_for, executor, halt)
         done = self._drive(recovery_tree(describe(s), [*steps, feel, relocate, search]), deadline, out)
@@ -811,11 +822,12 @@ class Executive:
         return tuple(n for n in (s.action.args if s.action else ()) if self.builder.site_map.piece(n) is not None)
 
     def _resurvey(self, graph: SceneGraph, lost: list[str], why: str | None = None,
-                  worked: tuple[str, ...] = ()) -> Survey:
+                  worked: tuple[str, ...] = (), carried: tuple[str, ...] = ()) -> Survey:
         """Sweep the rooms belief put the lost objects in and the robot's own; if that does not
         find them, the rest of the house; then the floor along every wall of those rooms, until
         they are found. Every item the sweep saw is re-located. ``why``: the
-        reason to look, when it is not that ``lost`` are lost."""
+        reason to look, when it is not that ``lost`` are lost; ``carried``: what the hand lost in
+        the situation, believed near the way it was carried while it is looked for."""
         here = self.body.state().room
         near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == self.roles.in_room and a.args[0] == o}
                       - {here}) + ([here] if here else [])
@@ -823,10 +835,19 @@ class Executive:
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
         self._searching = set(lost)  # placed nowhere while looked for: taken wherever first seen
+        self._lost_ways = self._ways(lost, carried)  # but what the hand lost: near its way
         try:
             return self._search(graph, lost, why, near, items, worked)
         finally:
-            self._searching = set()
+            self._searching, self._lost_ways = set(), {}
+
+    def _ways(self, lost: list[str], carried: tuple[str, ...]) -> dict[str, Believed]:
+        """Where belief puts each of ``lost`` the hand lost while the base drove: near the way from
+        where the gripper last held it to where the base is (:mod:`vap_bt.scene.trail`)."""
+        here = self.body.state().base_pose
+        if here is None:
+            return {}
+        return {o: lost_on_the_way(self._held_at[o], here[:2]) for o in carried if o in lost and o in self._held_at}
 
     def _search(self, graph: SceneGraph, lost: list[str], why: str | None, near: list[str], items: list[str],
                 worked: tuple[str, ...] = ()) -> Survey:
@@ -914,9 +935,12 @@ class Executive:
         state service: behaviours ask it in flight (``ctx.submit``), never from ``update()``."""
         if not self._feels(atom):
             return None
-        holding = self.body.state().gripper_holding
+        state = self.body.state()
+        holding = state.gripper_holding
         if holding is None:
             return None
+        if holding and self.roles.is_held(atom) and atom in graph.facts and state.base_pose is not None:
+            self._held_at[atom.args[0]] = state.base_pose[:2]
         return (not holding) if atom.predicate == self.roles.hand_empty else (holding and atom in graph.facts)
 
     def _in_hand(self, graph: SceneGraph) -> set[str]:
