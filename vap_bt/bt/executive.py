@@ -88,7 +88,7 @@ from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
-from vap_bt.scene.trail import lost_on_the_way
+from vap_bt.scene.trail import lost_on_the_way, trail_spots
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
 from vap_bt.settings import default as run_default
@@ -860,12 +860,17 @@ class Executive:
         spots = [state.base_pose[:2]] if here and state.base_pose else []
         spots += [p for n in worked if (p := self.builder.front_spot(n)) is not None] if here else []
         around = tuple(v for p in spots for v in self.builder.spot_views(here, p))
-        sweep = self.builder.sweep(self.camera, near, first=around)
-        rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
 
         def found() -> bool:  # a sighting where a check found it missing is not (yet) taken
             return all(o in in_hand or self._placed_anew(o, in_hand) for o in lost)
+
+        sweep = self.builder.sweep(self.camera, near, first=around)
+        trail = self._trail(state)
+        if trail and not found():
+            self.progress(f"    not there: looking along the way {', '.join(self._lost_ways)} was carried")
+            sweep = self.builder.look_round(self.camera, trail, until=found).after(sweep)
+        rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
 
         if rest and not found():
             self.progress(f"    not there: searching {', '.join(rest)}")
@@ -881,6 +886,15 @@ class Executive:
         survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
+
+    def _trail(self, state) -> list[tuple[str, list]]:
+        """Looks round the floor along the way from where the gripper last held each thing the hand
+        lost on the way to where the base stood when it was found gone (:func:`trail_spots`)."""
+        if state.base_pose is None:
+            return []
+        spots = [spot for o in self._lost_ways
+                 for spot in trail_spots(self.builder.site_map, self._held_at[o], state.base_pose[:2])]
+        return [(room, self.builder.spot_views(room, p)) for room, p in spots]
 
     def _closer_looks(self, sweep: SweepRecord, rooms: list[str], found: Callable[[], bool],
                       lead: Callable[[], str]) -> SweepRecord:

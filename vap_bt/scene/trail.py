@@ -10,18 +10,28 @@ an item only the task file places "somewhere on the garden floor" took it (gathe
 the other stick, told to lie in the garden and never seen; the lost one was never found and no
 plan was left). Believed along its way, the lost thing is the cheaper match for a detection
 there (a told belief pays for its spread over a whole room: :func:`vap_bt.scene.identity._spread`).
+
+Where a search's sweep does not show it, the floor along the way is looked at, spot by spot
+(:func:`trail_spots`): a knife that slipped as the base set off from where it was grasped lay
+2.5 m behind the base, where neither the look round the base nor the kitchen's sweep showed it
+(halve_egg seed 1: "no plan"). A base goes from room to room through the doorway between them,
+so the way is two straight legs through that doorway (one when both ends are in one room).
 """
 
 from __future__ import annotations
 
 import math
 
+from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.identity import Believed
 
 #: m round the way the base drove within which a thing lost from the hand may lie: the hand holds
 #: it about 0.55 m out from the base's centre while it drives (skills.hands' carry pose), and a
 #: dropped thing bounces and rolls a little
 LOST_MARGIN = 1.0
+#: m between two spots of the floor looked at along the way (a look round a spot covers about a
+#: metre of floor)
+TRAIL_STEP = 0.8
 
 Point = tuple[float, float]
 
@@ -33,3 +43,31 @@ def lost_on_the_way(start: Point, end: Point, height: float = 0.0) -> Believed:
     round its ends' middle covers it too). On the floor (``height``), placed on nothing."""
     mid = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2, height)
     return Believed(mid, math.dist(start, end) / 2 + LOST_MARGIN)
+
+
+def trail_spots(site_map: SiteMap, start: Point, end: Point) -> list[tuple[str, Point]]:
+    """Spots on the floor every :data:`TRAIL_STEP` along the way the base drove from ``start`` to
+    ``end`` (map frame), from ``start`` on and short of ``end`` (the look round where the base
+    stands covers that), each with its room: two straight legs through the doorway between the
+    ends' rooms when they differ, else one. A spot in no room (the doorway itself) has no floor
+    to look at and is left out."""
+    spots = [p for a, b in _legs(site_map, start, end) for p in _along(a, b)]
+    return [(room, p) for p in spots if (room := site_map.room_at(*p)) is not None]
+
+
+def _legs(site_map: SiteMap, start: Point, end: Point) -> list[tuple[Point, Point]]:
+    """The straight legs of the way: through the doorway between the ends' rooms, if they differ
+    and a door joins them."""
+    rooms = {site_map.room_at(*start), site_map.room_at(*end)}
+    door = next((d for d in site_map.doors if d.pose is not None and set(d.rooms) == rooms), None) \
+        if len(rooms) == 2 and None not in rooms else None
+    if door is None:
+        return [(start, end)]
+    via = (door.pose[0], door.pose[1])
+    return [(start, via), (via, end)]
+
+
+def _along(a: Point, b: Point) -> list[Point]:
+    """Points every TRAIL_STEP from ``a`` towards ``b``, ``a`` included, ``b`` not."""
+    n = math.ceil(math.dist(a, b) / TRAIL_STEP)
+    return [(a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n) for k in range(n)]
