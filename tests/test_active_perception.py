@@ -345,3 +345,30 @@ def test_a_goal_check_that_cannot_get_to_its_objects_moves_round_them_as_before(
     status, node, ctx, camera, child, went = goal_check_from_afar(reach=False)
     assert went == [CUP_ON_TABLE.args] and node.rounds[0].refused[0] == "to its place" and sorted(camera.asked) == sorted(AROUND_ORDER)
     assert child.runs == 1 and ctx.board.verifications[-1].outcome == "unsettled" and ctx.board.unconfirmed_goal
+
+
+def test_where_a_thing_rests_is_not_claimed_on_earlier_views_while_the_goal_checks_own_show_no_sign_of_it():
+    """retrieve_bottles seed 0 with injection: the place check judged on(bottle2, counter) on a
+    bottle that was bottle1 (the hand had taken one for the other); at the goal check the frame
+    of the counter showed one bottle, taken for bottle1, and no bottle2 — and the place check's
+    views alone claimed it while bottle2 lay on the floor. A state (a cup filled at the sink, in
+    the microwave now) still counts its earlier views where no view of the check shows it."""
+    bottle2 = Atom("on", ("bottle2", "counter"))
+    filled = Atom("filled", ("cup",))
+    calibration = Calibration({p: {"settled_yes": (900, 100), "settled_no": (100, 900), "consistent_yes": (60, 40)}
+                               for p in ("on", "filled")})
+
+    def goal_check(atom: Atom) -> ActivePerception:
+        ctx = ExecutionContext(graph=SceneGraph.of_facts({atom}), vlm=Suggests("left"), camera=Camera(), skills=None,
+                               budget=0, calibration=calibration, claim_risk=RISK)
+        ctx.board.verified.saw(atom, [view("yyyyy", True), view("nyyyy", True)])
+        node = ActivePerception(ctx, ScriptedCheck(atom, [view("nynyy", False, unshown=atom.args[:1])]), "goal", None, 0)
+        for _ in range(10):
+            node.tick_once()
+            if node.status != Status.RUNNING:
+                break
+        return node
+
+    assert goal_check(bottle2).board.verifications[-1].outcome == "unsettled"
+    assert goal_check(bottle2).board.unconfirmed_goal == [bottle2]
+    assert goal_check(filled).board.verifications[-1].outcome == "confirmed"

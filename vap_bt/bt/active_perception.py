@@ -176,7 +176,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         return self.ctx.roles.holding(self.atom.args[0]) in self.ctx.graph.facts
 
     def _evidence(self) -> list[Round]:
-        return judgement.evidence(self.subject, self.rounds, self.board.verified.views(self.atom))
+        return judgement.evidence(self.subject, self.rounds, self.board.verified.views(self.atom),
+                                  self.ctx.roles.supports(self.atom))
 
     def _decide(self, exhausted: bool) -> Status:
         # greedy-all, once the first view did not decide, weighs the views only when it has them all
