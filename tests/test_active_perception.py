@@ -19,7 +19,8 @@ from vap_bt.perception.judgement import Look
 from vap_bt.perception.verification import Round
 from vap_bt.perception.viewpoints import AROUND_ORDER, ViewpointStrategy
 from vap_bt.perception.vlm import Answer
-from vap_bt.robot.frame import Frame
+from vap_bt.robot.camera import Aim
+from vap_bt.robot.frame import Detection, Frame
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.taskfile import load
 
@@ -46,9 +47,10 @@ def view(answers: str, sufficient: bool | None, unshown: tuple[str, ...] = ()) -
 class ScriptedCheck(py_trees.behaviour.Behaviour):
     """A check whose n-th run produces the n-th scripted round (a look at one frame)."""
 
-    def __init__(self, atom: Atom, rounds: list[Round], expected: bool = True) -> None:
+    def __init__(self, atom: Atom, rounds: list[Round], expected: bool = True, frame: Frame | None = None) -> None:
         super().__init__(name=str(atom))
         self.atom, self.expected, self._script = atom, expected, list(rounds)
+        self.frame = frame or Frame("f", 0.0)  # what each run's look was asked of
         self.look: Look | None = None
         self.runs = 0
 
@@ -57,7 +59,7 @@ class ScriptedCheck(py_trees.behaviour.Behaviour):
 
     def update(self) -> Status:
         r, self.runs = self._script[self.runs], self.runs + 1
-        self.look = Look(r, Frame("f", 0.0))
+        self.look = Look(r, self.frame)
         return Status.SUCCESS if r.settled and r.vote == self.expected else Status.FAILURE
 
 
@@ -305,8 +307,8 @@ def test_the_views_of_an_atom_last_until_an_action_could_change_it():
     assert len(verified.views(filled)) == 1 and verified.views(heated) == []
 
 
-def goal_check_from_afar(reach: bool) -> tuple[Status, ActivePerception, ExecutionContext, Camera, ScriptedCheck,
-                                                list]:
+def goal_check_from_afar(reach: bool, shows_the_table: bool = False) -> tuple[
+        Status, ActivePerception, ExecutionContext, Camera, ScriptedCheck, list]:
     """A goal check of CUP_ON_TABLE whose first frame did not show the cup (the robot stands in
     another room: every move round the target is refused at a doorway), where the executive's
     way to a view of where belief puts it does (``reach``) or does not get there; the last item
@@ -319,9 +321,12 @@ def goal_check_from_afar(reach: bool) -> tuple[Status, ActivePerception, Executi
             camera.refused = set()
         return reach
 
-    child = ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", False, unshown=("cup", "table"))] + [view("yyyyy", True)] * 3)
+    frame = Frame("f", 0.0, (Detection("table", name="table"),) if shows_the_table else ())
+    child = ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", False, unshown=("cup",))] + [view("yyyyy", True)] * 3,
+                          frame=frame)
     ctx = ExecutionContext(graph=SceneGraph.of_facts({CUP_ON_TABLE}), vlm=Suggests("left"), camera=camera,
-                           skills=None, budget=3, calibration=CAL, claim_risk=RISK, approach=approach)
+                           skills=None, budget=3, calibration=CAL, claim_risk=RISK, approach=approach,
+                           aim=lambda graph, names: Aim(tuple(names), (0.0, 0.0, 0.7), "table"))
     node = ActivePerception(ctx, child, "goal", None, 0)
     for _ in range(50):
         node.tick_once()
@@ -339,6 +344,13 @@ def test_a_goal_check_that_does_not_show_its_objects_goes_to_where_belief_puts_t
     assert node.rounds[0].direction == "to its place" and node.rounds[0].moved
     assert status == Status.SUCCESS and ctx.board.verifications[-1].outcome == "confirmed"
     assert not ctx.board.unconfirmed_goal and child.runs == 4
+
+
+def test_a_goal_check_whose_frame_shows_the_place_but_not_the_thing_moves_round_it():
+    """The frame shows the table and no cup (a small thing the detector missed): the robot stands
+    where it should look from, and the check moves round the cup as before."""
+    status, node, ctx, camera, child, went = goal_check_from_afar(reach=True, shows_the_table=True)
+    assert went == [] and node.rounds[0].direction != "to its place"
 
 
 def test_a_goal_check_that_cannot_get_to_its_objects_moves_round_them_as_before():

@@ -199,15 +199,20 @@ class ActivePerception(py_trees.decorators.Decorator):
         return self._settle(judgement.conclude(self.subject, v, None))
 
     def _out_of_sight(self) -> bool:
-        """Whether a goal check's last frame did not show what its atom is about, and the check has
-        not gone to look at it yet. The plan is through, and the robot may stand anywhere — in
-        another room after a search, where every move round the target is refused at a doorway
-        (retrieve_bottles seed 4: a bottle on the counter checked from the garden, three times
-        "could not see"): a move relative to that stand shows the target no better, a view of where
-        belief puts it does. Mid-plan the robot stands where the plan's actions brought it, which
-        the next action presumes: the checks there keep to moves round the target."""
-        return self.phase == "goal" and not self._approached and bool(self.rounds[-1].unshown) \
-            and not self.search.spent
+        """Whether a goal check's last frame showed neither what its atom is about nor the place
+        belief puts it at, and the check has not gone to look at it yet. The plan is through, and
+        the robot may stand anywhere — in another room after a search, where every move round the
+        target is refused at a doorway (retrieve_bottles seed 4: a bottle on the counter checked
+        from the garden, three times "could not see"): a move relative to that stand shows the
+        target no better, a view of where belief puts it does. Where the frame shows the place
+        (a cutting board, and no egg on it: a detector's miss of a small thing), the robot is
+        where it should look from, and the moves round the target stay (a floor, which no detector
+        finds, tells nothing). Mid-plan the robot stands where the plan's actions brought it,
+        which the next action presumes: the checks there keep to moves round the target."""
+        if self.phase != "goal" or self._approached or not self.rounds[-1].unshown or self.search.spent:
+            return False
+        place = self.ctx.aim(self.ctx.graph, self.atom.args).place
+        return place is None or place in self.ctx.undetectable or place not in self._look.frame.detected()
 
     def _approach(self) -> Status:
         """Go to a view of where belief puts the atom's objects (one move of the budget)."""
