@@ -277,3 +277,6 @@ def test_a_bottle_the_hand_lost_on_the_way_takes_a_detection_near_the_way_not_on
     assert names(ident().identify(dropped, {"bottle1": way, "bottle2": told})) == ["bottle1"]
     assert names(ident().identify(pixel_frame(("bottle", (-0.6, -0.5, 0.05))), {"bottle1": way, "bottle2": told})) \
         == ["bottle2"]
+    # nothing else of its class believed: a detection far from the way, up on the counter, is it
+    # (heat_pie seed 0: the pie the hand lost at the oven lay on the counter's top)
+    assert names(ident().identify(pixel_frame(("bottle", (-0.8, -0.6, 0.95))), {"bottle1": way})) == ["bottle1"]

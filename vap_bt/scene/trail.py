@@ -40,9 +40,13 @@ def lost_on_the_way(start: Point, end: Point, height: float = 0.0) -> Believed:
     """Where a thing lost from the hand lies, the base having driven from ``start`` (where the
     gripper last held it) to ``end`` (map frame): within :data:`LOST_MARGIN` of the straight way
     between them, as a disc round its middle (a way through a doorway is bent, but the disc
-    round its ends' middle covers it too). On the floor (``height``), placed on nothing."""
+    round its ends' middle covers it too). On the floor (``height``), placed on nothing — and,
+    as a told belief, anywhere else a detection of its class no other object takes (it may have
+    landed on a counter beside the way, or rolled further: heat_pie seed 0 lost a pie onto the
+    counter's top, 0.9 m up, and a search that took it only near the floor of the way would not
+    have found it, where one placing it nowhere did)."""
     mid = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2, height)
-    return Believed(mid, math.dist(start, end) / 2 + LOST_MARGIN)
+    return Believed(mid, math.dist(start, end) / 2 + LOST_MARGIN, told=True)
 
 
 def trail_spots(site_map: SiteMap, start: Point, end: Point) -> list[tuple[str, Point]]:
