@@ -43,8 +43,8 @@ def lost_on_the_way(start: Point, end: Point, height: float = 0.0) -> Believed:
     round its ends' middle covers it too). On the floor (``height``), placed on nothing — and,
     as a told belief, anywhere else a detection of its class no other object takes (it may have
     landed on a counter beside the way, or rolled further: heat_pie seed 0 lost a pie onto the
-    counter's top, 0.9 m up, and a search that took it only near the floor of the way would not
-    have found it, where one placing it nowhere did)."""
+    counter's top, 0.9 m up, where a belief gated round the floor of the way may not reach; a
+    thing placed nowhere, as before, took any detection of its class no one else took)."""
     mid = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2, height)
     return Believed(mid, math.dist(start, end) / 2 + LOST_MARGIN, told=True)
 
