@@ -260,3 +260,23 @@ def test_a_skill_finds_its_target_by_the_goals_hint():
             assert np.linalg.norm(seen.centroid - there) < 0.05
     finally:
         world.close()
+
+
+def test_a_bottle_the_hand_lost_on_the_way_takes_a_detection_near_the_way_not_one_told_of_the_room():
+    """gather_kindling seed 3 with injection: the hand lost a stick as the base drove off, 0.5 m
+    from it; the other stick, only told to lie somewhere on the garden floor, took every sighting
+    of the lost one while the lost one, looked for and so placed nowhere, took nothing — it was
+    never found, and no plan was left. Believed near the way it was carried, the lost one takes it;
+    a detection of its class far from that way is still the told one's."""
+    from vap_bt.scene.trail import lost_on_the_way
+
+    told = Believed((0.0, 0.0, 0.0), 2.8, support="floor_kitchen", told=True)
+    dropped = pixel_frame(("bottle", (0.9, 0.6, 0.05)))
+    assert names(ident().identify(dropped, {"bottle2": told})) == ["bottle2"]  # as before: the lost one placed nowhere
+    way = lost_on_the_way((1.2, 1.0), (1.2, 0.25))
+    assert names(ident().identify(dropped, {"bottle1": way, "bottle2": told})) == ["bottle1"]
+    assert names(ident().identify(pixel_frame(("bottle", (-0.6, -0.5, 0.05))), {"bottle1": way, "bottle2": told})) \
+        == ["bottle2"]
+    # nothing else of its class believed: a detection far from the way, up on the counter, is it
+    # (heat_pie seed 0: the pie the hand lost at the oven lay on the counter's top)
+    assert names(ident().identify(pixel_frame(("bottle", (-0.8, -0.6, 0.95))), {"bottle1": way})) == ["bottle1"]

@@ -77,6 +77,16 @@ def test_a_goal_check_weighs_earlier_views_of_the_atom_each_once():
     assert evidence(pre(), [mine], [earlier]) == [mine]
 
 
+def test_where_a_thing_rests_counts_earlier_views_only_once_the_goal_checks_own_showed_it():
+    earlier, unshown = view("yyyyy", True), view("nynyy", False)
+    unshown.unshown = ("cup",)
+    goal = Subject(CUP_ON_TABLE, True, "goal")
+    assert evidence(goal, [unshown], [earlier], whereabouts=True) == [unshown]
+    assert evidence(goal, [unshown], [earlier], whereabouts=False) == [earlier, unshown]
+    shown = view("yyyyy", True)
+    assert evidence(goal, [unshown, shown], [earlier], whereabouts=True) == [earlier, unshown, shown]
+
+
 def test_the_gripper_settles_what_the_camera_could_not():
     subject = Subject(HOLDING_CUP, True, "eff")
     unsettled = Verdict(False, "unsettled")

@@ -21,7 +21,9 @@ VLM's suggestion about the last frame, or the next of the greedy round; ``greedy
 every viewpoint of its round before its views are weighed together), and the move is work in
 flight like any other; the child is not ticked meanwhile. A direction the robot cannot move to
 is replaced at once by another (a frame from the same spot would show the same picture), and
-when no direction is left, or the check is about the hand or what it holds (the wrist camera
+a goal check whose frame did not show what its atom is about first goes to a view of where
+belief puts it (``ctx.approach``: the plan is through, and the robot may stand in another room),
+and when no direction is left, or the check is about the hand or what it holds (the wrist camera
 moves with the hand: no base move shows it better), the views so far are all there are. Beyond
 the paper (``ctx.second_look``, on by default) a surprise and a goal value need a second view
 from a new picture, and a goal value odds that reach the claim's bound, while the budget allows
@@ -66,6 +68,10 @@ from vap_bt.perception.verification import Round, Verdict, choice, target_of
 from vap_bt.perception.viewpoints import ViewpointSearch
 
 
+#: the direction a round records when the check went to a view of where belief puts its objects
+APPROACH = "to its place"
+
+
 class Check(Protocol):
     """What ActivePerception decorates: a behaviour that checks ``atom`` against ``expected`` and
     leaves what its last run saw in ``look`` (None until a run is done)."""
@@ -102,6 +108,7 @@ class ActivePerception(py_trees.decorators.Decorator):
         #: whether the first view decided the check (None: not judged yet, or a check of the hand,
         #: which no move shows better): the H2 measure's "uncertain" checks are those it did not
         self._first_settled: bool | None = None
+        self._approached = False  # whether this check went to a view of where belief puts its objects
 
     @property
     def atom(self) -> Atom:
@@ -121,6 +128,7 @@ class ActivePerception(py_trees.decorators.Decorator):
 
     def initialise(self) -> None:
         self.rounds, self._job, self._stage, self._look, self._first_settled = [], None, "look", None, None
+        self._approached = False
         self.search = ViewpointSearch(self.ctx.viewpoints, self.ctx.budget)
         # lean: verified before, and nothing since could have changed it. Never the goal's check:
         # success is claimed on it, so it looks (an earlier value is evidence only beside its own views)
@@ -168,7 +176,8 @@ class ActivePerception(py_trees.decorators.Decorator):
         return self.ctx.roles.holding(self.atom.args[0]) in self.ctx.graph.facts
 
     def _evidence(self) -> list[Round]:
-        return judgement.evidence(self.subject, self.rounds, self.board.verified.views(self.atom))
+        return judgement.evidence(self.subject, self.rounds, self.board.verified.views(self.atom),
+                                  self.ctx.roles.supports(self.atom))
 
     def _decide(self, exhausted: bool) -> Status:
         # greedy-all, once the first view did not decide, weighs the views only when it has them all
@@ -177,6 +186,8 @@ class ActivePerception(py_trees.decorators.Decorator):
                                                  self.atom in self.board.doubted)
         if len(self.rounds) == 1 and self._first_settled is None and not self._in_hand():
             self._first_settled = v is not None and v.outcome != "unsettled"
+        if v is None and self._out_of_sight():  # first to where belief puts what the frame did not show
+            return self._approach()
         if v is None:  # look again: where, the strategy says (or the model, asked about the last frame)
             nxt = self.search.next(self.atom, self.rounds[-1], self.ctx.profile)
             if nxt is None or isinstance(nxt, str):
@@ -186,6 +197,28 @@ class ActivePerception(py_trees.decorators.Decorator):
             self._verdict = v
             return self._start("feel", self.ctx.ask_body(self.ctx.felt, self.ctx.graph, self.atom))
         return self._settle(judgement.conclude(self.subject, v, None))
+
+    def _out_of_sight(self) -> bool:
+        """Whether a goal check's last frame showed neither what its atom is about nor the place
+        belief puts it at, and the check has not gone to look at it yet. The plan is through, and
+        the robot may stand anywhere — in another room after a search, where every move round the
+        target is refused at a doorway (retrieve_bottles seed 4: a bottle on the counter checked
+        from the garden, three times "could not see"): a move relative to that stand shows the
+        target no better, a view of where belief puts it does. Where the frame shows the place
+        (a cutting board, and no egg on it: a detector's miss of a small thing), the robot is
+        where it should look from, and the moves round the target stay (a floor, which no detector
+        finds, tells nothing). Mid-plan the robot stands where the plan's actions brought it,
+        which the next action presumes: the checks there keep to moves round the target."""
+        if self.phase != "goal" or self._approached or not self.rounds[-1].unshown or self.search.spent:
+            return False
+        place = self.ctx.aim(self.ctx.graph, self.atom.args).place
+        return place is None or place in self.ctx.undetectable or place not in self._look.frame.detected()
+
+    def _approach(self) -> Status:
+        """Go to a view of where belief puts the atom's objects (one move of the budget)."""
+        self._approached = True
+        self.rounds[-1].direction = APPROACH
+        return self._start("move", self.ctx.submit(self.ctx.approach, self.ctx.graph, self.atom.args))
 
     def _start(self, stage: str, job: Future) -> Status:
         self._stage, self._job = stage, job

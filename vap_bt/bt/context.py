@@ -76,6 +76,9 @@ class ExecutionContext:
     feels: Callable[[Atom], bool] = lambda atom: True
     #: where to point the camera for some objects, from belief (the scene-graph builder's ``aim``)
     aim: Callable[[SceneGraph, tuple[str, ...]], Aim] = lambda graph, names: Aim(tuple(names))
+    #: go to a view of where belief puts some objects, from wherever the robot stands (another
+    #: room, after a search), and say whether it got there (the executive's look at them)
+    approach: Callable[[SceneGraph, tuple[str, ...]], bool] = lambda graph, names: False
     #: names no detector ever finds (the map's rooms and floors): never "missing" from a view
     undetectable: frozenset = frozenset()
     #: what belief says about a goal's objects, sent with it (the scene-graph builder's ``hints``)

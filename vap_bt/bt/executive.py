@@ -86,8 +86,9 @@ from vap_bt.robot.camera import Aim, Body, Camera
 from vap_bt.scene import belief
 from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import SceneGraph
-from vap_bt.scene.identity import Identifier, IdentifyingCamera
+from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
+from vap_bt.scene.trail import lost_on_the_way, trail_spots
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
 from vap_bt.settings import default as run_default
@@ -200,6 +201,10 @@ class Executive:
         self._searching: set[str] = set()  # objects being looked for: placed nowhere
         #: how often the robot went to look from close by at each set of items (a new stand each time)
         self._near_looks: Counter[tuple[str, ...]] = Counter()
+        #: where the base stood when the gripper last said it held each thing, and, while a search
+        #: looks for what the hand lost on the way, where belief puts it (:mod:`vap_bt.scene.trail`)
+        self._held_at: dict[str, tuple[float, float]] = {}
+        self._lost_ways: dict[str, Believed] = {}
         #: where checks did not find items a measurement had put there (a false positive's spot)
         self.misses = Misses()
         self.s = settings or ExecutiveSettings()
@@ -257,7 +262,7 @@ class Executive:
         graph, survey = self._survey_in_tree()
         ctx = ExecutionContext(graph=graph, vlm=self.vlm, camera=self.camera, skills=self.skills,
                                strategy=self.s.strategy, budget=self.s.budget, vote=self.s.vote, progress=self.progress,
-                               aim=self.builder.aim, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
+                               aim=self.builder.aim, approach=self._look_at, hints=self.builder.hints, undetectable=self.builder.undetectable(), unseen=self.s.unseen, felt=self._felt, feels=self._feels,
                                protocol=self.s.protocol, viewpoints=ViewpointStrategy(self.s.viewpoints),
                                second_look=self.s.second_look, claim_risk=self.s.claim_risk,
                                board=Board(verified=Verified(self.s.protocol.reuse, self.roles.hand),
@@ -572,6 +577,8 @@ class Executive:
         belief = {}
         for n in self.task.objects:
             if n in unplaced:
+                if n in self._lost_ways:  # the hand lost it on the way: it lies near the way
+                    belief[n] = self._lost_ways[n]
                 continue
             b = self.builder.believed(graph, n, seen_first=self.graph is None or n in self._searching)
             if b is not None:
@@ -637,10 +644,14 @@ class Executive:
 
         def look_for() -> Survey | None:
             if relocate.result:
-                return self._resurvey(graph, relocate.result, worked=self._worked(s))
+                return self._resurvey(graph, relocate.result, worked=self._worked(s), carried=carried(feel.result))
             if times >= LOOK_AFRESH:  # the same failure again: look round before the same plan
                 return self._look_afresh(graph, s)
             return None
+
+        def carried(dropped: list[str]) -> tuple[str, ...]:  # what left the hand: belief's, or the check's
+            held = s.atom is not None and self.roles.is_held(s.atom) and s.observed is False
+            return tuple(dict.fromkeys([*dropped, *((s.atom.args[0],) if held else ())]))
 
         search = Step("look for what is lost", look_for, executor, halt)
         done = self._drive(recovery_tree(describe(s), [*steps, feel, relocate, search]), deadline, out)
@@ -701,14 +712,15 @@ class Executive:
         items = list(dict.fromkeys(o for o in names if self._portable(o)))
         return self._resurvey(graph, items, f"{describe(s)} again", self._worked(s))
 
-    def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> None:
+    def _look_at(self, graph: SceneGraph, names: tuple[str, ...]) -> bool:
         """Go and look at what a check could not make out: the sweep's own view of a piece of
         furniture or a door; about an item in or on a container open at the top, the container's
         top from close by (a log in a basket shows from above: three views of the basket's front
         judged it outside, store_firewood seed 4); about items only, a view from close by of where
         belief puts them. From close by, another stand each time (the same stand would show the
         same picture, which a model answers the same way). What could not be made out is not in
-        view: the new plan re-approaches it."""
+        view: the new plan re-approaches it. Returns whether the robot reached a view (belief's
+        robot facts are then those of where it stands)."""
         for a in names:
             if Atom(self.roles.in_view, (a,)) in graph.facts:
                 graph.correct(Atom(self.roles.in_view, (a,)), False)
@@ -729,6 +741,7 @@ class Executive:
             graph.replace_predicates(self.roles.robot - {self.roles.in_view},
                                      belief.robot_facts(self.body.state(), sweep, self.builder.site_map, self.roles),
                                      "look")
+        return view is not None
 
     def _feel_hand(self, graph: SceneGraph, s: Situation) -> list[str]:
         """An empty gripper holds nothing, whatever belief says (proprioception). Returns what
@@ -809,11 +822,12 @@ class Executive:
         return tuple(n for n in (s.action.args if s.action else ()) if self.builder.site_map.piece(n) is not None)
 
     def _resurvey(self, graph: SceneGraph, lost: list[str], why: str | None = None,
-                  worked: tuple[str, ...] = ()) -> Survey:
+                  worked: tuple[str, ...] = (), carried: tuple[str, ...] = ()) -> Survey:
         """Sweep the rooms belief put the lost objects in and the robot's own; if that does not
         find them, the rest of the house; then the floor along every wall of those rooms, until
         they are found. Every item the sweep saw is re-located. ``why``: the
-        reason to look, when it is not that ``lost`` are lost."""
+        reason to look, when it is not that ``lost`` are lost; ``carried``: what the hand lost in
+        the situation, believed near the way it was carried while it is looked for."""
         here = self.body.state().room
         near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == self.roles.in_room and a.args[0] == o}
                       - {here}) + ([here] if here else [])
@@ -821,10 +835,19 @@ class Executive:
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
         self._searching = set(lost)  # placed nowhere while looked for: taken wherever first seen
+        self._lost_ways = self._ways(lost, carried)  # but what the hand lost: near its way
         try:
             return self._search(graph, lost, why, near, items, worked)
         finally:
-            self._searching = set()
+            self._searching, self._lost_ways = set(), {}
+
+    def _ways(self, lost: list[str], carried: tuple[str, ...]) -> dict[str, Believed]:
+        """Where belief puts each of ``lost`` the hand lost while the base drove: near the way from
+        where the gripper last held it to where the base is (:mod:`vap_bt.scene.trail`)."""
+        here = self.body.state().base_pose
+        if here is None:
+            return {}
+        return {o: lost_on_the_way(self._held_at[o], here[:2]) for o in carried if o in lost and o in self._held_at}
 
     def _search(self, graph: SceneGraph, lost: list[str], why: str | None, near: list[str], items: list[str],
                 worked: tuple[str, ...] = ()) -> Survey:
@@ -837,12 +860,17 @@ class Executive:
         spots = [state.base_pose[:2]] if here and state.base_pose else []
         spots += [p for n in worked if (p := self.builder.front_spot(n)) is not None] if here else []
         around = tuple(v for p in spots for v in self.builder.spot_views(here, p))
-        sweep = self.builder.sweep(self.camera, near, first=around)
-        rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
         in_hand = self._in_hand(graph)
 
         def found() -> bool:  # a sighting where a check found it missing is not (yet) taken
             return all(o in in_hand or self._placed_anew(o, in_hand) for o in lost)
+
+        sweep = self.builder.sweep(self.camera, near, first=around)
+        trail = self._trail(state)
+        if trail and not found():
+            self.progress(f"    not there: looking along the way {', '.join(self._lost_ways)} was carried")
+            sweep = self.builder.look_round(self.camera, trail, until=found).after(sweep)
+        rest = [r for r in sweep_order(self.builder.site_map, self.body.state().room) if r not in near]
 
         if rest and not found():
             self.progress(f"    not there: searching {', '.join(rest)}")
@@ -858,6 +886,15 @@ class Executive:
         survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
+
+    def _trail(self, state) -> list[tuple[str, list]]:
+        """Looks round the floor along the way from where the gripper last held each thing the hand
+        lost on the way to where the base stood when it was found gone (:func:`trail_spots`)."""
+        if state.base_pose is None:
+            return []
+        spots = [spot for o in self._lost_ways
+                 for spot in trail_spots(self.builder.site_map, self._held_at[o], state.base_pose[:2])]
+        return [(room, self.builder.spot_views(room, p)) for room, p in spots]
 
     def _closer_looks(self, sweep: SweepRecord, rooms: list[str], found: Callable[[], bool],
                       lead: Callable[[], str]) -> SweepRecord:
@@ -912,9 +949,12 @@ class Executive:
         state service: behaviours ask it in flight (``ctx.submit``), never from ``update()``."""
         if not self._feels(atom):
             return None
-        holding = self.body.state().gripper_holding
+        state = self.body.state()
+        holding = state.gripper_holding
         if holding is None:
             return None
+        if holding and self.roles.is_held(atom) and atom in graph.facts and state.base_pose is not None:
+            self._held_at[atom.args[0]] = state.base_pose[:2]
         return (not holding) if atom.predicate == self.roles.hand_empty else (holding and atom in graph.facts)
 
     def _in_hand(self, graph: SceneGraph) -> set[str]:

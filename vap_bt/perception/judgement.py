@@ -83,10 +83,16 @@ class Settlement:
     basis: Basis
 
 
-def evidence(subject: Subject, own: list[Round], earlier: list[Round]) -> list[Round]:
+def evidence(subject: Subject, own: list[Round], earlier: list[Round], whereabouts: bool = False) -> list[Round]:
     """The views a check weighs: its own; for a goal atom also ``earlier`` ones (views other
-    checks judged it on since the last action that could change it), each once."""
-    if subject.phase != "goal":
+    checks judged it on since the last action that could change it), each once — but for where
+    a thing rests (``whereabouts``: ``on``, ``inside``) only once one of its own views showed the
+    thing. A state persists where no view shows it (a cup filled at the sink is still filled in
+    the microwave), but a thing's place is what a slip, a nudge or the hand taking the other
+    bottle for it changes without any action of the plan touching the atom: retrieve_bottles
+    seed 0 claimed on(bottle2, counter) from the views of its place check while the goal check's
+    own view of the counter showed one bottle, taken for bottle1, and bottle2 lay on the floor."""
+    if subject.phase != "goal" or whereabouts and all(r.unshown for r in own):
         return own
     return [*(r for r in earlier if not any(r is o for o in own)), *own]
 
