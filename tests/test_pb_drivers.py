@@ -140,6 +140,24 @@ def test_the_base_glides_through_free_space_and_is_driven_where_it_would_touch(t
     w.close()
 
 
+def test_an_item_in_the_gliding_base_s_way_is_pushed_by_the_physics(tmp_path):
+    # a kinematic base set pose by pose would pass through it and leave it where it stood
+    import pybullet as pb
+
+    w = world_of(tmp_path, "sweep", kitchen({"counter": "type: surface"}, {"cup": "place: on floor_kitchen"}))
+    d = w.drivers
+    x, y, yaw = d.base.pose()
+    cup = w.scene.things["cup"].body
+    pb.resetBasePositionAndOrientation(cup, (x, y - 0.75, 0.06), (0, 0, 0, 1), physicsClientId=w.cid)
+    assert hold(d, 0.5).completed  # it stands on the floor
+    before = np.array(w.truth.center("cup"))
+    drive(d, (x, y - 1.4, yaw))  # into it, backwards: pushed along, or blocked by it
+    after = np.array(w.truth.center("cup"))
+    assert np.linalg.norm(after[:2] - before[:2]) > 0.1
+    assert min([p[8] for p in pb.getClosestPoints(w.robot.id, cup, 0.05, physicsClientId=w.cid)] + [1.0]) > -0.01
+    w.close()
+
+
 def _pose_of(pb, w, name) -> np.ndarray:
     p, o = pb.getBasePositionAndOrientation(w.scene.things[name].body, physicsClientId=w.cid)
     T = np.eye(4)
