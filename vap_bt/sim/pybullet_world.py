@@ -28,7 +28,10 @@ Disturbances are dicts: ``{"at": 2, "move": "cup", "to": "counter"}`` (as the th
 starts, the cup is put on the counter), ``{"after": 0, ...}`` (once the first action is done,
 before anything is checked for the next), or ``{"at": 0, "door": "door_lk", "open": 0.4}`` (the
 door swung to 40 % of its travel). The simulation steps at ``DT`` with few solver iterations: episodes are
-meant to be fast, not precise.
+meant to be fast, not precise. A base drive's step in free space, while nothing else moves, is
+taken without the physics (:meth:`PybulletWorld.glide`, :mod:`pb_glide`): the base is set on its
+profile and the time, the rules and the injection advance as in a step. The world's mechanics
+have a version, :data:`WORLD_VERSION`, in every report and campaign row.
 """
 
 from __future__ import annotations
