@@ -160,6 +160,7 @@ class Hands:
         self.body, self.eyes, self.nav, self.scene = body, eyes, nav, scene
         self.progress = lambda p, text: None
         self.regarded = None  # the frame of the last :meth:`regard`
+        self.put_at = None  # the centre of the item :meth:`place` let go last, as the hand had it then
 
     # -- measuring ---------------------------------------------------------------------------
 
@@ -606,7 +607,8 @@ class Hands:
     def set_down(self, sideways: bool) -> str | None:
         """Set the held item down on the surface of the room nearest the base (at its front edge
         when it is to be taken again from the side, where a level hand reaches it) to free the
-        hand; the surface, or None when there is none or the place failed."""
+        hand; the surface (where on it: :attr:`put_at`), or None when there is none or the place
+        failed."""
         held = self.eyes.held
         x, y, _ = self.body.base_pose()
         room = self.scene.room_at(x, y)
@@ -618,8 +620,14 @@ class Hands:
 
     def take_again(self, name: str, surface: str, sideways: bool) -> Outcome:
         """Take ``name`` again from ``surface``, where :meth:`set_down` put it: level from the side
-        (``sideways``) or from above."""
-        seen = self.locate(name, self.scene.furniture[surface].top_point(), Where(on=surface))
+        (``sideways``) or from above. It is looked for on the surface, and where the hand let it
+        go when that look does not show it: the look at the surface's middle from its standoff
+        may not show a cup set down at an end of a long counter (boil_water seed 6: "not taken
+        again", the cup 0.5 m off the counter's middle). Not there first: the other look
+        measured the pie set down for open(oven) (heat_pie seed 4) with its centroid higher, and
+        the level hand that took it by it found no arm pose into the oven."""
+        seen = (self.locate(name, self.scene.furniture[surface].top_point(), Where(on=surface))
+                or self.locate(name, self.put_at, Where(on=surface, radius=SEEN_RADIUS)))
         if seen is None:
             return Outcome(False, f"{name} is not where it was set down on {surface}: not seen")
         return self.grasp(name, seen.centroid, Where(on=surface), sideways=sideways)
@@ -821,6 +829,7 @@ class Hands:
             self.body.line(G, steps=4, speed=0.3, collide=clear)
         except Struck:
             pass  # the way down stopped on contact (the item touching down, a rim): it is let go there
+        self.put_at = held.corners_at(self.body.pose("tcp")).mean(axis=0)
         self.let_go()
         self.progress(0.8, "retreat")
         # out of the grasp along the hand's axis first (a hand holding from the side would lift
