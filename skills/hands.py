@@ -376,6 +376,7 @@ class Hands:
             most, mark = max(looks, key=lambda sm: float(np.prod(np.linalg.norm(sm[0].corners()[[4, 2]] - sm[0].corners()[0], axis=1))))
             whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
+            self.scene.taken(name, whole.lo, whole.hi)
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
         kind = "top" if lean else how(a)  # a hand leaned from above lifts the item straight up

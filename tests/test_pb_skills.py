@@ -188,6 +188,29 @@ def test_a_cup_set_down_at_the_counters_end_is_looked_for_where_it_was_let_go():
         w.close()
 
 
+@pytest.mark.slow(seconds=40)
+def test_a_cup_taken_off_the_floor_leaves_no_ghost_where_it_lay():
+    # boil_water seed 7: the cup fell in front of the sink, where the fill's work pose is; looks
+    # that did not name it left it remembered as '?cup#0', '?bottle#0' and '?mug#0' on the floor
+    # there, the grasp took it, and the fill's drive to the tap found "no clear way", thrice
+    from skills.kit import kit_for
+    from vap_bt.motion.footprint import Obb
+
+    w = pybullet("boil_water", image_size=(320, 240))
+    try:
+        lay(w, "cup", (2.378, 3.313), 0.033, (1.5708, 0.0, 0.0))
+        run(w, "find(floor_kitchen, cup, kitchen)")
+        kit = kit_for(w)
+        kit.scene.floor_items["?bottle#0"] = Obb.aabb((2.34, 3.27, 0.0), (2.42, 3.36, 0.07))  # as a look leaves it
+        kit.scene.floor_items["?pan#0"] = Obb.aabb((3.0, 2.5, 0.0), (3.1, 2.6, 0.05))  # something else, elsewhere
+        run(w, "grasp(cup, floor_kitchen, kitchen)", "find(cup, kitchen_sink, kitchen)")
+        assert holds(w, "holding(cup)")
+        assert set(kit.scene.floor_items) == {"?pan#0"}
+        assert kit.nav.base_path((2.38, 3.35, math.pi / 2), True) is not None  # the fill's work pose
+    finally:
+        w.close()
+
+
 @on_both_sensors(real_varies="on the way to the basket the base stops in front of door_ls, which it does not "
                              "see open (passed on CI at 90d2de3)")
 def test_placein_puts_the_held_item_into_the_container(worlds, sensors):
