@@ -101,8 +101,11 @@ DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the bas
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
 #: m in front of the pose under the tap (out of the sink's front) whence the vessel goes in under
-#: it: the tap's arm ends a couple of centimetres past its outlet, and the cup is 0.07 m across
-TAP_FRONT = 0.15
+#: it, the first the arm reaches: the tap's arm ends a couple of centimetres past its outlet, and
+#: the cup is 0.07 m across. Nearer only when the arm does not reach the first: a level hand
+#: holding the cup low, 15 cm out, is reached only on branches whose upper arm or wrist meets
+#: the sink's tap ("tap out of reach"), 5 cm further in on one that does not
+TAP_FRONTS = (0.15, 0.10, 0.05)
 #: m past the switch's face the closed fingertips are sent: where the switch is, as a look and the
 #: map place it, is right to a centimetre or two (a microwave's front seen 1.3 cm proud of the
 #: map's box, the map registered 1 cm off), and a press aimed 1.2 cm in front of it touched nothing
@@ -936,10 +939,10 @@ class Hands:
         # dragged up out of the fingers (boil_water seed 0: "filled" never held), or the arm
         # stopped against it (blocked, 0.32 rad behind)
         front = np.array([f.front[0], f.front[1], 0.0])
-        pre = T.copy()
-        pre[:3, 3] += front / np.linalg.norm(front) * TAP_FRONT
         self.progress(0.3, "under the tap")
-        if not self.body.goto_pose(pre):
+        pre = next((p for p in (_moved(T, front / np.linalg.norm(front) * d) for d in TAP_FRONTS)
+                    if self.body.goto_pose(p)), None)
+        if pre is None:
             self.carry()
             return Outcome(False, f"{sink}: tap out of reach")
         if not self.body.line(T, steps=3, speed=0.3, collide=True):
@@ -1096,6 +1099,13 @@ class Hands:
         along = pts[:, :2] @ np.asarray(axis, float)[:2]
         lo, hi = np.percentile(along, (5, 95)) if len(along) > 8 else (along.min(), along.max())
         return float(hi - lo) / 2
+
+
+def _moved(T: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """The pose ``T`` moved by ``d`` (map frame)."""
+    out = T.copy()
+    out[:3, 3] += d
+    return out
 
 
 def _to_segment(p: np.ndarray, a: np.ndarray, e: np.ndarray) -> float:
