@@ -59,6 +59,9 @@ RAISE = 0.15
 LOOK_OVER = 0.4
 #: a point inside a front-opening hollow is looked at from this little above it (its roof is low)
 LEVEL_OVER = 0.05
+#: (cosine) a hand whose approach lies within 45 degrees of straight down an item's up holds it
+#: over its top; a side grasp pitched down (0.6 rad) does not, a hand from above leaned back does
+OVER_TOP = math.cos(math.pi / 4)
 #: m: a held box is no thinner than this (a flat item seen from above measures no depth)
 THINNEST = 0.005
 
@@ -99,6 +102,11 @@ class Held:
         src = np.column_stack([u, v, np.cross(u, v)])
         dst = np.column_stack([ez, d, np.cross(ez, d)])
         return dst @ src.T
+
+    def over_top(self) -> bool:
+        """Whether the hand holds the item from above, over its top (a vessel's opening): its
+        approach, the tcp's z, was nearer straight down the item's up than level when it took it."""
+        return float(self.up[2]) < -OVER_TOP
 
     def corners_at(self, tcp: np.ndarray) -> np.ndarray:
         """The box's corners in the map frame for the hand at ``tcp``."""

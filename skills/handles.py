@@ -37,7 +37,6 @@ import pinocchio as pin
 
 from skills.body import Body, Struck, angle_to
 from skills.eyes import Eyes
-from skills.goal import Where
 from vap_bt.outcome import Outcome
 from skills.hands import APPROACH, Hands
 from skills.navigator import Navigator
@@ -297,16 +296,12 @@ class Handles:
         if held is None or not self.body.holding():
             return self._pulls(name, opening)
         sideways = abs(self.body.pose("tcp")[2, 2]) < 0.8  # level or pitched, not from above
-        x, y, _ = self.body.base_pose()
-        room = self.scene.room_at(x, y)
-        shelves = sorted((f for f in self.scene.furniture.values() if f.info.type == "surface" and f.info.room == room),
-                         key=lambda f: math.hypot(f.origin[0] - x, f.origin[1] - y))
-        if not shelves or not self.hands.place(held.name, shelves[0].name, False, edge=sideways).completed:
+        surface = self.hands.set_down(sideways)
+        if surface is None:
             return Outcome(False, f"{name}: the hand is full")
         out = self._pulls(name, opening)
-        seen = self.hands.locate(held.name, shelves[0].top_point(), Where(on=shelves[0].name))
-        if seen is not None:  # taken again the way it was held: it may have to go into a low cavity next
-            self.hands.grasp(held.name, seen.centroid, Where(on=shelves[0].name), sideways=sideways)
+        # taken again the way it was held: it may have to go into a low cavity next
+        self.hands.take_again(held.name, surface, sideways)
         return out
 
     def _pulls(self, name: str, opening: bool) -> Outcome:

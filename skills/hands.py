@@ -101,8 +101,11 @@ DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the bas
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
 #: m in front of the pose under the tap (out of the sink's front) whence the vessel goes in under
-#: it: the tap's arm ends a couple of centimetres past its outlet, and the cup is 0.07 m across
-TAP_FRONT = 0.15
+#: it, the first the arm reaches: the tap's arm ends a couple of centimetres past its outlet, and
+#: the cup is 0.07 m across. Nearer only when the arm does not reach the first: a level hand
+#: holding the cup low, 15 cm out, is reached only on branches whose upper arm or wrist meets
+#: the sink's tap ("tap out of reach"), 5 cm further in on one that does not
+TAP_FRONTS = (0.15, 0.10, 0.05)
 #: m past the switch's face the closed fingertips are sent: where the switch is, as a look and the
 #: map place it, is right to a centimetre or two (a microwave's front seen 1.3 cm proud of the
 #: map's box, the map registered 1 cm off), and a press aimed 1.2 cm in front of it touched nothing
@@ -160,6 +163,7 @@ class Hands:
         self.body, self.eyes, self.nav, self.scene = body, eyes, nav, scene
         self.progress = lambda p, text: None
         self.regarded = None  # the frame of the last :meth:`regard`
+        self.put_at = None  # the centre of the item :meth:`place` let go last, as the hand had it then
 
     # -- measuring ---------------------------------------------------------------------------
 
@@ -375,6 +379,7 @@ class Hands:
             most, mark = max(looks, key=lambda sm: float(np.prod(np.linalg.norm(sm[0].corners()[[4, 2]] - sm[0].corners()[0], axis=1))))
             whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
+            self.scene.taken(name, whole.lo, whole.hi)
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
         kind = "top" if lean else how(a)  # a hand leaned from above lifts the item straight up
@@ -603,6 +608,34 @@ class Hands:
         rel[:3, 3] = CARRY
         self.body.goto_pose(self.body.base_T() @ rel, 0.8)
 
+    def set_down(self, sideways: bool) -> str | None:
+        """Set the held item down on the surface of the room nearest the base (at its front edge
+        when it is to be taken again from the side, where a level hand reaches it) to free the
+        hand; the surface (where on it: :attr:`put_at`), or None when there is none or the place
+        failed."""
+        held = self.eyes.held
+        x, y, _ = self.body.base_pose()
+        room = self.scene.room_at(x, y)
+        shelves = sorted((f for f in self.scene.furniture.values() if f.info.type == "surface" and f.info.room == room),
+                         key=lambda f: math.hypot(f.origin[0] - x, f.origin[1] - y))
+        if held is None or not shelves or not self.place(held.name, shelves[0].name, False, edge=sideways).completed:
+            return None
+        return shelves[0].name
+
+    def take_again(self, name: str, surface: str, sideways: bool) -> Outcome:
+        """Take ``name`` again from ``surface``, where :meth:`set_down` put it: level from the side
+        (``sideways``) or from above. It is looked for on the surface, and where the hand let it
+        go when that look does not show it: the look at the surface's middle from its standoff
+        may not show a cup set down at an end of a long counter (boil_water seed 6: "not taken
+        again", the cup 0.5 m off the counter's middle). Not there first: the other look
+        measured the pie set down for open(oven) (heat_pie seed 4) with its centroid higher, and
+        the level hand that took it by it found no arm pose into the oven."""
+        seen = (self.locate(name, self.scene.furniture[surface].top_point(), Where(on=surface))
+                or self.locate(name, self.put_at, Where(on=surface, radius=SEEN_RADIUS)))
+        if seen is None:
+            return Outcome(False, f"{name} is not where it was set down on {surface}: not seen")
+        return self.grasp(name, seen.centroid, Where(on=surface), sideways=sideways)
+
     def let_go(self) -> None:
         """Open the fingers fully; the eyes forget the held item only once the gripper no longer holds
         it."""
@@ -800,6 +833,7 @@ class Hands:
             self.body.line(G, steps=4, speed=0.3, collide=clear)
         except Struck:
             pass  # the way down stopped on contact (the item touching down, a rim): it is let go there
+        self.put_at = held.corners_at(self.body.pose("tcp")).mean(axis=0)
         self.let_go()
         self.progress(0.8, "retreat")
         # out of the grasp along the hand's axis first (a hand holding from the side would lift
@@ -880,6 +914,15 @@ class Hands:
         f = self.scene.furniture.get(sink)
         if f is None or f.info.tap is None:
             return Outcome(False, f"{sink} has no tap")
+        if held.over_top():
+            # the hand sits over the vessel's opening: the tap would run onto the hand, and the
+            # wrist above the vessel meets the tap's arm before the vessel is under the outlet
+            # (boil_water seeds 5, 6: the cup taken off the floor from above, the arm blocked
+            # against the tap 0.30 rad behind its set-point); taken by its side the opening is free
+            out = self._retaken_by_side(name)
+            if not out.completed:
+                return out
+            held = self.eyes.held
         tap = np.array(f.info.tap)
         self.nav.approach(self.nav.work_pose(tap, f.front, "top", sink))
         f = self.regard(sink, tap)
@@ -896,10 +939,10 @@ class Hands:
         # dragged up out of the fingers (boil_water seed 0: "filled" never held), or the arm
         # stopped against it (blocked, 0.32 rad behind)
         front = np.array([f.front[0], f.front[1], 0.0])
-        pre = T.copy()
-        pre[:3, 3] += front / np.linalg.norm(front) * TAP_FRONT
         self.progress(0.3, "under the tap")
-        if not self.body.goto_pose(pre):
+        pre = next((p for p in (_moved(T, front / np.linalg.norm(front) * d) for d in TAP_FRONTS)
+                    if self.body.goto_pose(p)), None)
+        if pre is None:
             self.carry()
             return Outcome(False, f"{sink}: tap out of reach")
         if not self.body.line(T, steps=3, speed=0.3, collide=True):
@@ -909,6 +952,16 @@ class Hands:
         self.body.hold_still(FILL_WAIT)
         self.body.line(pre, steps=3, speed=0.4)  # out the way it went in
         self.carry()
+        return Outcome(True)
+
+    def _retaken_by_side(self, name: str) -> Outcome:
+        """Set the held ``name`` down and take it again level from the side (:meth:`set_down`)."""
+        surface = self.set_down(sideways=True)
+        if surface is None:
+            return Outcome(False, f"{name} is held over its opening and there is nowhere to set it down")
+        self.take_again(name, surface, sideways=True)
+        if self.eyes.held is None or not self.body.holding():
+            return Outcome(False, f"{name} was set down on {surface} to be taken by its side, and not taken again")
         return Outcome(True)
 
     def cut(self, name: str, knife: str, point, where: Where) -> Outcome:
@@ -1046,6 +1099,13 @@ class Hands:
         along = pts[:, :2] @ np.asarray(axis, float)[:2]
         lo, hi = np.percentile(along, (5, 95)) if len(along) > 8 else (along.min(), along.max())
         return float(hi - lo) / 2
+
+
+def _moved(T: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """The pose ``T`` moved by ``d`` (map frame)."""
+    out = T.copy()
+    out[:3, 3] += d
+    return out
 
 
 def _to_segment(p: np.ndarray, a: np.ndarray, e: np.ndarray) -> float:

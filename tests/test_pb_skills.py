@@ -152,6 +152,71 @@ def test_the_cup_goes_in_under_the_tap_below_its_arm():
         w.close()
 
 
+def cup_on_the_counter(at):
+    """Test setup: boil_water's world with the cup standing on the counter at ``at`` (x, y)."""
+    w = pybullet("boil_water", image_size=(320, 240))  # as an episode sees
+    lay(w, "cup", at, 0.946, (0.0, 0.0, 0.0))
+    return w
+
+
+@pytest.mark.slow(seconds=40)
+@pytest.mark.parametrize("at", [
+    # boil_water seeds 5 and 6 at 0b833f6: the cup, dropped by a takeout, was taken off the floor
+    # from above; with the hand over its opening the wrist met the tap's arm before the cup was
+    # under the outlet (blocked, 0.30 rad behind), or the cup stood under the tap hand and all and
+    # stayed empty. Taken from above off the counter here, as a grasp off any surface is
+    pytest.param((4.2, 3.95), id="by_its_side"),
+    # taken again by its side that low, the arm reached the pose 15 cm in front of the tap only
+    # on branches that met the tap (boil_water seed 7 at bf96344: "tap out of reach")
+    pytest.param((4.6, 3.95), id="nearer_the_tap"),
+])
+def test_a_cup_taken_from_above_is_taken_by_its_side_to_be_filled(at):
+    w = cup_on_the_counter(at)
+    try:
+        run(w, "find(floor_kitchen, counter, kitchen)", "grasp(cup, counter, kitchen)",
+            "find(counter, kitchen_sink, kitchen)", "fill(cup, kitchen_sink)")
+        assert holds(w, "filled(cup)", "holding(cup)")
+    finally:
+        w.close()
+
+
+@pytest.mark.slow(seconds=40)
+def test_a_cup_set_down_at_the_counters_end_is_looked_for_where_it_was_let_go():
+    # boil_water seed 6: the robot came from the sink's side, the fill set the cup down at the
+    # counter's near end to take it by its side, and the look for it went to the counter's middle
+    # from its standoff, which does not show that end: "not taken again", three times
+    w = cup_on_the_counter((3.98, 3.95))
+    try:
+        run(w, "find(floor_kitchen, counter, kitchen)", "grasp(cup, counter, kitchen)",
+            "find(counter, cabinet, kitchen)", "find(cabinet, kitchen_sink, kitchen)", "fill(cup, kitchen_sink)")
+        assert holds(w, "filled(cup)", "holding(cup)")
+    finally:
+        w.close()
+
+
+@pytest.mark.slow(seconds=40)
+def test_a_cup_taken_off_the_floor_leaves_no_ghost_where_it_lay():
+    # boil_water seed 7: the cup fell in front of the sink, where the fill's work pose is; looks
+    # that did not name it left it remembered as '?cup#0', '?bottle#0' and '?mug#0' on the floor
+    # there, the grasp took it, and the fill's drive to the tap found "no clear way", thrice
+    from skills.kit import kit_for
+    from vap_bt.motion.footprint import Obb
+
+    w = pybullet("boil_water", image_size=(320, 240))
+    try:
+        lay(w, "cup", (2.378, 3.313), 0.033, (1.5708, 0.0, 0.0))
+        run(w, "find(floor_kitchen, cup, kitchen)")
+        kit = kit_for(w)
+        kit.scene.floor_items["?bottle#0"] = Obb.aabb((2.34, 3.27, 0.0), (2.42, 3.36, 0.07))  # as a look leaves it
+        kit.scene.floor_items["?pan#0"] = Obb.aabb((3.0, 2.5, 0.0), (3.1, 2.6, 0.05))  # something else, elsewhere
+        run(w, "grasp(cup, floor_kitchen, kitchen)", "find(cup, kitchen_sink, kitchen)")
+        assert holds(w, "holding(cup)")
+        assert set(kit.scene.floor_items) == {"?pan#0"}
+        assert kit.nav.base_path((2.38, 3.35, math.pi / 2), True) is not None  # the fill's work pose
+    finally:
+        w.close()
+
+
 @on_both_sensors(real_varies="on the way to the basket the base stops in front of door_ls, which it does not "
                              "see open (passed on CI at 90d2de3)")
 def test_placein_puts_the_held_item_into_the_container(worlds, sensors):
