@@ -260,7 +260,10 @@ class Injection:
         return self.scene.things[g.name] if g is not None and g.link == -1 else None
 
     def _over_floor(self, t: Thing) -> bool:
-        """Every ray straight down from the item's bottom (centre and corners) meets a floor first."""
+        """Every ray straight down from the item's bottom (centre and corners) meets a floor first.
+        The rays start below the fingers holding it too: a thin item (a knife) sits higher than
+        its pads reach, and a ray from its bottom then began inside a pad — "over the floor" hung
+        on a millimetre of how the item happened to sit in the hand."""
         lo = np.full(3, np.inf)
         hi = np.full(3, -np.inf)
         for b in t.bodies:
@@ -268,7 +271,8 @@ class Injection:
             lo, hi = np.minimum(lo, a), np.maximum(hi, c)
         mid = (lo + hi) / 2
         xs = [(mid[0], mid[1])] + [(x, y) for x in (lo[0], hi[0]) for y in (lo[1], hi[1])]
-        z = lo[2] - RAY_START
+        pads = min(pb.getAABB(self.robot.id, j, physicsClientId=self.cid)[0][2] for j in self.robot.finger_joints)
+        z = min(lo[2], pads) - RAY_START
         hits = pb.rayTestBatch([(x, y, z) for x, y in xs], [(x, y, RAY_END) for x, y in xs],
                                physicsClientId=self.cid)
         return all(h[0] in self._floors for h in hits)
