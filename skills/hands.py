@@ -940,7 +940,8 @@ class Hands:
         # stopped against it (blocked, 0.32 rad behind)
         front = np.array([f.front[0], f.front[1], 0.0])
         self.progress(0.3, "under the tap")
-        pre = next((p for p in (_moved(T, front / np.linalg.norm(front) * d) for d in TAP_FRONTS)
+        outward = front / np.linalg.norm(front)
+        pre = next((p for p in (se3.make_pose(T[:3, 3] + outward * d, T[:3, :3]) for d in TAP_FRONTS)
                     if self.body.goto_pose(p)), None)
         if pre is None:
             self.carry()
@@ -1099,13 +1100,6 @@ class Hands:
         along = pts[:, :2] @ np.asarray(axis, float)[:2]
         lo, hi = np.percentile(along, (5, 95)) if len(along) > 8 else (along.min(), along.max())
         return float(hi - lo) / 2
-
-
-def _moved(T: np.ndarray, d: np.ndarray) -> np.ndarray:
-    """The pose ``T`` moved by ``d`` (map frame)."""
-    out = T.copy()
-    out[:3, 3] += d
-    return out
 
 
 def _to_segment(p: np.ndarray, a: np.ndarray, e: np.ndarray) -> float:

@@ -828,23 +828,23 @@ class Executive:
         they are found. Every item the sweep saw is re-located. ``why``: the
         reason to look, when it is not that ``lost`` are lost; ``carried``: what the hand lost in
         the situation, believed near the way it was carried while it is looked for."""
-        here = self.body.state().room
+        state = self.body.state()
+        here = state.room
         near = sorted({a.args[1] for o in lost for a in graph.facts if a.predicate == self.roles.in_room and a.args[0] == o}
                       - {here}) + ([here] if here else [])
         self.progress(f"    {why or 'lost track of ' + ', '.join(lost)}: re-surveying {', '.join(near)}")
         items = [o for o in self.task.objects if self._portable(o)]
         self.builder.forget(items)
         self._searching = set(lost)  # placed nowhere while looked for: taken wherever first seen
-        self._lost_ways = self._ways(lost, carried)  # but what the hand lost: near its way
+        self._lost_ways = self._ways(lost, carried, state.base_pose)  # but what the hand lost: near its way
         try:
             return self._search(graph, lost, why, near, items, worked)
         finally:
             self._searching, self._lost_ways = set(), {}
 
-    def _ways(self, lost: list[str], carried: tuple[str, ...]) -> dict[str, Believed]:
+    def _ways(self, lost: list[str], carried: tuple[str, ...], here) -> dict[str, Believed]:
         """Where belief puts each of ``lost`` the hand lost while the base drove: near the way from
-        where the gripper last held it to where the base is (:mod:`vap_bt.scene.trail`)."""
-        here = self.body.state().base_pose
+        where the gripper last held it to where the base is (``here``; :mod:`vap_bt.scene.trail`)."""
         if here is None:
             return {}
         return {o: lost_on_the_way(self._held_at[o], here[:2]) for o in carried if o in lost and o in self._held_at}
