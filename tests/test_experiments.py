@@ -261,6 +261,22 @@ def test_resume_runs_only_what_a_stopped_campaign_had_not_finished(tmp_path, add
     assert f"Episodes run on: {meta['commit'][:12]}" in (out / "table.md").read_text()
 
 
+def test_experiments_sharing_a_log_run_each_episode_once(tmp_path, address):
+    log = tmp_path / "campaign" / "episodes.jsonl"
+    shared = ["--tasks", "S4", "--seeds", "2", "--address", address, "--log", str(log)]
+    assert main(STRATEGIES, [*shared, "--verify", "both", "none", "--out", str(tmp_path / "strategies")]) == 0
+    assert main(ABLATION, [*shared, "--out", str(tmp_path / "ablation")]) == 0
+    rows = results.EpisodeLog(log).rows()
+    # the ablation ran only the modes the strategies had not: eff and pre, two seeds each
+    assert sorted((r["experiment"], r["strategy"]) for r in rows) == sorted(
+        [("strategies", s) for s in ("both", "none") for _ in "01"] + [("ablation", m) for m in ("eff", "pre") for _ in "01"])
+    assert json.loads((tmp_path / "ablation" / "run.json").read_text())["episodes"] == 4
+    # and its table is read from all four modes' rows, the strategies' included
+    assert sorted((r["strategy"], r["seed"]) for r in rows_of(tmp_path / "ablation")) == sorted(
+        (m, s) for m in MODES for s in "01")
+    assert len(rows_of(tmp_path / "strategies")) == 4  # the strategies' report: only its own configurations ran yet
+
+
 def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):
     marker = tmp_path / "crashed"
     out = tmp_path / "strategies"

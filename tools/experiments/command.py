@@ -15,6 +15,11 @@ and how it reports its rows; :func:`main` does the rest, the same way for each:
   resumed campaign (``sittings``; a sitting Ctrl-C stopped is recorded too, ``interrupted``). Each row records the commit it ran on, and table.md ends with
   them: a campaign that spans sittings may span changes to the code, and its table says so.
 
+``--log FILE`` shares one episode log between experiments: an episode (world, task, strategy,
+viewpoints, seed) another experiment already ran is not run again, and each experiment reports
+every row of its configurations in the log. A pybullet campaign runs the strategies, then the
+viewpoint kinds the strategies did not run, into one log; Table III is then read from it, not run.
+
 ``--rows FILE`` reads another campaign's episodes instead of running any: an episode is a pure
 function of its world, task, strategy, viewpoints and seed, so the failure modes of the strategies'
 episodes are the strategies campaign's rows read another way, not 8000 episodes run twice.
@@ -87,6 +92,9 @@ def parser(experiment: Experiment) -> argparse.ArgumentParser:
     ap.add_argument("--seeds", default="50", help="N: seeds 0..N-1; A-B: seeds A..B inclusive (default 50)")
     ap.add_argument("--out", type=Path, help=f"output directory (default docs/results/{experiment.name})")
     ap.add_argument("--resume", action="store_true", help="keep episodes.jsonl and run only the missing episodes")
+    ap.add_argument("--log", type=Path, metavar="FILE",
+                    help="the episode log to append to and report from, kept as --resume keeps it (default "
+                         "OUT/episodes.jsonl); experiments sharing one run each episode once")
     ap.add_argument("--report-only", action="store_true", help="write the table and plots from existing rows")
     ap.add_argument("--rows", type=Path, metavar="FILE",
                     help="report on another campaign's episodes.jsonl (the same episodes, read this experiment's "
@@ -164,8 +172,9 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
         campaign = Campaign(tasks_named(args.tasks), seeds_of(args.seeds), args.world,
                             args.out or ROOT / "docs" / "results" / experiment.name)
         configurations = experiment.configurations(args)
-        if args.report_only and not (campaign.out / "episodes.jsonl").exists():
-            raise InputError("--out", f"no episodes.jsonl in {campaign.out} to report on (run the experiment first)")
+        if args.report_only and not (args.log or campaign.out / "episodes.jsonl").exists():
+            raise InputError("--log" if args.log else "--out",
+                             f"no episode log {args.log or campaign.out / 'episodes.jsonl'} to report on (run the experiment first)")
         if args.rows is not None and not args.rows.is_file():
             raise InputError("--rows", f"no such file: {args.rows}")
     except InputError as exc:
@@ -173,7 +182,8 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
         return EXIT_BAD_INPUT
     if args.rows is not None:
         return report_from(experiment, campaign, configurations, results.EpisodeLog(args.rows))
-    log = results.EpisodeLog(campaign.out / "episodes.jsonl")
+    log = results.EpisodeLog(args.log or campaign.out / "episodes.jsonl")
+    campaign.out.mkdir(parents=True, exist_ok=True)  # the log may be elsewhere (--log)
     if not args.report_only:
         try:
             run(experiment, campaign, configurations, log, args, fault)
@@ -181,8 +191,10 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
             print(f"{experiment.name}: interrupted; {len(log.rows())} rows kept in {log.path}, --resume runs the "
                   "rest", file=sys.stderr)
             return EXIT_INTERRUPTED
-    rows = [r for r in log.rows() if r["experiment"] == experiment.name]
-    # the report covers every row of the log (a resumed campaign may have run other tasks before)
+    every = set(experiment.configurations(parser(experiment).parse_args([])))
+    rows = [r for r in log.rows() if (r["strategy"], r["viewpoints"]) in every]
+    # the report covers every row of the log it could have run (a resumed campaign may have run
+    # other tasks or strategies before; a shared log holds other experiments' rows of its configurations)
     named = tasks_named(sorted({r["task"] for r in rows}))
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     results.write_csv(rows, campaign.out / "episodes.csv")
@@ -217,10 +229,10 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
     """Run the campaign's missing episodes, appending each row to ``log``; then write run.json,
     also when Ctrl-C stopped the sitting (marked ``interrupted``; the KeyboardInterrupt goes on)."""
     commit = _commit()  # before the log is touched: the code that runs is this checkout's as the campaign starts
-    log.start(args.resume)
+    log.start(args.resume or args.log is not None)  # a shared log is never emptied by one of its experiments
     started = time.strftime("%Y-%m-%dT%H:%M:%S%z")
-    done = log.keys()
-    todo = [k for k in keys(experiment, campaign, configurations) if k not in done]
+    done = log.episodes()
+    todo = [k for k in keys(experiment, campaign, configurations) if k.episode() not in done]
     t0, written, stopped = time.perf_counter(), 0, False
     with engine.open_client(args.address, args.workers) as client:
         n_workers = engine.workers(client)
@@ -243,7 +255,7 @@ def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[s
     wall = time.perf_counter() - t0
     meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name,
             "world": campaign.world, "tasks": list(campaign.tasks), "seeds": _span(campaign.seeds),
-            "configurations": [list(c) for c in configurations], "resumed": bool(done), "episodes": written,
+            "configurations": [list(c) for c in configurations], "resumed": bool(done), "log": str(log.path), "episodes": written,
             "interrupted": stopped, "workers": n_workers, "cluster": args.address or "LocalCluster",
             "wall_s": round(wall, 1), "workers_cpu_s": round(cpu, 1) if cpu is not None else None,
             "client_cpu_s": round(time.process_time(), 1), "wall": duration(wall),

@@ -69,6 +69,11 @@ class Key:
         """What a worker's session is built for: every field but the experiment and the seed."""
         return self.world, self.task, self.strategy, self.viewpoints
 
+    def episode(self) -> tuple[str, str, str, str, int]:
+        """What the episode is, whichever experiment asks for it: an episode is a pure function of
+        these, so experiments that share a log (``--log``) run it once."""
+        return (*self.config(), self.seed)
+
 
 class _Sessions:
     """A worker process's warm sessions, by configuration (least recently used closed first)."""

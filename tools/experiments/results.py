@@ -77,9 +77,10 @@ class EpisodeLog:
                 continue
         return rows
 
-    def keys(self) -> set[Key]:
-        """The keys of the rows written so far: what ``--resume`` skips."""
-        return {key_of(r) for r in self.rows()}
+    def episodes(self) -> set[tuple]:
+        """The episodes (:meth:`Key.episode`) of the rows written so far: what ``--resume`` skips,
+        whichever experiment wrote them."""
+        return {key_of(r).episode() for r in self.rows()}
 
     def start(self, resume: bool) -> None:
         """Begin the log: kept as it is to resume, else emptied (a fresh campaign)."""
