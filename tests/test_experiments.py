@@ -219,6 +219,8 @@ def test_a_campaign_stopped_part_way_has_every_cell_at_nearly_the_same_count():
     assert {(k.task, k.strategy) for k in first} == {(t, c) for t in ("boil_water", "heat_pie") for c in ("both", "none")}
     # within a block a configuration's episodes follow each other: its warm session serves them all
     assert [k.seed for k in first[:SEED_BLOCK]] == list(range(SEED_BLOCK)) and len({k.config() for k in first[:SEED_BLOCK]}) == 1
+    # and the first configuration (the reference) covers every task before the next one starts
+    assert {(k.task, k.strategy) for k in first[:2 * SEED_BLOCK]} == {("boil_water", "both"), ("heat_pie", "both")}
 
 
 def test_the_commit_is_dirty_only_for_changes_that_could_change_an_episode(tmp_path, monkeypatch):

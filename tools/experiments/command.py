@@ -156,12 +156,14 @@ SEED_BLOCK = 10
 
 def keys(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]]) -> list[Key]:
     """Every episode of the campaign, in blocks of :data:`SEED_BLOCK` seeds: within a block grouped
-    by configuration, so a worker's sessions stay warm for ten episodes; block after block, so a
-    campaign stopped part-way (a pybullet one spans sittings) has every cell at nearly the same
-    count of seeds, not some cells full and others empty."""
+    by configuration and task, so a worker's sessions stay warm for ten episodes; block after
+    block, so a campaign stopped part-way (a pybullet one spans sittings) has every cell at nearly
+    the same count of seeds, not some cells full and others empty. Within a block the
+    configurations go in the order given, each over every task: the first (the reference, the full
+    method) is measured on all tasks before the others start."""
     blocks = [campaign.seeds[i:i + SEED_BLOCK] for i in range(0, len(campaign.seeds), SEED_BLOCK)]
     return [Key(experiment.name, campaign.world, task, strategy, viewpoints, seed)
-            for block in blocks for task in campaign.tasks for strategy, viewpoints in configurations
+            for block in blocks for strategy, viewpoints in configurations for task in campaign.tasks
             for seed in block]
 
 
