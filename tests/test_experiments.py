@@ -277,6 +277,27 @@ def test_experiments_sharing_a_log_run_each_episode_once(tmp_path, address):
     assert sorted((r["strategy"], r["seed"]) for r in rows_of(tmp_path / "ablation")) == sorted(
         (m, s) for m in MODES for s in "01")
     assert len(rows_of(tmp_path / "strategies")) == 4  # the strategies' report: only its own configurations ran yet
+    # a report that runs nothing reads the shared log and says so in its run.json
+    assert main(FAILURES, [*shared, "--report-only", "--out", str(tmp_path / "failures")]) == 0
+    meta = json.loads((tmp_path / "failures" / "run.json").read_text())
+    assert meta["rows_from"] == str(log) and meta["episodes"] == 8 and "diagnosed right" in (
+        tmp_path / "failures" / "table.md").read_text()
+
+
+@pytest.mark.slow(seconds=40)
+def test_the_campaign_script_runs_each_configuration_once_and_writes_the_four_tables(tmp_path, address):
+    out = tmp_path / "campaign"
+    env = {"PATH": "/usr/bin:/bin", "WORLD": "symbolic", "SEEDS": "2", "TASKS": "S4", "DIR": str(out), "ADDRESS": address}
+    p = subprocess.run(["bash", str(ROOT / "tools/experiments/campaign.sh")], env=env, capture_output=True, text=True,
+                       timeout=300, cwd=ROOT)
+    assert p.returncode == 0, p.stderr[-2000:]
+    rows = results.EpisodeLog(out / "episodes.jsonl").rows()
+    configs = [(s, "vlm") for s in choices("verify")] + [("both", k) for k in choices("viewpoints") if k != "vlm"]
+    assert sorted((r["strategy"], r["viewpoints"], r["seed"]) for r in rows) == sorted(
+        (s, v, seed) for s, v in configs for seed in (0, 1))  # the full method once, though three tables read it
+    for name in ("strategies", "viewpoints", "ablation", "failures"):
+        assert "Episodes run on:" in (out / name / "table.md").read_text(), name
+    assert {r["strategy"] for r in rows_of(out / "ablation")} == set(MODES)
 
 
 def test_a_worker_killed_mid_campaign_loses_only_its_episode(tmp_path, address):

@@ -201,6 +201,8 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     results.write_csv(rows, campaign.out / "episodes.csv")
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
+    if args.report_only and args.log is not None:  # its rows are another experiment's log: say so
+        _read_from(experiment, campaign, log, rows)
     print((campaign.out / "table.md").read_text())
     return EXIT_OK
 
@@ -219,11 +221,16 @@ def report_from(experiment: Experiment, campaign: Campaign, configurations: list
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     campaign.out.mkdir(parents=True, exist_ok=True)
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
+    _read_from(experiment, campaign, source, rows)
+    print((campaign.out / "table.md").read_text())
+    return EXIT_OK
+
+
+def _read_from(experiment: Experiment, campaign: Campaign, source: results.EpisodeLog, rows: list[dict]) -> None:
+    """run.json of a report that ran nothing (``--rows``, ``--report-only``): where its rows came from."""
     meta = {"command": " ".join([sys.executable, *sys.argv]), "experiment": experiment.name, "rows_from": str(source.path),
             "episodes": len(rows), "seeds": _span(sorted({r["seed"] for r in rows})), "commit": _commit()}
     (campaign.out / "run.json").write_text(json.dumps(meta, indent=2) + "\n")
-    print((campaign.out / "table.md").read_text())
-    return EXIT_OK
 
 
 def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
