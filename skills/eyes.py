@@ -98,6 +98,7 @@ class Views:
         self._taken.clear()
 
     def add(self, name: str, pose: np.ndarray) -> None:
+        """``name`` was looked for from camera pose ``pose`` (a frame was taken there)."""
         self._taken.setdefault(name, []).append(np.array(pose, float))
 
     def of(self, name: str) -> tuple[np.ndarray, ...]:
