@@ -19,6 +19,12 @@ class labels only; every frame the eyes take is named first (``identify``: the k
 re-identification, :mod:`vap_bt.scene.identity`) — the map's furniture and doors by the map,
 the item in the hand by the fingers, and the item a look is for by where it is believed to be
 (:meth:`Eyes.measure`: the goal's hint).
+
+A look again from the same camera pose is the same picture — the same detections, the same
+misses (a detector's draw is the picture's, not the moment's) — so within one goal the eyes keep
+the camera poses each item was looked for from (:class:`Views`), and a look again at an item goes
+on to a view not yet taken for it: the eye raised, moved nearer, to either side, or back and low
+(:data:`LOOKS`).
 """
 
 from __future__ import annotations
@@ -48,10 +54,18 @@ CAMERA_EYE = (0.50, 0.0, 1.20)
 #: from every view, 4 % of it visible, which a detector does not find)
 AIM_TURNS = (0.06, 0.1, 0.14, 0.18, 0.22, 0.26, 0.3, 0.34, 0.38, 0.42)
 AIM_MARGIN = 0.07
-#: an aim still counts as the last one when the camera moved less than this (m, rad)
+#: an aim still counts as the last one when the camera moved less than this (m, rad); two camera
+#: poses this near are one view (the same picture, in a world whose base stands still)
 STILL = (0.03, 0.05)
-#: extra eye heights tried when a look at an item does not show it (over something in front)
-LOOK_LIFTS = (0.0, 0.2)
+#: the views a look for an item takes in turn, each (eye lift, eye moved towards the point, eye
+#: moved across, left positive) in metres from the standard eye: the standard look and a raised
+#: one (over something in front), then nearer, to either side, and back and low (a view from
+#: above a standing bottle shows its top only; one from lower shows its side)
+LOOKS = ((0.0, 0.0, 0.0), (0.2, 0.0, 0.0), (0.1, 0.25, 0.0), (0.1, 0.0, 0.25), (0.1, 0.0, -0.25),
+         (-0.3, -0.3, 0.0), (0.3, 0.25, 0.0))
+#: new views one measure takes at most when none shows the item (a look again from the same
+#: place, after a base move that did not move the robot, goes on down :data:`LOOKS`)
+VIEWS_PER_MEASURE = 3
 #: an aim whose arm pose would hit the furniture is tried this much higher
 RAISE = 0.15
 #: the eye is at least this far above the point it looks at (a thin plate on a tall shelf is seen
@@ -64,6 +78,32 @@ LEVEL_OVER = 0.05
 OVER_TOP = math.cos(math.pi / 4)
 #: m: a held box is no thinner than this (a flat item seen from above measures no depth)
 THINNEST = 0.005
+
+
+def same_view(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether camera poses ``a`` and ``b`` (4x4) are one view: within :data:`STILL` of each
+    other in place and in the direction they look."""
+    return bool(np.linalg.norm(a[:3, 3] - b[:3, 3]) < STILL[0] and float(a[:3, 2] @ b[:3, 2]) > math.cos(STILL[1]))
+
+
+class Views:
+    """The camera poses each item was looked for from within one goal: a look again from one of
+    them would be the same picture, and its detector's draw (a miss) the same again."""
+
+    def __init__(self) -> None:
+        self._taken: dict[str, list[np.ndarray]] = {}
+
+    def clear(self) -> None:
+        """Forget every view (a new goal: the world may have changed since)."""
+        self._taken.clear()
+
+    def add(self, name: str, pose: np.ndarray) -> None:
+        """``name`` was looked for from camera pose ``pose`` (a frame was taken there)."""
+        self._taken.setdefault(name, []).append(np.array(pose, float))
+
+    def of(self, name: str) -> tuple[np.ndarray, ...]:
+        """The camera poses ``name`` was looked for from in this goal."""
+        return tuple(self._taken.get(name, ()))
 
 
 @dataclass(frozen=True)
@@ -148,6 +188,7 @@ class Eyes:
         self._held: Held | None = None
         self.cam = body.cfg.camera
         self._aim: tuple[np.ndarray, np.ndarray] | None = None  # point, camera pose of the last aim
+        self.views = Views()  # cleared by the kit at each goal's start
 
     @property
     def held(self) -> Held | None:
@@ -161,25 +202,42 @@ class Eyes:
 
     # -- aiming --------------------------------------------------------------------------------
 
-    def look_at(self, point, lift: float = 0.0, allow_base: bool = False, forward: float = CAMERA_EYE[0]) -> bool:
+    def look_at(self, point, lift: float = 0.0, allow_base: bool = False, forward: float = CAMERA_EYE[0],
+                shift: tuple[float, float] = (0.0, 0.0), avoid=()) -> bool:
         """Aim the camera at ``point`` from above the base (``lift`` higher, or higher still when
         that pose would put the arm into the furniture; a point inside a front-opening hollow
-        from its own height first; ``forward`` of the base's centre); with something in the hand
-        the aim turns off the point just enough that the item does not cover it. False when no
-        aim is clear."""
+        from its own height first; ``forward`` of the base's centre, then ``shift``: towards the
+        point and across, :data:`LOOKS`); with something in the hand the aim turns off the point
+        just enough that the item does not cover it. No camera pose that is one view with one of
+        ``avoid`` is taken. False when no aim is clear."""
         low = CAMERA_EYE[2] + lift
         over = max(low, float(point[2]) + LOOK_OVER)  # a high surface's top is seen from above it
         heights = (over, low, low + RAISE)
         if self.level_with(point):  # into a hollow through its front: from its height, first
             heights = (float(point[2]) + LEVEL_OVER + lift, *heights)
+        xy = self._eye_xy(point, forward, shift)
         for z in dict.fromkeys(heights):
-            eye = self.body.in_base((forward, CAMERA_EYE[1], z))
+            eye = np.array([*xy, z])
             T = se3.look_pose(eye, point)
             for pose in (self.aim_past_held(T, float(np.linalg.norm(np.asarray(point, float) - eye))), T):
+                if any(same_view(pose, a) for a in avoid):
+                    continue
                 if self.body.goto_pose(pose, 0.8, allow_base, "camera_optical"):
                     self._aim = (np.asarray(point, float), self.body.pose("camera_optical"))
                     return True
         return False
+
+    def _eye_xy(self, point, forward: float, shift: tuple[float, float]) -> np.ndarray:
+        """Where the eye stands over the floor: ``forward`` of the base's centre, moved ``shift``
+        (towards ``point`` and across to its left; along the base's heading for a point under it)."""
+        xy = np.asarray(self.body.in_base((forward, CAMERA_EYE[1], 0.0)), float)[:2]
+        if not any(shift):
+            return xy
+        d = np.asarray(point, float)[:2] - xy
+        if np.linalg.norm(d) < 1e-3:
+            d = xy - np.asarray(self.body.in_base((0.0, 0.0, 0.0)), float)[:2]
+        d /= np.linalg.norm(d)
+        return xy + shift[0] * d + shift[1] * np.array([-d[1], d[0]])
 
     def aimed_at(self, point, tolerance: float = 0.15) -> bool:
         """Whether the camera still looks as the last aim left it, at a point within ``tolerance``
@@ -187,10 +245,8 @@ class Eyes:
         if self._aim is None:
             return False
         target, pose = self._aim
-        T = self.body.pose("camera_optical")
-        still = (np.linalg.norm(T[:3, 3] - pose[:3, 3]) < STILL[0]
-                 and float(T[:3, 2] @ pose[:3, 2]) > math.cos(STILL[1]))
-        return bool(still and np.linalg.norm(np.asarray(point, float) - target) <= tolerance)
+        return same_view(self.body.pose("camera_optical"), pose) and \
+            bool(np.linalg.norm(np.asarray(point, float) - target) <= tolerance)
 
     def aim_past_held(self, T: np.ndarray, distance: float = math.inf) -> np.ndarray:
         """``T`` (a camera pose looking along its z at a point ``distance`` away) turned the least
@@ -205,11 +261,7 @@ class Eyes:
         covered or no turn clears it."""
         if self.held is None:
             return T
-        corners = self.held.corners_at(self.body.pose("tcp"))
-        C = np.linalg.inv(self.body.pose("camera_optical"))
-        pc = corners @ C[:3, :3].T + C[:3, 3]
-        z = np.maximum(pc[:, 2], self.cam.near)
-        item = pc[:, :2] / z[:, None]
+        item, z = self._held_in_view()
         outlines = [item]
         if self.cam.baseline > 0.0:  # the right imager's view of the point is blocked this far left of the item
             shadow = item.copy()
@@ -233,6 +285,34 @@ class Eyes:
                         return _turned_to(T, uv)
         return T
 
+    def _held_in_view(self) -> tuple[np.ndarray, np.ndarray]:
+        """The held item's box corners in normalised image coordinates from the camera now, and
+        their depths (no nearer than the camera's minimum range)."""
+        corners = self.held.corners_at(self.body.pose("tcp"))
+        C = np.linalg.inv(self.body.pose("camera_optical"))
+        pc = corners @ C[:3, :3].T + C[:3, 3]
+        z = np.maximum(pc[:, 2], self.cam.near)
+        return pc[:, :2] / z[:, None], z
+
+    def in_hand(self, frame: Frame, label_fits: Callable[[str], bool]) -> int | None:
+        """The detection of ``frame`` (by index) whose mask centres where the held item shows —
+        the item is rigid in the wrist camera's view — and whose label fits it; None when none
+        does. Its depth cannot tell: under the stereo's minimum range the item has no returns,
+        and its mask's rim gives the floor's behind it (an unnamed cup there was remembered on
+        the floor of a doorway, and the base found no way through it)."""
+        if self.held is None or frame.masks is None or frame.intrinsics is None:
+            return None
+        hull = cv2.convexHull(self._held_in_view()[0].astype(np.float32))
+        fx, fy, cx, cy = frame.intrinsics
+        for k, d in enumerate(frame.detections):
+            if d.name or not label_fits(d.label):
+                continue
+            rows, cols = np.nonzero(frame.masks == d.mask_id)
+            if len(rows) and cv2.pointPolygonTest(hull, (float((cols.mean() - cx) / fx), float((rows.mean() - cy) / fy)),
+                                                  False) >= 0:
+                return k
+        return None
+
     # -- seeing --------------------------------------------------------------------------------
 
     def frame(self, expect: Mapping[str, Believed] | None = None, holding: str | None = None) -> Frame:
@@ -245,18 +325,33 @@ class Eyes:
         return frame
 
     def measure(self, name: str, point, allow_base: bool = False, radius: float = SEEN_RADIUS,
-                inside: str | None = None) -> Seen | None:
+                inside: str | None = None, short: Callable[[Seen], float] = lambda seen: 0.0) -> Seen | None:
         """Look at ``point`` (where ``name`` is believed to be, within ``radius``; ``inside``: in
         that container) and measure ``name`` in the frame: the detection of its class there; None
-        when no look shows it."""
+        when no look shows it. The looks go down :data:`LOOKS`, each from a view not yet taken for
+        ``name`` in this goal (:class:`Views`), at most :data:`VIEWS_PER_MEASURE` that do not show
+        it. ``short`` says how much of the item a measure leaves out below (m; more than 0: a view
+        from above a standing bottle measures its top, not its middle): one more look then goes
+        from the lowest eye left, and the measure that leaves out least is returned."""
         believed = Believed(tuple(map(float, point)), radius, inside, inside=inside is not None)
-        for lift in LOOK_LIFTS:
-            if not self.look_at(point, lift=lift, allow_base=allow_base):
+        looks, misses, best = list(LOOKS), 0, None
+        while looks and misses < VIEWS_PER_MEASURE:
+            lift, toward, across = looks.pop(0)
+            if not self.look_at(point, lift=lift, allow_base=allow_base, shift=(toward, across),
+                                avoid=self.views.of(name)):
                 continue
+            self.views.add(name, self.body.pose("camera_optical"))
             seen = seen_from(self.frame({name: believed}), name)
-            if seen is not None:
+            if seen is None:
+                misses += 1
+                continue
+            if short(seen) <= 0.0:
                 return seen
-        return None
+            if best is not None:  # the second view of a short measure: the better of the two
+                return min((best, seen), key=short)
+            best = seen
+            looks.sort(key=lambda look: look[0])  # from lower: more of its side
+        return best
 
 
 def _turned_to(T: np.ndarray, uv: np.ndarray) -> np.ndarray:

@@ -167,7 +167,7 @@ class Hands:
 
     # -- measuring ---------------------------------------------------------------------------
 
-    def regard(self, name: str, point) -> Furniture | None:
+    def regard(self, name: str, point, shows=None) -> Furniture | None:
         """Look at ``point`` on the mapped piece ``name`` from where the robot stands now, and
         return the piece as it lies from here: the frame registers the map to what the camera
         shows (:meth:`~skills.scene_model.SceneModel.relocalize`), so that a handle, a tap, a
@@ -175,17 +175,22 @@ class Hands:
         notwithstanding. A fit needs the piece's outline, not a patch of one face: the look goes
         to the piece's top from a raised eye first (from a work pose the piece is near, and a
         look at the point itself — a tap right under the eye — sees a corner of it), then to the
-        point, then to the piece's front. The piece as the map has it when no look shows it."""
+        point, then to the piece's front — each in turn until a frame shows the piece (``shows``:
+        what the skill needs of the frame, the piece detected by default): a look again from the
+        same place would be the same picture, its miss the same. The piece as the map has it
+        when no look shows it."""
         f = self.scene.furniture.get(name)
         self.regarded = None
         if f is None:
             return None
+        shows = shows or (lambda: self.regarded.detection(name) is not None)
         top = f.top_point()
         for p, lift, forward in ((top, REGARD_LIFT, REGARD_EYE), (top, 0.0, REGARD_EYE), (point, 0.0, CAMERA_EYE[0]),
                                  (f.to_world((0.0, f.depth / 2, f.height / 2)), 0.0, CAMERA_EYE[0])):
             if self.eyes.look_at(p, lift=lift, forward=forward):
                 self.regarded = self.eyes.frame()  # the frame the piece was registered from
-                break
+                if shows():
+                    break
         return self.scene.furniture.get(name)
 
     def regarded_points(self, name: str) -> np.ndarray | None:
@@ -203,14 +208,20 @@ class Hands:
         turn well, its place along a long counter less so (the frame may show no side of it); the
         tap's arm is what of the sink stands above its top near where the map puts the tap, and
         its middle across gives the tap's place along the front. ``tap`` when it does not show."""
-        pts = self.regarded_points(f.name)
-        if pts is None or not len(pts):
-            return tap
-        up = pts[(pts[:, 2] > f.height + TAP_ABOVE) & (np.linalg.norm(pts[:, :2] - tap[:2], axis=1) < TAP_SEARCH)]
-        if len(up) < TAP_MIN_POINTS:
+        up = self.tap_arm(f, tap)
+        if up is None:
             return tap
         across = float(np.median((up - tap)[:, :2] @ f.along[:2]))
         return tap + f.along * across
+
+    def tap_arm(self, f: Furniture, tap: np.ndarray) -> np.ndarray | None:
+        """The points of the tap's arm in the last :meth:`regard`'s frame (the sink's points above
+        its top near where the map puts the tap), None when it shows too few of them."""
+        pts = self.regarded_points(f.name)
+        if pts is None or not len(pts):
+            return None
+        up = pts[(pts[:, 2] > f.height + TAP_ABOVE) & (np.linalg.norm(pts[:, :2] - tap[:2], axis=1) < TAP_SEARCH)]
+        return up if len(up) >= TAP_MIN_POINTS else None
 
     def switch_seen(self, f: Furniture, switch: np.ndarray) -> np.ndarray:
         """The switch as the last :meth:`regard` shows the appliance's front: the registration
@@ -237,16 +248,38 @@ class Hands:
         from its standoff. The detection taken for it is one of its class within the radius
         belief gave (else: anywhere on the piece it is believed on or in, else near the point)."""
         radius = self.belief_radius(where)
-        seen = self.eyes.measure(name, point, radius=radius, inside=where.inside)
+        short = self.unseen_below(where)
+        seen = self.eyes.measure(name, point, radius=radius, inside=where.inside, short=short)
         if seen is None:
             self.nav.approach(self.nav.standoff(name, point, where.place))
-            seen = self.eyes.measure(name, point, radius=radius, inside=where.inside)
+            seen = self.eyes.measure(name, point, radius=radius, inside=where.inside, short=short)
         wider = self.belief_radius(where, given=False)
         if seen is None and wider > radius:
             # where belief measured it may be off (a sighting taken for it that was not it); what
             # belief says it is on or in still holds until a look says otherwise
-            seen = self.eyes.measure(name, point, radius=wider, inside=where.inside)
+            seen = self.eyes.measure(name, point, radius=wider, inside=where.inside, short=short)
+        if seen is not None and short(seen) > 0.0:
+            seen = self.stood_on(seen, where)
         return seen
+
+    def stood_on(self, seen: Seen, where: Where) -> Seen:
+        """``seen`` reaching down to the top of what it stands on, its centroid the middle of that
+        height: no view showed more than its top (from above a standing bottle every reachable
+        view shows its cap and shoulders), and an item on a surface does not hover over it."""
+        z = self.support_height(where, seen.centroid)
+        lo = np.array([*seen.lo[:2], z])
+        return replace(seen, lo=lo, centroid=np.array([*seen.centroid[:2], (z + seen.hi[2]) / 2]))
+
+    def unseen_below(self, where: Where):
+        """How much of an item on ``where`` a measure leaves out below it (m; 0 when it reaches
+        down to the support's top within :data:`SUPPORT_SNAP`, or the support is not known): an
+        item standing on a surface has no gap under it, so a seen bottom high above the surface
+        is a view that showed its top only (a camera straight above a standing bottle), its
+        centroid that of the top. Inside a container the item may stand on a shelf: not judged."""
+        def short(seen: Seen) -> float:
+            z = None if where.inside else self.support_height(where, seen.centroid)
+            return 0.0 if z is None else max(0.0, seen.bottom - z - SUPPORT_SNAP[1])
+        return short
 
     def belief_radius(self, where: Where, given: bool = True) -> float:
         """How far from the point belief gave an item may be (see :meth:`locate`): the goal's
@@ -925,7 +958,9 @@ class Hands:
             held = self.eyes.held
         tap = np.array(f.info.tap)
         self.nav.approach(self.nav.work_pose(tap, f.front, "top", sink))
-        f = self.regard(sink, tap)
+        # looked at until a frame shows the tap's arm: the map puts the tap a few centimetres off
+        # along a long counter, and the cup under the map's tap missed the stream
+        f = self.regard(sink, tap, shows=lambda: self.tap_arm(f, np.array(f.info.tap)) is not None)
         tap = self.tap_seen(f, np.array(f.info.tap))  # the tap where this look shows it
         self.carry()  # the vessel upright again, as it rides
         T = self.body.pose("tcp")

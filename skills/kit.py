@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import threading
 from contextlib import contextmanager
+from dataclasses import replace
 from typing import Iterator
 
 from skills.body import Body
@@ -88,7 +89,20 @@ class Kit:
         hand = tuple(float(v) for v in self.body.pose("tcp")[:3, 3])
         # only an item's own class: the kit knows its goal's objects, not what else of a
         # confusable class stands there (a bowl on the plate is not the plate)
-        return Identifier(vocabulary, self.scene.site, EXACT).identify(frame, belief, held, hand, self.scene.room_at(x, y))
+        named = Identifier(vocabulary, self.scene.site, EXACT).identify(frame, belief, held, hand, self.scene.room_at(x, y))
+        return self._held_by_place(named, held)
+
+    def _held_by_place(self, frame: Frame, held: str | None) -> Frame:
+        """``frame`` with the held item named where the camera shows it when its depth did not put
+        it at the fingers (:meth:`~skills.eyes.Eyes.in_hand`)."""
+        if held is None or any(d.name == held for d in frame.detections):
+            return frame
+        k = self.eyes.in_hand(frame, lambda label: label == class_of(held))
+        if k is None:
+            return frame
+        dets = list(frame.detections)
+        dets[k] = replace(dets[k], name=held)
+        return replace(frame, detections=tuple(dets))
 
     def _noticed(self, frame, held: str | None) -> None:
         """What every frame the eyes take tells the scene model: where the map lies from here (the
@@ -130,6 +144,7 @@ class Kit:
         with self.busy:
             self._refresh()
             self.body.set_scene(self.scene.solid_boxes())  # leaves where they were last seen
+            self.eyes.views.clear()  # an item looked for in an earlier goal may have moved since
             self.body.cancelled = ctx.cancelled
             self._slip_at = None
             self.body.slipped = self._slipped

@@ -210,13 +210,14 @@ class Navigator:
         f, r = self._work_axis(point, toward, how, clear_of)
         side = np.array([-f[1], f[0], 0.0])
         obstacles, low = self.scene.obstacles(), self.scene.low_obstacles()
-        leaves, arm = self.scene.door_leaf_polygons(), self.arm_outline()
+        leaves, arm = self.scene.door_leaf_polygons() + self.over_arm(), self.arm_outline()
         for back in WORK_BACKOFFS:
             p = np.asarray(point) + f * (r + back)
             for shift in WORK_SHIFTS:
                 q = p + side * shift
                 pose = (float(q[0]), float(q[1]), math.atan2(point[1] - q[1], point[0] - q[0]))
-                # the arm reaches over a table's top, not over a room door's leaf (tall, and it swings)
+                # the arm reaches over a table's top, not over a room door's leaf (tall, and it
+                # swings) nor into furniture as tall as the folded hand (a fridge's corner)
                 if base_free(pose, obstacles, WORK_MARGIN, low=low) and self.arm_off(pose, leaves, arm):
                     yield pose
         if plain:
@@ -467,6 +468,15 @@ class Navigator:
         r = HAND_RADIUS
         pts = [np.array(FOLDED_ARM)] + [p[:2] + np.array([[r, r], [r, -r], [-r, r], [-r, -r]]) for p in hand]
         return hull(np.vstack(pts))
+
+    def over_arm(self) -> list[np.ndarray]:
+        """The outlines (from above) of the furniture that reaches up to the folded hand: the arm
+        does not pass over it (a work pose at a fridge's foot turned the base in with the folded
+        hand inside the fridge's corner: 539 N against its front)."""
+        q = self.body.q()
+        q[3:] = self.body.cfg.arm.home
+        underside = float(self.body.pose("tcp", q)[2, 3])
+        return [f.outer().polygon() for f in self.scene.furniture.values() if f.height > underside]
 
     @staticmethod
     def arm_off(pose, leaves, arm=FOLDED_ARM) -> bool:

@@ -108,6 +108,63 @@ def test_the_base_drives_through_its_path(counter):
     assert not d.base.follow(path, 0.0, never).completed  # a speed is a share of the limits
 
 
+def test_the_base_glides_through_free_space_and_is_driven_where_it_would_touch(tmp_path):
+    # pb-2 (pb_glide): a set-point in free space is set, not stepped through the physics, and the
+    # held cup goes along in the hand; towards the counter the physics drives and blocks as before
+    import pybullet as pb
+
+    w = world_of(tmp_path, "glide", kitchen({"counter": "type: surface"}, {"cup": "place: held"}))
+    d, physics, step = w.drivers, [0], w.step
+
+    def counted() -> None:
+        physics[0] += 1
+        step()
+
+    assert hold(d, 0.5).completed  # the cup comes to rest in the hand
+    w.step = counted  # the drivers step the world through it
+    x, y, yaw = d.base.pose()
+    cup = np.linalg.inv(w.robot.link_pose("tcp")) @ _pose_of(pb, w, "cup")
+    t0 = w.ticks
+    assert drive(d, (x, y - 0.8, yaw), (x + 0.3, y - 0.8, yaw - 1.0)).completed
+    assert w.ticks - t0 > 100 and physics[0] <= 3  # the time passed; the physics hardly stepped
+    assert d.gripper.state().holding
+    now = np.linalg.inv(w.robot.link_pose("tcp")) @ _pose_of(pb, w, "cup")
+    assert np.linalg.norm(now[:3, 3] - cup[:3, 3]) < 0.002  # where the hand held it
+    cx, cy, _ = w.site_map().piece("counter").pose
+    physics[0] = 0
+    out = drive(d, (cx, cy, math.pi / 2))
+    assert not out.completed and out.message.startswith("blocked") and physics[0] > 0
+    counter = w.scene.things["counter"].body
+    robot_and_cup = (w.robot.id, w.scene.things["cup"].body)
+    assert min(p[8] for b in robot_and_cup for p in pb.getClosestPoints(b, counter, 0.05, physicsClientId=w.cid)) > -0.02
+    w.close()
+
+
+def test_an_item_in_the_gliding_base_s_way_is_pushed_by_the_physics(tmp_path):
+    # a kinematic base set pose by pose would pass through it and leave it where it stood
+    import pybullet as pb
+
+    w = world_of(tmp_path, "sweep", kitchen({"counter": "type: surface"}, {"cup": "place: on floor_kitchen"}))
+    d = w.drivers
+    x, y, yaw = d.base.pose()
+    cup = w.scene.things["cup"].body
+    pb.resetBasePositionAndOrientation(cup, (x, y - 0.75, 0.06), (0, 0, 0, 1), physicsClientId=w.cid)
+    assert hold(d, 0.5).completed  # it stands on the floor
+    before = np.array(w.truth.center("cup"))
+    drive(d, (x, y - 1.4, yaw))  # into it, backwards: pushed along, or blocked by it
+    after = np.array(w.truth.center("cup"))
+    assert np.linalg.norm(after[:2] - before[:2]) > 0.1
+    assert min([p[8] for p in pb.getClosestPoints(w.robot.id, cup, 0.05, physicsClientId=w.cid)] + [1.0]) > -0.01
+    w.close()
+
+
+def _pose_of(pb, w, name) -> np.ndarray:
+    p, o = pb.getBasePositionAndOrientation(w.scene.things[name].body, physicsClientId=w.cid)
+    T = np.eye(4)
+    T[:3, :3], T[:3, 3] = np.array(pb.getMatrixFromQuaternion(o)).reshape(3, 3), p
+    return T
+
+
 @pytest.mark.parametrize("n", [1, 5])
 def test_cancel_stops_every_driver_within_one_step(counter, n):
     d = counter.drivers

@@ -27,7 +27,7 @@ from tools.experiments.engine import Key, key_of
 #: the CSV's columns, in order (the key's first)
 COLUMNS = ("experiment", "world", "task", "strategy", "viewpoints", "seed", "runnable", "success", "claimed",
            "claimed_denied", "situations", "replans", "vlm_queries", "actions", "wall_s", "vlm_version",
-           "reason", "error", *measures.COLUMNS)
+           "world_version", "reason", "error", *measures.COLUMNS)
 
 
 def episode_row(key: Key, report: dict) -> dict:
@@ -39,6 +39,8 @@ def episode_row(key: Key, report: dict) -> dict:
             "replans": report["replans"], "vlm_queries": report["vlm_queries"],
             "actions": len(report["actions_executed"]), "wall_s": report["wall_s"],
             "vlm_version": vlm.get("version") or vlm.get("model") or vlm.get("backend"),
+            # the simulated world's mechanics (pybullet_world.WORLD_VERSION; none in the symbolic world)
+            "world_version": ((report.get("world") or {}).get("physics") or {}).get("version"),
             "reason": report["reason"], "error": None, **measures.of(report)}
 
 

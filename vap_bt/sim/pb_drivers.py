@@ -28,6 +28,9 @@ and Table II injection), checks ``cancelled()`` and ``stop()`` before every step
 * :class:`PybulletBase` — ``follow`` drives through the poses one after the other, each leg a
   time-optimal jerk-limited rest-to-rest move (ruckig) at ``speed`` of the base's limits (a base
   controller's own profile, not a plan); ends ``blocked`` when the base falls ``BASE_TRACKING_LIMIT`` behind.
+  Through free space, while nothing else moves, a set-point is set rather than driven to
+  (:mod:`~vap_bt.sim.pb_glide`: the base glides, a held item with the hand); wherever the robot
+  would come near anything, the step is the physics' as above, so contact and blocking are too.
 
 Poses in the map frame — the base's ``pose()``, a path to follow, the tcp's pose, the base's
 joints in a whole-body trajectory — are in the frame the robot believes it is in
@@ -104,6 +107,10 @@ class Simulation(Protocol):
     def step(self) -> None:
         """One physics step, with the rules and the injection evaluated after it."""
 
+    def glide(self, body: np.ndarray, vel: np.ndarray) -> bool:
+        """One step with the base set at its set-point instead, if the physics would do no more
+        (:mod:`~vap_bt.sim.pb_glide`); False, and nothing done, when the step is the physics'."""
+
     def capture(self, aim=None) -> Frame:
         """A wrist-camera frame of the world now, with its capture record
         (:meth:`PybulletWorld.capture`)."""
@@ -133,26 +140,33 @@ class _Stoppable:
         return None
 
     def _track(self, setpoints: Iterator[tuple[np.ndarray, np.ndarray]], cancelled: Cancelled,
-               lag: Callable[[np.ndarray], float], limit: float, blocked: str) -> Outcome:
+               lag: Callable[[np.ndarray], float], limit: float, blocked: str, glide: bool = False) -> Outcome:
         """Command each (body joints, velocities) set-point for one physics step, then settle;
-        halts (holding where the joints are) on cancel, stop, or a lag beyond ``limit``."""
+        halts (holding where the joints are) on cancel, stop, or a lag beyond ``limit``. With
+        ``glide`` a set-point the physics would only track is set instead (:meth:`Simulation.glide`)."""
         r = self.sim.robot
         for body, vel in setpoints:
             if (why := self._halted(cancelled)) is not None:
                 self._hold_now()
                 return Outcome(False, why)
-            r.command(body, vel)
-            self.sim.step()
-            if (off := lag(body)) > limit:
+            # a set base is where its set-point is: only a driven one can fall behind
+            if not self._step_to(body, vel, glide) and (off := lag(body)) > limit:
                 self._hold_now()
                 return Outcome(False, f"blocked: {blocked.format(off)}")
         for _ in range(SETTLE_STEPS):
             if (why := self._halted(cancelled)) is not None:
                 self._hold_now()
                 return Outcome(False, why)
-            r.command(r.target)
-            self.sim.step()
+            self._step_to(r.target, np.zeros(len(r.target)), glide)
         return Outcome(True)
+
+    def _step_to(self, body: np.ndarray, vel: np.ndarray, glide: bool) -> bool:
+        """One step towards the set-point: set there (gliding: True), or by the motors and the physics."""
+        if glide and self.sim.glide(body, vel):
+            return True
+        self.sim.robot.command(body, vel)
+        self.sim.step()
+        return False
 
     def stop(self) -> None:
         """End the motion in progress at its next step; idle, hold where the joints are."""
@@ -411,21 +425,21 @@ class PybulletBase(_Stoppable):
                 leg = point_to_point(here, np.array(p), limits, dt=sim.dt, angular=(False, False, True))
                 legs.append(leg)
                 here = leg.q[-1]
-            length = sum(float(np.sum(np.linalg.norm(np.diff(leg.q[:, :2], axis=0), axis=1))) for leg in legs)
+            hops = np.concatenate([np.linalg.norm(np.diff(leg.q[:, :2], axis=0), axis=1) for leg in legs])
+            length = float(hops.sum())
             sim.injection.base_path_started(length)
 
             def setpoints():
-                covered = 0.0
+                share = iter((np.cumsum(hops) / length).tolist() if length > 0 else [1.0] * len(hops))
                 for leg in legs:
                     for i in range(1, len(leg.t)):
                         body, vel = r.target.copy(), np.zeros(len(r.target))
                         body[:3], vel[:3] = leg.q[i], leg.qd[i]
                         yield body, vel  # resumed after the step: the base has come this far
-                        covered += float(np.linalg.norm(leg.q[i, :2] - leg.q[i - 1, :2]))
-                        sim.injection.base_progress(covered / length if length > 0 else 1.0, length)
+                        sim.injection.base_progress(next(share), length)
 
             out = self._track(setpoints(), cancelled, lambda body: float(np.linalg.norm(r.q()[:2] - body[:2])),
-                              BASE_TRACKING_LIMIT, "the base is {:.2f} m behind its set-point")
+                              BASE_TRACKING_LIMIT, "the base is {:.2f} m behind its set-point", glide=True)
             sim.localization.settle(r.base_pose)  # at rest: the localiser may update
             return out
 

@@ -49,6 +49,7 @@ class Robot:
         self.forces = list(self.cfg.base.effort + self.cfg.arm.effort)
         self.grip: Grip | None = None
         self.target = self.q()
+        self._unsent = False  # set-points not yet sent to the motors (:meth:`set_target`)
         self.opening = self.cfg.gripper.stroke
         #: the fingers' force set by the gripper driver (None: the motors' full effort)
         self.grip_force: float | None = None
@@ -92,12 +93,24 @@ class Robot:
     def command(self, q, qd=None) -> None:
         """Position set-points (with velocity feed-forward) for the body joints and the fingers."""
         self.target = np.asarray(q, float)
+        self._unsent = False
         qd = np.zeros(len(q)) if qd is None else qd
         pb.setJointMotorControlArray(self.id, self.body_joints, pb.POSITION_CONTROL, targetPositions=list(q),
                                      targetVelocities=list(qd), forces=self.forces,
                                      positionGains=[0.6] * len(q), velocityGains=[1.0] * len(q),
                                      physicsClientId=self.cid)
         self.command_fingers(self.opening, self.grip_force)
+
+    def set_target(self, q) -> None:
+        """The body's set-points are ``q``, where the joints were just set (a kinematic base,
+        :mod:`pb_glide`): the motors are told only before the physics steps again (:meth:`sync`)."""
+        self.target = np.asarray(q, float)
+        self._unsent = True
+
+    def sync(self) -> None:
+        """Tell the motors the set-points :meth:`set_target` left unsent (to hold, at rest)."""
+        if self._unsent:
+            self.command(self.target)
 
     def command_fingers(self, opening: float, force: float | None = None) -> None:
         """Set the fingers' motors towards ``opening`` (m between the pads) with at most ``force`` N

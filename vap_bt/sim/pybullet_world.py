@@ -28,7 +28,10 @@ Disturbances are dicts: ``{"at": 2, "move": "cup", "to": "counter"}`` (as the th
 starts, the cup is put on the counter), ``{"after": 0, ...}`` (once the first action is done,
 before anything is checked for the next), or ``{"at": 0, "door": "door_lk", "open": 0.4}`` (the
 door swung to 40 % of its travel). The simulation steps at ``DT`` with few solver iterations: episodes are
-meant to be fast, not precise.
+meant to be fast, not precise. A base drive's step in free space, while nothing else moves, is
+taken without the physics (:meth:`PybulletWorld.glide`, :mod:`pb_glide`): the base is set on its
+profile and the time, the rules and the injection advance as in a step. The world's mechanics
+have a version, :data:`WORLD_VERSION`, in every report and campaign row.
 """
 
 from __future__ import annotations
@@ -58,6 +61,7 @@ from vap_bt.motion.se3 import look_pose
 from vap_bt.sim.pb_camera import FILL, Render, doorway_pixels, mask_extents, name_image, pixel_counts, render, visibility
 from vap_bt.sim.pb_catalog import load_catalog
 from vap_bt.sim.pb_drivers import Drivers
+from vap_bt.sim.pb_glide import Glide
 from vap_bt.sim.pb_injection import Injection
 from vap_bt.sim.pb_layout import plan_scene
 from vap_bt.sim.pb_robot import Robot
@@ -69,6 +73,10 @@ from vap_bt.sim.observability import PLAIN_SHARE
 from vap_bt.sim.situations import SituationModel
 from vap_bt.world import InjectedSituation
 
+#: the world's version, in every report (``world.physics``) and campaign row (``world_version``):
+#: a change of its mechanics is a new version, and every figure is measured again.
+#: pb-2: the base glides through free space (:mod:`pb_glide`); pb-1 drove every step by motors
+WORLD_VERSION = "pb-2 (2026-12-05)"
 DT = 1.0 / 60.0
 SOLVER_ITERATIONS = 20
 #: physics sub-steps per step: an item let go at carrying height meets the floor at 4 m/s, 7 cm in
@@ -164,6 +172,7 @@ class PybulletWorld:
             self.injection = Injection(self.situations, self.scene, self.robot, self._injected,
                                        lost_grip=lambda: self.drivers.gripper.lost_grip())
             self.rules = Rules(self.scene, self.robot, self.truth, self.catalog, self.injection, DT)
+            self._glide = Glide(self.robot, self.scene, DT)
             self._action: tuple[int, str, tuple[str, ...]] | None = None  # the action running now
             self.ticks = 0
             self.actions = 0
@@ -201,11 +210,27 @@ class PybulletWorld:
             if substeps != self._substeps:
                 pb.setPhysicsEngineParameter(numSubSteps=substeps, physicsClientId=self.cid)
                 self._substeps = substeps
+            self.robot.sync()
             pb.stepSimulation(physicsClientId=self.cid)
+            self._glide.stepped()
             self.scene.hold_limits()
-            self.ticks += 1
-            self.rules.step()
-            self.injection.step()
+            self._tick()
+
+    def glide(self, body: np.ndarray, vel: np.ndarray) -> bool:
+        """One step of a base drive without the physics, if it would do no more than set the base
+        at its set-point ``body`` (velocity ``vel``; :mod:`pb_glide`): the time, the physics rules
+        and Table II's effects advance as in :meth:`step`. False (nothing done) when the step is
+        the physics' — the base would touch something, or something else moves."""
+        with self._lock:
+            if not self._glide.place(body, vel):
+                return False
+            self._tick()
+            return True
+
+    def _tick(self) -> None:
+        self.ticks += 1
+        self.rules.step()
+        self.injection.step()
 
     def _loose_moving(self) -> bool:
         """Whether an item the hand does not hold moves faster than :data:`LOOSE_SPEED`."""
@@ -216,7 +241,8 @@ class PybulletWorld:
     @property
     def physics(self) -> dict:
         """How pybullet integrates the household, for the report: results depend on it."""
-        return {"dt": DT, "substeps": SUBSTEPS, "loose_substeps": LOOSE_SUBSTEPS, "loose_speed": LOOSE_SPEED,
+        return {"version": WORLD_VERSION, "base": "kinematic in free space (pb_glide)", "dt": DT,
+                "substeps": SUBSTEPS, "loose_substeps": LOOSE_SUBSTEPS, "loose_speed": LOOSE_SPEED,
                 "solver_iterations": SOLVER_ITERATIONS}
 
     # ------------------------------------------------------------ actions
