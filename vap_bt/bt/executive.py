@@ -314,6 +314,7 @@ class Executive:
             graph, board = out.graph, ctx.board
             repeats = RepeatWatch()
             doubted: Counter[Atom] = Counter()  # observations doubted because they left no plan
+            redone: set[Atom] = set()  # goal atoms no view confirmed, handed back to the planner once
             while time.monotonic() < deadline:
                 tree.tick()
                 out.ticks += 1
@@ -357,6 +358,15 @@ class Executive:
                     # looking afresh brought the robot back to the same "no": the skill is the test
                     board.actions_on_trial.add(str(situation.action))
                     self.progress(f"    {situation.action} said impossible {times} times: trying it against that")
+                elif stuck(situation, times) and rests_on_plan(situation, board.verifications) \
+                        and situation.atom not in redone:
+                    # a goal no view confirmed rests on the plan alone, and the action that was to
+                    # bring it about may have failed unseen (halve_egg seed 3: a cut that did not
+                    # cut, its effect unsettled, three goal checks unsettled): do it again, once
+                    redone.add(situation.atom)
+                    graph.correct(situation.atom, not situation.expected,
+                                  self.task.knowledge.complements.get(situation.atom.predicate), cause="unconfirmed")
+                    self.progress(f"    {situation.atom} never confirmed after {times} looks: doing it again")
                 elif stuck(situation, times):
                     out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
                                   "(looking afresh changed nothing)")
@@ -1026,6 +1036,19 @@ def unconfirmed_goal(atoms: list[Atom], step: int) -> Situation:
     episodes with injection), and claiming them would be claiming what nobody saw."""
     detail = "goal reached in belief but not confirmed by looking: " + ", ".join(map(str, atoms))
     return Situation("unseen", None, step, atoms[0], True, None, detail=detail)
+
+
+def rests_on_plan(s: Situation, verifications: list[Verification]) -> bool:
+    """Whether ``s`` is a goal atom the camera could not confirm (:func:`unconfirmed_goal`) that
+    belief holds only because a plan's action was to bring it about: no check of the episode
+    settled it at the goal's value, by a view or by the body. Then the action may have failed
+    where no view could tell (an injected cut that does not cut: vlm-2 reads ``sliced`` poorly,
+    and its effect check stayed unsettled), and doing it again is the way to a goal the camera
+    can confirm; an atom a check did confirm is another matter (a view of it was good enough)."""
+    if s.kind != "unseen" or s.action is not None or s.atom is None:
+        return False
+    return not any(v.atom == s.atom and v.value == s.expected and v.outcome in ("confirmed", "felt")
+                   for v in verifications)
 
 
 def replan_timing(plan: Plan, seconds: float) -> str:
