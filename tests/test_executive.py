@@ -369,3 +369,22 @@ def test_a_precondition_denied_that_leaves_no_plan_is_doubted_then_tried_against
     assert any("trying grasp(cup" in m for m in lines)
     denied = [v for v in r["verifications"] if v["predicate"] == "reachable(cup)"]
     assert len(denied) == 4 and all(v["outcome"] == "contradicted" and v["value"] is False for v in denied)
+
+
+@pytest.mark.slow(seconds=90)
+def test_an_item_seen_inside_a_shut_oven_is_not_taken_for_the_lost_one():
+    """heat_pie seed 2 in pybullet with injection: the take-out fails, the pie stays in the fridge,
+    and a re-survey's detector reports a pie-like false positive where the shut oven stands. Taken
+    for the pie it put the pie in the oven: the oven was turned on with no pie in it, and no goal
+    check could see the pie ("stuck: could not see whether heated(apple_pie) holds"). No camera
+    sees into a shut oven: such a sighting is not the pie."""
+    task = load(TREES / "heat_pie.yaml")
+    s = Session(task, RunConfig.from_task(task, world="pybullet", verify="both", viewpoints="vlm", transport="inproc"))
+    try:
+        r = s.episode(2)
+    finally:
+        s.close()
+    assert r["injected"], "the episode this test is about has its take-out fail"
+    relocated = [c for c in r["belief_changes"] if c["cause"] == "relocate"]
+    assert not any("inside(apple_pie, oven)" in c["added"] for c in relocated), relocated
+

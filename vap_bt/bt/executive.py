@@ -942,7 +942,18 @@ class Executive:
     def _placed_anew(self, name: str, held=()) -> bool:
         """Whether the frames put ``name`` on or in something (or in the hand) somewhere a check
         did not find it missing: a sighting the executive takes as where the item is."""
-        return self.builder.placed(name, held) and not self._at_miss(name)
+        return self.builder.placed(name, held) and not self._at_miss(name) and not self._behind_shut_door(name, held)
+
+    def _behind_shut_door(self, name: str, held=()) -> bool:
+        """Whether the frames put ``name`` inside something belief holds shut: no camera sees into
+        a shut oven, so what a frame shows there is a detector's false positive of its class
+        (heat_pie seed 2 in pybullet: the pie, lost after a failed take-out, was "found" inside
+        the oven nobody had opened, the oven was turned on, and no goal check could see a pie
+        that stood in the fridge)."""
+        closed = self.roles.closed
+        return closed is not None and self.graph is not None and any(
+            a.predicate == self.roles.inside and Atom(closed, a.args[1:]) in self.graph.facts
+            for a in self.builder.observed(name, held) if a.args[0] == name)
 
     def _at_miss(self, name: str) -> bool:
         """Whether the frames' track of ``name`` puts it where a check found it missing."""
