@@ -24,6 +24,11 @@ then swaps in a new plan's tree:
 5. the planner replans from the corrected graph — reusing the old plan's tail when it still
    works — within the replanning budget.
 
+A goal atom the camera could not confirm, back unchanged after looking afresh, stops the episode
+as stuck — unless no check ever confirmed it: then belief holds it only because an action was to
+bring it about, which may have failed unseen, and it is handed back to the planner once
+(:func:`rests_on_plan`).
+
 Before any of that, an execution failure is asked of the skill client whether the robot still
 has a server (``rejoin``, where the client has one: :class:`~vap_bt.transport.client.ZenohSkillClient`).
 A goal that failed because its server died is no fact about the world to replan around: the
@@ -47,7 +52,8 @@ sees a world or its truth. Its detector reports class labels, not which object e
 every frame it captures is identified first against current belief
 (:class:`~vap_bt.scene.identity.IdentifyingCamera`: the map names its furniture and doors, the
 gripper what it holds, belief's positions the items, and an object belief places nowhere — one
-it is looking for — is taken where it is first seen). Every way an episode ends halts the tree (``root.stop``), so no goal
+it is looking for — is taken where it is first seen, but never inside something belief holds
+shut, which no camera sees into). Every way an episode ends halts the tree (``root.stop``), so no goal
 is left in flight.
 """
 
