@@ -164,6 +164,26 @@ def test_what_is_in_a_basket_is_looked_at_from_above():
     assert b.opens_on_top("basket") and not b.opens_on_top("fridge") and not b.opens_on_top("wood1")
 
 
+def test_what_is_in_a_front_opening_cavity_is_looked_at_through_its_front():
+    """boil_water seed 6 in pybullet: the goal check could not settle heated(cup) with the cup in
+    the microwave, and the looks again went to the microwave's top, from where the cup was in none
+    of the frames. An item inside a piece that opens at the front is looked at from the same close
+    stands, aimed at the middle of the cavity; the piece itself, and an item on a top, as before."""
+    from vap_bt.robot.site_map import Cavity
+    from vap_bt.scene.builder import INSIDE_LOOKS, TOP_LOOKS
+
+    task = load(TREES / "boil_water.yaml").planning
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 6.0, 4.0)),), furniture=(
+        FurnitureInfo("microwave", "microwave", "appliance", "kitchen", (4.0, 3.5, -np.pi / 2), (0.5, 0.4), 1.25,
+                      Cavity((0.95, 1.2), 0.02, "front")),))
+    b = SceneGraphBuilder(task.knowledge, task.objects, site)
+    inside = SceneGraph.of_facts({A("inside(cup, microwave)"), A("in_room(cup, kitchen)")})
+    views = b.near_views(inside, "cup")
+    assert [v.label for v in views] == [f"microwave {label}" for label in INSIDE_LOOKS.values()]
+    assert all(v.aim.point[2] == pytest.approx(1.075) and v.base_pose[1] < 3.5 for v in views)
+    assert [v.label for v in b.near_views(inside, "microwave")] == [f"microwave {label}" for label in TOP_LOOKS.values()]
+
+
 def test_a_hidden_item_is_placed_by_the_prior_and_a_seen_one_by_perception():
     """boil_water: the cup is in the closed cabinet, which no view shows into; the task file says
     so, and the belief says which source placed it."""

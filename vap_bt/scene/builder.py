@@ -53,6 +53,10 @@ TOP_VIEW_STANDOFF = 1.0
 SEARCH_TOP_STANDOFF = 0.7
 #: how a look at a top from each of those stands is labelled in logs and reports
 TOP_LOOKS = {TOP_VIEW_STANDOFF: "its top, from close by", SEARCH_TOP_STANDOFF: "its top, from nearer"}
+#: the same stands for a look into a cavity that opens at the front (a microwave, an oven, a
+#: fridge), aimed at the cavity's middle: from them its top shows and what stands inside does not
+#: (boil_water seed 6 in pybullet: the cup heated in the microwave, out of every such frame)
+INSIDE_LOOKS = {TOP_VIEW_STANDOFF: "its inside, from close by", SEARCH_TOP_STANDOFF: "its inside, from nearer"}
 #: the height aimed at on furniture whose height perception has not measured yet
 FURNITURE_AIM_HEIGHT = 0.7
 #: a look round the floor: this far from the room's centre, in these directions
@@ -273,14 +277,19 @@ class SceneGraphBuilder:
     def _top_view(self, f, standoff: float) -> Viewpoint:
         return self._furniture_view(f, standoff, TOP_LOOKS[standoff])
 
-    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front") -> Viewpoint:
+    def _inside_view(self, f, standoff: float) -> Viewpoint:
+        return self._furniture_view(f, standoff, INSIDE_LOOKS[standoff], z=sum(f.cavity.z) / 2)
+
+    def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front",
+                        z: float | None = None) -> Viewpoint:
         if f.pose is None:
             return Viewpoint(f.room, Aim((f.name,), place=f.name), None, f"{f.name}")
         x, y, yaw = f.pose
         depth = f.footprint[1] if f.footprint else 0.5
         box = self.geometry.box(f.name) if self.geometry else None
         # the measured top once the piece has been seen (a look at its top), else a usual height
-        z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
+        if z is None:
+            z = box[5] if box is not None and standoff != VIEW_STANDOFF else FURNITURE_AIM_HEIGHT
         d = depth / 2 + standoff
         base = (x + d * math.cos(yaw), y + d * math.sin(yaw), yaw + math.pi)
         return Viewpoint(f.room, Aim((f.name,), (x, y, z), f.name), base, f"{f.name} {label}")
@@ -447,17 +456,25 @@ class SceneGraphBuilder:
     def near_views(self, graph: SceneGraph, name: str) -> list[Viewpoint]:
         """Views from close by of an item where belief puts it, for a check that could not make
         it out from afar (a lemon's cut, a cup's water, a log in a basket): the top of the piece it
-        rests on or in from the sweep's close stand and from nearer (for a pie in the oven too: a
-        front view instead left heat_pie seed 0's "heated" unconfirmed), or the floor round it
-        from all sides. ``name`` may be the piece itself
+        rests on or in from the sweep's close stand and from nearer, or, for an item inside a piece
+        that opens at the front, the middle of its cavity from the same stands (the sweep's front
+        view from afar left heat_pie seed 0's "heated" unconfirmed; the top hid boil_water seed 6's
+        cup in the microwave from every frame), or the floor round it from all sides. ``name`` may be the piece itself
         (a basket a check relates an item to)."""
         place = self.place_of(graph, name)
         piece = self.site_map.piece(place) if place else None
+        if piece is not None and piece.pose is not None and self._in_front_opening(graph, name, piece):
+            return [self._inside_view(piece, standoff) for standoff in INSIDE_LOOKS]
         if piece is not None and piece.pose is not None:
             return [self._top_view(piece, standoff) for standoff in TOP_LOOKS]
         room = next((r for r in self.site_map.rooms if r.floor == place), None)
         p = self.point_of(graph, name)
         return self.spot_views(room.name, p[:2]) if room is not None and p is not None else []
+
+    def _in_front_opening(self, graph: SceneGraph, name: str, piece) -> bool:
+        """Whether belief puts item ``name`` right inside ``piece``, whose cavity opens at the front."""
+        return piece.cavity is not None and piece.cavity.open == "front" \
+            and Atom(self.roles.inside, (name, piece.name)) in graph.facts
 
     def aim(self, graph: SceneGraph, names: tuple[str, ...]) -> Aim:
         """Aim at the first of ``names`` that belief can place (the object a question is about,
