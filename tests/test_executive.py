@@ -265,25 +265,6 @@ def test_a_check_that_comes_back_the_same_is_looked_at_afresh_but_does_not_stop_
     assert [stuck(unseen, watch.count(unseen, belief)) for _ in range(3)] == [False, False, True]
 
 
-def test_a_situation_back_from_the_same_belief_about_the_world_is_a_repeat_wherever_the_robot_stands():
-    """halve_egg seed 6 in pybullet: ``sliced(egg)`` could not be seen at the goal five times, each
-    after a look from another stand; belief differed only in where the robot stood, so none was
-    counted a repeat and the replanning budget ran out before the goal's stuck rule could stop it."""
-    from vap_bt.bt.context import Situation
-    from vap_bt.bt.repeats import RepeatWatch, stuck
-    from vap_bt.domain.atoms import Atom
-    from vap_bt.domain.roles import HOUSEHOLD
-
-    watch = RepeatWatch(HOUSEHOLD.robot)
-    world = frozenset({Atom.parse("inside(egg, drawer)"), Atom.parse("holding(knife)")})
-    unseen = Situation("unseen", None, 5, Atom.parse("sliced(egg)"), True, None)
-    stands = [frozenset({Atom.parse(f"robot_at({at})"), Atom.parse("robot_in(kitchen)"), Atom.parse(f"inview({at})")})
-              for at in ("drawer", "cutting_board", "egg")]
-    assert [stuck(unseen, watch.count(unseen, world | stand)) for stand in stands] == [False, False, True]
-    # the world believed otherwise is another start
-    assert watch.count(unseen, frozenset({Atom.parse("on(egg, cutting_board)")}) | stands[0]) == 1
-
-
 def test_a_goal_the_camera_could_not_confirm_is_looked_at_again_before_success_is_claimed(monkeypatch):
     """The tree gets through but a goal check stays unsettled: the executive neither claims the
     goal nor gives up on it — it goes to look at what the atom is about and checks the goal again

@@ -320,7 +320,7 @@ class Executive:
         # and a time budget or Ctrl-C may come while the replanned tree has a goal in flight)
         try:
             graph, board = out.graph, ctx.board
-            repeats = RepeatWatch(self.roles.robot)
+            repeats = RepeatWatch()
             doubted: Counter[Atom] = Counter()  # observations doubted because they left no plan
             redone: set[Atom] = set()  # goal atoms no view confirmed, handed back to the planner once
             while time.monotonic() < deadline:

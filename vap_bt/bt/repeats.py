@@ -44,23 +44,16 @@ def stuck(s: Situation, times: int) -> bool:
 
 
 class RepeatWatch:
-    """How often each situation has happened from the same belief, within one episode.
+    """How often each situation has happened from the same belief, within one episode."""
 
-    ``robot``: the predicates that say where the robot stands and what it has in view. They are
-    left out of the belief compared: a look that answers a situation moves the robot (another stand
-    each time), so with them no recurrence would ever be the same — halve_egg seed 6 in pybullet
-    could not see ``sliced(egg)`` at the goal five times from one belief about the world, each
-    from another stand, before the replanning budget ran out."""
-
-    def __init__(self, robot: frozenset[str] = frozenset()) -> None:
+    def __init__(self) -> None:
         self._seen: Counter = Counter()
-        self.robot = robot
 
-    def key(self, s: Situation, belief: frozenset[Atom]) -> tuple:
+    @staticmethod
+    def key(s: Situation, belief: frozenset[Atom]) -> tuple:
         """What makes two situations the same recurrence: kind, action, atom, observation and message, and
-        the belief about the world they arose from."""
-        world = frozenset(a for a in belief if a.predicate not in self.robot)
-        return (s.kind, str(s.action) if s.action else None, s.atom, s.observed, s.detail, world)
+        the belief they arose from."""
+        return (s.kind, str(s.action) if s.action else None, s.atom, s.observed, s.detail, belief)
 
     def count(self, s: Situation, belief: frozenset[Atom]) -> int:
         """Record ``s`` raised from ``belief``; returns how many times that has happened (1: new)."""
