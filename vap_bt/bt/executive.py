@@ -958,10 +958,13 @@ class Executive:
         for a in graph.facts:
             if self.roles.is_held(a):
                 self.misses.clear(a.args[0])
+                self.moves.clear(a.args[0])
         a = s.atom
         if s.kind not in ("unseen", "precondition") or a is None or s.observed is True or not a.args \
                 or a.predicate not in (self.roles.in_view, *self.roles.support):
             return  # an effect or a goal is about what the robot just did there: no phantom put it
+        if a.predicate in self.roles.support:
+            self.moves.doubt(a)  # not a place to go back to should a sighting move it from there
         obj = graph.objects.get(a.args[0])
         if obj is not None and self._portable(obj.name) and obj.centroid is not None \
                 and obj.located == frozenset(graph.location(obj.name)):
