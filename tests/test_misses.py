@@ -15,6 +15,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.domain.roles import HOUSEHOLD
 from vap_bt.scene.graph import SceneGraph, SceneObject
 from vap_bt.scene.misses import MISS_RADIUS, Misses
+from vap_bt.scene.moves import SightingMoves
 
 ON_FLOOR = Atom("on", ("stick2", "floor_living_room"))
 SPOT = (2.04, 1.51, 0.02)
@@ -32,7 +33,8 @@ def test_a_spot_where_an_item_was_missed_holds_for_that_item_until_it_is_held():
 
 def executive_with(graph: SceneGraph) -> SimpleNamespace:
     """Just what :meth:`Executive._note_miss` reads of an executive."""
-    return SimpleNamespace(misses=Misses(), _portable=lambda name: name.startswith("stick"), roles=HOUSEHOLD)
+    return SimpleNamespace(misses=Misses(), moves=SightingMoves(), _portable=lambda name: name.startswith("stick"),
+                           roles=HOUSEHOLD)
 
 
 def measured(graph: SceneGraph, name: str, centroid) -> None:

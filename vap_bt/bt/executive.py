@@ -94,6 +94,7 @@ from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import SceneGraph
 from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
+from vap_bt.scene.moves import SightingMoves
 from vap_bt.scene.trail import lost_on_the_way, trail_spots
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import label_of
@@ -213,6 +214,7 @@ class Executive:
         self._lost_ways: dict[str, Believed] = {}
         #: where checks did not find items a measurement had put there (a false positive's spot)
         self.misses = Misses()
+        self.moves = SightingMoves()  # where a sighting moved an item from: taken back if it proves wrong
         self.s = settings or ExecutiveSettings()
         self.progress = progress
         self.on_tree = on_tree or (lambda tree, tick: None)
@@ -826,7 +828,9 @@ class Executive:
 
     def _relocated(self, graph: SceneGraph, o: str, observed: set[Atom]) -> None:
         """Believe ``o`` where a frame shows it now (``observed``), and that it was seen there."""
+        before = graph.location(o)
         change = graph.relocate(o, observed)
+        self.moves.note(o, before, graph.location(o))
         graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
         self.sightings.saw(graph.location(o), True, "re-location")
         self._seen_again.add(o)
@@ -894,6 +898,8 @@ class Executive:
         if not found():
             sweep = self._closer_looks(sweep, [*near, *rest], found, lambda: "    still not found:")
         for o in items:
+            if o in lost and self._taken_back(graph, o, in_hand):
+                continue
             observed = self.builder.observed(o, in_hand)
             if o not in in_hand and self.builder.placed(o, in_hand):
                 self._relocated(graph, o, observed)
@@ -902,6 +908,22 @@ class Executive:
         survey = Survey(why or f"lost {', '.join(lost)}", sweep, facts=graph.state())
         self.on_survey(survey, graph)
         return survey
+
+    def _taken_back(self, graph: SceneGraph, o: str, in_hand: set[str]) -> bool:
+        """A check found lost ``o`` missing where belief puts it, and the search found it nowhere
+        else: where belief had it before the sighting that put it there, if nothing moved it since
+        (:mod:`vap_bt.scene.moves`). Keeping it at the place the check failed at would make the
+        same plan, and the same check fail, again."""
+        node = graph.objects.get(o)
+        if o in in_hand or self._placed_anew(o, in_hand) or node is None or not self.misses.at(o, node.centroid):
+            return False
+        place = self.moves.taken_back(o, graph.location(o))
+        if place is None:
+            return False
+        self.progress(f"    {o} not found: believed where it was before a sighting moved it "
+                      f"({', '.join(sorted(map(str, place)))})")
+        graph.relocate(o, set(place))
+        return True
 
     def _trail(self, state) -> list[tuple[str, list]]:
         """Looks round the floor along the way from where the gripper last held each thing the hand
@@ -936,10 +958,13 @@ class Executive:
         for a in graph.facts:
             if self.roles.is_held(a):
                 self.misses.clear(a.args[0])
+                self.moves.clear(a.args[0])
         a = s.atom
         if s.kind not in ("unseen", "precondition") or a is None or s.observed is True or not a.args \
                 or a.predicate not in (self.roles.in_view, *self.roles.support):
             return  # an effect or a goal is about what the robot just did there: no phantom put it
+        if a.predicate in self.roles.support:
+            self.moves.doubt(a)  # not a place to go back to should a sighting move it from there
         obj = graph.objects.get(a.args[0])
         if obj is not None and self._portable(obj.name) and obj.centroid is not None \
                 and obj.located == frozenset(graph.location(obj.name)):

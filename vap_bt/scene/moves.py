@@ -1,0 +1,58 @@
+"""Where belief had an item before a sighting moved it: the place to go back to when the search
+that follows a failed check finds the item nowhere.
+
+A sighting can put an item in the wrong place: a cup seen through the door of the microwave it
+stands in, whose partial cloud the geometry reads as on the counter beside it (boil_water seed 4
+in pybullet, after two takeouts from the microwave slipped). The plan then goes to the counter,
+the check there cannot see the cup, and the re-survey that follows finds it nowhere (the sweep
+does not look into the microwave) — so belief keeps it on the counter, the replan is the same plan,
+and the same check fails again, until the replanning budget is gone. The place belief held before
+that sighting is the better guess then: nothing the robot did has moved the item since, and the
+one sighting that moved it is the one the checks could not confirm.
+
+The record is dropped once belief moves the item some other way (an action, another sighting):
+only the sighting's own place is taken back. Nor is a place taken back that a check had already
+failed to find the item at (boil_water seed 8: the cup, believed in the microwave after a placing
+that dropped it, could not be seen inside three times; the sighting that put it on the floor was
+right, and going back to the microwave would have been the older error).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from vap_bt.domain.atoms import Atom
+
+
+@dataclass
+class SightingMoves:
+    """Per item, the place belief gave it before the last sighting moved it, and the place the
+    sighting gave it (each a set of location atoms)."""
+
+    moves: dict[str, tuple[frozenset[Atom], frozenset[Atom]]] = field(default_factory=dict)
+    #: places (``on``/``inside`` atoms) a check could not find their item at
+    doubted: set[Atom] = field(default_factory=set)
+
+    def note(self, name: str, before: set[Atom], after: set[Atom]) -> None:
+        """A sighting moved ``name`` from ``before`` to ``after`` (what belief held; ``before``
+        empty: it had no place, and there is nothing to go back to)."""
+        if before and before != after:
+            self.moves[name] = (frozenset(before), frozenset(after))
+
+    def doubt(self, place: Atom) -> None:
+        """A check could not find the item at ``place`` (an ``on``/``inside`` atom about it)."""
+        self.doubted.add(place)
+
+    def clear(self, name: str) -> None:
+        """``name`` is in the hand: where it was, and where it was missed, say nothing of it now."""
+        self.moves.pop(name, None)
+        self.doubted = {a for a in self.doubted if a.args[0] != name}
+
+    def taken_back(self, name: str, now: set[Atom]) -> frozenset[Atom] | None:
+        """The place to believe ``name`` at again, when belief still has it where the last sighting
+        put it (``now``) and no check failed to find it at the place before, else None; the record
+        is used up either way."""
+        move = self.moves.pop(name, None)
+        if move is None or move[1] != frozenset(now) or move[0] & self.doubted:
+            return None
+        return move[0]
