@@ -12,8 +12,9 @@ saying cannot be done is then tried against the answer (:mod:`vap_bt.bt.action_c
 out (``unseen``) that comes back the same after looking afresh makes the robot act on belief there
 (the action's effects are still checked): the same plan brings the robot to the same views (an
 item under furniture that its find pose never shows, a relation a model reads poorly), and more
-looks from them will not settle it. A goal atom that stays unseen stops the episode: success is
-never claimed on belief. A check that
+looks from them will not settle it. A goal atom that stays unseen stops the episode (once
+handed back to the planner first when no check ever confirmed it: :mod:`vap_bt.bt.executive`):
+success is never claimed on belief. A check that
 came back with a value is not cause to stop — an injected slip may well go the other way the next
 time.
 
