@@ -32,7 +32,7 @@ def sighted_on_the_counter() -> tuple[SceneGraph, SimpleNamespace]:
     :meth:`Executive._relocated` and :meth:`Executive._taken_back` read."""
     graph = SceneGraph.of_facts({IN_ROOM, IN_MICROWAVE}, roles=HOUSEHOLD)
     node = SceneObject("cup", "cup", "perceived", centroid=SPOT)
-    ex = SimpleNamespace(moves=SightingMoves(), misses=Misses(), sightings=SimpleNamespace(saw=lambda *a: None),
+    ex = SimpleNamespace(moves=SightingMoves(), misses=Misses(), roles=HOUSEHOLD, sightings=SimpleNamespace(saw=lambda *a: None),
                          _seen_again=set(), builder=SimpleNamespace(node=lambda name: node),
                          _placed_anew=lambda name, held=(): False, progress=lambda line: None)
     Executive._relocated(ex, graph, "cup", {IN_ROOM, ON_COUNTER})
@@ -82,3 +82,16 @@ def test_a_place_a_check_could_not_find_it_at_before_the_sighting_is_not_taken_b
     Executive._note_miss(ex, graph, Situation("effect", None, 5, Atom("holding", ("cup",)), True, True))
     ex.moves.note("cup", {IN_ROOM, IN_MICROWAVE}, {IN_ROOM, ON_COUNTER})
     assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) == {IN_ROOM, IN_MICROWAVE}
+
+
+def test_a_room_alone_is_no_place_to_go_back_to():
+    """retrieve_bottles seed 2 in pybullet (6d85a15): a bottle the hand lost was believed only in
+    the garden (no support) when a sighting put it on the floor; the checks there could not see
+    it, and going back to "in the garden" left no plan reaching the goal (nothing to find it on)."""
+    graph = SceneGraph.of_facts({IN_ROOM}, roles=HOUSEHOLD)
+    _, ex = sighted_on_the_counter()
+    ex.moves = SightingMoves()
+    Executive._relocated(ex, graph, "cup", {IN_ROOM, ON_COUNTER})
+    graph.objects["cup"] = SceneObject("cup", "cup", "perceived", centroid=SPOT)
+    assert not Executive._taken_back(ex, graph, "cup", set())
+    assert graph.location("cup") == {IN_ROOM, ON_COUNTER}

@@ -830,7 +830,8 @@ class Executive:
         """Believe ``o`` where a frame shows it now (``observed``), and that it was seen there."""
         before = graph.location(o)
         change = graph.relocate(o, observed)
-        self.moves.note(o, before, graph.location(o))
+        if any(self.roles.supports(a) for a in before):  # only a place to go back to: not a room alone
+            self.moves.note(o, before, graph.location(o))
         graph.objects[o] = self.builder.node(o).seen(located=frozenset(graph.location(o)))
         self.sightings.saw(graph.location(o), True, "re-location")
         self._seen_again.add(o)
