@@ -282,6 +282,10 @@ def test_experiments_sharing_a_log_run_each_episode_once(tmp_path, address):
     meta = json.loads((tmp_path / "failures" / "run.json").read_text())
     assert meta["rows_from"] == str(log) and meta["episodes"] == 8 and "diagnosed right" in (
         tmp_path / "failures" / "table.md").read_text()
+    # the table of a campaign that ran is written again from the log; its run.json (the sittings) stays
+    ran = (tmp_path / "strategies" / "run.json").read_text()
+    assert main(STRATEGIES, [*shared, "--report-only", "--out", str(tmp_path / "strategies")]) == 0
+    assert (tmp_path / "strategies" / "run.json").read_text() == ran
 
 
 @pytest.mark.slow(seconds=40)

@@ -201,8 +201,8 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     results.write_csv(rows, campaign.out / "episodes.csv")
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
-    if args.report_only and args.log is not None:  # its rows are another experiment's log: say so
-        _read_from(experiment, campaign, log, rows)
+    if args.report_only and args.log is not None and not (campaign.out / "run.json").exists():
+        _read_from(experiment, campaign, log, rows)  # its rows are a shared log's: say so (a run's record stays)
     print((campaign.out / "table.md").read_text())
     return EXIT_OK
 
