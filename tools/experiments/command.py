@@ -193,18 +193,13 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
             print(f"{experiment.name}: interrupted; {len(log.rows())} rows kept in {log.path}, --resume runs the "
                   "rest", file=sys.stderr)
             return EXIT_INTERRUPTED
-    every = set(experiment.configurations(parser(experiment).parse_args([])))
-    rows = [r for r in log.rows() if (r["strategy"], r["viewpoints"]) in every]
     # the report covers every row of the log it could have run (a resumed campaign may have run
     # other tasks or strategies before; a shared log holds other experiments' rows of its configurations)
-    named = tasks_named(sorted({r["task"] for r in rows}))
-    campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
-    results.write_csv(rows, campaign.out / "episodes.csv")
-    (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
-    if args.report_only and args.log is not None and not (campaign.out / "run.json").exists():
-        _read_from(experiment, campaign, log, rows)  # its rows are a shared log's: say so (a run's record stays)
-    print((campaign.out / "table.md").read_text())
-    return EXIT_OK
+    every = set(experiment.configurations(parser(experiment).parse_args([])))
+    rows = [r for r in log.rows() if (r["strategy"], r["viewpoints"]) in every]
+    # a report-only run from a shared log says where its rows came from, unless a run's record is there
+    read_from = args.report_only and args.log is not None and not (campaign.out / "run.json").exists()
+    return report(experiment, campaign, rows, log if read_from else None)
 
 
 def report_from(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
@@ -217,11 +212,22 @@ def report_from(experiment: Experiment, campaign: Campaign, configurations: list
         print(f"{experiment.name}: --rows: {source.path} has no episode of these configurations and tasks",
               file=sys.stderr)
         return EXIT_BAD_INPUT
+    return report(experiment, campaign, rows, source)
+
+
+def report(experiment: Experiment, campaign: Campaign, rows: list[dict],
+           read_from: results.EpisodeLog | None = None) -> int:
+    """Write the outputs of ``rows`` into the campaign's directory — episodes.csv, table.md (the
+    experiment's report, its tasks those the rows ran, in the paper's order) and its plots — and,
+    when the rows were only read (``read_from``: ``--rows``, ``--report-only`` of a shared log), a
+    run.json saying where they came from; print the table."""
     named = tasks_named(sorted({r["task"] for r in rows}))
     campaign = replace(campaign, tasks=dict(sorted(named.items(), key=lambda item: item[1])))
     campaign.out.mkdir(parents=True, exist_ok=True)
+    results.write_csv(rows, campaign.out / "episodes.csv")
     (campaign.out / "table.md").write_text(experiment.report(rows, campaign) + provenance(rows))
-    _read_from(experiment, campaign, source, rows)
+    if read_from is not None:
+        _read_from(experiment, campaign, read_from, rows)
     print((campaign.out / "table.md").read_text())
     return EXIT_OK
 
