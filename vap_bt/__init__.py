@@ -17,4 +17,6 @@ The package follows the flow of one run, one folder per room:
 :mod:`vap_bt.world` and :mod:`vap_bt.skill` are the two contracts between the rooms.
 """
 
+from vap_bt import numerics as _numerics  # noqa: F401  (pins numpy's BLAS kernels before anything loads numpy)
+
 __version__ = "0.1.0"

@@ -29,16 +29,20 @@ import sys
 from importlib import metadata
 from pathlib import Path
 
+from vap_bt.numerics import blas_cores
+
 
 def versions() -> dict[str, str]:
     """The installed version of Python and of each package a run's result depends on ("not installed" for
-    a missing one)."""
+    a missing one), and the OpenBLAS kernels numpy and scipy run."""
     out = {"python": platform.python_version()}
     for dist in ("vap-bt", "py-trees", "unified-planning", "up-fast-downward", "eclipse-zenoh", "pybullet", "pin"):
         try:
             out[dist] = metadata.version(dist)
         except metadata.PackageNotFoundError:
             out[dist] = "not installed"
+    # the kernels numpy's and scipy's OpenBLAS run round differently by CPU (vap_bt.numerics)
+    out["openblas"] = ", ".join(f"{lib} {core}" for lib, core in blas_cores().items()) or "not loaded"
     return out
 
 

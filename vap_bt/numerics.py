@@ -1,0 +1,57 @@
+"""Numerical reproducibility: the same seed gives the same episode on any x86-64 machine.
+
+numpy and scipy each carry an OpenBLAS built for many CPUs at once, which picks its kernels when
+it loads, by the CPU it finds: on a machine with AVX-512 the SkylakeX kernels, elsewhere Haswell
+or Zen ones. They sum in a different order and so round differently in the last bits, and a
+pybullet episode is chaotic enough to carry that into its outcome: on an AVX-512 machine a cup
+the fill skill holds under the tap stood outside the stream by a few millimetres, and a seed that
+reached the goal on one machine did not on another (tests/test_numerics.py, on the machine of
+2026-12-06). So the package pins the kernel set before numpy loads: Haswell's (AVX2 and FMA,
+which every x86-64 server since 2013 runs), unless ``OPENBLAS_CORETYPE`` is already set — by
+whoever wants another, or by a shell script of tools/, which sets it for processes that load
+numpy before this package. Other architectures are left alone (their OpenBLAS knows other
+names). :func:`blas_cores` says which kernels each loaded OpenBLAS really runs, for the report.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+import platform
+import sys
+from pathlib import Path
+
+#: the OpenBLAS kernel set pinned on x86-64
+CORETYPE = "Haswell"
+
+if platform.machine().lower() in ("x86_64", "amd64"):
+    os.environ.setdefault("OPENBLAS_CORETYPE", CORETYPE)
+
+
+def blas_cores() -> dict[str, str]:
+    """The kernel set each OpenBLAS loaded by numpy and scipy runs (``{"numpy": "Haswell"}``), read
+    from the libraries themselves; a library not loaded (scipy not imported yet) is left out, and
+    one that cannot say is "unknown"."""
+    out = {}
+    for package in ("numpy", "scipy"):
+        module = sys.modules.get(package)
+        if module is None:
+            continue
+        libs = sorted((Path(module.__file__).parent.parent / f"{package}.libs").glob("lib*openblas*.so*"))
+        out[package] = _corename(libs[0]) if libs else "unknown"
+    return out
+
+
+def _corename(path: Path) -> str:
+    """The core name an OpenBLAS library at ``path`` chose (it is already loaded: this opens the
+    same copy)."""
+    try:
+        lib = ctypes.CDLL(str(path))
+    except OSError:
+        return "unknown"
+    for symbol in ("scipy_openblas_get_corename64_", "scipy_openblas_get_corename", "openblas_get_corename"):
+        fn = getattr(lib, symbol, None)
+        if fn is not None:
+            fn.restype = ctypes.c_char_p
+            return fn().decode()
+    return "unknown"
