@@ -56,6 +56,15 @@ def tree_for(task, actions, mode: str):
     return compile_plan(ctx, actions, task.goal, task.knowledge)
 
 
+def session(name: str, **cfg):
+    """A symbolic-world session of task ``trees/<name>`` with the search planner and settings ``cfg``."""
+    from vap_bt.app.runner import RunConfig, Session
+    from vap_bt.taskfile import load
+
+    task = load(TREES / name)
+    return Session(task, RunConfig.from_task(task, world="symbolic", planner="search", **cfg))
+
+
 @pytest.fixture
 def cli(capsys):
     """Run ``vap-bt`` in this process; returns (exit code, stdout, stderr)."""
@@ -103,3 +112,20 @@ def pytest_collection_modifyitems(config, items):
         seconds[file_of(item)] += slow_seconds(item)
         first.setdefault(file_of(item), k)
     items.sort(key=lambda item: (-seconds[file_of(item)], first[file_of(item)]))
+
+
+@pytest.fixture
+def worlds():
+    """Builds pybullet worlds for one test (:func:`skill_runs.pybullet`'s arguments) and closes them
+    after it, however it ended."""
+    from skill_runs import pybullet
+
+    made = []
+
+    def make(name, situations=None, **kw):
+        made.append(pybullet(name, situations, **kw))
+        return made[-1]
+
+    yield make
+    for w in made:
+        w.close()

@@ -17,9 +17,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from skills.kit import kit_for
 from skills.views import ViewService
 from vap_bt import plugins
+from vap_bt.domain.atoms import Atom
+from vap_bt.sim.situations import SituationModel
 from vap_bt.skill import GoalState, Hint
 from vap_bt.app.inprocess import InProcessSkillClient
 
@@ -99,3 +103,61 @@ def seen(world, names: tuple[str, ...]) -> dict[str, float]:
 def move_view(world, names: tuple[str, ...], direction: str) -> bool:
     """Move the view ``direction`` relative to where ``names`` are."""
     return camera(world).move_view(world.aim_at(names), direction)
+
+
+# ------------------------------------------------------------ what the skill tests share
+
+
+def A(text):
+    return Atom.parse(text)
+
+
+def holds(w, *atoms):
+    return all(w.oracle.holds(A(a)) for a in atoms)
+
+
+def settle(w, seconds: float = 1.0) -> None:
+    """Let the physics run on (the robot holding still): an item that slipped from the hand as
+    the goal ended is still falling, and the oracle's ``on`` is support by contact."""
+    for _ in range(int(seconds / w.dt)):
+        w.step()
+
+
+forced = SituationModel.forced
+
+
+def skills_fail(reason: str):
+    """A behaviour the world-side primitives had and the skills do not reach yet (seen the same
+    before the primitives were deleted): strict, so the marker goes once a skill does."""
+    return pytest.mark.xfail(strict=True, reason=f"skills: {reason}")
+
+
+def machine_dependent(reason: str):
+    """A skill that succeeds on some machines and fails on others with the same code and packages
+    (contacts decided by floating point's last bits): not strict, so neither outcome breaks the
+    suite, and the reason says what fails where it does."""
+    return pytest.mark.xfail(strict=False, reason=f"machine-dependent: {reason}")
+
+
+def on_both_sensors(real_fails: str | None = None, exact_varies: str | None = None, real_varies: str | None = None):
+    """Run a test on exact sensors (the motion) and on the real ones (D435i-like depth, AMCL-like
+    localiser: whether the skill copes with what a robot measures); ``real_fails`` names what the
+    skill does not yet reach on the real ones (strict: the marker goes once it does);
+    ``exact_varies`` and ``real_varies`` what fails on some machines (:func:`machine_dependent`)."""
+    real = pytest.param("real", marks=skills_fail(f"on real sensors, {real_fails}")) if real_fails else \
+        pytest.param("real", marks=machine_dependent(real_varies)) if real_varies else "real"
+    exact = pytest.param("exact", marks=machine_dependent(exact_varies)) if exact_varies else "exact"
+    return pytest.mark.parametrize("sensors", [exact, real])
+
+
+def lay(w, name, at, z, rpy):
+    """Test setup: put ``name`` down at ``at`` (x, y; its centre ``z`` high) lying as ``rpy`` says, and let it settle
+    (a dropped item, where a situation left one in an earlier run)."""
+    import pybullet as pb
+
+    body = w.scene.things[name].body
+    pb.resetBasePositionAndOrientation(body, (*at, z), pb.getQuaternionFromEuler(rpy), physicsClientId=w.cid)
+    pb.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=w.cid)
+    for _ in range(60):
+        w.step()
+    assert abs(w.truth.center(name)[0] - at[0]) < 0.03 and abs(w.truth.center(name)[1] - at[1]) < 0.03  # it stays
