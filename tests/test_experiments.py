@@ -70,6 +70,7 @@ def test_ablation_runs_every_mode_on_the_cluster_and_writes_table_iii(tmp_path, 
     rows = rows_of(out)
     assert sorted((r["strategy"], r["seed"]) for r in rows) == sorted((m, s) for m in MODES for s in "01")
     assert all(r["runnable"] == "True" and r["vlm_version"].startswith("vlm-") for r in rows)
+    assert all(r["openblas"] for r in rows)  # the worker's BLAS kernels, whatever it loaded
     table = (out / "table.md").read_text()
     assert p.stdout.strip() == table.strip()  # the table on stdout, the progress on stderr
     assert "| S4 halve_egg |" in table and "(n=2)" in table and "Paired difference" in table

@@ -27,7 +27,7 @@ from tools.experiments.engine import Key, key_of
 #: the CSV's columns, in order (the key's first)
 COLUMNS = ("experiment", "world", "task", "strategy", "viewpoints", "seed", "runnable", "success", "claimed",
            "claimed_denied", "situations", "replans", "vlm_queries", "actions", "wall_s", "vlm_version",
-           "world_version", "reason", "error", *measures.COLUMNS)
+           "world_version", "openblas", "reason", "error", *measures.COLUMNS)
 
 
 def episode_row(key: Key, report: dict) -> dict:
@@ -41,6 +41,9 @@ def episode_row(key: Key, report: dict) -> dict:
             "vlm_version": vlm.get("version") or vlm.get("model") or vlm.get("backend"),
             # the simulated world's mechanics (pybullet_world.WORLD_VERSION; none in the symbolic world)
             "world_version": ((report.get("world") or {}).get("physics") or {}).get("version"),
+            # the BLAS kernels the worker ran (vap_bt/numerics.py): a cluster's worker that loaded
+            # numpy before vap_bt and was not given OPENBLAS_CORETYPE runs its CPU's, and may differ
+            "openblas": (report.get("versions") or {}).get("openblas"),
             "reason": report["reason"], "error": None, **measures.of(report)}
 
 
