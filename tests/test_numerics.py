@@ -1,5 +1,5 @@
-"""numpy's BLAS kernels are pinned, so a seed's episode does not depend on the machine's CPU
-(vap_bt/numerics.py)."""
+"""numpy's BLAS kernels and SIMD loops are pinned, so a seed's episode does not depend on the
+machine's CPU (vap_bt/numerics.py)."""
 
 from __future__ import annotations
 
@@ -18,24 +18,26 @@ pytestmark = pytest.mark.skipif(not X86, reason="the pin is for x86-64's OpenBLA
 
 
 def cores(*imports: str, env: dict[str, str]) -> dict:
-    """blas_cores() in a fresh interpreter that imports ``imports`` in that order."""
-    code = "; ".join(f"import {m}" for m in imports) + \
-        "; import json; from vap_bt.numerics import blas_cores; print(json.dumps(blas_cores()))"
+    """blas_cores() and numpy_simd() (as "simd") in a fresh interpreter that imports ``imports`` in that order."""
+    code = "; ".join(f"import {m}" for m in imports) + "; import json; from vap_bt.numerics import blas_cores, " \
+        "numpy_simd; print(json.dumps({**blas_cores(), 'simd': numpy_simd()}))"
     out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, check=True)
     return json.loads(out.stdout)
 
 
 def bare_env(**extra: str) -> dict[str, str]:
-    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_CORETYPE"}
+    env = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_CORETYPE", "NPY_DISABLE_CPU_FEATURES")}
     return {**env, "PYTHONPATH": str(ROOT), **extra}
 
 
 def test_importing_the_package_pins_the_kernels_numpy_and_scipy_load():
-    assert cores("vap_bt", "numpy", "scipy.linalg", env=bare_env()) == {"numpy": "Haswell", "scipy": "Haswell"}
+    got = cores("vap_bt", "numpy", "scipy.linalg", env=bare_env())
+    assert got == {"numpy": "Haswell", "scipy": "Haswell", "simd": "X86_V3"}  # AVX2's, on an AVX-512 machine too
 
 
 def test_a_kernel_set_someone_chose_is_kept():
-    assert cores("vap_bt", "numpy", env=bare_env(OPENBLAS_CORETYPE="Sandybridge")) == {"numpy": "Sandybridge"}
+    got = cores("vap_bt", "numpy", env=bare_env(OPENBLAS_CORETYPE="Sandybridge", NPY_DISABLE_CPU_FEATURES="X86_V3"))
+    assert got["numpy"] == "Sandybridge" and "X86_V3" not in got["simd"]
 
 
 def test_the_suite_itself_runs_on_the_pinned_kernels():
@@ -43,8 +45,9 @@ def test_the_suite_itself_runs_on_the_pinned_kernels():
     could import the package."""
     import numpy  # noqa: F401
 
-    from vap_bt.numerics import blas_cores
+    from vap_bt.numerics import blas_cores, numpy_simd
     from vap_bt.report import versions
 
-    assert blas_cores()["numpy"] == "Haswell", "run the suite by tools/test.sh, or with OPENBLAS_CORETYPE=Haswell"
-    assert "numpy Haswell" in versions()["openblas"]
+    assert blas_cores()["numpy"] == "Haswell" and "X86_V4" not in numpy_simd(), \
+        "run the suite by tools/test.sh (it sets OPENBLAS_CORETYPE and NPY_DISABLE_CPU_FEATURES)"
+    assert "numpy Haswell" in versions()["openblas"] and versions()["numpy_simd"] == numpy_simd()

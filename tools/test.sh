@@ -14,9 +14,12 @@ bash tools/setup.sh || exit 1
 # source again (0.15 CPU-s each) and pytest re-rewrote every test module per worker. The caches go
 # into __pycache__/, which git ignores.
 unset PYTHONDONTWRITEBYTECODE
-# numpy's BLAS kernels, pinned as importing vap_bt pins them (vap_bt/numerics.py), also for the test
+# numpy's BLAS kernels and SIMD loops, pinned as importing vap_bt pins them (vap_bt/numerics.py), also for the test
 # modules that load numpy before the package: on an AVX-512 machine two physics tests failed unpinned.
-if [ "$(uname -m)" = x86_64 ]; then export OPENBLAS_CORETYPE=${OPENBLAS_CORETYPE:-Haswell}; fi
+if [ "$(uname -m)" = x86_64 ]; then
+  export OPENBLAS_CORETYPE=${OPENBLAS_CORETYPE:-Haswell}
+  export NPY_DISABLE_CPU_FEATURES=${NPY_DISABLE_CPU_FEATURES:-X86_V4 AVX512_ICL AVX512_SPR}
+fi
 .venv/bin/python -m pytest -q -n "${VAP_BT_TEST_WORKERS:-$(( $(nproc) + 1 ))}" --dist loadfile --no-loadscope-reorder "$@"
 code=$?
 if [ "$code" -eq 5 ]; then

@@ -11,6 +11,11 @@ which every x86-64 server since 2013 runs), unless ``OPENBLAS_CORETYPE`` is alre
 whoever wants another, or by a shell script of tools/, which sets it for processes that load
 numpy before this package. Other architectures are left alone (their OpenBLAS knows other
 names). :func:`blas_cores` says which kernels each loaded OpenBLAS really runs, for the report.
+
+numpy's own loops dispatch by CPU in the same way, and its AVX-512 ones of ``exp``, ``log1p`` and
+``arccos`` (among others) give other last bits than its AVX2 ones: the package turns the AVX-512
+targets off too (``NPY_DISABLE_CPU_FEATURES``, unless set), so numpy runs the loops of the AVX2
+machines it runs on everywhere else. :func:`numpy_simd` says which targets numpy runs.
 """
 
 from __future__ import annotations
@@ -23,9 +28,20 @@ from pathlib import Path
 
 #: the OpenBLAS kernel set pinned on x86-64
 CORETYPE = "Haswell"
+#: numpy's dispatch targets above AVX2 (numpy 2.4's names: X86_V4 is AVX-512's Skylake set); a
+#: name an older or newer numpy does not know is ignored by it
+NPY_OFF = "X86_V4 AVX512_ICL AVX512_SPR"
 
 if platform.machine().lower() in ("x86_64", "amd64"):
     os.environ.setdefault("OPENBLAS_CORETYPE", CORETYPE)
+    os.environ.setdefault("NPY_DISABLE_CPU_FEATURES", NPY_OFF)
+
+
+def numpy_simd() -> str:
+    """The CPU targets numpy's dispatched loops run here among those it was built for ("X86_V3")."""
+    from numpy._core._multiarray_umath import __cpu_dispatch__, __cpu_features__
+
+    return " ".join(t for t in __cpu_dispatch__ if __cpu_features__.get(t)) or "baseline"
 
 
 def blas_cores() -> dict[str, str]:

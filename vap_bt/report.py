@@ -29,12 +29,12 @@ import sys
 from importlib import metadata
 from pathlib import Path
 
-from vap_bt.numerics import blas_cores
+from vap_bt.numerics import blas_cores, numpy_simd
 
 
 def versions() -> dict[str, str]:
     """The installed version of Python and of each package a run's result depends on ("not installed" for
-    a missing one), and the OpenBLAS kernels numpy and scipy run."""
+    a missing one), and the OpenBLAS kernels and SIMD targets numpy and scipy run."""
     out = {"python": platform.python_version()}
     for dist in ("vap-bt", "py-trees", "unified-planning", "up-fast-downward", "eclipse-zenoh", "pybullet", "pin"):
         try:
@@ -43,6 +43,7 @@ def versions() -> dict[str, str]:
             out[dist] = "not installed"
     # the kernels numpy's and scipy's OpenBLAS run round differently by CPU (vap_bt.numerics)
     out["openblas"] = ", ".join(f"{lib} {core}" for lib, core in blas_cores().items()) or "not loaded"
+    out["numpy_simd"] = numpy_simd()
     return out
 
 
