@@ -164,6 +164,9 @@ class Hands:
         self.progress = lambda p, text: None
         self.regarded = None  # the frame of the last :meth:`regard`
         self.put_at = None  # the centre of the item :meth:`place` let go last, as the hand had it then
+        #: where :meth:`place` let each item go on a surface this episode (surface, centre), until the
+        #: hand takes it again: a spot the hand filled is not free, whether or not a look shows it
+        self.let_go_on: dict[str, tuple[str, np.ndarray]] = {}
 
     # -- measuring ---------------------------------------------------------------------------
 
@@ -413,6 +416,7 @@ class Hands:
             whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
             self.scene.taken(name, whole.lo, whole.hi)
+            self.let_go_on.pop(name, None)
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
         kind = "top" if lean else how(a)  # a hand leaned from above lifts the item straight up
@@ -699,6 +703,10 @@ class Hands:
             cands = [f.to_world((lx, ly, f.height)) for ly in rows for lx in np.linspace(-w, w, 9)]
             look = f.top_point()
         others = self.items_near(look, exclude={item, surface})
+        # and what the hand set on it before: a look may miss it (retrieve_bottles seed 2: the look
+        # from the doorway showed no bottle on the counter, the second was let go where the first
+        # stood and knocked it to the floor, and the executive took that one for the second)
+        others += [c for n, (on, c) in self.let_go_on.items() if on == surface and n != item]
         base = np.array([x, y])
 
         def inward(p) -> float:
@@ -868,6 +876,8 @@ class Hands:
             pass  # the way down stopped on contact (the item touching down, a rim): it is let go there
         self.put_at = held.corners_at(self.body.pose("tcp")).mean(axis=0)
         self.let_go()
+        if not inside:
+            self.let_go_on[name] = (where, self.put_at.copy())
         self.progress(0.8, "retreat")
         # out of the grasp along the hand's axis first (a hand holding from the side would lift
         # the item on its fingers going straight up), then back along the way in
