@@ -164,6 +164,9 @@ class Hands:
         self.progress = lambda p, text: None
         self.regarded = None  # the frame of the last :meth:`regard`
         self.put_at = None  # the centre of the item :meth:`place` let go last, as the hand had it then
+        #: where :meth:`place` let each item go on a surface this episode (surface, centre), until the
+        #: hand takes it again: a spot the hand filled is not free, whether or not a look shows it
+        self.let_go_on: dict[str, tuple[str, np.ndarray]] = {}
 
     # -- measuring ---------------------------------------------------------------------------
 
@@ -413,6 +416,7 @@ class Hands:
             whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
             self.scene.taken(name, whole.lo, whole.hi)
+            self.let_go_on.pop(name, None)
         self.progress(0.75, "lifting")
         back = self.body.pose("tcp")
         kind = "top" if lean else how(a)  # a hand leaned from above lifts the item straight up
@@ -687,6 +691,11 @@ class Hands:
     def free_spots(self, surface: str, item: str, edge: bool = False) -> list[np.ndarray]:
         """:meth:`free_spot`'s best spot, then the best of the row nearest the front when that is
         another (a tall item hanging under the hand may not reach the middle of a deep top)."""
+        return self.ranked_spots(surface, item, edge)[0]
+
+    def ranked_spots(self, surface: str, item: str, edge: bool = False) -> tuple[list[np.ndarray], list[np.ndarray]]:
+        """:meth:`free_spots`, and the other spots along a surface's top, best first (none on a
+        floor, nor at the front edge): :meth:`place` goes to them when no stand reaches the first."""
         f = self.scene.furniture.get(surface)
         x, y, yaw = self.body.base_pose()
         if f is None:  # a floor: in front of the robot
@@ -699,6 +708,10 @@ class Hands:
             cands = [f.to_world((lx, ly, f.height)) for ly in rows for lx in np.linspace(-w, w, 9)]
             look = f.top_point()
         others = self.items_near(look, exclude={item, surface})
+        # and what the hand set on it before: a look may miss it (retrieve_bottles seed 2: the look
+        # from the doorway showed no bottle on the counter, the second was let go where the first
+        # stood and knocked it to the floor, and the executive took that one for the second)
+        others += [c for n, (on, c) in self.let_go_on.items() if on == surface and n != item]
         base = np.array([x, y])
 
         def inward(p) -> float:
@@ -715,9 +728,10 @@ class Hands:
 
         best = max(cands, key=score)
         if f is None or edge:
-            return [best]
+            return [best], []
         near = max(cands[:len(cands) // len(rows)], key=score)  # the first row is the nearer one
-        return [best] if np.allclose(near, best) else [best, near]
+        first = [best] if np.allclose(near, best) else [best, near]
+        return first, [c for c in sorted(cands, key=score, reverse=True) if not any(np.allclose(c, b) for b in first)]
 
     def items_near(self, point, exclude: set[str]) -> list[np.ndarray]:
         """Centroids of the items a look at ``point`` shows (furniture and doors are the map's)."""
@@ -783,9 +797,9 @@ class Hands:
             return Outcome(False, f"not holding {name}")
         if inside:
             spot, a = self.cavity_spot(where)
-            spots = [spot]
+            spots, rest = [spot], []
         else:
-            spots, a = self.free_spots(where, name, edge), np.array([0.0, 0.0, -1.0])
+            (spots, rest), a = self.ranked_spots(where, name, edge), np.array([0.0, 0.0, -1.0])
             spot = spots[0]
 
         cav = self.scene.furniture[where].info.cavity if inside else None
@@ -814,16 +828,29 @@ class Hands:
             return self.pre_pose(G, a, where if inside else None, PRE_PLACE, list(corners))[0], G
 
         front_open = cav is not None and cav.open == "front"  # checked, and leaned if need be, below
+
+        def reached_from_some_stand(s) -> bool:
+            return self.nav.reaching_pose(s, self.nav.toward_robot(s, where), how(a), where,
+                                          lambda base, at=s: reach(base, at), routed=True,
+                                          straight=not front_open, drivable=True) is not None
+
         # the first spot the arm reaches from some stand (the best may be too deep for what it holds)
-        spot = next((s for s in spots[:-1] if self.nav.reaching_pose(
-            s, self.nav.toward_robot(s, where), how(a), where, lambda base, at=s: reach(base, at), routed=True,
-            straight=not front_open) is not None), spots[-1])
+        # (the last one is gone to unchecked, as before, unless there are more along the top)
+        spot = next((s for s in (spots if rest else spots[:-1]) if reached_from_some_stand(s)), None)
+        if spot is None and rest:
+            # no stand reaches the best spots: something lies where the base would stand for them
+            # (retrieve_bottles seed 5: a bottle dropped at the counter's foot, and the place
+            # chose the middle spot three times over, the base blocked by it each time): the
+            # next free spot along the top that a stand reaches
+            spot = next((s for s in rest if reached_from_some_stand(s)), None)
+            spots = spots if spot is None else [spot, *spots]
+        spot = spots[-1] if spot is None else spot
         f = self.scene.furniture.get(where)
         local = None if f is None else f.local(spot)  # the spot on the piece, wherever the map lies
         others = [s if f is None else f.local(s) for s in spots if not np.allclose(s, spot)]
         for stand in range(PLACE_STANDS):
             self.nav.approach(self.nav.work_pose(spot, self.nav.toward_robot(spot, where), how(a), where, reach=reach,
-                                                 straight=not front_open))
+                                                 straight=not front_open, drivable=True))
             if f is None:
                 break
             # from here the piece lies where this look shows it (centimetres off the map's place)
@@ -868,6 +895,8 @@ class Hands:
             pass  # the way down stopped on contact (the item touching down, a rim): it is let go there
         self.put_at = held.corners_at(self.body.pose("tcp")).mean(axis=0)
         self.let_go()
+        if not inside:
+            self.let_go_on[name] = (where, self.put_at.copy())
         self.progress(0.8, "retreat")
         # out of the grasp along the hand's axis first (a hand holding from the side would lift
         # the item on its fingers going straight up), then back along the way in

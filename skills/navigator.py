@@ -242,28 +242,44 @@ class Navigator:
         return (float(p[0]), float(p[1]), math.atan2(-f[1], -f[0]))
 
     def work_pose(self, point, toward, how: str, clear_of: str | None = None, reach=None,
-                  straight: bool = False) -> Pose:
+                  straight: bool = False, drivable: bool = False) -> Pose:
         """The first of :meth:`work_poses` from which the arm reaches every tcp pose (map 4x4)
         ``reach(base_pose)`` lists — IK clear of the scene, and the arm's joint way from how it is
         now to the first of them (a pre-pose) clear too, checked from that base before it moves
         (``straight``: and the straight line from each to the next, the last stretch the hand is
-        moved unchecked); the first clear one when none does (the motion then finds out). A point
+        moved unchecked; ``drivable``: and the base has a way there, :meth:`drivable`); the first
+        clear one when none does (the motion then finds out). A point
         on no piece of furniture (the floor) is also tried from the other sides round it
         (:data:`AROUND`)."""
         if reach is None:
             return next(self.work_poses(point, toward, how, clear_of))
-        return (self.reaching_pose(point, toward, how, clear_of, reach, routed=True, straight=straight)
+        return (self.reaching_pose(point, toward, how, clear_of, reach, routed=True, straight=straight,
+                                   drivable=drivable)
                 or next(self.work_poses(point, toward, how, clear_of)))
 
     def reaching_pose(self, point, toward, how: str, clear_of: str | None, reach, avoid=(),
-                      routed: bool = False, straight: bool = False) -> Pose | None:
+                      routed: bool = False, straight: bool = False, drivable: bool = False) -> Pose | None:
         """The work pose of :meth:`work_pose` from which the arm reaches ``reach(base_pose)``, not
         within ``AVOID_RADIUS`` of the poses in ``avoid`` (stood at already); None when there is
         none. ``routed``: the arm's joint way from how it is now to the first pose (a pre-pose:
-        the rest are reached by straight lines) must be clear too; ``straight``: those lines."""
+        the rest are reached by straight lines) must be clear too; ``straight``: those lines;
+        ``drivable``: the base must have a way there (:meth:`drivable`)."""
         return next((p for p in self._candidates(point, toward, how, clear_of, True)
                      if not any(math.dist(p[:2], q[:2]) < AVOID_RADIUS for q in avoid)
-                     and self.reaches(p, reach(p), routed, straight)), None)
+                     and self.reaches(p, reach(p), routed, straight)
+                     and (not drivable or self.drivable(p))), None)
+
+    def drivable(self, pose: Pose) -> bool:
+        """Whether :meth:`approach` has a way to ``pose`` (plans, does not move): within the room
+        the base stands in, round the obstacles or straight on where that is clear; a pose in
+        another room is gone to along the corridor, and taken as reachable here. A work pose
+        free itself may have no way to it past what lies on the floor beside it (a bottle
+        dropped at the counter's foot: retrieve_bottles seed 5)."""
+        x, y, _ = self.body.base_pose()
+        here, there = self.scene.room_at(x, y), self.scene.room_at(*pose[:2])
+        if here is not None and there is not None and here != there:
+            return True
+        return self.base_path(pose, True) is not None or self.straight_free(pose)
 
     def reaches(self, pose: Pose, targets, routed: bool = False, straight: bool = False) -> bool:
         """Whether the arm reaches every one of ``targets`` from the base at ``pose`` (``routed``:

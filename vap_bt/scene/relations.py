@@ -270,7 +270,11 @@ def _best_support(obj: Located, surfaces: list[Extent], containers: list[Extent]
         return Atom(roles.inside, (obj.name, min(inside, key=lambda c: c.volume).name))
     on = [s for s in surfaces if s.name != obj.name and rests_on(obj, s, th)]
     if on:
-        return Atom(roles.on, (obj.name, min(on, key=lambda s: abs(obj.box[2] - s.top)).name))
+        # what the centroid lies over without the margin first: by a doorway both rooms' floors
+        # are at the item's bottom and within the margin of it, and the one it lies in is its
+        # room's (retrieve_bottles seed 7: on the kitchen's floor, in the garden)
+        c = np.asarray(obj.centroid, float)
+        return Atom(roles.on, (obj.name, min(on, key=lambda s: (not s.over(c, 0.0), abs(obj.box[2] - s.top))).name))
     return None
 
 
