@@ -33,3 +33,17 @@ def test_campaign_rows_agree_when_only_their_wall_time_differs(tmp_path, capsys)
     assert compare_rows(base, same) == 0
     assert compare_rows(base, other) == 1
     assert "DIFFER: vlm_queries" in capsys.readouterr().out
+
+
+def test_cpu_seconds_count_a_child_process_s_cpu_as_well():
+    # an episode's planner runs Fast Downward in a subprocess, whose CPU time.process_time misses
+    import subprocess
+    import sys
+    import time
+
+    from tools.bench.pybullet_speed import cpu_seconds
+
+    c0, p0 = cpu_seconds(), time.process_time()
+    subprocess.run([sys.executable, "-c", "import time\nt = time.process_time()\nwhile time.process_time() - t < 0.3: pass"],
+                   check=True)
+    assert cpu_seconds() - c0 >= 0.3 > time.process_time() - p0

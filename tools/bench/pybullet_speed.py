@@ -6,8 +6,9 @@ base, ... so that a machine whose speed drifts slows both alike — and this pri
 wall and CPU seconds of each and their ratios new/base, the medians, and whether the two
 episodes were the same: their reports compared field for field, every field but those that say
 how long something took or which commit ran (:data:`TIMING`). A speed-up is only one if that
-holds for every episode. CPU seconds (the process's own) are the figure to quote on a shared
-machine; wall seconds count whatever else it ran meanwhile::
+holds for every episode. CPU seconds (:func:`cpu_seconds`: the process's own and its child
+processes', as the planner's Fast Downward runs) are the figure to quote on a shared machine;
+wall seconds count whatever else it ran meanwhile::
 
     git worktree add /tmp/base <commit>     # the checkout to compare against
     python tools/bench/pybullet_speed.py --base /tmp/base [--tasks S1 S3] [--seeds 0-1]
@@ -64,6 +65,13 @@ def differences(a, b, path: str = "") -> list[str]:
     return [] if a == b else [f"{path}: {str(a)[:80]} != {str(b)[:80]}"]
 
 
+def cpu_seconds() -> float:
+    """User and system CPU seconds of this process, every thread, and of its child processes that
+    have ended (a planner's subprocess: ``time.process_time`` leaves those out)."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
 def child(tree: Path, task_name: str, seed: int, keep: Path | None) -> None:
     """One episode in this process, with ``tree``'s code: prints its times and stripped report."""
     sys.path.insert(0, str(tree))
@@ -74,9 +82,9 @@ def child(tree: Path, task_name: str, seed: int, keep: Path | None) -> None:
     task = taskfile.load(tree / "trees" / f"{task_name}.yaml")
     session = Session(task, RunConfig.from_task(task, world="pybullet", verify="both"))
     try:
-        c0, t0 = time.process_time(), time.perf_counter()
+        c0, t0 = cpu_seconds(), time.perf_counter()
         report = session.episode(seed)
-        cpu, wall = time.process_time() - c0, time.perf_counter() - t0
+        cpu, wall = cpu_seconds() - c0, time.perf_counter() - t0
     finally:
         session.close()
     # as a report file has it, the checkout's own paths (the task file's) put relative
