@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from tools.bench.pybullet_speed import compare_rows, differences, strip
 
 
@@ -33,3 +35,27 @@ def test_campaign_rows_agree_when_only_their_wall_time_differs(tmp_path, capsys)
     assert compare_rows(base, same) == 0
     assert compare_rows(base, other) == 1
     assert "DIFFER: vlm_queries" in capsys.readouterr().out
+
+
+def test_cpu_seconds_count_a_child_process_s_cpu_as_well():
+    # an episode's planner runs Fast Downward in a subprocess, whose CPU time.process_time misses
+    import subprocess
+    import sys
+    import time
+
+    from tools.bench.pybullet_speed import cpu_seconds
+
+    c0, p0 = cpu_seconds(), time.process_time()
+    subprocess.run([sys.executable, "-c", "import time\nt = time.process_time()\nwhile time.process_time() - t < 0.3: pass"],
+                   check=True)
+    assert cpu_seconds() - c0 >= 0.3 > time.process_time() - p0
+
+
+def test_chosen_episodes_are_run_in_their_order_and_a_grid_otherwise():
+    from tools.bench.pybullet_speed import episodes_of
+
+    assert episodes_of(["S1"], "0-1", ["S1:1", "halve_egg:0"]) == [("boil_water", 1), ("halve_egg", 0)]
+    assert episodes_of(["S1", "halve_egg"], "2-3", None) == [("boil_water", 2), ("boil_water", 3),
+                                                             ("halve_egg", 2), ("halve_egg", 3)]
+    with pytest.raises(SystemExit):
+        episodes_of(["S1"], "0-1", ["boil_water"])

@@ -301,3 +301,27 @@ def test_the_wrist_camera_frame_is_what_it_sees_now(counter):
     assert d.arm.follow(wave(d, np.array([1.5, 0, 0, 0, 0, 0])), never).completed
     assert counter.captures.get(d.camera.capture().frame_id).visibility.get("cup", 0.0) == 0.0
     assert d.arm.follow(wave(d, np.array([-1.5, 0, 0, 0, 0, 0])), never).completed
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_an_arm_trajectory_s_set_points_are_the_per_step_interpolation_bit_for_bit(seed):
+    # follow() samples the whole trajectory at once (pb_drivers.sampled) rather than calling
+    # np.interp once per joint per physics step as it did: the set-points must be those exactly
+    from vap_bt.sim.pb_drivers import sampled
+    from vap_bt.sim.pybullet_world import DT
+
+    rng = np.random.default_rng(seed)
+    for _ in range(50):
+        n = int(rng.integers(2, 40))
+        times = np.concatenate(([0.0], np.cumsum(rng.uniform(1e-4, 0.3, n - 1))))
+        q = np.cumsum(rng.normal(0.0, 0.2, (n, 6)), axis=0)
+        qd = rng.normal(0.0, 1.0, (n, 6))
+        steps = max(1, math.ceil(times[-1] / DT - 1e-9))
+        q_at, qd_at = sampled(times, q, qd, DT, steps)
+        assert q_at.shape == qd_at.shape == (steps, 6)
+        for k in range(1, steps + 1):
+            t = min(k * DT, times[-1])
+            want_q = np.array([np.interp(t, times, q[:, j]) for j in range(6)])
+            want_qd = np.array([np.interp(t, times, qd[:, j]) for j in range(6)])
+            assert q_at[k - 1].tobytes() == want_q.tobytes()
+            assert qd_at[k - 1].tobytes() == want_qd.tobytes()

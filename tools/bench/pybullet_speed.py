@@ -6,12 +6,14 @@ base, ... so that a machine whose speed drifts slows both alike — and this pri
 wall and CPU seconds of each and their ratios new/base, the medians, and whether the two
 episodes were the same: their reports compared field for field, every field but those that say
 how long something took or which commit ran (:data:`TIMING`). A speed-up is only one if that
-holds for every episode. CPU seconds (the process's own) are the figure to quote on a shared
-machine; wall seconds count whatever else it ran meanwhile::
+holds for every episode. CPU seconds (:func:`cpu_seconds`: the process's own and its child
+processes', as the planner's Fast Downward runs) are the figure to quote on a shared machine;
+wall seconds count whatever else it ran meanwhile::
 
     git worktree add /tmp/base <commit>     # the checkout to compare against
     python tools/bench/pybullet_speed.py --base /tmp/base [--tasks S1 S3] [--seeds 0-1]
                                          [--json docs/figures/pybullet_speed.json]
+    python tools/bench/pybullet_speed.py --base /tmp/base --episodes S1:1 halve_egg:0   # chosen episodes
 
 The episodes are a campaign's (``tools/experiments/strategies.py --world pybullet``): strategy
 ``both``, the settings' default viewpoints, the task file's options, in-process skills.
@@ -64,6 +66,13 @@ def differences(a, b, path: str = "") -> list[str]:
     return [] if a == b else [f"{path}: {str(a)[:80]} != {str(b)[:80]}"]
 
 
+def cpu_seconds() -> float:
+    """User and system CPU seconds of this process, every thread, and of its child processes that
+    have ended (a planner's subprocess: ``time.process_time`` leaves those out)."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
 def child(tree: Path, task_name: str, seed: int, keep: Path | None) -> None:
     """One episode in this process, with ``tree``'s code: prints its times and stripped report."""
     sys.path.insert(0, str(tree))
@@ -74,9 +83,9 @@ def child(tree: Path, task_name: str, seed: int, keep: Path | None) -> None:
     task = taskfile.load(tree / "trees" / f"{task_name}.yaml")
     session = Session(task, RunConfig.from_task(task, world="pybullet", verify="both"))
     try:
-        c0, t0 = time.process_time(), time.perf_counter()
+        c0, t0 = cpu_seconds(), time.perf_counter()
         report = session.episode(seed)
-        cpu, wall = time.process_time() - c0, time.perf_counter() - t0
+        cpu, wall = cpu_seconds() - c0, time.perf_counter() - t0
     finally:
         session.close()
     # as a report file has it, the checkout's own paths (the task file's) put relative
@@ -125,6 +134,19 @@ def seeds_of(text: str) -> list[int]:
     return list(range(int(a), int(b or a) + 1))
 
 
+def episodes_of(tasks: list[str], seeds: str, chosen: list[str] | None) -> list[tuple[str, int]]:
+    """(task name, seed) to run: each ``TASK:SEED`` of ``chosen`` (a name or paper id, as
+    ``--tasks`` takes), in order; else every task of ``tasks`` at every seed of ``seeds``."""
+    from tools.experiments.command import tasks_named
+
+    if chosen:
+        pairs = [word.rpartition(":") for word in chosen]
+        if any(not task or not seed.isdigit() for task, _, seed in pairs):
+            raise SystemExit(f"--episodes takes TASK:SEED words, not {' '.join(chosen)}")
+        return [(next(iter(tasks_named([task]))), int(seed)) for task, _, seed in pairs]
+    return [(task, seed) for task in tasks_named(tasks) for seed in seeds_of(seeds)]
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--base", type=Path, help="the checkout to compare against")
@@ -132,6 +154,8 @@ def main() -> int:
     ap.add_argument("--tasks", nargs="+", default=["S1", "S2", "S3", "S4", "S5"],
                     help="task names or the paper's ids S1-S5 (default S1-S5)")
     ap.add_argument("--seeds", default="0-1", help="A-B: seeds A..B inclusive (default 0-1)")
+    ap.add_argument("--episodes", nargs="+", metavar="TASK:SEED",
+                    help="run these episodes instead of --tasks by --seeds (e.g. S1:1 halve_egg:0)")
     ap.add_argument("--json", type=Path, help="write every episode's figures here")
     ap.add_argument("--keep", type=Path, help="directory for each run's stripped report (to diff by hand)")
     ap.add_argument("--rows", nargs=2, type=Path, metavar=("BASE", "NEW"),
@@ -147,31 +171,28 @@ def main() -> int:
     if args.base is None:
         ap.error("--base CHECKOUT is required")
     sys.path.insert(0, str(ROOT))
-    from tools.experiments.command import tasks_named
-
-    tasks = list(tasks_named(args.tasks))
+    episodes = episodes_of(args.tasks, args.seeds, args.episodes)
     base, new = args.base.resolve(), args.new.resolve()
     if args.keep is not None:
         args.keep.mkdir(parents=True, exist_ok=True)
     rows, k = [], 0
     print(f"{'task':18} {'seed':>4} {'base wall':>9} {'new wall':>8} {'ratio':>6} "
           f"{'base cpu':>8} {'new cpu':>7} {'ratio':>6}  same episode")
-    for task in tasks:
-        for seed in seeds_of(args.seeds):
-            order = [("base", base), ("new", new)] if k % 2 == 0 else [("new", new), ("base", base)]
-            k += 1
-            got = {name: run_one(tree, task, seed, args.keep / f"{task}-{seed}-{name}.json" if args.keep else None)
-                   for name, tree in order}
-            diff = differences(got["base"]["report"], got["new"]["report"])
-            row = {"task": task, "seed": seed, "same": not diff, "differences": diff[:10],
-                   **{f"{n}_{m}": round(got[n][m], 3) for n in ("base", "new") for m in ("wall_s", "cpu_s")},
-                   "success": got["new"]["report"]["success"], "vlm_queries": got["new"]["report"]["vlm_queries"]}
-            row["wall_ratio"] = round(row["new_wall_s"] / row["base_wall_s"], 3)
-            row["cpu_ratio"] = round(row["new_cpu_s"] / row["base_cpu_s"], 3)
-            rows.append(row)
-            print(f"{task:18} {seed:4d} {row['base_wall_s']:9.1f} {row['new_wall_s']:8.1f} {row['wall_ratio']:6.3f} "
-                  f"{row['base_cpu_s']:8.1f} {row['new_cpu_s']:7.1f} {row['cpu_ratio']:6.3f}  "
-                  f"{'yes' if row['same'] else 'NO: ' + '; '.join(diff[:3])}", flush=True)
+    for task, seed in episodes:
+        order = [("base", base), ("new", new)] if k % 2 == 0 else [("new", new), ("base", base)]
+        k += 1
+        got = {name: run_one(tree, task, seed, args.keep / f"{task}-{seed}-{name}.json" if args.keep else None)
+               for name, tree in order}
+        diff = differences(got["base"]["report"], got["new"]["report"])
+        row = {"task": task, "seed": seed, "same": not diff, "differences": diff[:10],
+               **{f"{n}_{m}": round(got[n][m], 3) for n in ("base", "new") for m in ("wall_s", "cpu_s")},
+               "success": got["new"]["report"]["success"], "vlm_queries": got["new"]["report"]["vlm_queries"]}
+        row["wall_ratio"] = round(row["new_wall_s"] / row["base_wall_s"], 3)
+        row["cpu_ratio"] = round(row["new_cpu_s"] / row["base_cpu_s"], 3)
+        rows.append(row)
+        print(f"{task:18} {seed:4d} {row['base_wall_s']:9.1f} {row['new_wall_s']:8.1f} {row['wall_ratio']:6.3f} "
+              f"{row['base_cpu_s']:8.1f} {row['new_cpu_s']:7.1f} {row['cpu_ratio']:6.3f}  "
+              f"{'yes' if row['same'] else 'NO: ' + '; '.join(diff[:3])}", flush=True)
     total = {m: sum(r[m] for r in rows) for m in ("base_wall_s", "new_wall_s", "base_cpu_s", "new_cpu_s")}
     summary = {"episodes": len(rows), "same": sum(r["same"] for r in rows),
                "median_wall_ratio": statistics.median(r["wall_ratio"] for r in rows),

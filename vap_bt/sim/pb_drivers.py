@@ -127,6 +127,19 @@ def _hold(robot: Robot, arm: bool = True, base: bool = True) -> None:
     robot.command(target)
 
 
+def sampled(times: np.ndarray, q: np.ndarray, qd: np.ndarray, dt: float,
+            steps: int) -> tuple[np.ndarray, np.ndarray]:
+    """A timed trajectory's positions and velocities (rows ``steps``, one column a joint) linearly
+    interpolated at the times of physics steps 1..``steps`` (``k * dt``, the last time at most).
+    One ``np.interp`` per joint over all the steps' times, rather than one per joint per step: it
+    interpolates each time alone with the same arithmetic, so the set-points are the same to the
+    bit (tests/test_pb_drivers.py holds it), in a tenth of the time of an arm motion's Python."""
+    t = np.minimum(np.arange(1, steps + 1) * dt, times[-1])
+    q_at = np.stack([np.interp(t, times, q[:, j]) for j in range(q.shape[1])], axis=1)
+    qd_at = np.stack([np.interp(t, times, qd[:, j]) for j in range(qd.shape[1])], axis=1)
+    return q_at, qd_at
+
+
 class _Stoppable:
     def __init__(self, sim: Simulation) -> None:
         self.sim = sim
@@ -219,13 +232,12 @@ class PybulletArm(_Stoppable):
             self._stop.clear()
             dt = self.sim.dt
             steps = max(1, math.ceil(times[-1] / dt - 1e-9))
+            q_at, qd_at = sampled(times, q, qd, dt, steps)
 
             def setpoints():
-                for k in range(1, steps + 1):
-                    t = min(k * dt, times[-1])
+                for k in range(steps):
                     body, vel = r.target.copy(), np.zeros(len(r.target))
-                    body[first:] = [np.interp(t, times, q[:, j]) for j in range(q.shape[1])]
-                    vel[first:] = [np.interp(t, times, qd[:, j]) for j in range(q.shape[1])]
+                    body[first:], vel[first:] = q_at[k], qd_at[k]
                     yield body, vel
 
             out = self._track(setpoints(), cancelled, lambda body: float(np.max(np.abs(r.q()[3:] - body[3:]))),
