@@ -63,6 +63,16 @@ def test_an_item_the_action_puts_down_is_no_drop():
     assert run(w, ("placein", ("cup", "microwave", "kitchen")), put) == []
 
 
+def test_putting_down_a_thing_taken_for_another_is_no_drop():
+    """The hand holds a mug the robot took for the cup: placing "the cup" lets go of the mug."""
+    w = World("holding(mug)", held="mug")
+
+    def put(w):
+        w.hand = None
+
+    assert run(w, ("placeon", ("cup", "counter", "kitchen")), put) == []
+
+
 def test_a_feasible_action_whose_effect_did_not_happen_is_logged():
     w = World(*GRASP_PRE)  # the fingers miss: nothing changes
     log = run(w, GRASP)

@@ -10,7 +10,8 @@ reads the physics' truth before and after each action (never the executive's bel
 skill's report) and logs, beside Table II's rows (:class:`~vap_bt.world.InjectedSituation`):
 
 * ``held_object_dropped`` — an item the hand held as the action began is no longer held when it
-  ends, and the action was not one to let it go (its effects do not delete ``holding`` of it);
+  ends, and the action was not one to let go (its effects delete no ``holding``: a place of a
+  thing the robot took for another lets go of what it holds, and that is no drop);
 * ``action_failed`` — every precondition of the action held in the world as it began, and some
   effect of it about the things it acts on does not hold when it ends (the robot's own pose and
   view, ``robot_at``, ``robot_in`` and ``inview``, are left out: whether the camera has a thing
@@ -83,7 +84,7 @@ class NaturalFailures:
         ga = b.action
         if any(e.step == b.step and e.kind not in _DISTURBANCES for e in log):
             return  # Table II failed this action on purpose: its row says what happened
-        if b.held is not None and self.held() != b.held and Atom("holding", (b.held,)) not in ga.may_delete:
+        if b.held is not None and self.held() != b.held and not _releases(ga):
             log.append(InjectedSituation(ga.name, ga.args, DROPPED, b.step, (b.held,)))
             return
         if not b.feasible:
@@ -92,3 +93,8 @@ class NaturalFailures:
         missed += [a for a in ga.delete if a.predicate not in ROBOT_POSE and self.holds(a)]
         if missed:
             log.append(InjectedSituation(ga.name, ga.args, FAILED, b.step, ga.args[:1]))
+
+
+def _releases(action: GroundAction) -> bool:
+    """Whether ``action`` is meant to let go of what the hand holds (it deletes a ``holding``)."""
+    return any(a.predicate == "holding" for a in action.may_delete)
