@@ -216,6 +216,31 @@ def test_a_thing_seen_at_a_missed_there_and_found_at_b_is_a_world_change():
         assert s.diagnosis == "perception_error"
 
 
+def test_a_place_only_a_re_location_showed_grounds_no_world_change():
+    """A re-location is the recovery's reading of where a thing it lost track of is; belief takes
+    it in and the next check tests it. A check that denies it says the re-location erred, not
+    that a person moved the thing; a look aimed at its place that misses it, with the thing found
+    elsewhere, is evidence of its own and still reads as moved."""
+    k = load(TREES / "collect_cup.yaml").planning.knowledge
+    grasp = k.ground("grasp", ("cup", "coffee_table", "living_room"))
+    find = k.ground("find", ("floor_living_room", "cup", "living_room"))
+    on = Atom("on", ("cup", "coffee_table"))
+    where = {on, Atom("in_room", ("cup", "living_room"))}
+    floor = {Atom("on", ("cup", "floor_living_room")), Atom("in_room", ("cup", "living_room"))}
+    for sense, expect in (("survey", "world_change"), ("check", "world_change"), ("re-location", "perception_error")):
+        graph, sightings = SceneGraph.of_facts(where | {Atom("inview", ("cup",))}), Sightings()
+        sightings.saw(where, True, sense)
+        denied = Situation("precondition", grasp, 1, on, True, False)
+        not_in_sight = Situation("effect", find, 0, Atom("inview", ("cup",)), True, False)
+        assert diagnose(denied, sightings, graph)[0] == diagnose(not_in_sight, sightings, graph)[0] == expect, sense
+        s = Situation("unseen", grasp, 1, Atom("inview", ("cup",)), True, None)
+        s.diagnosis, s.diagnosis_basis = diagnose(s, sightings, graph)
+        before = placed(s, graph, sightings)
+        graph.relocate("cup", floor)
+        review(s, before, {"cup"}, graph, missed={"cup"})  # not at A when looked at, found at B
+        assert s.diagnosis == "world_change", sense
+
+
 def test_an_effect_a_later_sense_shows_done_before_any_action_is_a_perception_error():
     k = load(TREES / "collect_cup.yaml").planning.knowledge
     grasp = k.ground("grasp", ("cup", "coffee_table", "living_room"))

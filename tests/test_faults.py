@@ -107,3 +107,13 @@ def test_the_watchdog_counts_an_episode_past_its_budget_as_a_hang_and_goes_on():
     faults.run_campaign(jobs, 1, rows.append)
     assert [(r.seed, r.outcome) for r in rows][0] == (0, "hang")
     assert rows[1].seed == 1 and rows[1].outcome in ("recovered", "aborted"), rows[1].error
+
+
+def test_a_failure_by_physics_alone_is_marked_natural_not_table_ii():
+    """The pybullet world logs the robot's actions that failed with nothing drawn
+    (:mod:`vap_bt.sim.natural_failures`) beside Table II's rows; the table tells them apart."""
+    injected = [{"action": "grasp", "args": ["cup", "counter", "kitchen"], "kind": kind, "step": 2,
+                 "affected": ["cup"]} for kind in ("grasp_fails_object_unchanged", "action_failed", "held_object_dropped")]
+    situations = [{"predicate": "holding(cup)", "action": "grasp(cup, counter, kitchen)"}]
+    assert [(f.source, f.detected) for f in faults.faults_of(injected, situations)] == \
+        [("table2", True), ("natural", True), ("natural", True)]

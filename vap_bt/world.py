@@ -25,7 +25,8 @@ from vap_bt.robot.state import RobotState
 
 @dataclass(frozen=True)
 class InjectedSituation:
-    """A situation the world caused on purpose (Table II) or by script, for the report."""
+    """A situation the world caused on purpose (Table II) or by script, or an action of the robot
+    that failed by physics alone (:mod:`vap_bt.sim.natural_failures`), for the report."""
 
     action: str
     args: tuple[str, ...]

@@ -16,7 +16,8 @@ a *crash*). The measures, per episode, against the world's oracle:
 * *false success* — the executive reported success (``success``) and the world denies the goal
   (``goal_satisfied`` false); its rate over all episodes with its 95 % Wilson interval (target
   <= 1 %);
-* per fault kind (each Table II kind and each disturbance kind): how many were injected, how many
+* per fault kind (each Table II kind, each disturbance kind, and in pybullet the robot's actions
+  that failed by physics alone, :mod:`vap_bt.sim.natural_failures`): how many were injected, how many
   *detected* — a situation the executive found names the thing the fault changed (what fell, was
   moved or pushed; for a failure that dropped nothing, the thing the action was about), at any
   point of the episode — and, over the episodes the kind occurred in, how many were *recovered*
@@ -56,6 +57,7 @@ sys.path.insert(0, str(ROOT))
 from tools.bench.intervals import wilson  # noqa: E402
 from tools.progress import Progress  # noqa: E402
 from vap_bt.sim.disturbances import KINDS as DISTURBANCES, DisturbanceModel  # noqa: E402
+from vap_bt.sim.natural_failures import KINDS as NATURAL  # noqa: E402
 
 #: the default wall-clock budget of one episode, by world (s)
 BUDGET_S = {"symbolic": 120.0, "pybullet": 900.0}
@@ -80,7 +82,7 @@ class Fault:
     """One fault the world recorded in an episode, and whether the executive noticed it."""
 
     kind: str
-    source: str  # "table2" or "disturbance"
+    source: str  # "table2", "disturbance" or "natural" (an action that failed by physics alone)
     step: int
     action: str
     affected: list[str]
@@ -122,7 +124,8 @@ def faults_of(injected: list[dict], situations: list[dict]) -> list[Fault]:
     out = []
     for i in injected:
         affected = list(i.get("affected") or i["args"][:1])
-        out.append(Fault(i["kind"], "disturbance" if i["kind"] in DISTURBANCES else "table2", i["step"],
+        source = "disturbance" if i["kind"] in DISTURBANCES else "natural" if i["kind"] in NATURAL else "table2"
+        out.append(Fault(i["kind"], source, i["step"],
                          f"{i['action']}({', '.join(i['args'])})", affected,
                          any(set(affected) & names for names in found)))
     return out

@@ -55,6 +55,7 @@ from vap_bt.sim.depth_noise import DepthNoiseModel
 from vap_bt.sim.detector import DetectorModel
 from vap_bt.sim.disturbances import HALF_OPEN, HALF_SHUT, MOVED, SHUT, DisturbanceModel
 from vap_bt.sim.localization import Localization, LocalizationModel
+from vap_bt.sim.natural_failures import NaturalFailures
 from vap_bt.sim.oracle import FunctionOracle
 from vap_bt.sim.pb import pb
 from vap_bt.motion.se3 import look_pose
@@ -171,6 +172,8 @@ class PybulletWorld:
             self._injected: list[InjectedSituation] = []
             self.injection = Injection(self.situations, self.scene, self.robot, self._injected,
                                        lost_grip=lambda: self.drivers.gripper.lost_grip())
+            # the robot's actions that fail by physics alone, with nothing drawn, go in the same log
+            self.natural = NaturalFailures(self.truth.holds, self.truth.held, self.task.planning.knowledge.ground)
             self.rules = Rules(self.scene, self.robot, self.truth, self.catalog, self.injection, DT)
             self._glide = Glide(self.robot, self.scene, DT)
             self._action: tuple[int, str, tuple[str, ...]] | None = None  # the action running now
@@ -273,10 +276,12 @@ class PybulletWorld:
         self._disturb(step, action, args)
         self._action = (step, action, args)
         self.injection.begin(action, args, step)
+        self.natural.begin(action, args, step)
 
     def _end(self) -> None:
         step, action, args = self._action
         self.injection.end()
+        self.natural.end(self._injected)
         self._action = None
         self._disturb(step, action, args, when="after")
 
@@ -330,7 +335,8 @@ class PybulletWorld:
         return max(cands, key=score)
 
     def injected(self) -> list[InjectedSituation]:
-        """The situations the world caused this episode (Table II or a disturbance script), in order."""
+        """The situations the world caused this episode (Table II or a disturbance script), and
+        the robot's actions that failed by physics alone (:mod:`natural_failures`), in order."""
         return list(self._injected)
 
     # ------------------------------------------------------------ truth (the oracle's)

@@ -13,7 +13,9 @@ situation noticed and that touched its objects (an event touches a situation whe
 changed is one of the situation's atom's or action's arguments):
 
 * a Table II situation among them (the robot's own action failed: a grasp or place that did not
-  take, a thing dropped, including a held thing dropped while carrying it) → ``execution_failure``;
+  take, a thing dropped, including a held thing dropped while carrying it), or an action the world
+  saw fail by physics alone, with nothing drawn (:mod:`vap_bt.sim.natural_failures`: a held thing
+  lost, or an action the world allowed that did not do what it should) → ``execution_failure``;
 * else a disturbance among them (a person moved a thing, pushed a leaf shut or half shut) →
   ``world_change``;
 * else → ``perception_error``: nothing happened to those things that the executive had not already
