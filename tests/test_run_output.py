@@ -62,7 +62,7 @@ def test_a_run_ends_with_a_table_that_agrees_with_the_report(cli, tmp_path):
     assert rep["success"] and rep["goal_satisfied"] and rows["success"] == "yes (the world confirms the goal)"
     assert rows["actions"].startswith(f"{len(rep['actions_executed'])} executed; {len(rep['plans'])} plans")
     assert rep["situations"] and rows["situations"].startswith(f"{len(rep['situations'])} detected (")
-    assert rows["situations"].endswith(f"{len(rep['injected'])} injected by the world "
+    assert rows["situations"].endswith(f"{len(rep['injected'])} in the world's record "
                                        f"({rep['injected'][0]['kind']})")
     assert rows["replans"].startswith(f"{rep['replans']} (slowest ")
     assert rows["VLM queries"] == f"{rep['vlm_queries']} (sim)"

@@ -76,7 +76,7 @@ def rows(rep: dict, outputs: Outputs = Outputs()) -> list[tuple[str, str]]:
         ("success", verdict(rep)),
         ("actions", f"{len(actions)} executed" + (f", {failed} failed" if failed else "") + f"; {plans}"),
         ("situations", f"{_counted(rep['situations'], 'detected')}; "
-                       f"{_counted(rep['injected'], 'injected by the world')}"),
+                       + _counted(rep["injected"], "in the world's record")),
         ("replans", replans),
         ("VLM queries", f"{rep['vlm_queries']} ({rep['vlm'].get('backend', cfg['vlm'])})"),
         ("wall time", f"{rep['wall_s']:.1f} s"),
