@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from vap_bt.app.runner import RunConfig, Session
+from vap_bt.sim.natural_failures import KINDS as NATURAL
 from vap_bt.taskfile import load
 
 from conftest import TREES
@@ -25,6 +26,7 @@ def test_an_item_seen_inside_a_shut_oven_is_not_taken_for_the_lost_one():
         r = s.episode(2)
     finally:
         s.close()
-    assert r["injected"], "the episode this test is about has its take-out fail"
+    drawn = [i for i in r["injected"] if i["kind"] not in NATURAL]  # Table II's, not physics' own failures
+    assert any(i["action"] == "takeout" for i in drawn), "the episode this test is about has its take-out fail"
     relocated = [c for c in r["belief_changes"] if c["cause"] == "relocate"]
     assert not any("inside(apple_pie, oven)" in c["added"] for c in relocated), relocated
