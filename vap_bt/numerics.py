@@ -5,8 +5,8 @@ it loads, by the CPU it finds: on a machine with AVX-512 the SkylakeX kernels, e
 or Zen ones. They sum in a different order and so round differently in the last bits, and a
 pybullet episode is chaotic enough to carry that into its outcome: on an AVX-512 machine a cup
 the fill skill holds under the tap stood outside the stream by a few millimetres, and a seed that
-reached the goal on one machine did not on another (tests/test_numerics.py, on the machine of
-2026-12-06). So the package pins the kernel set before numpy loads: Haswell's (AVX2 and FMA,
+reached the goal on one machine did not on another (docs/BENCHMARKS.md, "The same seed on
+another CPU"; tests/test_numerics.py holds the pin). So the package pins the kernel set before numpy loads: Haswell's (AVX2 and FMA,
 which every x86-64 server since 2013 runs), unless ``OPENBLAS_CORETYPE`` is already set — by
 whoever wants another, or by a shell script of tools/, which sets it for processes that load
 numpy before this package. Other architectures are left alone (their OpenBLAS knows other
