@@ -10,8 +10,11 @@ from __future__ import annotations
 
 import csv
 import json
+import os
+import signal
 import subprocess
 import sys
+import time
 
 import matplotlib.image
 import pytest
@@ -329,6 +332,26 @@ def test_ctrl_c_keeps_the_rows_written_and_says_how_to_resume(tmp_path, address,
     # the stopped sitting is on record too, so a campaign resumed later keeps its command and commit
     sitting = json.loads((out / "run.json").read_text())["sittings"][-1]
     assert sitting["interrupted"] is True and sitting["episodes"] == 2
+
+
+def test_sigterm_stops_the_sitting_as_ctrl_c_does(tmp_path, address, monkeypatch, capsys):
+    """A campaign started in the background (where SIGINT is ignored) is stopped with SIGTERM: its
+    sitting must still be recorded, not lost with the process."""
+    real = engine.run
+
+    def terminated(client, keys, emit, fault=None):
+        real(client, keys[:1], emit)
+        os.kill(os.getpid(), signal.SIGTERM)
+        time.sleep(5)  # the handler interrupts this; reaching the end means SIGTERM was not caught
+        raise AssertionError("SIGTERM did not stop the sitting")
+
+    monkeypatch.setattr(engine, "run", terminated)
+    before = signal.getsignal(signal.SIGTERM)
+    out = tmp_path / "strategies"
+    assert main(STRATEGIES, [*QUICK, "--address", address, "--out", str(out)]) == 130
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith("strategies: interrupted; 1 rows kept")
+    assert json.loads((out / "run.json").read_text())["sittings"][-1]["interrupted"] is True
+    assert signal.getsignal(signal.SIGTERM) is before  # the command leaves the process's handlers as it found them
 
 
 @pytest.mark.slow(seconds=20)  # 10 s on 2 shared cores

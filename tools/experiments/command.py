@@ -25,16 +25,19 @@ function of its world, task, strategy, viewpoints and seed, so the failure modes
 episodes are the strategies campaign's rows read another way, not 8000 episodes run twice.
 
 Bad input (an unknown task, a malformed seed range) is one line on stderr naming the option,
-exit 2 (:data:`vap_bt.errors.EXIT_BAD_INPUT`), no traceback. Ctrl-C stops the campaign with one
-line (exit 130); the rows written so far stay, and ``--resume`` runs the rest.
+exit 2 (:data:`vap_bt.errors.EXIT_BAD_INPUT`), no traceback. Ctrl-C or SIGTERM stops the campaign
+with one line (exit 130); the rows written so far stay, and ``--resume`` runs the rest.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
+import signal
 import subprocess
 import sys
+import threading
 import time
 import typing
 from collections import Counter
@@ -188,7 +191,8 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     campaign.out.mkdir(parents=True, exist_ok=True)  # the log may be elsewhere (--log)
     if not args.report_only:
         try:
-            run(experiment, campaign, configurations, log, args, fault)
+            with stoppable():
+                run(experiment, campaign, configurations, log, args, fault)
         except KeyboardInterrupt:  # the rows written so far are on disk; the episodes in flight are lost
             print(f"{experiment.name}: interrupted; {len(log.rows())} rows kept in {log.path}, --resume runs the "
                   "rest", file=sys.stderr)
@@ -200,6 +204,26 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     # a report-only run from a shared log says where its rows came from, unless a run's record is there
     read_from = args.report_only and args.log is not None and not (campaign.out / "run.json").exists()
     return report(experiment, campaign, rows, log if read_from else None)
+
+
+@contextlib.contextmanager
+def stoppable():
+    """SIGTERM, and SIGINT even when the shell that started the command ignores it (a background
+    job inherits SIGINT ignored, so Python never installs its Ctrl-C), stop the sitting as Ctrl-C
+    does: rows kept, run.json written. Signal handlers belong to the main thread only."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(signum, frame):
+        raise KeyboardInterrupt(signal.Signals(signum).name)
+
+    previous = {sig: signal.signal(sig, stop) for sig in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
 
 
 def report_from(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
