@@ -17,6 +17,7 @@ from vap_bt.app.runner import RunConfig, Session
 from vap_bt.sim.disturbances import HALF_SHUT, KINDS, MOVED, SHUT, Disturbance, DisturbanceModel
 from vap_bt.sim.symbolic import SymbolicWorld
 from vap_bt.taskfile import load
+from vap_bt.world import InjectedSituation
 
 from conftest import TREES
 
@@ -112,8 +113,10 @@ def test_the_watchdog_counts_an_episode_past_its_budget_as_a_hang_and_goes_on():
 def test_a_failure_by_physics_alone_is_marked_natural_not_table_ii():
     """The pybullet world logs the robot's actions that failed with nothing drawn
     (:mod:`vap_bt.sim.natural_failures`) beside Table II's rows; the table tells them apart."""
-    injected = [{"action": "grasp", "args": ["cup", "counter", "kitchen"], "kind": kind, "step": 2,
-                 "affected": ["cup"]} for kind in ("grasp_fails_object_unchanged", "action_failed", "held_object_dropped")]
+    args = ("cup", "counter", "kitchen")
+    injected = [InjectedSituation("grasp", args, "grasp_fails_object_unchanged", 2, ("cup",)).to_json(),
+                *(InjectedSituation("grasp", args, kind, 2, ("cup",), "natural").to_json()
+                  for kind in ("action_failed", "held_object_dropped"))]
     situations = [{"predicate": "holding(cup)", "action": "grasp(cup, counter, kitchen)"}]
     assert [(f.source, f.detected) for f in faults.faults_of(injected, situations)] == \
         [("table2", True), ("natural", True), ("natural", True)]

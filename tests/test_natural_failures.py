@@ -48,7 +48,7 @@ def test_a_held_item_lost_during_an_action_not_meant_to_release_it_is_logged():
         w.hand = None
 
     log = run(w, ("open", ("microwave",)), lose)
-    assert [(e.kind, e.affected, e.step, e.action) for e in log] == [(DROPPED, ("cup",), 3, "open")]
+    assert [(e.kind, e.affected, e.step, e.action, e.source) for e in log] == [(DROPPED, ("cup",), 3, "open", "natural")]
 
 
 def test_an_item_the_action_puts_down_is_no_drop():
@@ -76,7 +76,7 @@ def test_putting_down_a_thing_taken_for_another_is_no_drop():
 def test_a_feasible_action_whose_effect_did_not_happen_is_logged():
     w = World(*GRASP_PRE)  # the fingers miss: nothing changes
     log = run(w, GRASP)
-    assert [(e.kind, e.affected) for e in log] == [(FAILED, ("cup",))]
+    assert [(e.kind, e.affected, e.source) for e in log] == [(FAILED, ("cup",), "natural")]
 
 
 def test_a_feasible_action_that_did_what_it_should_is_not_logged():

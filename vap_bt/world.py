@@ -14,7 +14,7 @@ can cross a process boundary (see :mod:`vap_bt.transport`).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Protocol, runtime_checkable
+from typing import Any, Literal, Protocol, runtime_checkable
 
 from vap_bt.outcome import Outcome
 from vap_bt.robot.camera import Aim, Viewpoint
@@ -25,8 +25,9 @@ from vap_bt.robot.state import RobotState
 
 @dataclass(frozen=True)
 class InjectedSituation:
-    """A situation the world caused on purpose (Table II) or by script, or an action of the robot
-    that failed by physics alone (:mod:`vap_bt.sim.natural_failures`), for the report."""
+    """An entry of the world's record, for the report: a situation the world caused on purpose
+    (``source`` "table2"), a person's doing it scripted ("disturbance"), or an action of the
+    robot that failed by physics alone ("natural", :mod:`vap_bt.sim.natural_failures`)."""
 
     action: str
     args: tuple[str, ...]
@@ -34,6 +35,17 @@ class InjectedSituation:
     step: int
     #: the things it changed (what fell, what a person moved, the leaf pushed), where the world says
     affected: tuple[str, ...] = ()
+    source: Literal["table2", "disturbance", "natural"] = "table2"
+
+    def to_json(self) -> dict:
+        """The report's (and the oracle service's) form of the entry."""
+        return {"action": self.action, "args": list(self.args), "kind": self.kind, "step": self.step,
+                "affected": list(self.affected), "source": self.source}
+
+    @classmethod
+    def from_json(cls, row: dict) -> "InjectedSituation":
+        return cls(row["action"], tuple(row["args"]), row["kind"], int(row["step"]), tuple(row.get("affected", ())),
+                   row.get("source", "table2"))
 
 
 class GoalContext(Protocol):

@@ -57,7 +57,6 @@ sys.path.insert(0, str(ROOT))
 from tools.bench.intervals import wilson  # noqa: E402
 from tools.progress import Progress  # noqa: E402
 from vap_bt.sim.disturbances import KINDS as DISTURBANCES, DisturbanceModel  # noqa: E402
-from vap_bt.sim.natural_failures import KINDS as NATURAL  # noqa: E402
 
 #: the default wall-clock budget of one episode, by world (s)
 BUDGET_S = {"symbolic": 120.0, "pybullet": 900.0}
@@ -124,8 +123,7 @@ def faults_of(injected: list[dict], situations: list[dict]) -> list[Fault]:
     out = []
     for i in injected:
         affected = list(i.get("affected") or i["args"][:1])
-        source = "disturbance" if i["kind"] in DISTURBANCES else "natural" if i["kind"] in NATURAL else "table2"
-        out.append(Fault(i["kind"], source, i["step"],
+        out.append(Fault(i["kind"], i["source"], i["step"],
                          f"{i['action']}({', '.join(i['args'])})", affected,
                          any(set(affected) & names for names in found)))
     return out
@@ -161,8 +159,7 @@ def run_job(job: Job, sessions: dict) -> EpisodeRow:
         session = _session(job, sessions)
         rep = session.episode(job.seed)
     except Exception:  # noqa: BLE001 - what the campaign measures
-        injected = [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
-                     "affected": list(i.affected)} for i in session.world.oracle.injected()] if session else []
+        injected = [i.to_json() for i in session.world.oracle.injected()] if session else []
         sessions.pop(job.task_file, None)  # a session an exception went through is not trusted again
         return EpisodeRow(**base, outcome="crash", success=False, goal_satisfied=False, reason="crash",
                           wall_s=round(time.perf_counter() - t0, 3), faults=[asdict(f) for f in faults_of(injected, [])],

@@ -589,9 +589,7 @@ class Session:
             "actions_executed": board.actions,
             "situations": situations,
             "diagnosis": diagnosis_summary(situations),
-            "injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
-                          "affected": list(i.affected)}
-                         for i in (self.world.oracle.injected() if self.world is not None else [])],
+            "injected": [i.to_json() for i in (self.world.oracle.injected() if self.world is not None else [])],
             "replans": out.replans,
             "replan_ms": [round(s * 1000, 3) for s in out.replan_seconds],
             "surveys": len(out.surveys),

@@ -10,12 +10,16 @@ reads the physics' truth before and after each action (never the executive's bel
 skill's report) and logs, beside Table II's rows (:class:`~vap_bt.world.InjectedSituation`):
 
 * ``held_object_dropped`` — an item the hand held as the action began is no longer held when it
-  ends, and the action was not one to let go (its effects delete no ``holding``: a place of a
-  thing the robot took for another lets go of what it holds, and that is no drop);
+  ends, and the action was not one to let go (its effects delete no atom of the hand's ``held``
+  role: a place of a thing the robot took for another lets go of what it holds, and that is no drop);
 * ``action_failed`` — every precondition of the action held in the world as it began, and some
   effect of it about the things it acts on does not hold when it ends (the robot's own pose and
-  view, ``robot_at``, ``robot_in`` and ``inview``, are left out: whether the camera has a thing
-  in view is the wrist image's pixel count, a measure of the view, not an action's outcome).
+  view, the roles ``robot_at``, ``robot_in`` and ``in_view``, are left out: whether the camera has
+  a thing in view is the wrist image's pixel count, a measure of the view, not an action's outcome).
+
+The predicates are named by role (:mod:`vap_bt.domain.roles`), the household's by default: the
+world speaks the household's predicates, as its truth does (tests/test_roles.py says why a world
+is not renamed), and the names are spelled in one place, not here.
 
 Neither is logged when Table II already logged a failure of that action (it explains what went
 wrong), and neither when the action began in a world that did not allow it (a precondition false:
@@ -31,6 +35,7 @@ from dataclasses import dataclass
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
+from vap_bt.domain.roles import HOUSEHOLD, Roles
 from vap_bt.sim.disturbances import KINDS as _DISTURBANCES
 from vap_bt.world import InjectedSituation
 
@@ -38,8 +43,6 @@ from vap_bt.world import InjectedSituation
 DROPPED = "held_object_dropped"
 FAILED = "action_failed"
 KINDS: tuple[str, ...] = (DROPPED, FAILED)
-#: predicates about where the robot stands and what its camera shows: no action's outcome on a thing
-ROBOT_POSE = frozenset({"robot_at", "robot_in", "inview"})
 
 
 @dataclass(frozen=True)
@@ -58,11 +61,11 @@ class NaturalFailures:
 
     ``holds`` answers an atom from the world's truth, ``held`` names the item in the hand (None:
     none), ``ground`` grounds an action by name and arguments (raising ``KeyError`` or
-    ``ValueError`` for one the domain does not have)."""
+    ``ValueError`` for one the domain does not have); ``roles`` names the predicates the truth speaks."""
 
     def __init__(self, holds: Callable[[Atom], bool], held: Callable[[], str | None],
-                 ground: Callable[[str, tuple[str, ...]], GroundAction]) -> None:
-        self.holds, self.held, self.ground = holds, held, ground
+                 ground: Callable[[str, tuple[str, ...]], GroundAction], roles: Roles = HOUSEHOLD) -> None:
+        self.holds, self.held, self.ground, self.roles = holds, held, ground, roles
         self._begun: _Begun | None = None
 
     def begin(self, action: str, args: tuple[str, ...], step: int) -> None:
@@ -84,17 +87,18 @@ class NaturalFailures:
         ga = b.action
         if any(e.step == b.step and e.kind not in _DISTURBANCES for e in log):
             return  # Table II failed this action on purpose: its row says what happened
-        if b.held is not None and self.held() != b.held and not _releases(ga):
-            log.append(InjectedSituation(ga.name, ga.args, DROPPED, b.step, (b.held,)))
+        if b.held is not None and self.held() != b.held and not self._releases(ga):
+            log.append(InjectedSituation(ga.name, ga.args, DROPPED, b.step, (b.held,), "natural"))
             return
         if not b.feasible:
             return
-        missed = [a for a in ga.add if a.predicate not in ROBOT_POSE and not self.holds(a)]
-        missed += [a for a in ga.delete if a.predicate not in ROBOT_POSE and self.holds(a)]
+        pose = self.roles.robot  # where the robot stands and what its camera shows: no outcome on a thing
+        missed = [a for a in ga.add if a.predicate not in pose and not self.holds(a)]
+        missed += [a for a in ga.delete if a.predicate not in pose and self.holds(a)]
         if missed:
-            log.append(InjectedSituation(ga.name, ga.args, FAILED, b.step, ga.args[:1]))
+            log.append(InjectedSituation(ga.name, ga.args, FAILED, b.step, ga.args[:1], "natural"))
 
 
-def _releases(action: GroundAction) -> bool:
-    """Whether ``action`` is meant to let go of what the hand holds (it deletes a ``holding``)."""
-    return any(a.predicate == "holding" for a in action.may_delete)
+    def _releases(self, action: GroundAction) -> bool:
+        """Whether ``action`` is meant to let go of what the hand holds (it deletes a ``held`` atom)."""
+        return any(self.roles.is_held(a) for a in action.may_delete)

@@ -311,7 +311,7 @@ class PybulletWorld:
                 continue
             for _ in range(20):
                 self.step()
-            self._injected.append(InjectedSituation(action, tuple(args), kind, step, (affected,)))
+            self._injected.append(InjectedSituation(action, tuple(args), kind, step, (affected,), "disturbance"))
 
     def _free_spot(self, surface: str, item: str) -> np.ndarray:
         """Where a person sets ``item`` down on ``surface``: the centre of a spot on its top far

@@ -360,7 +360,7 @@ class SymbolicWorld:
         Table II's situations when it changed the world."""
         for d in self.disturbances:
             if d.after == self._step - 1 and self._apply(d):
-                self._injected.append(InjectedSituation(action, args, d.kind, self._step, (d.target,)))
+                self._injected.append(InjectedSituation(action, args, d.kind, self._step, (d.target,), "disturbance"))
                 self._new_view()
 
     def _apply(self, d: Disturbance) -> bool:

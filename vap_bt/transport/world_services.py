@@ -29,7 +29,6 @@ from typing import Any, Callable, Iterable
 import zenoh
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.errors import TransportError
 from vap_bt.robot.frame import marked_frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.transport import keys
@@ -100,8 +99,7 @@ class OracleServer:
         return OracleReply({"holds": [bool(self.world.oracle.holds(a)) for a in q.atoms]})
 
     def _injected(self, q: OracleQuery) -> OracleReply:
-        return OracleReply({"injected": [{"action": i.action, "args": list(i.args), "kind": i.kind, "step": i.step,
-                                          "affected": list(i.affected)} for i in self.world.oracle.injected()]})
+        return OracleReply({"injected": [i.to_json() for i in self.world.oracle.injected()]})
 
     def _info(self, q: OracleQuery) -> OracleReply:
         w, vlm = self.world, self.facts.vlm
@@ -150,8 +148,7 @@ class RemoteOracle:
     def injected(self) -> list[InjectedSituation]:
         """The situations the world caused this episode, in order."""
         rows = self._ask("injected").values["injected"]
-        return [InjectedSituation(r["action"], tuple(r["args"]), r["kind"], int(r["step"]), tuple(r.get("affected", ())))
-                for r in rows]
+        return [InjectedSituation.from_json(r) for r in rows]
 
 
 class _Described:
