@@ -9,7 +9,7 @@
 #   WORLD=symbolic SEEDS=200 bash tools/experiments/campaign.sh
 #
 # Run it again to continue: an episode already in the log is not run again (--log keeps the log
-# as --resume does), so a sitting stopped by Ctrl-C or a closed session loses only the episodes
+# as --resume does), so a sitting stopped by Ctrl-C, SIGTERM or a closed session loses only the episodes
 # in flight. Each block's full method comes first (the configurations' order), so a campaign
 # stopped part-way has measured it on every task before the baselines. Environment: WORLD
 # (pybullet), SEEDS (50: seeds 0..SEEDS-1), WORKERS (2), DIR (docs/results/<WORLD>_campaign),
