@@ -265,6 +265,9 @@ def test_resume_runs_only_what_a_stopped_campaign_had_not_finished(tmp_path, add
     assert [s["episodes"] for s in meta["sittings"]] == [4, 2]
     assert {r["commit"] for r in rows} == {meta["commit"]} and len(meta["commit"]) >= 40
     assert f"Episodes run on: {meta['commit'][:12]}" in (out / "table.md").read_text()
+    # run again with nothing left to run: the report is written, no empty sitting is recorded
+    assert main(STRATEGIES, [*argv, "--resume"]) == 0
+    assert [s["episodes"] for s in json.loads((out / "run.json").read_text())["sittings"]] == [4, 2]
 
 
 def test_experiments_sharing_a_log_run_each_episode_once(tmp_path, address):

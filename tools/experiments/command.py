@@ -266,12 +266,16 @@ def _read_from(experiment: Experiment, campaign: Campaign, source: results.Episo
 def run(experiment: Experiment, campaign: Campaign, configurations: list[tuple[str, str]],
         log: results.EpisodeLog, args: argparse.Namespace, fault) -> None:
     """Run the campaign's missing episodes, appending each row to ``log``; then write run.json,
-    also when Ctrl-C stopped the sitting (marked ``interrupted``; the KeyboardInterrupt goes on)."""
+    also when Ctrl-C stopped the sitting (marked ``interrupted``; the KeyboardInterrupt goes on).
+    With nothing left to run, nothing is run and run.json is left as it is."""
     commit = _commit()  # before the log is touched: the code that runs is this checkout's as the campaign starts
     log.start(args.resume or args.log is not None)  # a shared log is never emptied by one of its experiments
     started = time.strftime("%Y-%m-%dT%H:%M:%S%z")
     done = log.episodes()
     todo = [k for k in keys(experiment, campaign, configurations) if k.episode() not in done]
+    if not todo:  # a campaign script passing a finished block: no sitting to record, no cluster to start
+        print(f"  [{experiment.name}: nothing to run, {len(done)} episodes already done]", file=sys.stderr, flush=True)
+        return
     t0, written, stopped = time.perf_counter(), 0, False
     with engine.open_client(args.address, args.workers) as client:
         n_workers = engine.workers(client)
