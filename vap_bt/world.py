@@ -44,8 +44,8 @@ class InjectedSituation:
 
     @classmethod
     def from_json(cls, row: dict) -> "InjectedSituation":
-        return cls(row["action"], tuple(row["args"]), row["kind"], int(row["step"]), tuple(row.get("affected", ())),
-                   row.get("source", "table2"))
+        """The entry :meth:`to_json` wrote."""
+        return cls(row["action"], tuple(row["args"]), row["kind"], int(row["step"]), tuple(row["affected"]), row["source"])
 
 
 class GoalContext(Protocol):

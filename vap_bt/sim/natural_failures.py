@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
-from vap_bt.domain.roles import HOUSEHOLD, Roles
+from vap_bt.domain.roles import HOUSEHOLD
 from vap_bt.sim.disturbances import KINDS as _DISTURBANCES
 from vap_bt.world import InjectedSituation
 
@@ -61,11 +61,11 @@ class NaturalFailures:
 
     ``holds`` answers an atom from the world's truth, ``held`` names the item in the hand (None:
     none), ``ground`` grounds an action by name and arguments (raising ``KeyError`` or
-    ``ValueError`` for one the domain does not have); ``roles`` names the predicates the truth speaks."""
+    ``ValueError`` for one the domain does not have)."""
 
     def __init__(self, holds: Callable[[Atom], bool], held: Callable[[], str | None],
-                 ground: Callable[[str, tuple[str, ...]], GroundAction], roles: Roles = HOUSEHOLD) -> None:
-        self.holds, self.held, self.ground, self.roles = holds, held, ground, roles
+                 ground: Callable[[str, tuple[str, ...]], GroundAction]) -> None:
+        self.holds, self.held, self.ground = holds, held, ground
         self._begun: _Begun | None = None
 
     def begin(self, action: str, args: tuple[str, ...], step: int) -> None:
@@ -92,7 +92,7 @@ class NaturalFailures:
             return
         if not b.feasible:
             return
-        pose = self.roles.robot  # where the robot stands and what its camera shows: no outcome on a thing
+        pose = HOUSEHOLD.robot  # where the robot stands and what its camera shows: no outcome on a thing
         missed = [a for a in ga.add if a.predicate not in pose and not self.holds(a)]
         missed += [a for a in ga.delete if a.predicate not in pose and self.holds(a)]
         if missed:
@@ -101,4 +101,4 @@ class NaturalFailures:
 
     def _releases(self, action: GroundAction) -> bool:
         """Whether ``action`` is meant to let go of what the hand holds (it deletes a ``held`` atom)."""
-        return any(self.roles.is_held(a) for a in action.may_delete)
+        return any(HOUSEHOLD.is_held(a) for a in action.may_delete)
