@@ -65,7 +65,7 @@ class MotionSkill(Skill):
         except Blocked as e:
             return SkillResult(False, str(e))
         ctx.feedback(1.0, f"{call} {'completed' if out.completed else 'failed'}")
-        return SkillResult(out.completed, out.message or call)
+        return SkillResult.of(out, call)
 
     def run(self, kit: Kit, args: tuple[str, ...], hints: dict[str, Hint]) -> Outcome:
         """Move the robot for ``action(args)`` through ``kit``, looking where ``hints`` say, and say how

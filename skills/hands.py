@@ -368,7 +368,7 @@ class Hands:
         level from the side even off a surface."""
         seen = self.locate(name, point, where)
         if seen is None:
-            return Outcome(False, f"{name} is not where it was believed to be: not seen")
+            return Outcome(False, f"{name} is not where it was believed to be: not seen", missing=name)
         stood: list = []
         # each look with the body's mark when it was taken: a later step of the base may come with
         # a jump of the localiser, and what a look measured is carried across it by odometry
@@ -670,7 +670,7 @@ class Hands:
         seen = (self.locate(name, self.scene.furniture[surface].top_point(), Where(on=surface))
                 or self.locate(name, self.put_at, Where(on=surface, radius=SEEN_RADIUS)))
         if seen is None:
-            return Outcome(False, f"{name} is not where it was set down on {surface}: not seen")
+            return Outcome(False, f"{name} is not where it was set down on {surface}: not seen", missing=name)
         return self.grasp(name, seen.centroid, Where(on=surface), sideways=sideways)
 
     def let_go(self) -> None:
@@ -1036,7 +1036,7 @@ class Hands:
             return Outcome(False, f"not holding {knife}")
         seen = self.locate(name, point, where)
         if seen is None:
-            return Outcome(False, f"{name} is not where it was believed to be: not seen")
+            return Outcome(False, f"{name} is not where it was believed to be: not seen", missing=name)
         c = seen.centroid
         self.nav.approach(self.nav.work_pose(c, self.nav.toward_robot(c, where.place), "top", where.place))
         seen = self.eyes.measure(name, c) or seen
@@ -1073,7 +1073,7 @@ class Hands:
             return Outcome(False, f"{blocker} is not on a piece of furniture")
         b = self.locate(blocker, points[blocker], where)
         if b is None:
-            return Outcome(False, f"{blocker} is not where it was believed to be: not seen")
+            return Outcome(False, f"{blocker} is not where it was believed to be: not seen", missing=blocker)
         o = self.eyes.measure(target, points[target])
         o_c = o.centroid if o is not None else np.asarray(points[target], float)
         mark = self.body.mark()  # what the looks measured, carried across the drive by odometry

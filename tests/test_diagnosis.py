@@ -67,18 +67,32 @@ def test_a_cup_a_person_took_away_from_under_the_robot_s_eyes_is_a_world_change_
     assert r["success"] and r["goal_satisfied"], r["reason"]
 
 
-def test_a_wrong_prior_the_survey_could_not_see_past_is_a_perception_error_by_both_readings(tmp_path):
-    # the user says the cup is on the counter; it is in the closed cabinet, where no sweep sees it
+def wrong_prior(tmp_path):
+    """boil_water where the user says the cup is on the counter; it is in the closed cabinet, where
+    no sweep sees it."""
     text = (TREES / "variants" / "boil_water_cup_on_counter.yaml").read_text()
     text = text.replace('"inside(cup, cabinet)"', '"on(cup, counter)"').replace("place: on counter", "place: inside cabinet")
     text = text.replace("../../domains", str(TREES.parent / "domains"))
     path = tmp_path / "wrong_prior.yaml"
     path.write_text(text)
-    r = session(path, injection=False, **EXACT).episode(0)
+    return path
+
+
+def test_a_wrong_prior_the_survey_could_not_see_past_is_a_perception_error_by_both_readings(tmp_path):
+    r = session(wrong_prior(tmp_path), injection=False, **EXACT).episode(0)
     assert r["injected"] == [] and r["situations"], r["reason"]
     first = r["situations"][0]
     assert "cup" in first["predicate"], first
     assert (first["diagnosis"], first["diagnosis_truth"]) == ("perception_error", "perception_error"), first
+
+
+def test_a_skill_that_did_not_find_its_thing_where_belief_put_it_is_a_perception_error_by_both_readings(tmp_path):
+    # nothing checks before the grasp: the skill goes for the cup on the counter and finds nothing
+    # there. Before the skill named what it missed, this read as an execution failure
+    r = session(wrong_prior(tmp_path), injection=False, verify="none", max_replans=1, **EXACT).episode(0)
+    failed = [x for x in r["situations"] if x["kind"] == "execution"]
+    assert failed and failed[0]["missing"] == "cup" and failed[0]["action"].startswith("grasp(cup, counter"), r["situations"]
+    assert (failed[0]["diagnosis"], failed[0]["diagnosis_truth"]) == ("perception_error", "perception_error"), failed[0]
 
 
 @pytest.mark.parametrize("name", ["boil_water.yaml", "cut_lemon.yaml"])
@@ -139,6 +153,8 @@ def test_the_rule_reads_what_the_senses_showed_since_the_robot_last_acted():
     assert diagnosis(lost) == "execution_failure"
     assert diagnosis(Situation("effect", grasp, 1, Atom("holding", ("cup",)), True, False)) == "execution_failure"
     assert diagnosis(Situation("execution", grasp, 1)) == "execution_failure"
+    # the skill looked where belief put the cup and did not see it: belief, not the motion
+    assert diagnosis(Situation("execution", grasp, 1, missing="cup")) == "perception_error"
     sightings.saw((on,), True, "survey")
     assert diagnosis(Situation("unseen", grasp, 1, on, True, None)) == "perception_error"  # nothing seen to differ
 

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.outcome import Outcome
 from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
 from vap_bt.outcome import Outcome
@@ -28,6 +29,12 @@ def test_messages_round_trip():
                         SkillResult(True, "ok", {"n": np.int64(3), "v": np.arange(2.0)}), "arm")
     back = decode(encode(status), GoalStatus)
     assert back.result.data == {"n": 3, "v": [0.0, 1.0]} and back.state is GoalState.SUCCEEDED
+    # a skill that did not see its thing where belief put it says which, through the wire
+    missed = GoalStatus("g-1", GoalState.SUCCEEDED, None,
+                        SkillResult.of(Outcome(False, "cup is not where it was believed to be", missing="cup"), "grasp"))
+    assert decode(encode(missed), GoalStatus).result.missing == "cup"
+    assert SkillResult.of(Outcome(False, ""), "grasp(cup)") == SkillResult(False, "grasp(cup)")
+    assert SkillResult(False, "", {"missing": 3}).missing is None  # a skill's odd data names nothing
     req = GoalRequest("g-2", "grasp", ("cup", "table"), "c")
     assert decode(encode(req), GoalRequest) == req
     # the executive's hints ride with the goal: where belief puts each object, on or in what

@@ -5,6 +5,10 @@ an action hook all end the same way: done, or not and why. One type says it ever
 reason reads the same from the driver up to the skill's result (``message``), and the wire
 carries it as it is. ``completed`` is the doer's own view: a grasp that closed on nothing still
 *completed*; that it failed is for perception to find out.
+
+A motion that looked for the thing it was to act on where belief put it, and did not see it
+there, says which thing (``missing``): the failure is then news about belief, not about the
+motion, and the executive's diagnosis reads it so (:mod:`vap_bt.bt.diagnosis`).
 """
 
 from __future__ import annotations
@@ -18,3 +22,5 @@ class Outcome:
 
     completed: bool
     message: str = ""
+    #: the thing the motion did not see where belief put it (None: the failure was the motion's own)
+    missing: str | None = None

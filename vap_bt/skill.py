@@ -17,6 +17,7 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Any, ClassVar, Protocol
 
+from vap_bt.outcome import Outcome
 from vap_bt.world import GoalContext, World
 
 ENTRY_POINT_GROUP = "vap_bt.skills"
@@ -46,6 +47,19 @@ class SkillResult:
     success: bool
     message: str = ""
     data: dict[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def of(cls, outcome: Outcome, call: str) -> "SkillResult":
+        """The result of a motion or a world's action that ended as ``outcome`` (``call`` is the
+        message when it gives none); the thing it did not see, if it names one, in ``data``."""
+        return cls(outcome.completed, outcome.message or call, {"missing": outcome.missing} if outcome.missing else {})
+
+    @property
+    def missing(self) -> str | None:
+        """The thing the skill looked for where belief put it and did not see
+        (:attr:`~vap_bt.outcome.Outcome.missing`), when its data names one."""
+        name = self.data.get("missing") if isinstance(self.data, dict) else None
+        return name if isinstance(name, str) else None
 
 
 @dataclass(frozen=True)
@@ -130,7 +144,7 @@ class WorldActionSkill(Skill):
         ctx.feedback(0.0, f"{call} started")
         outcome = self.world.perform(self.action, tuple(args), ctx)
         ctx.feedback(1.0, f"{call} {'completed' if outcome.completed else 'failed'}")
-        return SkillResult(outcome.completed, outcome.message or call)
+        return SkillResult.of(outcome, call)
 
 
 def performed_by_world(action: str, world: Any, robot: str = "sim", resource: str = "arm") -> Skill:

@@ -7,7 +7,9 @@ change** (the world changed under the plan: a person moved a thing, shut a door)
 told which it was — the runner scores its diagnosis against the world's record afterwards
 (:mod:`vap_bt.sim.situation_truth`) — so the rule reads only what the executive itself observed:
 
-1. a skill that reports failure (kind ``execution``) → ``execution_failure``;
+1. a skill that reports failure (kind ``execution``) → ``execution_failure``, unless it says it
+   did not see the thing it was to act on where belief put it (``missing``): that is news about
+   belief, as rule 3 reads what the camera could not make out → ``perception_error``;
 2. a held thing lost after an action that was to keep it or make it held (the gripper felt it
    gone: :class:`~vap_bt.bt.feel_hand.FeelHand`) → ``execution_failure``;
 3. what the camera could not make out (kind ``unseen``) → ``perception_error``: nothing was
@@ -145,6 +147,9 @@ def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Dia
     """The diagnosis of situation ``s`` and its basis in words, by the rule of the module
     docstring, from ``sightings`` and belief (``graph``) as they were when ``s`` was raised."""
     roles = graph.roles
+    if s.kind == "execution" and s.missing:
+        return "perception_error", (f"the skill of {s.action} did not see {s.missing} where belief put it: "
+                                    "belief about where it is was wrong, not the motion")
     if s.kind == "execution":
         return "execution_failure", f"the skill of {s.action} reported failure"
     if s.kind == "action_failed":  # SuccessVQA's "no": the action's whole outcome, not one atom

@@ -59,7 +59,8 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         if ok:
             return Status.SUCCESS
         detail = result.message if result else state.value
-        self.board.situation = Situation("execution", self.action, self.step, detail=detail)
+        self.board.situation = Situation("execution", self.action, self.step, detail=detail,
+                                         missing=result.missing if result else None)
         self.ctx.progress(f"    situation: execution of {self.action} failed ({detail})")
         return Status.FAILURE
 

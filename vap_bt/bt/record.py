@@ -36,6 +36,8 @@ class Situation:
     expected: bool | None = None
     observed: bool | None = None
     detail: str = ""
+    #: the thing a failed skill looked for where belief put it and did not see (execution only)
+    missing: str | None = None
     #: what the executive makes of it, from its own records, and why (None: not diagnosed yet)
     diagnosis: Diagnosis | None = None
     diagnosis_basis: str = ""
@@ -44,7 +46,7 @@ class Situation:
         return {"kind": self.kind, "action": str(self.action) if self.action else None,
                 "predicate": str(self.atom) if self.atom else None,
                 "expected": self.expected, "observed": self.observed, "detail": self.detail,
-                "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
+                "missing": self.missing, "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
 
 
 @dataclass

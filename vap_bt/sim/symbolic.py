@@ -49,6 +49,7 @@ from __future__ import annotations
 import random
 
 from vap_bt.domain.atoms import Atom
+from vap_bt.domain.roles import HOUSEHOLD
 from vap_bt.domain.task import PlanningTask
 from vap_bt.robot.camera import Aim, Viewpoint
 from vap_bt.robot.frame import SELF, Detection, Frame, reference
@@ -147,7 +148,7 @@ class SymbolicWorld:
             truth |= {l.atom for l in ga.preconditions if l.positive and l.atom.predicate == "in_room"}
         if not ga.applicable(truth):
             self._new_view()
-            return Outcome(False, f"{ga}: nothing to act on")
+            return Outcome(False, f"{ga}: nothing to act on", missing=_missing(ga, truth))
         if starts:
             self.atoms = (self.atoms - {a for a in self.atoms if a.predicate == "robot_at"}) | starts
         intended = self._effects(ga, self.atoms, ctx)
@@ -496,3 +497,13 @@ def _site_map(task: PlanningTask) -> SiteMap:
                       and "furniture" in k.parents)
     return SiteMap(rooms=tuple(RoomInfo(r, floor_of(r)) for r in rooms), doors=tuple(doors), furniture=furniture,
                    facts=frozenset(a for a in task.init if k.is_rigid(a.predicate)))
+
+
+def _missing(ga, truth: set[Atom]) -> str | None:
+    """The thing a motion would not find where the action has it: the first whose place, a
+    precondition on or in something, is not so in ``truth`` (None: another precondition failed,
+    and the motion found its thing). The household's support predicates, as the world speaks them."""
+    for lit in ga.preconditions:
+        if lit.positive and lit.atom.predicate in HOUSEHOLD.support and lit.atom not in truth:
+            return lit.atom.args[0]
+    return None
