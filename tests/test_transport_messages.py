@@ -10,7 +10,6 @@ import numpy as np
 import pytest
 
 from vap_bt.domain.atoms import Atom
-from vap_bt.outcome import Outcome
 from vap_bt.skill import Feedback, GoalState, Hint, SkillResult
 from vap_bt.transport.config import TransportSettings, build_config, settings_from_args
 from vap_bt.outcome import Outcome
