@@ -259,7 +259,9 @@ def test_push_clears_the_blocker(worlds, sensors):
     assert not holds(w, "blocking(bowl, plate)") and holds(w, "reachable(plate)", "on(bowl, dining_table)")
 
 
-@skills_fail("cut(lemon, knife) completes without slicing the lemon")
+@skills_fail("the knife in the hand from the start is never measured: after find(lemon) the wrist camera "
+             "shows 12 % of it, behind the fingers, and the detector misses it (so from the carry pose and "
+             "home): the cut aborts 'not holding knife'")
 def test_cut_splits_the_object(worlds, cut_task):
     w = worlds(cut_task)
     run(w, "find(floor_kitchen, lemon, kitchen)", "cut(lemon, knife)")
