@@ -114,6 +114,24 @@ def pytest_collection_modifyitems(config, items):
     items.sort(key=lambda item: (-seconds[file_of(item)], first[file_of(item)]))
 
 
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    """A test marked to fail (``xfail``) with ``fails_saying(text)`` fails as expected only when
+    its failure's message holds ``text`` (:func:`skill_runs.skills_fail`); failing otherwise, it
+    fails the run, naming what it said instead."""
+    outcome = yield
+    rep = outcome.get_result()
+    says = item.get_closest_marker("fails_saying")
+    if says is None or call.when != "call" or not hasattr(rep, "wasxfail") or call.excinfo is None:
+        return
+    message = str(call.excinfo.value)
+    if says.args[0] not in message:
+        del rep.wasxfail
+        rep.outcome = "failed"
+        rep.longrepr = (f"failed, but not as its marker says: expected a failure saying {says.args[0]!r}, "
+                        f"got {call.excinfo.typename}: {message}")
+
+
 @pytest.fixture
 def worlds():
     """Builds pybullet worlds for one test (:func:`skill_runs.pybullet`'s arguments) and closes them

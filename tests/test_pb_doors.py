@@ -32,16 +32,20 @@ def test_an_oven_opened_with_the_pie_in_hand_is_pulled_again_until_its_door_lies
     assert holds(w, "inside(apple_pie, oven)")
 
 
-# turning every waypoint near a wrist's limit by a whole turn lets these close, but sweeps the wrist
-# round mid-path elsewhere (boil_water seed 0's cup then not found in the cabinet): not done
-NOT_CLOSED = skills_fail("close is refused: the timed path through the handle's waypoints leaves a wrist's joint limits")
+# turning every waypoint near a wrist's limit by a whole turn let the fridge and the cabinet close, but
+# swept the wrist round mid-path elsewhere (boil_water seed 0's cup then not found in the cabinet): not
+# done. The cabinet's close now stops before that, its handle out of reach from where the open left it
+NOT_CLOSED = skills_fail("close is refused: the timed path through the handle's waypoints leaves a wrist's joint limits",
+                         "refused: a sample leaves the joint limits")
 ARTICULATED = [  # (task scene, the thing, where the robot stands first)
-    pytest.param("boil_water", "cabinet", "find(floor_kitchen, cabinet, kitchen)", marks=NOT_CLOSED, id="cabinet"),
+    pytest.param("boil_water", "cabinet", "find(floor_kitchen, cabinet, kitchen)", id="cabinet",
+                 marks=skills_fail("close(cabinet): from where open(cabinet) left the robot, its handle is out of reach",
+                                   "cabinet: handle out of reach")),
     pytest.param("boil_water", "microwave", "find(floor_kitchen, microwave, kitchen)", id="microwave"),
     pytest.param("heat_pie", "fridge", "find(floor_kitchen, fridge, kitchen)", marks=NOT_CLOSED, id="fridge"),
     pytest.param("heat_pie", "oven", "find(floor_kitchen, oven, kitchen)", id="oven",
                  marks=skills_fail("close(oven): from the stance by the dropped door no pre-pose over "
-                                   "its handle has a clear way (handle out of reach)")),
+                                   "its handle has a clear way (handle out of reach)", "oven: handle out of reach")),
     pytest.param("halve_egg", "drawer", "find(floor_kitchen, drawer, kitchen)", id="drawer"),
     pytest.param("gather_kindling", "door_lg", "find(floor_living_room, table, living_room)", id="door_lg"),
 ]
