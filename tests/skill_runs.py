@@ -118,7 +118,7 @@ def holds(w, *atoms):
 
 def truths(w, *atoms) -> str:
     """What the world's truth says of each atom, for an assertion's message: ``sliced(egg)=False ...``."""
-    return " ".join(f"{a}={w.oracle.holds(A(a))}" for a in atoms)
+    return " ".join(f"{a}={holds(w, a)}" for a in atoms)
 
 
 def settle(w, seconds: float = 1.0) -> None:

@@ -23,7 +23,7 @@ from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.protocol import Protocol
 from vap_bt.perception.vlm import VLM, Answer, Query
 from vap_bt.robot.camera import VIEW_DIRECTIONS
-from vap_bt.robot.frame import Frame
+from vap_bt.robot.frame import Frame, at_edge
 from vap_bt.scene.identity import named_relations
 
 
@@ -135,7 +135,7 @@ def shown_plainly(frame: Frame, atom: Atom, undetectable: frozenset[str], least_
             continue
         if share < least_share:
             return False
-        if mask[0].any() or mask[-1].any() or mask[:, 0].any() or mask[:, -1].any():
+        if at_edge(mask):
             return False
     return True
 

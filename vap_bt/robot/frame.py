@@ -110,6 +110,12 @@ class Frame:
         return self.masks == d.mask_id
 
 
+def at_edge(mask: np.ndarray) -> bool:
+    """Whether a detection's mask reaches the image's border: the frame cut the thing off, and
+    shows part of it."""
+    return bool(mask[0].any() or mask[-1].any() or mask[:, 0].any() or mask[:, -1].any())
+
+
 def marked_frame(frame_id: str, identified: dict[str, int]) -> Frame:
     """A frame known by its id only — its pixels stay with the world that took it — with the
     executive's association of names to its detections: what a world-side VLM is handed when a
