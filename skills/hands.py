@@ -409,10 +409,11 @@ class Hands:
         holding = self.body.fingers(0.0, GRASP_FORCE)
         if holding:
             # the item as the look that showed most of it measured it (it has not moved since: a
-            # look from close by may see it cut by the frame's edge, or half hidden), and reaching
-            # down to what it stands on: a camera above a flat thing (a knife on the floor) sees
-            # its top face only, and a held box that thin or that short hides nothing it covers
-            most, mark = max(looks, key=lambda sm: float(np.prod(np.linalg.norm(sm[0].corners()[[4, 2]] - sm[0].corners()[0], axis=1))))
+            # look from close by may see it cut by the frame's edge, one from afar with a box its
+            # mask's rim widens: Seen.shown), and reaching down to what it stands on: a camera
+            # above a flat thing (a knife on the floor) sees its top face only, and a held box
+            # that thin or that short hides nothing it covers
+            most, mark = max(looks, key=lambda sm: sm[0].shown())
             whole = replace(most, lo=np.array([*most.lo[:2], min(most.bottom, self.bottom(most, where))]))
             self.eyes.held = Held.taken(whole, self.body.pose("tcp"), moved=self.body.since(mark))
             self.scene.taken(name, whole.lo, whole.hi)

@@ -30,7 +30,7 @@ from skills.registration import Correction, RegistrationParams, corrected_articu
 from vap_bt.motion import se3
 from vap_bt.motion.collision import SceneBoxes
 from vap_bt.motion.footprint import Obb, apart, footprint
-from vap_bt.robot.frame import Frame
+from vap_bt.robot.frame import Frame, at_edge
 from vap_bt.robot.labels import label_of
 from vap_bt.robot.site_map import Articulation, FurnitureInfo, SiteMap
 from vap_bt.scene.pointcloud import backproject, instance_cloud
@@ -151,6 +151,17 @@ class Seen:
     def extent(self) -> np.ndarray:
         """The box's size along x, y, z (m)."""
         return self.hi - self.lo
+
+    def shown(self) -> tuple[bool, int]:
+        """How much of the item this look showed, to choose among looks at an item that has not
+        moved: first whether its mask is whole (clear of the image's edges: one the edge cuts is a
+        part of it), then its pixels (a near look's box is the item's; a far look's few pixels
+        make a box its mask's rim errors widen by a large share: a knife 2.2 cm wide measured 6
+        cm from 58 pixels at 1.5 m, 2.6 cm from 519 at 0.7 m)."""
+        mask = self.frame.mask(self.name)
+        if mask is None:
+            return False, 0
+        return not at_edge(mask), int(np.count_nonzero(mask))
 
     def corners(self) -> np.ndarray:
         """The eight corners of its box, turned to its longer side when the look measured that."""

@@ -509,3 +509,34 @@ def test_a_masks_rim_bled_onto_the_background_is_left_out_of_the_items_box():
     seen = seen_from(frame, "cup")
     assert np.all(seen.lo > (-0.045, -0.045, 0.84)) and np.all(seen.hi < (0.045, 0.045, 0.96))
     assert np.linalg.norm(((seen.lo + seen.hi) / 2)[:2]) < 0.01
+
+
+def _knife_look(eye, bleed_px: int, shift=(0.0, 0.0)):
+    """A look at a knife lying flat (22 x 2.2 cm, along x, its top 1 cm up) from ``eye``, its
+    mask's rim dilated ``bleed_px`` pixels onto the table round it."""
+    import cv2
+    from test_scene_geometry import frame_of, look_at
+    from vap_bt.robot.frame import Detection
+
+    pose = look_at(eye, (shift[0], shift[1], 0.0))
+    table_t, _ = _plane_depth(pose, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
+    top_t, top_p = _plane_depth(pose, (0.0, 0.0, 0.01), (0.0, 0.0, 1.0))
+    blade = (np.abs(top_p[..., 0]) < 0.11) & (np.abs(top_p[..., 1]) < 0.011)
+    mask = blade.astype(np.uint8)
+    if bleed_px:
+        mask = cv2.dilate(mask, np.ones((2 * bleed_px + 1,) * 2, np.uint8))
+    return seen_from(frame_of(np.where(blade, top_t, table_t), np.where(mask > 0, 0, -1), pose,
+                              Detection("knife", mask_id=0, name="knife")), "knife")
+
+
+def test_the_look_that_showed_most_of_an_item_is_a_whole_one_with_the_most_pixels():
+    # halve_egg seed 0: of the takeout's two looks at the knife in the drawer, the far one (58
+    # pixels at 1.5 m) measured it 6 cm wide, the near one (519 at 0.7 m) 2.6 cm; the held box
+    # was the wider, and the cut stroke went down 4 cm beside the egg
+    far, near = _knife_look((-0.3, -1.2, 0.9), 3), _knife_look((0.0, -0.35, 0.45), 1)
+    assert far.extent[1] > 0.04 > near.extent[1]  # the far look's rim widens it most
+    assert far.shown()[0] and near.shown()[0] and max([far, near], key=Seen.shown) is near
+    # a look so near that the image's edge cuts the knife showed part of it, however many pixels
+    cut = _knife_look((0.08, -0.08, 0.2), 0, shift=(0.12, 0.0))
+    assert not cut.shown()[0] and cut.shown()[1] > near.shown()[1]
+    assert cut.extent[0] < 0.2 and max([cut, near], key=Seen.shown) is near
