@@ -63,6 +63,8 @@ CAVITY_CLEAR = 0.15  # a spot in a cavity this far from what lies in it already 
 NEAR_SPOT = 0.2  # a free spot is sought this far in from a surface's front first (less reach over it)
 PLACE_CLEARANCE = 0.015  # a placed item's bottom is let go this high above its support
 PRE_PLACE = 0.16  # pre-place distance along the approach axis
+#: m higher over a cavity's floor a place tries, in turn, when the arm finds no way to the first
+PLACE_HIGHER = (0.01, 0.02)
 #: rad the hand leans into a front-open cavity when an item held from above cannot go in upright:
 #: the wrist rides above the hand and would strike the face above the opening (an oven's 0.3 m);
 #: leaned, the wrist stays out in front and the item is let go tilted, to settle on the floor
@@ -868,12 +870,28 @@ class Hands:
             # seen from the work pose, from above: what lies in the cavity already
             here = self.body.base_pose()
             spot = self.spot_in_cavity(where, name, spot, lambda at: self.nav.reaches(here, reach(here, at), routed=True))
-        G, _, corners = targets(self.body.base_pose())
-        if cav is not None and cav.open == "front" and not self.straight_in(G, a, where, corners):
-            G, corners = next(((g, c) for lean in FRONT_LEANS for g, _, c in [targets(self.body.base_pose(), lean=lean)]
-                               if self.straight_in(g, a, where, c)), (G, corners))
+        def posed(at=None) -> tuple[np.ndarray, np.ndarray]:
+            """The place pose and the item's corners there from where the base stands, the item
+            over ``at`` (default: the spot), leaned into a front-open cavity it would not go
+            straight into."""
+            G, _, corners = targets(self.body.base_pose(), at)
+            if front_open and not self.straight_in(G, a, where, corners):
+                G, corners = next(((g, c) for lean in FRONT_LEANS for g, _, c in [targets(self.body.base_pose(), at, lean)]
+                                   if self.straight_in(g, a, where, c)), (G, corners))
+            return G, corners
+
+        G, corners = posed()
         self.progress(0.2, "pre-place")
         reached = self.reach_pre(G, a, where if inside else None, PRE_PLACE, list(corners))
+        for up in PLACE_HIGHER if inside else ():
+            if reached is not None:
+                break
+            # a little higher over the cavity's floor: whether the arm finds a way turns on
+            # centimetres (heat_pie seed 4: with the pie's box measured right, the pose over the
+            # oven's floor had none, one a centimetre lower or higher had), and the item falls a
+            # little further
+            G, corners = posed(spot + np.array([0.0, 0.0, up]))
+            reached = self.reach_pre(G, a, where, PRE_PLACE, list(corners))
         for other in ([] if inside or front_open else others):
             if reached is not None:
                 break
