@@ -104,6 +104,21 @@ def test_grasp_fails_object_unchanged(tmp_path, action):
     w.close()
 
 
+def test_a_drawn_failure_the_action_never_reached_is_not_in_the_worlds_record(tmp_path):
+    # a grasp whose skill does not find the item where belief put it (it lies elsewhere) closes no
+    # fingers; its drawn row was recorded all the same, and the runner scored the executive's
+    # reading of the situation (belief was wrong: a perception error) against a grasp failure
+    # that never happened
+    w = house(tmp_path, forced("grasp", "grasp_fails_object_unchanged"))
+    d = w.drivers
+    w.begin_action("grasp", ("cup", "counter", "kitchen"))
+    assert w.injection.active.spec.kind == "grasp_fails_object_unchanged"  # drawn ...
+    assert not d.gripper.move(CLOSED, 40, never).holding  # ... the fingers close in the air
+    w.end_action()
+    assert "grasp_fails_object_unchanged" not in kinds(w) and holds(w, "on(cup, counter)")
+    w.close()
+
+
 @pytest.mark.parametrize("action", ["grasp", "takeout"])
 def test_grasp_fails_object_drops_nearby(tmp_path, action):
     w = house(tmp_path, forced(action, "grasp_fails_object_drops_nearby"))
@@ -371,17 +386,18 @@ def test_one_draw_per_announced_action_and_late_ends_are_ignored(tmp_path):
     draws = []
     for i in range(6):
         w.begin_action("grasp", ("cup", "counter", "kitchen"))
-        draws.append(len(w.injected()))
+        draws.append(w.injection.active.spec is not None)
         w.end_action("placeon", ("cup", "counter", "kitchen"))  # not the open action: ignored
         assert w.injection.active is not None
         w.end_action()
     assert w.injection.active is None
     w.begin_action("navigate", ("kitchen", "hall", "door"))  # not in the table: no draw
+    assert w.injection.active.spec is None
     w.end_action()
     reference = SituationModel(table=model.table, seed=w.seed)  # a world reseeds its model
-    expected = np.cumsum([reference.draw("grasp") is not None for _ in range(6)]).tolist()
-    assert draws == expected and 0 < expected[-1] < 6
-    assert [s.step for s in w.injected()] == [i for i in range(6) if (expected[i] - (expected[i - 1] if i else 0))]
+    expected = [reference.draw("grasp") is not None for _ in range(6)]
+    assert draws == expected and 0 < sum(expected) < 6
+    assert w.injected() == []  # no fingers closed on the cup: no drawn row happened
     w.close()
 
 

@@ -3,11 +3,17 @@
 Skills plan and move the robot through the drivers (:mod:`pb_drivers`); the world does not know
 how. What it is told — a sim-only hook, never part of a real robot — is which action a goal is:
 :meth:`Injection.begin` when the goal starts, :meth:`Injection.end` when it ends. ``begin`` draws
-from :class:`~vap_bt.sim.situations.SituationModel` exactly once per action and arms the drawn row; it is
-recorded (:class:`InjectedSituation`, the oracle's ``injected()``) with what it affects — a row
-that drops a held item when the item falls (the item: a drop drawn while the hand holds nothing
-never happens and is not recorded), any other row when drawn (the action's first argument). From then on the situation happens in the
-hardware, never by rewriting the truth:
+from :class:`~vap_bt.sim.situations.SituationModel` exactly once per action and arms the drawn row. A
+row is recorded (:class:`InjectedSituation`, the oracle's ``injected()``) when it happens, with what
+it affects: a row that drops a held item when the item falls (the item: a drop drawn while the
+hand holds nothing never happens and is not recorded), any other row the first time it acts (the
+action's first argument) — the fingers refuse a grip they closed on, the gripper stays shut on
+what it holds, a hand slips off a handle it took, a rule withholds an effect the physics made. A
+row drawn for an action that never got that far (a grasp whose skill found nothing to close on:
+belief had the item somewhere it was not) changed nothing and is not in the record, as the
+symbolic world records none (:mod:`vap_bt.sim.symbolic`): the world's record says what happened,
+and the runner scores the executive's diagnosis against it. From then on the situation happens
+in the hardware, never by rewriting the truth:
 
 ===============================================  ================================================
 Table II row                                     what happens, and when
@@ -94,6 +100,7 @@ class _Active:
     spec: SituationSpec | None
     step: int = 0
     drop: _Drop | None = None
+    happened: bool = False  # the drawn row (not a drop) has acted, and is in the record
     slip_from: tuple[Thing, float] | None = None  # the handle's thing and joint value at the grip
     paths: int = 0  # base paths started during the action
 
@@ -122,10 +129,8 @@ class Injection:
     # ------------------------------------------------------------ the action
 
     def begin(self, action: str, args: tuple[str, ...], step: int) -> None:
-        """Draw for ``action`` (once), record it, and arm it."""
+        """Draw for ``action`` (once) and arm the drawn row (recorded when it happens)."""
         spec = self.situations.draw(action) if action in {s.action for s in self.situations.table} else None
-        if spec is not None and spec.drops is None:  # a drop is recorded when, and if, it happens
-            self.log.append(InjectedSituation(action, tuple(args), spec.kind, step, tuple(args[:1])))
         self.active = a = _Active(action, tuple(args), spec, step)
         if spec is not None and spec.drops is not None:
             if action in ("grasp", "takeout"):
@@ -145,20 +150,32 @@ class Injection:
     # ------------------------------------------------------------ what drivers and rules ask
 
     def effect(self, action: str) -> bool:
+        """Whether an effect of ``action`` the physics just made registers (a rule asks when a press,
+        a fill or a cut would): not when the running action's drawn row withholds it."""
         a = self.active
-        return not (a is not None and a.spec is not None and a.action == action and not a.spec.effect)
+        withheld = a is not None and a.spec is not None and a.action == action and not a.spec.effect
+        return not self._happens(withheld)
 
     def _armed(self, *kinds: str) -> bool:
         a = self.active
         return a is not None and a.spec is not None and a.spec.kind in kinds
 
+    def _happens(self, acts: bool) -> bool:
+        """The running action's drawn row acts now (``acts``): recorded, the first time — a row that
+        drops the item is recorded when it falls (:meth:`_let_go`). Returns ``acts``."""
+        a = self.active
+        if acts and not a.happened and a.spec.drops is None:
+            a.happened = True
+            self.log.append(InjectedSituation(a.action, a.args, a.spec.kind, a.step, a.args[:1]))
+        return acts
+
     def refuses_grip(self) -> bool:
-        """The closing fingers get no grip on an item (grasp fails, object unchanged)."""
-        return self._armed("grasp_fails_object_unchanged")
+        """The fingers closing on an item get no grip on it (grasp fails, object unchanged)."""
+        return self._happens(self._armed("grasp_fails_object_unchanged"))
 
     def gripper_stuck(self) -> bool:
         """The gripper does not open on the item it holds (place fails, object in hand)."""
-        return self._armed("place_fails_object_in_hand") and self._held_item() is not None
+        return self._happens(self._armed("place_fails_object_in_hand") and self._held_item() is not None)
 
     def on_grip(self, grip: Grip, thing: Thing) -> None:
         """A grip formed: remember where, for a drop after the lift or a slip off the handle."""
@@ -200,6 +217,7 @@ class Injection:
             h = thing.hinge
             q = pb.getJointState(h.body, h.joint, physicsClientId=self.cid)[0]
             if abs(q - q0) >= SLIP_TRAVEL * abs(h.full):
+                self._happens(True)
                 self.slip(self.robot.grip)  # slip_from stays: a new grip in this action slips at once
         d = a.drop
         if d is None or self._held_item() is None:
