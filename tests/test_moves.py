@@ -95,3 +95,24 @@ def test_a_room_alone_is_no_place_to_go_back_to():
     graph.objects["cup"] = SceneObject("cup", "cup", "perceived", centroid=SPOT)
     assert not Executive._taken_back(ex, graph, "cup", set())
     assert graph.location("cup") == {IN_ROOM, ON_COUNTER}
+
+
+def test_a_place_the_skill_did_not_see_the_item_at_is_doubted_and_its_spot_is_a_miss():
+    """heat_pie seed 29 in pybullet (Table II injection, both, at 5d15cea): the pie lost on the way
+    out of the fridge lay on the floor where a sighting put it; two checks there could not settle,
+    and each search then took it back into the fridge, where three take-outs' own looks did not see
+    it: stuck. boil_water seed 23: a phantom cup in the empty cabinet was taken by every search,
+    and three take-outs found it not there. A skill that looked where belief put the item and did
+    not see it is a check that missed it there."""
+    graph = SceneGraph.of_facts({IN_ROOM, IN_MICROWAVE}, roles=HOUSEHOLD)
+    graph.objects["cup"] = SceneObject("cup", "cup", "perceived", centroid=SPOT,
+                                       located=frozenset({IN_ROOM, IN_MICROWAVE}))
+    ex = SimpleNamespace(moves=SightingMoves(), misses=Misses(), _portable=lambda name: True, roles=HOUSEHOLD)
+    failed = Situation("execution", None, 3, detail="cup is not where it was believed to be: not seen")
+    Executive._note_miss(ex, graph, failed)  # a failure that names nothing missing notes nothing
+    assert not ex.moves.doubted and not ex.misses.at("cup", SPOT)
+    Executive._note_miss(ex, graph, Situation("execution", None, 3, missing="cup"))
+    assert ex.moves.doubted == {IN_MICROWAVE}  # the room is no place: only what it was in
+    assert ex.misses.at("cup", SPOT)  # a sighting there again is not taken as finding it
+    ex.moves.note("cup", {IN_ROOM, IN_MICROWAVE}, {IN_ROOM, ON_COUNTER})
+    assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) is None
