@@ -28,7 +28,11 @@ while a table seen only at its front edge would have it low; the furniture model
 footprint too, and sweeps the floor in front of the piece, so the hull alone would put a cup that
 fell in front of an open microwave inside it: a thing lying on the floor outside a piece's
 footprint is never inside that piece (a drawer's tray, beyond the footprint, is far above the
-floor; a basket's cavity, at floor level, is within its own footprint).
+floor; a basket's cavity, at floor level, is within its own footprint). Nor is a thing whose
+centroid lies below the floor of the piece's hollow, where the map gives one: a pie that fell at
+the fridge's foot, a centimetre out of its front face, is within the footprint's margin, but the
+fridge's hollow begins 0.78 m up (heat_pie seed 27 in pybullet: read inside the fridge, it was
+looked for there by three take-outs while it lay on the floor).
 
 An item gets at most one support: of the ``on``/``inside`` candidates that hold, an ``inside``
 wins over an ``on`` (an item in a basket on the floor also rests near the floor; the container is
@@ -116,6 +120,8 @@ class Extent:
     front: tuple[float, float] | None = None  # unit vector in x/y; None: no front (floors)
     #: the map footprint's x/y bounds (xmin, ymin, xmax, ymax), for mapped furniture
     footprint: tuple[float, float, float, float] | None = None
+    #: the heights (z0, z1) of its hollow, for a mapped container whose map gives its cavity
+    hollow: tuple[float, float] | None = None
 
     @property
     def top(self) -> float:
@@ -162,7 +168,8 @@ def object_extent(obj: Located, site_map: SiteMap) -> Extent:
         footprint = (*map(float, corners.min(axis=0)), *map(float, corners.max(axis=0)))
     if piece.height is not None:
         hi[2] = piece.height  # the model's top, not a mask's (see the module docstring)
-    return Extent(obj.name, lo, hi, piece.front, footprint)
+    hollow = tuple(map(float, piece.cavity.z)) if piece.cavity is not None else None
+    return Extent(obj.name, lo, hi, piece.front, footprint, hollow)
 
 
 def floor_extent(room: RoomInfo) -> Extent | None:
@@ -188,6 +195,8 @@ def lies_inside(obj: Located, container: Extent, th: Thresholds = THRESHOLDS) ->
     centroid must stay below the container's top)."""
     lo, hi = np.asarray(obj.box[:3], float), np.asarray(obj.box[3:], float)
     m = th.inside_margin
+    if container.hollow is not None and obj.centroid[2] < container.hollow[0] - m:
+        return False  # below the hollow's floor: at the piece's foot or under it, not in it
     if container.footprint is not None and lo[2] <= th.on_above:  # lying on the floor ...
         fx0, fy0, fx1, fy1 = container.footprint
         cx, cy = obj.centroid[0], obj.centroid[1]
