@@ -677,6 +677,13 @@ class SceneModel:
         return [leaf.box(self.joint.get(name, 0.0)).polygon() for name, leaf in self.leaves.items()
                 if self.site.door(name) is not None]
 
+    def tall_leaf_polygons(self, above: float) -> list[np.ndarray]:
+        """Every leaf that stands higher than ``above`` (m) where it was last seen, from above: a
+        room door's, and a piece's door as tall (a fridge's, a cabinet's: struck, it swings shut),
+        not an oven's let down nor a drawer, which an arm reaches over."""
+        boxes = [leaf.box(self.joint.get(name, 0.0)) for name, leaf in self.leaves.items()]
+        return [b.polygon() for b in boxes if float(b.corners()[:, 2].max()) > above]
+
     def obstacles(self, moving: str | None = None) -> list[np.ndarray]:
         """What the base must keep off, seen from above: walls, furniture, door leaves as they
         stand (except ``moving``'s, which the planner places itself)."""

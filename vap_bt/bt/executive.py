@@ -88,7 +88,7 @@ from vap_bt.perception.viewpoints import ViewpointStrategy
 from vap_bt.perception.state_survey import StateAnswer, survey_states
 from vap_bt.perception.verification import VoteSettings
 from vap_bt.perception.vlm import VLM
-from vap_bt.robot.camera import Aim, Body, Camera
+from vap_bt.robot.camera import Body, Camera
 from vap_bt.scene import belief
 from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import SceneGraph
