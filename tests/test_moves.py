@@ -19,6 +19,9 @@ from vap_bt.domain.roles import HOUSEHOLD
 from vap_bt.scene.graph import SceneGraph, SceneObject
 from vap_bt.scene.misses import Misses
 from vap_bt.scene.moves import SightingMoves
+from vap_bt.taskfile import load
+
+from conftest import TREES
 
 IN_ROOM = Atom("in_room", ("cup", "kitchen"))
 IN_MICROWAVE = Atom("inside", ("cup", "microwave"))
@@ -116,3 +119,37 @@ def test_a_place_the_skill_did_not_see_the_item_at_is_doubted_and_its_spot_is_a_
     assert ex.misses.at("cup", SPOT)  # a sighting there again is not taken as finding it
     ex.moves.note("cup", {IN_ROOM, IN_MICROWAVE}, {IN_ROOM, ON_COUNTER})
     assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) is None
+
+
+def let_go_in_the_oven(action: str = "placein", args=("apple_pie", "oven", "kitchen")):
+    """heat_pie seed 29 in pybullet (Table II injection, both, at 02d7dce): the pie set into the
+    oven, a look that judged it not inside, the gripper empty; an executive with just what
+    :meth:`Executive._feel_hand`, :meth:`Executive._let_go` and :meth:`Executive._taken_back` read."""
+    knowledge = load(TREES / "heat_pie.yaml").planning.knowledge
+    ground = knowledge.ground(action, args)
+    graph = SceneGraph.of_facts({Atom("holding", ("apple_pie",))}, roles=HOUSEHOLD)  # the placing undone
+    ex = SimpleNamespace(moves=SightingMoves(), misses=Misses(), roles=HOUSEHOLD, progress=lambda line: None,
+                         body=SimpleNamespace(state=lambda: SimpleNamespace(gripper_holding=False)),
+                         sightings=SimpleNamespace(saw=lambda *a: None), _placed_anew=lambda name, held=(): False)
+    ex._let_go = lambda g, s, name: Executive._let_go(ex, g, s, name)
+    denied = Situation("effect", ground, 4, Atom("inside", ("apple_pie", "oven")), True, False)
+    assert Executive._feel_hand(ex, graph, denied) == ["apple_pie"]
+    assert graph.location("apple_pie") == set()  # placed nowhere: the plan had no pie to take
+    return graph, ex
+
+
+def test_an_item_the_hand_let_go_where_a_check_denied_it_is_believed_there_when_found_nowhere_else():
+    graph, ex = let_go_in_the_oven()
+    assert Executive._taken_back(ex, graph, "apple_pie", set())
+    assert graph.location("apple_pie") == {Atom("inside", ("apple_pie", "oven")), Atom("in_room", ("apple_pie", "kitchen"))}
+    graph.correct(Atom("inside", ("apple_pie", "oven")), False)  # denied again there: the record is used up
+    assert not Executive._taken_back(ex, graph, "apple_pie", set())
+
+
+def test_an_item_the_search_found_or_a_hand_that_put_nothing_down_takes_nothing_back():
+    graph, ex = let_go_in_the_oven()
+    ex._placed_anew = lambda name, held=(): True  # the search saw it somewhere: taken where it was seen
+    assert not Executive._taken_back(ex, graph, "apple_pie", set()) and graph.location("apple_pie") == set()
+    graph, ex = let_go_in_the_oven("grasp", ("apple_pie", "floor_kitchen", "kitchen"))
+    assert not ex.moves.moves  # a grasp puts the pie nowhere: nothing to go back to
+    assert not Executive._taken_back(ex, graph, "apple_pie", set())

@@ -776,11 +776,23 @@ class Executive:
         held = sorted(a for a in graph.facts if self.roles.is_held(a))
         for a in held:
             graph.correct(a, False, cause="gripper")
+            self._let_go(graph, s, a.args[0])
         self.sightings.saw(held, False, "gripper")
         empty = self.roles.hand_empty
         if empty is not None and Atom(empty) not in graph.facts:
             graph.correct(Atom(empty), True, cause="gripper")
         return [a.args[0] for a in held]
+
+    def _let_go(self, graph: SceneGraph, s: Situation, name: str) -> None:
+        """The hand let ``name`` go in ``s``'s action, which was to put it somewhere (a placing
+        whose effect a check denied): where it was to go is the place to go back to if the search
+        finds it nowhere (:mod:`vap_bt.scene.moves`). heat_pie seed 29 in pybullet: the pie set
+        into the oven, a look judged it not inside, the sweeps do not see into the oven, and the
+        episode ended with no plan for a pie placed nowhere."""
+        put = {a for a in (s.action.may_add if s.action is not None else ())
+               if a.predicate in self.roles.location and a.args[0] == name and not self.roles.is_held(a)}
+        if any(map(self.roles.supports, put)):
+            self.moves.note(name, put, graph.location(name))
 
     @staticmethod
     def _held_after_all(graph: SceneGraph, s: Situation) -> None:
@@ -914,15 +926,19 @@ class Executive:
         """A check found lost ``o`` missing where belief puts it, and the search found it nowhere
         else: where belief had it before the sighting that put it there, if nothing moved it since
         (:mod:`vap_bt.scene.moves`). Keeping it at the place the check failed at would make the
-        same plan, and the same check fail, again."""
+        same plan, and the same check fail, again. Or belief places ``o`` nowhere since the hand
+        let it go in a placing a check denied, and the search found it nowhere: where it was put."""
         node = graph.objects.get(o)
-        if o in in_hand or self._placed_anew(o, in_hand) or node is None or not self.misses.at(o, node.centroid):
+        if o in in_hand or self._placed_anew(o, in_hand):
             return False
+        placed = any(self.roles.supports(a) for a in graph.location(o))
+        if placed and (node is None or not self.misses.at(o, node.centroid)):
+            return False  # belief places it, and no check found it missing there
         place = self.moves.taken_back(o, graph.location(o))
         if place is None:
             return False
-        self.progress(f"    {o} not found: believed where it was before a sighting moved it "
-                      f"({', '.join(sorted(map(str, place)))})")
+        self.progress(f"    {o} not found: believed where it was before "
+                      f"{'a sighting moved it' if placed else 'the hand let it go'} ({', '.join(sorted(map(str, place)))})")
         graph.relocate(o, set(place))
         return True
 

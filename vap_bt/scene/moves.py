@@ -15,6 +15,12 @@ only the sighting's own place is taken back. Nor is a place taken back that a ch
 failed to find the item at (boil_water seed 8: the cup, believed in the microwave after a placing
 that dropped it, could not be seen inside three times; the sighting that put it on the floor was
 right, and going back to the microwave would have been the older error).
+
+A placing whose effect a check denied moves the item the same way: belief takes the placing back,
+the gripper is empty, and the item is placed nowhere. Where the hand let it go is then the place
+to go back to if the search finds it nowhere (heat_pie seed 29 in pybullet: the pie set into the
+oven, a look judged it not inside, the sweeps do not see into an oven, and with the pie placed
+nowhere the planner found no plan). Believed there, it is tested again by the next check.
 """
 
 from __future__ import annotations
@@ -34,8 +40,8 @@ class SightingMoves:
     doubted: set[Atom] = field(default_factory=set)
 
     def note(self, name: str, before: set[Atom], after: set[Atom]) -> None:
-        """A sighting moved ``name`` from ``before`` to ``after`` (what belief held; ``before``
-        empty: it had no place, and there is nothing to go back to)."""
+        """A sighting (or a denied placing) moved ``name`` from ``before`` to ``after`` (what
+        belief held; ``before`` empty: it had no place, and there is nothing to go back to)."""
         if before and before != after:
             self.moves[name] = (frozenset(before), frozenset(after))
 
