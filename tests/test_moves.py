@@ -153,3 +153,26 @@ def test_an_item_the_search_found_or_a_hand_that_put_nothing_down_takes_nothing_
     graph, ex = let_go_in_the_oven("grasp", ("apple_pie", "floor_kitchen", "kitchen"))
     assert not ex.moves.moves  # a grasp puts the pie nowhere: nothing to go back to
     assert not Executive._taken_back(ex, graph, "apple_pie", set())
+
+
+def test_a_place_only_unsure_is_taken_back_once_a_skill_missed_the_item_where_the_sighting_put_it():
+    """heat_pie seed 20 in pybullet (Table II injection, both, at 95df172): the pie stood in the
+    fridge, which three checks could not see into; a sighting put it on the counter, and three
+    grasps there did not see it. The checks' "could not make it out" in the fridge is a weaker
+    doubt than the grasps' "not here" on the counter."""
+    graph = SceneGraph.of_facts({IN_ROOM, IN_MICROWAVE}, roles=HOUSEHOLD)
+    ex = SimpleNamespace(moves=SightingMoves(), misses=Misses(), _portable=lambda name: True, roles=HOUSEHOLD)
+    Executive._note_miss(ex, graph, Situation("unseen", None, 4, IN_MICROWAVE, True, None))
+    assert ex.moves.unsure == {IN_MICROWAVE} and not ex.moves.doubted
+    graph = SceneGraph.of_facts({IN_ROOM, ON_COUNTER}, roles=HOUSEHOLD)  # the sighting's place
+    ex.moves.note("cup", {IN_ROOM, IN_MICROWAVE}, {IN_ROOM, ON_COUNTER})
+    # the checks on the counter could not make it out either: not yet, and the record is kept
+    Executive._note_miss(ex, graph, Situation("unseen", None, 5, ON_COUNTER, True, None))
+    assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) is None and "cup" in ex.moves.moves
+    Executive._note_miss(ex, graph, Situation("execution", None, 6, missing="cup"))
+    assert ex.moves.doubted == {ON_COUNTER}
+    assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) == {IN_ROOM, IN_MICROWAVE}
+    # a place a look said it is not at stays doubted, whatever the sighting's place had
+    ex.moves.doubt(IN_MICROWAVE)
+    ex.moves.note("cup", {IN_ROOM, IN_MICROWAVE}, {IN_ROOM, ON_COUNTER})
+    assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) is None

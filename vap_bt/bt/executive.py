@@ -990,8 +990,8 @@ class Executive:
             name, places = a.args[0], [a] if a.predicate in self.roles.support else []
         else:
             return  # an effect or a goal is about what the robot just did there: no phantom put it
-        for place in places:
-            self.moves.doubt(place)  # not a place to go back to should a sighting move it from there
+        for place in places:  # not a place to go back to should a sighting move it from there
+            self.moves.doubt(place, firm=s.kind != "unseen")  # "could not make it out": the weaker doubt
         obj = graph.objects.get(name)
         if obj is not None and self._portable(obj.name) and obj.centroid is not None \
                 and obj.located == frozenset(graph.location(obj.name)):

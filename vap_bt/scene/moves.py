@@ -14,7 +14,12 @@ The record is dropped once belief moves the item some other way (an action, anot
 only the sighting's own place is taken back. Nor is a place taken back that a check had already
 failed to find the item at (boil_water seed 8: the cup, believed in the microwave after a placing
 that dropped it, could not be seen inside three times; the sighting that put it on the floor was
-right, and going back to the microwave would have been the older error).
+right, and going back to the microwave would have been the older error). A place a check only
+could not make the item out at is a weaker doubt than one where a look said it is not there, or
+where a skill looked for it to act on and did not see it: such a place is taken back once the
+sighting's own place has had the stronger doubt (heat_pie seed 20 in pybullet: a sighting put the
+pie, standing in the fridge the checks could not see into, on the counter; three grasps there saw
+no pie, and belief kept it on the counter until the episode was stuck).
 
 A placing whose effect a check denied moves the item the same way: belief takes the placing back,
 the gripper is empty, and the item is placed nowhere. Where the hand let it go is then the place
@@ -36,8 +41,10 @@ class SightingMoves:
     sighting gave it (each a set of location atoms)."""
 
     moves: dict[str, tuple[frozenset[Atom], frozenset[Atom]]] = field(default_factory=dict)
-    #: places (``on``/``inside`` atoms) a check could not find their item at
+    #: places (``on``/``inside`` atoms) a check or a skill found their item not at
     doubted: set[Atom] = field(default_factory=set)
+    #: places a check could not make their item out at (a weaker doubt: see the module docstring)
+    unsure: set[Atom] = field(default_factory=set)
 
     def note(self, name: str, before: set[Atom], after: set[Atom]) -> None:
         """A sighting (or a denied placing) moved ``name`` from ``before`` to ``after`` (what
@@ -45,20 +52,28 @@ class SightingMoves:
         if before and before != after:
             self.moves[name] = (frozenset(before), frozenset(after))
 
-    def doubt(self, place: Atom) -> None:
-        """A check could not find the item at ``place`` (an ``on``/``inside`` atom about it)."""
-        self.doubted.add(place)
+    def doubt(self, place: Atom, firm: bool = True) -> None:
+        """A check or a skill found the item not at ``place`` (an ``on``/``inside`` atom about
+        it); not ``firm``: a check could not make it out there."""
+        (self.doubted if firm else self.unsure).add(place)
 
     def clear(self, name: str) -> None:
         """``name`` is in the hand: where it was, and where it was missed, say nothing of it now."""
         self.moves.pop(name, None)
         self.doubted = {a for a in self.doubted if a.args[0] != name}
+        self.unsure = {a for a in self.unsure if a.args[0] != name}
 
     def taken_back(self, name: str, now: set[Atom]) -> frozenset[Atom] | None:
         """The place to believe ``name`` at again, when belief still has it where the last sighting
-        put it (``now``) and no check failed to find it at the place before, else None; the record
-        is used up either way."""
-        move = self.moves.pop(name, None)
+        put it (``now``) and no check found it not at the place before (nor could make it out
+        there, unless ``now`` had the firmer doubt), else None. The record is used up, but for
+        the wait for that firmer doubt (the search that follows the first check the sighting's
+        place failed comes before the skill that looks there itself)."""
+        move = self.moves.get(name)
+        if move is not None and move[1] == frozenset(now) and not move[0] & self.doubted \
+                and move[0] & self.unsure and not frozenset(now) & self.doubted:
+            return None
+        self.moves.pop(name, None)
         if move is None or move[1] != frozenset(now) or move[0] & self.doubted:
             return None
         return move[0]
