@@ -16,6 +16,7 @@ from vap_bt.bt.context import Situation
 from vap_bt.bt.executive import Executive
 from vap_bt.domain.atoms import Atom
 from vap_bt.domain.roles import HOUSEHOLD
+from vap_bt.robot.site_map import FurnitureInfo, SiteMap
 from vap_bt.scene.graph import SceneGraph, SceneObject
 from vap_bt.scene.misses import Misses
 from vap_bt.scene.moves import SightingMoves
@@ -176,3 +177,14 @@ def test_a_place_only_unsure_is_taken_back_once_a_skill_missed_the_item_where_th
     ex.moves.doubt(IN_MICROWAVE)
     ex.moves.note("cup", {IN_ROOM, IN_MICROWAVE}, {IN_ROOM, ON_COUNTER})
     assert ex.moves.taken_back("cup", {IN_ROOM, ON_COUNTER}) is None
+
+
+def test_the_task_files_place_is_the_place_to_go_back_to_from_where_the_survey_put_an_item():
+    """boil_water seed 20 in pybullet (Table II injection, both, at 0702075): the task file puts
+    the cup inside the cabinet, the survey put it on the counter, and three grasps there did not
+    see it; belief kept it there until stuck. The prior names no room: the cabinet's is taken."""
+    site = SiteMap(rooms=(), furniture=(FurnitureInfo("cabinet", "cabinet", "container", "kitchen"),))
+    ex = SimpleNamespace(prior=frozenset({Atom("inside", ("cup", "cabinet")), Atom("closed", ("cabinet",))}),
+                         roles=HOUSEHOLD, builder=SimpleNamespace(site_map=site))
+    assert Executive._told_place(ex, "cup") == {Atom("inside", ("cup", "cabinet")), IN_ROOM}
+    assert Executive._told_place(ex, "mug") == set()  # the prior says nothing of it

@@ -554,10 +554,25 @@ class Executive:
                 graph.objects[n] = obj.seen(located=frozenset(graph.location(n)))
         for o in items:  # what the frames showed of each item (nothing of one only the prior places)
             self.sightings.saw(self.builder.observed(o), True, "survey")
+            if o not in prior_only:  # the survey moved it from the task file's place: taken back if it proves wrong
+                self.moves.note(o, self._told_place(o), graph.location(o))
         self.sightings.saw(belief.robot_facts(state, sweep, site_map, self.roles), True, "survey")
         self.sightings.saw(belief.hand_facts(state, self.builder), True, "gripper")
         self.graph = graph
         return graph, sweep, prior_only
+
+    def _told_place(self, o: str) -> set[Atom]:
+        """Where the task file's prior puts item ``o`` (none: it says nothing of it), with the room
+        of the piece it is on or in where the prior names no room (boil_water: "inside(cup,
+        cabinet)" alone; boil_water seed 20 in pybullet: the survey put the cup on the counter,
+        three grasps there did not see it, and belief kept it there until stuck)."""
+        told = {a for a in self.prior if a.predicate in self.roles.location and a.args and a.args[0] == o}
+        if not any(map(self.roles.supports, told)):
+            return set()
+        if self.roles.in_room is not None and not any(a.predicate == self.roles.in_room for a in told):
+            told |= {Atom(self.roles.in_room, (o, piece.room)) for a in told if self.roles.supports(a)
+                     and (piece := self.builder.site_map.piece(a.args[1])) is not None}
+        return told
 
     def _finish_survey(self, graph: SceneGraph, sweep: SweepRecord, prior_only, states: list[StateAnswer]
                        ) -> tuple[SceneGraph, Survey]:
