@@ -70,10 +70,10 @@ class SightingMoves:
         the wait for that firmer doubt (the search that follows the first check the sighting's
         place failed comes before the skill that looks there itself)."""
         move = self.moves.get(name)
-        if move is not None and move[1] == frozenset(now) and not move[0] & self.doubted \
-                and move[0] & self.unsure and not frozenset(now) & self.doubted:
-            return None
-        self.moves.pop(name, None)
         if move is None or move[1] != frozenset(now) or move[0] & self.doubted:
+            self.moves.pop(name, None)
             return None
+        if move[0] & self.unsure and not frozenset(now) & self.doubted:
+            return None  # kept for the firmer doubt
+        del self.moves[name]
         return move[0]
