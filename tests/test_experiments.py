@@ -377,3 +377,21 @@ def test_bad_input_is_one_line_and_exit_2(argv, option, capsys, tmp_path):
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and err.startswith(f"strategies: {option}: "), err
     assert not list(tmp_path.iterdir())  # nothing started, nothing written
+
+
+def test_a_log_of_another_models_version_is_not_continued(tmp_path, capsys):
+    """A changed model is a new version, measured in a log of its own: continuing a log whose rows
+    another version of the simulated VLM ran is refused before anything runs, the log untouched."""
+    log = tmp_path / "episodes.jsonl"
+    key = engine.Key("strategies", "symbolic", "halve_egg", "both", "vlm", 0)
+    row = {**results.crashed(key, RuntimeError("an older model's episode"), 1.0), "vlm_version": "vlm-0 (2020-01-01)"}
+    log.write_text(json.dumps(row) + "\n")
+    before = log.read_text()
+    assert main(STRATEGIES, [*TASK, "--verify", "both", "--log", str(log), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and err.startswith("strategies: --log: "), err
+    assert "vlm-0 (2020-01-01)" in err and "new log" in err
+    assert log.read_text() == before and not (tmp_path / "out").exists()
+    # report-only reads it as it is: the old version's tables stay writable
+    assert main(STRATEGIES, [*TASK, "--verify", "both", "--log", str(log), "--out", str(tmp_path / "out"),
+                             "--report-only"]) == 0

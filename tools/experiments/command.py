@@ -55,6 +55,7 @@ from vap_bt import taskfile
 from vap_bt.errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, InputError
 from vap_bt.report import versions
 from vap_bt.settings import RunConfig
+from vap_bt.sim.sim_vlm import MODEL_VERSION
 from vap_bt.yaml_file import read_model
 
 ROOT = engine.ROOT
@@ -182,6 +183,9 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
                              f"no episode log {args.log or campaign.out / 'episodes.jsonl'} to report on (run the experiment first)")
         if args.rows is not None and not args.rows.is_file():
             raise InputError("--rows", f"no such file: {args.rows}")
+        if not args.report_only and (args.resume or args.log is not None):
+            same_version(results.EpisodeLog(args.log or campaign.out / "episodes.jsonl"), campaign.world,
+                         "--log" if args.log else "--resume")
     except InputError as exc:
         print(f"{experiment.name}: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
@@ -204,6 +208,31 @@ def main(experiment: Experiment, argv: list[str] | None = None, fault: Callable[
     # a report-only run from a shared log says where its rows came from, unless a run's record is there
     read_from = args.report_only and args.log is not None and not (campaign.out / "run.json").exists()
     return report(experiment, campaign, rows, log if read_from else None)
+
+
+def same_version(log: results.EpisodeLog, world: str, option: str) -> None:
+    """An InputError if the log to continue holds rows of ``world`` run by another version of the
+    world's mechanics or of the simulated VLM than this checkout's: a changed model is a new
+    version, and its figures are measured anew, in a log of their own, never mixed into the old
+    one's (a campaign's rows are told apart by those versions, not by the commit alone)."""
+    now = {"world_version": current_world_version(world), "vlm_version": MODEL_VERSION}
+    for r in log.rows():
+        if r.get("world") != world or not r.get("runnable"):
+            continue  # another world's rows, or a "not runnable" row, which ran no model
+        other = {k: r.get(k) for k in now if r.get(k) != now[k]}
+        if other:
+            raise InputError(option, f"{log.path} holds rows of {', '.join(f'{k} {v}' for k, v in other.items())}; "
+                             f"this checkout is {', '.join(f'{now[k]}' for k in other)}: a new version starts a new "
+                             "log (another --out or --log; campaign.sh: DIR=...)")
+
+
+def current_world_version(world: str) -> str | None:
+    """The version of ``world``'s mechanics that a row run by this checkout records (none for the
+    symbolic world)."""
+    if world != "pybullet":
+        return None
+    from vap_bt.sim.pybullet_world import WORLD_VERSION  # pybullet is loaded only for the pybullet world
+    return WORLD_VERSION
 
 
 @contextlib.contextmanager

@@ -76,8 +76,10 @@ from vap_bt.world import InjectedSituation
 
 #: the world's version, in every report (``world.physics``) and campaign row (``world_version``):
 #: a change of its mechanics is a new version, and every figure is measured again.
-#: pb-2: the base glides through free space (:mod:`pb_glide`); pb-1 drove every step by motors
-WORLD_VERSION = "pb-2 (2026-12-05)"
+#: pb-3: a Table II row is in the world's record when the world acts on it, not when it is drawn
+#: (:mod:`pb_injection`); pb-2: the base glides through free space (:mod:`pb_glide`); pb-1 drove
+#: every step by motors
+WORLD_VERSION = "pb-3 (2026-12-06)"
 DT = 1.0 / 60.0
 SOLVER_ITERATIONS = 20
 #: physics sub-steps per step: an item let go at carrying height meets the floor at 4 m/s, 7 cm in
