@@ -14,6 +14,9 @@
 # stopped part-way has measured it on every task before the baselines. Environment: WORLD
 # (pybullet), SEEDS (50: seeds 0..SEEDS-1), WORKERS (2), DIR (docs/results/<WORLD>_campaign),
 # TASKS (S1 S2 S3 S4 S5), ADDRESS (join a Dask scheduler instead of a local cluster).
+# A campaign is one version of the world and the simulated VLM: a log whose rows another version
+# ran is not continued (the commands say so and exit 2); give the new version its own DIR, e.g.
+#   DIR=docs/results/pybullet_campaign_pb3 bash tools/experiments/campaign.sh
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 PY=.venv/bin/python
