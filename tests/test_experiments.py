@@ -392,6 +392,9 @@ def test_a_log_of_another_models_version_is_not_continued(tmp_path, capsys):
     assert len(err.strip().splitlines()) == 1 and err.startswith("strategies: --log: "), err
     assert "vlm-0 (2020-01-01)" in err and "new log" in err
     assert log.read_text() == before and not (tmp_path / "out").exists()
-    # report-only reads it as it is: the old version's tables stay writable
-    assert main(STRATEGIES, [*TASK, "--verify", "both", "--log", str(log), "--out", str(tmp_path / "out"),
-                             "--report-only"]) == 0
+    # report-only reads it as it is: the old version's tables stay writable, a crashed episode's
+    # row (no counts) among them
+    for experiment, word in ((STRATEGIES, "| both |"), (FAILURES, "crash")):
+        assert main(experiment, [*TASK, "--log", str(log), "--out", str(tmp_path / experiment.name),
+                                 "--report-only"]) == 0
+        assert word in (tmp_path / experiment.name / "table.md").read_text()

@@ -71,8 +71,9 @@ def share(k: int, n: int) -> Estimate:
 
 def mean(values: Iterable[float]) -> Estimate:
     """The mean, with its t interval (no interval below two values, or when they are all equal:
-    the mean itself is then the interval)."""
-    xs = [float(x) for x in values]
+    the mean itself is then the interval). A value that is None is not there: a crashed episode's
+    row has no counts (:func:`results.crashed`), and they are not zeros."""
+    xs = [float(x) for x in values if x is not None]
     if not xs:
         return NONE
     m = statistics.fmean(xs)
