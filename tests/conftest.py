@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+import vap_bt  # noqa: F401  (pins numpy's kernels, vap_bt/numerics.py, before a test module's matplotlib loads numpy: a bare pytest run computes as tools/test.sh's)
+
 ROOT = Path(__file__).resolve().parents[1]
 TREES = ROOT / "trees"
 DOMAINS = Path(__file__).resolve().parent / "domains"
