@@ -9,6 +9,7 @@ halve_egg) on two seeds in the symbolic world.
 from __future__ import annotations
 
 import csv
+import dataclasses
 import json
 import os
 import signal
@@ -24,6 +25,7 @@ from conftest import ROOT, TREES
 sys.path.insert(0, str(ROOT))  # tools/ (the workers spawned from here inherit the path)
 from tools.experiments import engine, results  # noqa: E402
 from tools.experiments.ablation import ABLATION, MODES  # noqa: E402
+from tools.experiments import command  # noqa: E402
 from tools.experiments.command import SEED_BLOCK, Campaign, choices, keys, main  # noqa: E402
 from tools.experiments.failures import FAILURES  # noqa: E402
 from tools.experiments.strategies import STRATEGIES  # noqa: E402
@@ -386,6 +388,10 @@ def test_a_log_of_another_models_version_is_not_continued(tmp_path, capsys):
     key = engine.Key("strategies", "symbolic", "halve_egg", "both", "vlm", 0)
     row = {**results.crashed(key, RuntimeError("an older model's episode"), 1.0), "vlm_version": "vlm-0 (2020-01-01)"}
     log.write_text(json.dumps(row) + "\n")
+    # a crashed episode of this version records no versions, and does not stop a log from going on
+    assert command.same_version(results.EpisodeLog(_log_of(tmp_path, results.crashed(
+        dataclasses.replace(key, world="pybullet"), RuntimeError("x"), 1.0))),
+                                "pybullet", "--log") is None
     before = log.read_text()
     assert main(STRATEGIES, [*TASK, "--verify", "both", "--log", str(log), "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
@@ -398,3 +404,9 @@ def test_a_log_of_another_models_version_is_not_continued(tmp_path, capsys):
         assert main(experiment, [*TASK, "--log", str(log), "--out", str(tmp_path / experiment.name),
                                  "--report-only"]) == 0
         assert word in (tmp_path / experiment.name / "table.md").read_text()
+
+
+def _log_of(tmp_path, row: dict):
+    path = tmp_path / "one_row.jsonl"
+    path.write_text(json.dumps(row) + "\n")
+    return path

@@ -219,7 +219,8 @@ def same_version(log: results.EpisodeLog, world: str, option: str) -> None:
     for r in log.rows():
         if r.get("world") != world or not r.get("runnable"):
             continue  # another world's rows, or a "not runnable" row, which ran no model
-        other = {k: r.get(k) for k in now if r.get(k) != now[k]}
+        # a crashed episode's row records no versions (results.crashed): it says nothing either way
+        other = {k: v for k in now if (v := r.get(k)) is not None and v != now[k]}
         if other:
             raise InputError(option, f"{log.path} holds rows of {', '.join(f'{k} {v}' for k, v in other.items())}; "
                              f"this checkout is {', '.join(f'{now[k]}' for k in other)}: a new version starts a new "
