@@ -76,7 +76,7 @@ from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.bt.recovery import Halting, Step, recovery_tree
-from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, describe, stuck
+from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, contested, describe, seen_together, stuck
 from vap_bt.bt.vlm_planner import VlmPlanner
 from vap_bt.domain.atoms import Atom, Literal
 from vap_bt.domain.planner import Plan, Planner
@@ -358,14 +358,23 @@ class Executive:
                 if stuck(situation, times) and situation.kind == "unseen" and situation.action is not None \
                         and situation.atom not in board.on_belief:
                     # looked again and again, and no view shows it well enough: act on belief
-                    # (the action's effects are checked) rather than give the episode up
-                    board.on_belief.add(situation.atom)
+                    # (the action's effects are checked) rather than give the episode up — on the
+                    # action's other preconditions about the same thing too, which the same views
+                    # show no better (retrieve_bottles seed 0: inview, reachable and on of a bottle
+                    # the views never showed, each looked at three times, nine replans)
+                    board.on_belief |= seen_together(situation.atom, situation.action)
                     self.progress(f"    could not see {situation.atom} after {times} looks: acting on belief")
                 elif stuck(situation, times) and situation.kind == "action_infeasible" \
                         and str(situation.action) not in board.actions_on_trial:
                     # looking afresh brought the robot back to the same "no": the skill is the test
                     board.actions_on_trial.add(str(situation.action))
                     self.progress(f"    {situation.action} said impossible {times} times: trying it against that")
+                elif contested(situation, times) and situation.atom not in board.on_trial:
+                    # denied again and again from the same belief, which looking afresh restores
+                    # each time: the same pictures will say the same, so the skill is the test
+                    board.on_trial.add(situation.atom)
+                    self.progress(f"    {situation.atom} denied {times} times from the same belief: "
+                                  f"trying {situation.action} against it")
                 elif stuck(situation, times) and rests_on_plan(situation, board.verifications) \
                         and situation.atom not in redone:
                     # a goal no view confirmed rests on the plan alone, and the action that was to
@@ -450,7 +459,7 @@ class Executive:
         try:
             return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
         except UnsolvableError:
-            recourse = self._recourse(graph, s, doubted, on_trial)
+            recourse = self._recourse(graph, s, doubted)
             if recourse is None:
                 raise
         # belief back to what the plan presumed: what it held before an unseen check, the
@@ -471,7 +480,7 @@ class Executive:
         return self.planner.replan(graph.state(), plan.actions[s.step:], self.task.goal)
 
     @staticmethod
-    def _recourse(graph: SceneGraph, s: Situation, doubted: Counter, on_trial: set[Atom]) -> str | None:
+    def _recourse(graph: SceneGraph, s: Situation, doubted: Counter) -> str | None:
         """What to do when the corrected belief leaves no plan (:meth:`_replan`): "belief" (an
         unseen atom the look dropped is held again), "doubt", "trial", or None (the situation
         stands). An effect observed missing is the check doing its work: belief already went
@@ -487,7 +496,8 @@ class Executive:
             return "belief" if s.kind == "unseen" and (s.atom in graph.facts) != s.expected and not spent else None
         if not spent:
             return "doubt"
-        return "trial" if s.kind == "precondition" and s.atom not in on_trial else None
+        # (already on trial when it was denied from the same belief once too often: belief goes back all the same)
+        return "trial" if s.kind == "precondition" else None
 
     @staticmethod
     def halt(tree: py_trees.trees.BehaviourTree) -> None:

@@ -12,11 +12,19 @@ saying cannot be done is then tried against the answer (:mod:`vap_bt.bt.action_c
 out (``unseen``) that comes back the same after looking afresh makes the robot act on belief there
 (the action's effects are still checked): the same plan brings the robot to the same views (an
 item under furniture that its find pose never shows, a relation a model reads poorly), and more
-looks from them will not settle it. A goal atom that stays unseen stops the episode (once
+looks from them will not settle it — nor the action's other preconditions about the same thing
+(:func:`seen_together`), which are then acted on belief too where they cannot be made out. A goal atom that stays unseen stops the episode (once
 handed back to the planner first when no check ever confirmed it: :mod:`vap_bt.bt.executive`):
 success is never claimed on belief. A check that
 came back with a value is not cause to stop — an injected slip may well go the other way the next
-time.
+time. But a precondition a check denies from the same belief a third time (:func:`contested`) is
+put on trial: the correction took the atom out, the re-location that followed put it back (a
+sighting from elsewhere places the item where the check's views deny it), and the replan brought
+the robot to the same views, whose model answers the same pictures the same way (heat_pie seed 1
+in pybullet: the pie in the oven, seen there from the counter, "not inside" from the oven's front
+eighteen times until the replanning budget was gone). The camera and the re-location cannot both
+be right; the action is the test — its skill fails if the denial was right, and its effects are
+checked.
 
 Replanning itself is bounded by the run's ``max_replans`` (default
 :data:`vap_bt.settings.MAX_REPLANS`; the paper sets no bound; an episode needs one that every
@@ -31,12 +39,25 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # for annotations only: the command line reads MAX_REPLANS without the executive
     from vap_bt.bt.context import Situation
     from vap_bt.domain.atoms import Atom
+    from vap_bt.domain.knowledge import GroundAction
 
 #: the occurrence of an identical situation from an identical belief that re-surveys first
 LOOK_AFRESH = 2
 #: the occurrence of an identical failed execution (or unseen precondition) at which the episode
 #: stops: looking afresh did not change what the skill does (or what the camera is shown)
 STUCK = 3
+
+
+def contested(s: Situation, times: int) -> bool:
+    """Whether a precondition denied ``times`` from the same belief is to be tried against."""
+    return s.kind == "precondition" and times >= STUCK
+
+
+def seen_together(atom: Atom, action: GroundAction) -> set[Atom]:
+    """``atom`` and ``action``'s other positive preconditions about the same thing (its first
+    argument): the views from the action's stand show them no better than ``atom``."""
+    subject = atom.args[:1]
+    return {atom} | {a for a in action.pre_pos if subject and a.args[:1] == subject}
 
 
 def stuck(s: Situation, times: int) -> bool:
