@@ -201,6 +201,24 @@ def test_zenoh_embedded_run_matches_the_in_process_run():
     assert [x["state"] for x in a["actions_executed"]] == [x["state"] for x in b["actions_executed"]]
 
 
+def exact_episode(task, lines: list[str]) -> dict:
+    """Seed 0 of ``task`` in the symbolic world without injection, its perception without noise —
+    the detector's too: a missed cup sends the look afresh on to the other room, and where it ends
+    changes the belief the loop breaker compares — and its progress lines appended to ``lines``."""
+    return Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
+                                             miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+
+
+def camera_says(monkeypatch, when, settlement) -> None:
+    """Make every check for which ``when(check)`` holds settle as ``settlement(check)`` (a
+    :class:`~vap_bt.perception.judgement.Settlement`), whatever its views showed."""
+    from vap_bt.bt.active_perception import ActivePerception
+
+    settle = ActivePerception._settle
+    monkeypatch.setattr(ActivePerception, "_settle",
+                        lambda self, s: settle(self, settlement(self) if when(self) else s))
+
+
 def test_a_failure_that_comes_back_unchanged_is_looked_at_afresh_then_stops_the_episode(monkeypatch):
     """A skill that fails the same way every time, from the same belief: the second time the
     executive re-surveys instead of only replanning, the third time it stops and says why —
@@ -270,10 +288,7 @@ def test_a_goal_the_camera_could_not_confirm_is_looked_at_again_before_success_i
     for times, success in ((1, True), (10, False)):
         monkeypatch.setattr(ActivePerception, "_settle", blind_to_goal(times))
         lines = []
-        # perception without noise, the detector's too: a missed cup sends the look afresh on to the
-        # other room, and where it ends changes the belief the loop breaker compares
-        r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
-                                              miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+        r = exact_episode(task, lines)
         unseen = [s for s in r["situations"] if s["kind"] == "unseen"]
         assert unseen and unseen[0]["action"] is None and unseen[0]["predicate"] == goal
         assert "not confirmed by looking" in unseen[0]["detail"]
@@ -316,8 +331,7 @@ def test_a_goal_no_view_confirmed_is_done_again_once_before_the_episode_stops(mo
     monkeypatch.setattr(ActivePerception, "_settle", blind_to_the_whole_egg)
     lines = []
     task = load(TREES / "halve_egg.yaml")
-    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
-                                          miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+    r = exact_episode(task, lines)
     assert len(cuts) == 2 and any("sliced(egg) never confirmed" in m and "doing it again" in m for m in lines)
     assert r["success"] and r["goal_satisfied"], r["reason"]
     goal_checks = [v for v in r["verifications"] if v["phase"] == "goal"]
@@ -329,21 +343,13 @@ def test_a_precondition_denied_that_leaves_no_plan_is_doubted_then_tried_against
     makes it reachable. The observation is doubted twice (belief back, a new look); denied a
     third time it is put on trial — the grasp runs against it, and the world, where the cup is in
     reach, lets it succeed. The verifications still say what the camera said."""
-    from vap_bt.bt.active_perception import ActivePerception
     from vap_bt.perception.judgement import Settlement
 
-    settle = ActivePerception._settle
-
-    def out_of_reach(self, s: Settlement):
-        if self.phase == "pre" and self.atom.predicate == "reachable":
-            return settle(self, Settlement(False, "contradicted", "vlm"))
-        return settle(self, s)
-
-    monkeypatch.setattr(ActivePerception, "_settle", out_of_reach)
+    camera_says(monkeypatch, lambda c: c.phase == "pre" and c.atom.predicate == "reachable",
+                lambda c: Settlement(False, "contradicted", "vlm"))
     lines = []
     task = load(TREES / "collect_cup.yaml")
-    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
-                                          miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+    r = exact_episode(task, lines)
     assert r["success"] and r["goal_satisfied"], r["reason"]
     assert sum("leaves no plan: doubting it" in m for m in lines) == 2
     assert any("the action will be tried against it" in m for m in lines)
@@ -359,21 +365,13 @@ def test_a_precondition_denied_that_the_relocation_restores_each_time_is_tried_a
     The replan is the same plan each time and brings the robot to the same views; from the third
     identical denial the grasp is tried against it, and the world, where the cup is, lets it
     succeed. Without the rule the episode ends with the budget spent."""
-    from vap_bt.bt.active_perception import ActivePerception
     from vap_bt.perception.judgement import Settlement
 
-    settle = ActivePerception._settle
-
-    def not_on_the_table(self, s: Settlement):
-        if self.phase == "pre" and str(self.atom) == "on(cup, coffee_table)":
-            return settle(self, Settlement(False, "contradicted", "vlm"))
-        return settle(self, s)
-
-    monkeypatch.setattr(ActivePerception, "_settle", not_on_the_table)
+    camera_says(monkeypatch, lambda c: c.phase == "pre" and str(c.atom) == "on(cup, coffee_table)",
+                lambda c: Settlement(False, "contradicted", "vlm"))
     lines = []
     task = load(TREES / "collect_cup.yaml")
-    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
-                                          miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+    r = exact_episode(task, lines)
     assert r["success"] and r["goal_satisfied"], r["reason"]
     assert any("on(cup, coffee_table) denied 3 times from the same belief" in m for m in lines)
     assert r["replans"] == 3
@@ -386,21 +384,13 @@ def test_an_action_acted_on_belief_for_one_unseen_precondition_is_for_the_others
     seed 0 in pybullet: inview, reachable and on of a bottle the views never showed, each looked
     at three times, nine replans of the twenty). After the third look at the first of them the
     robot acts on belief for every precondition of the grasp about the cup, not one at a time."""
-    from vap_bt.bt.active_perception import ActivePerception
     from vap_bt.perception.judgement import Settlement
 
-    settle = ActivePerception._settle
-
-    def blind_to_the_cup(self, s: Settlement):
-        if self.phase == "pre" and self.action.name == "grasp" and self.atom.args[:1] == ("cup",):
-            return settle(self, Settlement(self.subject.expected, "unsettled", "belief"))
-        return settle(self, s)
-
-    monkeypatch.setattr(ActivePerception, "_settle", blind_to_the_cup)
+    camera_says(monkeypatch, lambda c: c.phase == "pre" and c.action.name == "grasp" and c.atom.args[:1] == ("cup",),
+                lambda c: Settlement(c.subject.expected, "unsettled", "belief"))
     lines = []
     task = load(TREES / "collect_cup.yaml")
-    r = Session(task, RunConfig.from_task(task, world="symbolic", planner="search", injection=False, vlm_noise=0.0,
-                                          miss_rate=0.0, relation_noise=0.0), lines.append).episode(0)
+    r = exact_episode(task, lines)
     assert r["success"] and r["goal_satisfied"], r["reason"]
     unseen = [s for s in r["situations"] if s["kind"] == "unseen"]
     assert len(unseen) == 3 and len({s["predicate"] for s in unseen}) == 1
