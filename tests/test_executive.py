@@ -308,12 +308,11 @@ def test_a_goal_no_view_confirmed_is_done_again_once_before_the_episode_stops(mo
     halve_egg seed 3 in pybullet, the injected cut failed, its effect check and three goal checks
     unsettled, "stuck" with the egg whole): the goal rests on the plan alone, so the executive
     drops it from belief and cuts again rather than stopping; the second cut cuts, and is seen."""
-    from vap_bt.bt.active_perception import ActivePerception
     from vap_bt.outcome import Outcome
     from vap_bt.perception.judgement import Settlement
     from vap_bt.sim.symbolic import SymbolicWorld
 
-    perform, settle, cuts = SymbolicWorld.perform, ActivePerception._settle, []
+    perform, cuts = SymbolicWorld.perform, []
 
     def first_cut_fails_unseen(self, action, args, ctx):
         if action == "cut":
@@ -322,13 +321,9 @@ def test_a_goal_no_view_confirmed_is_done_again_once_before_the_episode_stops(mo
                 return Outcome(True)  # the skill says done; the egg is whole
         return perform(self, action, args, ctx)
 
-    def blind_to_the_whole_egg(self, s: Settlement):
-        if self.atom.predicate == "sliced" and len(cuts) < 2:
-            return settle(self, Settlement(self.subject.expected, "unsettled", "belief"))
-        return settle(self, s)
-
     monkeypatch.setattr(SymbolicWorld, "perform", first_cut_fails_unseen)
-    monkeypatch.setattr(ActivePerception, "_settle", blind_to_the_whole_egg)
+    camera_says(monkeypatch, lambda c: c.atom.predicate == "sliced" and len(cuts) < 2,  # blind to the whole egg
+                lambda c: Settlement(c.subject.expected, "unsettled", "belief"))
     lines = []
     task = load(TREES / "halve_egg.yaml")
     r = exact_episode(task, lines)
