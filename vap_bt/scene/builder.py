@@ -33,7 +33,7 @@ from vap_bt.robot.camera import Aim, Camera, Viewpoint
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.site_map import SiteMap
 from vap_bt.scene.graph import SceneGraph, SceneObject
-from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN, Believed, named_relations
+from vap_bt.scene.identity import SEEN_RADIUS, SUPPORT_MARGIN, Believed, centroid_of, named_relations
 from vap_bt.skill import Hint
 
 #: frames kept per object (the best views of it), for questions asked after the sweep
@@ -399,6 +399,21 @@ class SceneGraphBuilder:
         """Whether the frames put ``name`` on or in something (or in the hand)."""
         return any((self.roles.supports(a) or self.roles.is_held(a)) and a.args[0] == name
                    for a in self.observed(name, held))
+
+    def glimpsed(self, name: str) -> tuple[float, float] | None:
+        """Where (map frame, x and y) a frame showed ``name`` too little to measure it: a few
+        pixels of it, far off or at an image's edge, named by where they lie but too few points
+        for a centroid (:class:`vap_bt.scene.pointcloud.CloudParams`). None when no frame showed it,
+        when its frames measured it, or without depth."""
+        ev = self.evidence.get(name)
+        if ev is None or self.geometry is None or self.geometry.centroid(name) is not None:
+            return None
+        for _, _, frame in ev.best:
+            d = next((d for d in frame.detections if d.name == name), None)
+            c = centroid_of(frame, d) if d is not None else None
+            if c is not None:
+                return float(c[0]), float(c[1])
+        return None
 
     def _voted(self, name: str, ev: Evidence) -> set[Atom]:
         """Reports voted across the frames that saw the object: one support, one room, and every
