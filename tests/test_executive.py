@@ -401,3 +401,28 @@ def test_the_preconditions_seen_together_are_those_about_the_same_thing():
     together = seen_together(Atom("inview", ("cup",)), grasp)
     assert together == {a for a in grasp.pre_pos if a.args[:1] == ("cup",)}
     assert Atom("on", ("cup", "coffee_table")) in together and Atom("hand_empty", ()) not in together
+
+
+def test_a_check_whose_views_showed_its_thing_finds_it_not_missing_though_unsettled():
+    """heat_pie seed 30 in pybullet: "inside(apple_pie, fridge)" stayed unsettled though a frame
+    of the check showed the pie in the fridge; a miss noted there vetoed the re-survey's sighting
+    of it. A check that showed the thing did not find it missing; one that never showed it did,
+    and so did a check that settled against it."""
+    from vap_bt.bt.executive import shown_by_check
+    from vap_bt.bt.record import Situation, Verification
+    from vap_bt.domain.atoms import Atom
+    from vap_bt.perception.verification import Round
+
+    inside = Atom("inside", ("apple_pie", "fridge"))
+    takeout = load(TREES / "heat_pie.yaml").planning.knowledge.ground("takeout", ("apple_pie", "fridge", "kitchen"))
+
+    def check(*identified: dict, outcome="unsettled") -> list[Verification]:
+        rounds = [Round(view=f"f{i}", identified=ids) for i, ids in enumerate(identified)]
+        return [Verification("pre", str(takeout), inside, True, True, outcome, rounds, "vlm")]
+
+    unseen = Situation("unseen", takeout, 2, inside, True, None)
+    assert shown_by_check(unseen, check({"fridge": 0}, {"apple_pie": 1, "fridge": 0}))
+    assert not shown_by_check(unseen, check({"fridge": 0}, {"fridge": 1}))
+    assert not shown_by_check(unseen, [])
+    denied = Situation("precondition", takeout, 2, inside, True, False)
+    assert not shown_by_check(denied, check({"apple_pie": 0}, outcome="contradicted"))

@@ -12,7 +12,7 @@ the task file. Every mistake is reported once, with the file and the field or li
     scene: {rooms: [...], doors: {...}, robot: {...}, furniture: {...}, items: {...}}
     belief: ["inside(cup, cabinet)"]
     world: pybullet        # the world a run uses (symbolic, the default, or pybullet); --world overrides
-    options: {verify: both, budget: 3, max_replans: 20}
+    options: {verify: both, budget: 3, max_replans: 40}
     perception: my_household.perception.yaml   # optional; default: the one beside the domain
 
 A task with an ``instruction:`` and no ``goal:`` has its goal parsed from the words by a real VLM
