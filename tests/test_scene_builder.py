@@ -121,6 +121,23 @@ def test_the_floor_along_every_wall_is_looked_at_from_inside_the_room_facing_the
     assert b.wall_views("nowhere") == []
 
 
+def test_the_floor_at_the_middle_of_a_room_is_looked_at_from_all_round_it():
+    """The sweep looks round the floor from a room's middle, and the floor at its feet is in no
+    frame (gather_kindling seed 1: the lost stick 0.5 m from the middle): a search's later look
+    aims at the middle from stands round it, all in the room."""
+    from vap_bt.scene.builder import FLOOR_LOOK_DISTANCE
+
+    task = load(TREES / "collect_cup.yaml").planning
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 4.0, 3.0)), RoomInfo("hall", "floor_hall")))
+    b = SceneGraphBuilder(task.knowledge, task.objects, site)
+    views = b.middle_views("kitchen")
+    assert len(views) >= 6 and all(v.aim.point[:2] == (2.0, 1.5) for v in views)
+    stands = np.array([v.base_pose[:2] for v in views])
+    assert np.all((stands > 0) & (stands < (4.0, 3.0)))
+    assert np.all(np.hypot(*(stands - (2.0, 1.5)).T) < FLOOR_LOOK_DISTANCE)  # nearer than the sweep's aim
+    assert b.middle_views("hall") == []  # no outline
+
+
 def test_an_item_is_looked_at_from_close_by_on_its_support_or_round_it_on_the_floor():
     """A check that could not make an item out goes to look from close by where belief puts it:
     the top of the piece it rests on from two stands in front of it, nearer each, facing it; an
