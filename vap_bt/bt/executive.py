@@ -987,11 +987,11 @@ class Executive:
         """The last looks of a survey or a search for ``sought()``, each until nothing is sought:
         first the floor along every wall (the sweep's views leave the feet of the walls out, and
         what rolled away lies there), then round the middle of each room's floor (the look round
-        from there leaves the floor at its feet out), then the tops of the rooms' pieces that things are put on,
-        from nearer than the sweep's (a small thing on a counter every sweep view missed: a
-        detector's miss belongs to the picture, a new one draws anew); before and after each, the
-        floor round where a view glimpsed a sought thing (:meth:`_glimpses`). ``lead()`` opens each
-        progress line; the looks are added to ``sweep``."""
+        from there leaves the floor at its feet out), then the tops of the rooms' pieces that
+        things are put on, from nearer than the sweep's (a small thing on a counter every sweep
+        view missed: a detector's miss belongs to the picture, a new one draws anew); before and
+        after each, the floor round where a view glimpsed a sought thing (:meth:`_glimpses`).
+        ``lead()`` opens each progress line; the looks are added to ``sweep``."""
         looked: set[tuple[float, float]] = set()
         sweep = self._glimpses(sweep, sought, looked, lead)
         for what, views in (("along the walls of", self.builder.wall_views),
