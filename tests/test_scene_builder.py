@@ -332,20 +332,15 @@ def test_what_slips_from_a_hand_working_at_a_piece_is_looked_for_at_the_piece_s_
     assert b.front_spot("apple_pie") is None  # an item is no piece the map places
 
 
-def _down_frame(frame_id: str, side: int) -> Frame:
-    """A camera 2 m above the floor at (3, 1) looking straight down, the cup a ``side``-pixel
-    square at the image's centre, 10 cm above the floor (every other pixel the floor)."""
-    h = w = 64
-    depth = np.full((h, w), 2.0, np.float32)
-    masks = np.full((h, w), -1, np.int32)
-    lo = h // 2 - side // 2
-    masks[lo:lo + side, lo:lo + side] = 0
-    depth[masks == 0] = 1.9
-    pose = np.eye(4)
-    pose[:3, :3] = np.diag([1.0, -1.0, -1.0])  # optical z down, x along the map's x
-    pose[:3, 3] = (3.0, 1.0, 2.0)
-    return Frame(frame_id, 0.0, (Detection("cup", pixels=side * side, mask_id=0, name="cup"),),
-                 depth=depth, masks=masks, intrinsics=(60.0, 60.0, w / 2, h / 2), camera_pose=pose)
+def _cup_frame(fid: str, side: int) -> Frame:
+    """test_identity's downward frame, its one detection the cup (named), ``side`` pixels wide,
+    10 cm above the floor at (0.4, 0.3)."""
+    from dataclasses import replace
+
+    from test_identity import pixel_frame
+
+    frame = pixel_frame(("cup", (0.4, 0.3, 0.1), side), fid=fid)
+    return replace(frame, detections=(replace(frame.detections[0], name="cup"),))
 
 
 def test_a_thing_seen_too_little_to_measure_is_glimpsed_where_its_pixels_lie():
@@ -355,12 +350,12 @@ def test_a_thing_seen_too_little_to_measure_is_glimpsed_where_its_pixels_lie():
     from vap_bt.scene.geometry import PointCloudGeometry
 
     task = load(TREES / "collect_cup.yaml").planning
-    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, 5.0, 4.0)),))
+    site = SiteMap((RoomInfo("kitchen", "floor_kitchen", (-2.0, -2.0, 2.0, 2.0)),))
     b = SceneGraphBuilder(task.knowledge, task.objects, site, PointCloudGeometry)
     assert b.glimpsed("cup") is None  # never seen
-    b.integrate(_down_frame("far", 2))
+    b.integrate(_cup_frame("far", 1))
     assert b.detected("cup") and b.geometry.centroid("cup") is None
     x, y = b.glimpsed("cup")
-    assert abs(x - 3.0) < 0.1 and abs(y - 1.0) < 0.1
-    b.integrate(_down_frame("near", 20))
+    assert abs(x - 0.4) < 0.05 and abs(y - 0.3) < 0.05
+    b.integrate(_cup_frame("near", 20))
     assert b.geometry.centroid("cup") is not None and b.glimpsed("cup") is None
