@@ -102,6 +102,8 @@ PAD_END = 0.025  # the pads stay this far in from the end of an item taken off i
 DROP = (0.30, 0.62, 0.55)  # where an item is let go beside the base, in the base frame
 CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside the base)
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
+#: the blade's headings a cut tries, about the vertical from the hand's present one (radians)
+CUT_YAWS = (0.0, math.pi / 2, -math.pi / 2, math.pi)
 #: m in front of the pose under the tap (out of the sink's front) whence the vessel goes in under
 #: it, the first the arm reaches: the tap's arm ends a couple of centimetres past its outlet, and
 #: the cup is 0.07 m across. Nearer only when the arm does not reach the first: a level hand
@@ -1067,13 +1069,14 @@ class Hands:
         # as the camera measured it when the hand took it) goes over the item's centre, then down
         x = self.body.pose("tcp")[:3, 0]
         x = np.array([x[0], x[1], 0.0]) if np.hypot(x[0], x[1]) > 0.1 else self.body.base_T()[:3, 0]
-        R = se3.frame_zx((0.0, 0.0, -1.0), x, (0.0, 0.0, 0.0))[:3, :3]
-        pts = held.corners @ R.T  # the knife's box corners from the tcp, the hand down
-        edge = pts[pts[:, 2] <= pts[:, 2].min() + 0.005].mean(axis=0)
-        below = -edge[2]
-        T = np.eye(4)
-        T[:3, :3], T[:3, 3] = R, (c[0] - edge[0], c[1] - edge[1], top + below + 0.06)
-        if not self.body.goto_pose(T):
+        # the blade turned about the vertical where the hand's present heading has no arm pose: a
+        # cut goes through the item whichever way the blade lies across it (halve_egg seeds 7, 15
+        # and 27 in pybullet: "egg: out of reach" three times from the same stand)
+        for yaw in CUT_YAWS:
+            T, below = self._blade_over(held, se3.axis_angle((0.0, 0.0, 1.0), yaw) @ x, c, top)
+            if self.body.goto_pose(T):
+                break
+        else:
             self.carry()
             return Outcome(False, f"{name}: out of reach")
         stroke = T.copy()
@@ -1083,6 +1086,17 @@ class Hands:
         self.body.line(T, steps=2, speed=0.4)
         self.carry()
         return Outcome(True)
+
+    @staticmethod
+    def _blade_over(held: Held, x: np.ndarray, c: np.ndarray, top: float) -> tuple[np.ndarray, float]:
+        """The tcp pose, hand straight down with its x axis along ``x``, that puts the held
+        knife's lowest edge 6 cm over ``top`` above ``c``, and how far that edge lies below the tcp."""
+        R = se3.frame_zx((0.0, 0.0, -1.0), x, (0.0, 0.0, 0.0))[:3, :3]
+        pts = held.corners @ R.T  # the knife's box corners from the tcp, the hand down
+        edge = pts[pts[:, 2] <= pts[:, 2].min() + 0.005].mean(axis=0)
+        T = np.eye(4)
+        T[:3, :3], T[:3, 3] = R, (c[0] - edge[0], c[1] - edge[1], top - edge[2] + 0.06)
+        return T, -edge[2]
 
     def push(self, blocker: str, target: str, points: dict, where: Where) -> Outcome:
         """Slide ``blocker`` sideways along its support, away from ``target``, with the closed

@@ -426,3 +426,34 @@ def test_a_check_whose_views_showed_its_thing_finds_it_not_missing_though_unsett
     assert not shown_by_check(unseen, [])
     denied = Situation("precondition", takeout, 2, inside, True, False)
     assert not shown_by_check(denied, check({"apple_pie": 0}, outcome="contradicted"))
+
+
+def test_a_goal_no_goal_check_could_settle_rests_on_the_check_that_confirmed_it_since():
+    """boil_water seed 2 in pybullet: the cup heated, confirmed so by the effect check at the
+    microwave; three goal checks split between "yes" and "no" and the episode was given up. The
+    goal rests on that confirmation while it stands: among the views since the last action that
+    could change the atom, and no settled check since said otherwise."""
+    from vap_bt.bt.goal_check import resting_on_earlier, standing_confirmation
+    from vap_bt.bt.record import GoalAtomEvidence, GoalEvidence, Verification
+    from vap_bt.domain.atoms import Atom
+    from vap_bt.perception.verification import Round
+
+    heated = Atom("heated", ("cup",))
+    r = [Round(view=f"f{i}") for i in range(4)]
+
+    def check(phase, outcome, value, *rounds) -> Verification:
+        return Verification(phase, "turnon(microwave, cup)" if phase == "eff" else "goal", heated, True, value,
+                            outcome, list(rounds), "vlm")
+
+    confirmed, unsettled = check("eff", "confirmed", True, r[0]), check("goal", "unsettled", True, r[1], r[2])
+    assert standing_confirmation(heated, True, [confirmed, unsettled], r[:3]) == 0
+    assert standing_confirmation(heated, False, [confirmed, unsettled], r[:3]) is None  # not the goal's value
+    assert standing_confirmation(heated, True, [confirmed, unsettled], r[1:3]) is None  # an action since could change it
+    denied = check("goal", "contradicted", False, r[3])
+    assert standing_confirmation(heated, True, [confirmed, denied, unsettled], r) is None  # a settled view since denied it
+    assert standing_confirmation(heated, True, [unsettled], r[1:3]) is None  # nothing ever settled it
+
+    evidence = GoalEvidence((GoalAtomEvidence(heated, True, "unchecked", 1, unsettled, "could not settle it"),))
+    rested = resting_on_earlier(evidence, {heated: 0}, [confirmed, unsettled]).to_json()
+    assert rested["unchecked"] == [] and rested["earlier"][0]["verification"] == 0
+    assert "eff check after turnon(microwave, cup)" in rested["earlier"][0]["reason"]

@@ -21,6 +21,9 @@
 * What the hand holds is the box the camera measured, turned to the item's longer side: the arm's
   collision model takes it as a proper (right-handed) pose, however the outline's axes came out,
   and takes another item in its place (comparing the two boxes' arrays raised).
+* A cut tries the blade turned about the vertical where the hand's heading has no arm pose
+  (halve_egg: "egg: out of reach" three times from one stand); whichever way it lies, the
+  blade's lowest edge comes over the item's middle, 6 cm above its top.
 * A mask's rim bled onto what lies behind the item is not the item: its points, far behind the
   item's front, are left out of its box (boil_water: a cup's rim on the microwave 20 cm behind put
   its box's middle 4 cm off the cup's).
@@ -32,7 +35,7 @@ import numpy as np
 
 from skills.body import Body
 from skills.eyes import Held
-from skills.hands import laid_over, leaned
+from skills.hands import CUT_YAWS, Hands, laid_over, leaned
 from skills.navigator import Navigator
 from skills.scene_model import Furniture, Leaf, SceneModel, Seen, seen_from
 from skills.views import CLOSEST, _moved_to
@@ -288,6 +291,23 @@ def test_a_held_box_turned_to_a_slanted_outline_is_a_right_handed_pose():
     assert np.allclose(sorted(size), (0.01, 0.02, 0.2))
     local = (c - tcp[:3, 3] - T[:3, 3]) @ T[:3, :3]  # the corners in the box's frame
     assert np.allclose(np.abs(local), size / 2)  # the same box
+
+
+def test_a_blade_turned_any_way_comes_over_the_items_middle_above_its_top():
+    # a knife taken level off a counter, its blade 2 cm under the tcp and 5 cm along it
+    seen = Seen("knife", np.array([0.55, 0.0, 0.905]), np.array([0.45, -0.01, 0.9]), np.array([0.65, 0.01, 0.91]),
+                0.0, False, None)
+    held = Held.taken(seen, se3.frame_zx((0.0, 0.0, -1.0), (1.0, 0.0, 0.0), (0.5, 0.0, 0.93)))
+    c, top = np.array([1.2, 0.4, 0.93]), 0.95
+    heads = []
+    for yaw in CUT_YAWS:
+        T, below = Hands._blade_over(held, se3.axis_angle((0.0, 0.0, 1.0), yaw) @ np.array([1.0, 0.0, 0.0]), c, top)
+        pts = held.corners @ T[:3, :3].T + T[:3, 3]  # the knife where the hand at T holds it
+        edge = pts[pts[:, 2] <= pts[:, 2].min() + 0.005].mean(axis=0)
+        assert np.allclose(edge, (c[0], c[1], top + 0.06)), (yaw, edge)
+        assert np.isclose(T[2, 3] - edge[2], below) and np.allclose(T[:3, 2], (0.0, 0.0, -1.0))  # the hand straight down
+        heads.append(T[:3, 0])
+    assert len({tuple(np.round(h, 6)) for h in heads}) == len(CUT_YAWS)  # each a heading of its own
 
 
 def _held_level(lo, hi) -> tuple[Held, np.ndarray]:

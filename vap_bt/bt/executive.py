@@ -27,7 +27,10 @@ then swaps in a new plan's tree:
 A goal atom the camera could not confirm, back unchanged after looking afresh, stops the episode
 as stuck — unless no check ever confirmed it: then belief holds it only because an action was to
 bring it about, which may have failed unseen, and it is handed back to the planner once
-(:func:`rests_on_plan`).
+(:func:`rests_on_plan`); or unless the check that confirmed it after that action still stands
+(no action since could change it, no settled view since denied it, and it is a state, not where
+a thing rests): then the claim rests on that check, the paper's own standard, and the report
+says so (:func:`~vap_bt.bt.goal_check.standing_confirmation`).
 
 Before any of that, an execution failure is asked of the skill client whether the robot still
 has a server (``rejoin``, where the client has one: :class:`~vap_bt.transport.client.ZenohSkillClient`).
@@ -72,6 +75,7 @@ from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
 from vap_bt.bt.context import ExecutionContext, asking
 from vap_bt.bt.diagnosis import Sightings, diagnose, placed, review
+from vap_bt.bt.goal_check import resting_on_earlier, standing_confirmation
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
@@ -337,8 +341,9 @@ class Executive:
                     if self.s.tick_period_s:
                         time.sleep(self.s.tick_period_s)
                     continue
+                unconfirmed = list(board.unconfirmed_goal)
                 if status == Status.SUCCESS:  # the tree got through, but the camera could not confirm the goal
-                    situation = self._diagnose(unconfirmed_goal(board.unconfirmed_goal, len(plan.actions)))
+                    situation = self._diagnose(unconfirmed_goal(unconfirmed, len(plan.actions)))
                     board.unconfirmed_goal.clear()
                 else:
                     situation, board.situation = board.situation, None
@@ -384,6 +389,15 @@ class Executive:
                     graph.correct(situation.atom, not situation.expected,
                                   self.task.knowledge.complements.get(situation.atom.predicate), cause="unconfirmed")
                     self.progress(f"    {situation.atom} never confirmed after {times} looks: doing it again")
+                elif stuck(situation, times) and status == Status.SUCCESS \
+                        and (earlier := self._standing(unconfirmed, board)):
+                    # no goal check could settle it, however often the robot went back to look; the
+                    # check that confirmed it after the action that brought it about still stands
+                    board.goal_evidence = resting_on_earlier(board.goal_evidence, earlier, board.verifications)
+                    out.success = True
+                    out.reason = ("goal reached: " + ", ".join(map(str, earlier))
+                                  + f" on the check that confirmed it (its goal checks could not settle it, {times} times)")
+                    return out
                 elif stuck(situation, times):
                     out.reason = (f"stuck: {describe(situation)}, {times} times from the same belief "
                                   "(looking afresh changed nothing)")
@@ -420,6 +434,15 @@ class Executive:
             return out
         finally:
             self.halt(tree)
+
+    def _standing(self, atoms: list[Atom], board: Board) -> dict[Atom, int]:
+        """Each goal atom in ``atoms`` (no goal check could settle them) with the earlier check it
+        still rests on (:func:`~vap_bt.bt.goal_check.standing_confirmation`), or nothing unless
+        every one has one; never a place where a thing rests, which no action need change."""
+        expected = {l.atom: l.positive for l in self.task.goal}
+        earlier = {a: standing_confirmation(a, expected.get(a, True), board.verifications, board.verified.views(a))
+                   for a in atoms if not self.roles.supports(a)}
+        return earlier if atoms and len(earlier) == len(atoms) and None not in earlier.values() else {}
 
     def _diagnose(self, s: Situation) -> Situation:
         """``s`` with the executive's diagnosis of it (:mod:`vap_bt.bt.diagnosis`), made once: from

@@ -151,7 +151,7 @@ class GoalAtomEvidence:
 
     atom: Atom
     expected: bool
-    rests_on: Literal["looked", "felt", "unchecked"]
+    rests_on: Literal["looked", "earlier", "felt", "unchecked"]
     verification: int | None = None
     check: Verification | None = None
     reason: str = ""
@@ -169,7 +169,9 @@ class GoalAtomEvidence:
 @dataclass(frozen=True)
 class GoalEvidence:
     """What the goal check of a tree rested on, per goal literal (the report's ``goal_evidence``):
-    ``looked`` — a VLM verdict on views its goal check took; ``felt`` — the body's word (the
+    ``looked`` — a VLM verdict on views its goal check took; ``earlier`` — an earlier check's
+    settled verdict, no action since could change the atom, and the goal's own checks could not
+    settle it (:func:`~vap_bt.bt.goal_check.standing_confirmation`); ``felt`` — the body's word (the
     gripper settled the check, or the domain leaves the predicate to proprioception);
     ``unchecked`` — belief alone (map knowledge, a predicate never checked, goal checks off, or a
     look that could not settle it)."""
@@ -178,7 +180,7 @@ class GoalEvidence:
 
     def to_json(self) -> dict:
         return {kind: [a.to_json() for a in self.atoms if a.rests_on == kind]
-                for kind in ("looked", "felt", "unchecked")}
+                for kind in ("looked", "earlier", "felt", "unchecked")}
 
 
 class Verified:

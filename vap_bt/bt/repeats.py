@@ -15,7 +15,8 @@ item under furniture that its find pose never shows, a relation a model reads po
 looks from them will not settle it — nor the action's other preconditions about the same thing
 (:func:`seen_together`), which are then acted on belief too where they cannot be made out. A goal
 atom that stays unseen stops the episode (once handed back to the planner first when no check ever
-confirmed it: :mod:`vap_bt.bt.executive`): success is never claimed on belief. A check that came
+confirmed it; claimed on the check that confirmed it where that still stands:
+:mod:`vap_bt.bt.executive`): success is never claimed on belief alone. A check that came
 back with a value is not cause to stop — an injected slip may well go the other way the next
 time. But a precondition a check denies from the same belief a third time (:func:`contested`) is
 put on trial: the correction took the atom out, the re-location that followed put it back (a
