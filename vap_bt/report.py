@@ -6,8 +6,9 @@ The report also records the seed, versions, world and VLM parameters, every plan
 verification, situation (detected, and injected by the world) and replan.
 
 A claim is only as good as what it rests on: ``goal_evidence`` says, per goal atom, whether the
-goal's last check looked at it (a VLM verdict), felt it (proprioception) or left it to belief
-(the map, never checked), and every verification its ``basis``. Accuracy figures count the values
+goal's last check looked at it (a VLM verdict), felt it (proprioception), rests on an earlier
+check that confirmed it and still stands (``earlier``: its goal checks could not settle it) or left
+it to belief (the map, never checked), and every verification its ``basis``. Accuracy figures count the values
 a sense gave at the time (:func:`verification_counts`); a value reused from an earlier check is
 counted apart and never as verified.
 
