@@ -438,7 +438,8 @@ class Executive:
     def _standing(self, atoms: list[Atom], board: Board) -> dict[Atom, int]:
         """Each goal atom in ``atoms`` (no goal check could settle them) with the earlier check it
         still rests on (:func:`~vap_bt.bt.goal_check.standing_confirmation`), or nothing unless
-        every one has one; never a place where a thing rests, which no action need change."""
+        every one has one; never where a thing rests, which a slip or a nudge moves with no action
+        of the plan."""
         expected = {l.atom: l.positive for l in self.task.goal}
         earlier = {a: standing_confirmation(a, expected.get(a, True), board.verifications, board.verified.views(a))
                    for a in atoms if not self.roles.supports(a)}
