@@ -457,3 +457,21 @@ def test_a_goal_no_goal_check_could_settle_rests_on_the_check_that_confirmed_it_
     rested = resting_on_earlier(evidence, {heated: 0}, [confirmed, unsettled]).to_json()
     assert rested["unchecked"] == [] and rested["earlier"][0]["verification"] == 0
     assert "eff check after turnon(microwave, cup)" in rested["earlier"][0]["reason"]
+
+
+def test_an_episode_claims_a_goal_its_goal_checks_could_not_settle_on_the_effect_check_that_did():
+    """The executive's side of it: symbolic heat_pie seed 18 — the oven's effect check confirmed
+    heated(apple_pie), the goal checks after it could not settle it, three times. The claim rests on
+    that effect check, the report names it, and the world holds the goal."""
+    r = session("heat_pie.yaml").episode(18)
+    goal_checks = [v for v in r["verifications"] if v["phase"] == "goal" and v["predicate"] == "heated(apple_pie)"]
+    assert len(goal_checks) >= 3 and all(v["outcome"] == "unsettled" for v in goal_checks[-3:]), \
+        "premise: the last three goal checks of heated(apple_pie) could not settle it"
+    assert r["success"] and r["goal_satisfied"], r["reason"]
+    assert "on the check that confirmed it" in r["reason"]
+    [earlier] = r["goal_evidence"]["earlier"]
+    assert earlier["predicate"] == "heated(apple_pie)" and earlier["outcome"] == "confirmed"
+    named = r["verifications"][earlier["verification"]]
+    assert named["phase"] == "eff" and named["value"] is True and named["action"].startswith("turnon(")
+    assert all(v["outcome"] == "unsettled" for v in r["verifications"][earlier["verification"] + 1:]
+               if v["predicate"] == "heated(apple_pie)"), "no settled check of it since"
