@@ -8,6 +8,8 @@ frame — or, without pixels, relation reports as the symbolic world gives them.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -112,6 +114,27 @@ def test_a_patch_of_floor_or_table_top_is_no_item_even_for_an_object_looked_for(
     on_table = {"plate": Believed((0.6, 0.5, 0.7), 0.65, support="table")}
     assert names(ident().identify(table_blob, on_table)) == [""]
     assert names(ident().identify(pixel_frame(("plate", (0.6, 0.5, 0.718))), on_table)) == ["plate"]  # 1.8 cm up
+
+
+def test_a_blob_of_the_house_that_spans_floor_and_wall_is_no_item_but_an_item_on_the_floor_is():
+    """A false positive on the house's own pixels (floor and wall are one region) takes the wall
+    behind a patch of floor: most of its points in the floor's plane, its top a metre up. Taken
+    for the cup looked for, it sent boil_water seed 13's grasps to an empty floor. A cup standing
+    on the floor, its mask bled onto the floor round it, is still the cup."""
+    f = pixel_frame(("cup", (0.3, -0.5, 0.0)), size=9)
+    wall = f.masks == 0
+    rows = np.nonzero(wall.any(axis=1))[0]
+    f.depth[rows[:3]] = np.where(wall[rows[:3]], 2.0 - 1.0, f.depth[rows[:3]])  # a third of it a metre up
+    assert names(ident().identify(f)) == [""]
+    cup = pixel_frame(("cup", (0.3, -0.5, 0.09)), size=9)
+    bled = cup.masks == 0
+    ring = np.zeros_like(bled)
+    ring[1:-1, 1:-1] = bled[2:, 1:-1] | bled[:-2, 1:-1] | bled[1:-1, 2:] | bled[1:-1, :-2]
+    ring &= ~bled
+    depth, masks = cup.depth.copy(), cup.masks.copy()
+    depth[ring], masks[ring] = 2.0, 0  # the floor round it, taken into its mask
+    assert 0 < ring.sum() < bled.sum()
+    assert names(ident().identify(replace(cup, depth=depth, masks=masks))) == ["cup"]
 
 
 def test_an_object_believed_elsewhere_takes_nothing_and_a_wide_belief_takes_anything_on_its_support():
