@@ -197,6 +197,7 @@ class Identifier:
         top = float(np.percentile(cloud[:, 2], 95))
         if top < self.p.surface_least:
             return True
+        mid = np.median(cloud, axis=0)
         # a blob of the house's own pixels spans floor and wall, and its top is the wall's
         # (boil_water seeds 13, 41 and 47 in pybullet: such a "cup" on the floor by the robot's
         # feet, taken while the cup was looked for, sent three grasps to an empty floor). The
@@ -204,9 +205,8 @@ class Identifier:
         # higher (none of 205 stick sightings in three gather_kindling episodes fell below); not
         # for a piece's top, where a knife or a plate lies flat, 1.8 cm thin, and the depth's
         # error brought the median within a centimetre of the top for 20 of 2007 knife sightings
-        if abs(float(np.median(cloud[:, 2]))) < self.p.surface_least:
+        if abs(float(mid[2])) < self.p.surface_least:
             return True
-        mid = np.median(cloud, axis=0)
         for piece in self.site_map.furniture:
             if piece.height is not None and abs(top - piece.height) < self.p.surface_least \
                     and _in_footprint(piece, mid, 0.0):
