@@ -209,6 +209,28 @@ def test_a_failed_episode_is_classed_by_the_first_rule_that_applies(claimed, hol
     assert measures.failure_mode(report) == mode
 
 
+def test_the_situation_trail_keeps_each_situation_with_its_diagnosis_truth_and_the_events_behind_it():
+    """The log's trail names, per situation, what the diagnosis and its truth were and which of the
+    world's logged events the truth rests on (by kind), its free text cut short."""
+    from tools.experiments import measures
+
+    injected = [{"kind": "grasp_fails_object_unchanged"}, {"kind": "moved"}]
+    situations = [{"kind": "effect", "action": "grasp(cup, table, kitchen)", "predicate": "holding(cup)",
+                   "detail": "", "diagnosis": "execution_failure", "diagnosis_basis": "x" * 500,
+                   "diagnosis_truth": "execution_failure", "truth_events": [0]},
+                  {"kind": "execution", "action": "open(fridge)", "predicate": None, "detail": "fridge: handle out of reach",
+                   "diagnosis": "execution_failure", "diagnosis_basis": "the skill of open(fridge) reported failure",
+                   "diagnosis_truth": "perception_error", "truth_events": []}]
+    report = {"config": {"budget": 3, "viewpoints": "vlm"}, "verifications": [], "success": False,
+              "goal_satisfied": False, "reason": "stuck", "situations": situations, "injected": injected}
+    trail = measures.of(report)[measures.TRAIL]
+    assert [(t["kind"], t["diagnosis"], t["truth"], t["events"]) for t in trail] == [
+        ("effect", "execution_failure", "execution_failure", ["grasp_fails_object_unchanged"]),
+        ("execution", "execution_failure", "perception_error", [])]
+    assert len(trail[0]["basis"]) == measures.TRAIL_TEXT and trail[1]["detail"] == "fridge: handle out of reach"
+    assert measures.TRAIL not in measures.COLUMNS  # the log's, not a CSV column
+
+
 #: the cheapest campaign: the closed-world baseline (no checks) on four seeds
 QUICK = ["--tasks", "S4", "--seeds", "4", "--verify", "none"]
 

@@ -20,6 +20,12 @@ that value is the world's (the ``truth`` the runner attaches).
 **Diagnoses.** Where a report's situations carry ``diagnosis`` and ``diagnosis_truth`` (what
 the executive concluded went wrong, and what the world says did), each pair; None when the report
 has no such keys (the table then says so).
+
+**Situation trail** (``situation_trail``, in ``episodes.jsonl`` only, not the CSV): each situation
+as the report has it, cut short — kind, action, atom, the skill's words, diagnosis and its basis,
+the truth and the kinds of the world's events the truth rests on. A confusion in the table is a
+count; the trail says which situations make it, so a change to the diagnosis rule can be sized on
+a campaign's rows instead of on episodes run again by hand.
 """
 
 from __future__ import annotations
@@ -31,6 +37,10 @@ VISUAL, ACCESS, MANIPULATION, OTHER, CRASH = "visual ambiguity", "state/access",
 FAILURE_MODES = (VISUAL, ACCESS, MANIPULATION, OTHER, CRASH)
 #: the row columns this module adds
 COLUMNS = ("uncertain_viewpoints", "uncertain_resolved", "uncertain_correct", "failure_mode", "diagnoses")
+#: the row key of the situation trail (the log's rows only: a list of records is no CSV cell)
+TRAIL = "situation_trail"
+#: how much of a situation's free text (the skill's words, the diagnosis' basis) the trail keeps
+TRAIL_TEXT = 120
 
 
 def of(report: dict) -> dict:
@@ -38,7 +48,7 @@ def of(report: dict) -> dict:
     checks = uncertain_checks(report)
     return {"uncertain_viewpoints": [c.charged for c in checks], "uncertain_resolved": sum(c.resolved for c in checks),
             "uncertain_correct": sum(bool(c.correct) for c in checks), "failure_mode": failure_mode(report),
-            "diagnoses": diagnoses(report)}
+            "diagnoses": diagnoses(report), TRAIL: situation_trail(report)}
 
 
 def failure_mode(report: dict) -> str | None:
@@ -69,3 +79,13 @@ def diagnoses(report: dict) -> list[list[str]] | None:
     pairs = [[str(s["diagnosis"]), str(s["diagnosis_truth"])] for s in report["situations"]
              if "diagnosis" in s and "diagnosis_truth" in s]
     return pairs if pairs or not report["situations"] else None
+
+
+def situation_trail(report: dict) -> list[dict]:
+    """Each situation of ``report``, cut short (the module docstring's trail)."""
+    events = report.get("injected") or []
+    return [{"kind": s["kind"], "action": s.get("action"), "predicate": s.get("predicate"),
+             "detail": (s.get("detail") or "")[:TRAIL_TEXT], "diagnosis": s.get("diagnosis"),
+             "basis": (s.get("diagnosis_basis") or "")[:TRAIL_TEXT], "truth": s.get("diagnosis_truth"),
+             "events": [events[i]["kind"] for i in s.get("truth_events") or () if i < len(events)]}
+            for s in report["situations"]]
