@@ -231,6 +231,41 @@ def test_the_situation_trail_keeps_each_situation_with_its_diagnosis_truth_and_t
     assert measures.TRAIL not in measures.COLUMNS  # the log's, not a CSV column
 
 
+@pytest.mark.parametrize("kind,action,predicate,detail,raised", [
+    ("execution", "open(oven)", None, "open(oven) stopped: blocked: the arm is 0.44 rad behind its set-point", "skill: blocked"),
+    ("execution", "fill(cup, kitchen_sink)", None, "kitchen_sink: tap out of reach", "skill: tap out of reach"),
+    ("execution", "grasp(cup, floor_kitchen, kitchen)", None, "cup is not where it was believed to be: not seen",
+     "skill: not where it was believed to be"),
+    ("execution", "find(a, b, c)", None, "no clear way to (6.90, 2.70): the base would run into an obstacle",
+     "skill: no clear way to"),
+    ("effect", "turnon(microwave, cup)", "turned_on(microwave)", "", "effect turned_on"),
+    ("unseen", None, "filled(cup)", "goal reached in belief but not confirmed by looking: filled(cup)",
+     "unseen filled at the goal"),
+    ("effect", None, "holding(cup)", "the gripper holds nothing after open(microwave)", "effect holding"),
+])
+def test_a_situation_is_classed_by_what_raised_it_without_names_or_numbers(kind, action, predicate, detail, raised):
+    from tools.experiments import measures
+
+    assert measures.situation_class({"kind": kind, "action": action, "predicate": predicate, "detail": detail}) == raised
+
+
+def test_the_failures_table_lists_wrong_diagnoses_by_what_raised_them():
+    """Two blocked arms read as execution failures where the world's record says belief was wrong,
+    one right: the table counts the two against the three so raised."""
+    from tools.experiments import failures
+
+    def t(truth):
+        return {"kind": "execution", "action": "open(oven)", "predicate": None, "truth": truth,
+                "detail": "open(oven) stopped: blocked: the arm is 0.44 rad behind its set-point",
+                "diagnosis": "execution_failure"}
+
+    rows = [{"strategy": "both", "situation_trail": [t("perception_error"), t("execution_failure")]},
+            {"strategy": "both", "situation_trail": [t("perception_error")]}, {"strategy": "both"}]
+    table = failures.wrong_by_class(rows)
+    assert "| perception_error | execution_failure | skill: blocked | 2 | 3 |" in table
+    assert "2 of 3 situations" in table and failures.wrong_by_class([{"strategy": "both"}]) == ""
+
+
 #: the cheapest campaign: the closed-world baseline (no checks) on four seeds
 QUICK = ["--tasks", "S4", "--seeds", "4", "--verify", "none"]
 

@@ -21,11 +21,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the checkout's r
 
 from tools.experiments import compare, plots, tables  # noqa: E402
 from tools.experiments.command import Campaign, Experiment, chosen, main  # noqa: E402
-from tools.experiments.measures import FAILURE_MODES  # noqa: E402
+from tools.experiments.measures import FAILURE_MODES, TRAIL, situation_class  # noqa: E402
 from tools.experiments.strategies import options, strategies_in  # noqa: E402
 from vap_bt.settings import default  # noqa: E402
 
 NO_DIAGNOSIS = "No diagnosis in these reports (their situations carry no `diagnosis`/`diagnosis_truth`)."
+#: how many kinds of wrong diagnosis the trail's table lists (the most frequent)
+WRONG_KINDS = 15
 
 
 def report(rows: list[dict], campaign: Campaign) -> str:
@@ -73,7 +75,23 @@ def confusion(rows: list[dict]) -> str:
         truths = sorted({t for _, t in pairs[s]})
         out += (f"\n{s}:\n\n" + tables.markdown(["world's cause \\ diagnosis", *said],
                                                  [[t, *(pairs[s][(d, t)] for d in said)] for t in truths]))
+        out += wrong_by_class([r for r in rows if r["strategy"] == s])
     return out
+
+
+def wrong_by_class(rows: list[dict]) -> str:
+    """The wrong diagnoses of ``rows`` by what raised the situation (:func:`situation_class`), the
+    most frequent first, from the rows' situation trails; nothing where the rows carry none."""
+    trails = [t for r in rows for t in r.get(TRAIL) or ()]
+    if not trails:
+        return ""
+    wrong = Counter((t["truth"], t["diagnosis"], situation_class(t)) for t in trails if t["truth"] != t["diagnosis"])
+    alike = Counter(situation_class(t) for t in trails)
+    listed = wrong.most_common(WRONG_KINDS)
+    return (f"\nWrong diagnoses by what raised the situation ({sum(wrong.values())} of {len(trails)} situations; "
+            f"the {len(listed)} most frequent kinds; \"of its kind\": all situations so raised):\n\n"
+            + tables.markdown(["world's cause", "diagnosis", "raised by", "wrong", "of its kind"],
+                              [[t, d, c, n, alike[c]] for (t, d, c), n in listed]))
 
 
 FAILURES = Experiment("failures", __doc__.splitlines()[0], options=options, report=report,

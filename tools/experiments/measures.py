@@ -30,6 +30,8 @@ a campaign's rows instead of on episodes run again by hand.
 
 from __future__ import annotations
 
+import re
+
 from vap_bt.viewpoint_measure import uncertain_checks
 
 VISUAL, ACCESS, MANIPULATION, OTHER, CRASH = "visual ambiguity", "state/access", "manipulation", "other", "crash"
@@ -89,3 +91,19 @@ def situation_trail(report: dict) -> list[dict]:
              "basis": (s.get("diagnosis_basis") or "")[:TRAIL_TEXT], "truth": s.get("diagnosis_truth"),
              "events": [events[i]["kind"] for i in s.get("truth_events") or () if i < len(events)]}
             for s in report["situations"]]
+
+
+def situation_class(t: dict) -> str:
+    """What raised a trail's situation, in words shared by its kind: a failed skill by what it
+    said, names and numbers taken out ("blocked", "tap out of reach", "no clear way to"), a check
+    by its kind and predicate ("effect holding", "unseen filled at the goal")."""
+    if t["kind"] == "execution":
+        detail = t.get("detail") or ""
+        words = re.sub(r"^\w+\([^)]*\) stopped: ", "", detail)  # "open(oven) stopped: blocked: ..."
+        if words == detail:
+            words = re.sub(r"^\w+: ", "", words)  # the thing the skill names first: "oven: the hand is full"
+            words = re.sub(r"^\w+ (is|was) ", "", words)  # "cup is not where ..." as "not where ..."
+        return "skill: " + re.sub(r"\s*\(.*", "", words.split(":")[0]).strip()
+    predicate = (t.get("predicate") or "").split("(")[0]
+    goal = t.get("action") is None and (t.get("detail") or "").startswith("goal")
+    return f"{t['kind']} {predicate}".strip() + (" at the goal" if goal else "")
