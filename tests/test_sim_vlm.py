@@ -255,3 +255,25 @@ def test_judges_the_instance_the_executive_marked():
         Session._score_verification(runner, v)
         assert (runner._truths[id(v)]["truth"] == value) == right, (view, value)
         assert runner._truths[id(v)]["truth"] == (view == "f") == runner._truths[id(v)]["first_truth"]
+
+
+def test_a_truth_read_after_the_world_moved_on_is_counted_late_even_once_its_record_is_forgotten():
+    """A question about a frame whose world has stepped since reads the truth now: the log counts
+    it, and keeps the count when the record is evicted (the report's world.late_truth_readings);
+    a reset clears it."""
+    from vap_bt.sim.captures import CaptureLog
+
+    now = [0]
+    oracle = FunctionOracle(lambda a: True, lambda: [])
+    log = CaptureLog(size=1)
+    first = CaptureRecord("f-0", 0, {}, oracle, lambda: now[0])
+    log.add(first)
+    first.holds(ON)  # asked at once: read at capture, not late
+    now[0] = 5
+    first.holds(INSIDE)  # asked after the world stepped: late
+    first.holds(INSIDE)  # remembered: no second reading
+    assert log.late == 1
+    log.add(CaptureRecord("f-1", 5, {}, oracle, lambda: now[0]))  # f-0 is forgotten
+    assert log.get("f-0") is None and log.late == 1
+    log.clear()
+    assert log.late == 0

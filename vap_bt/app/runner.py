@@ -542,6 +542,9 @@ class Session:
         physics = getattr(self.world, "physics", None)
         if physics:
             out["physics"] = physics
+        captures = getattr(self.world, "captures", None)
+        if captures is not None:  # truth a question read after its frame's world had moved on (captures.py)
+            out["late_truth_readings"] = captures.late
         return out
 
     def _report(self, cfg: RunConfig, out: EpisodeOutcome, vlm: MeteredVLM | None, scores: list[dict],
