@@ -533,7 +533,8 @@ class Session:
 
     def _sensors(self) -> dict:
         """The world's sensor models (printed next to the detector): the depth camera's noise and
-        the localiser's error, and the physics' step, where the world has them."""
+        the localiser's error, the physics' step, and how many of the simulated VLM's truth
+        readings came after their frame's world had moved on, where the world has them."""
         out = {}
         for key, attr in (("depth_noise", "depth_noise"), ("localization", "localization_model")):
             model = getattr(self.world, attr, None)
