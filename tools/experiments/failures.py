@@ -82,13 +82,13 @@ def confusion(rows: list[dict]) -> str:
 def wrong_by_class(rows: list[dict]) -> str:
     """The wrong diagnoses of ``rows`` by what raised the situation (:func:`situation_class`), the
     most frequent first, from the rows' situation trails; nothing where the rows carry none."""
-    trails = [t for r in rows for t in r.get(TRAIL) or ()]
-    if not trails:
+    classed = [(t, situation_class(t)) for r in rows for t in r.get(TRAIL) or ()]
+    if not classed:
         return ""
-    wrong = Counter((t["truth"], t["diagnosis"], situation_class(t)) for t in trails if t["truth"] != t["diagnosis"])
-    alike = Counter(situation_class(t) for t in trails)
+    wrong = Counter((t["truth"], t["diagnosis"], c) for t, c in classed if t["truth"] != t["diagnosis"])
+    alike = Counter(c for _, c in classed)
     listed = wrong.most_common(WRONG_KINDS)
-    return (f"\nWrong diagnoses by what raised the situation ({sum(wrong.values())} of {len(trails)} situations; "
+    return (f"\nWrong diagnoses by what raised the situation ({sum(wrong.values())} of {len(classed)} situations; "
             f"the {len(listed)} most frequent kinds; \"of its kind\": all situations so raised):\n\n"
             + tables.markdown(["world's cause", "diagnosis", "raised by", "wrong", "of its kind"],
                               [[t, d, c, n, alike[c]] for (t, d, c), n in listed]))
