@@ -286,6 +286,7 @@ class ActivePerception(py_trees.decorators.Decorator):
             board.doubted.discard(atom)
         if s.outcome in ("confirmed", "contradicted", "felt"):
             board.verified.remember(atom, s.value)
+            board.verified.settle(atom, s.value, self.rounds)
         if self.phase == "goal" and s.outcome == "unsettled":
             board.unconfirmed_goal.append(atom)
         if s.outcome == "unsettled" and self.phase == "pre" and self.ctx.unseen != "go_on" \

@@ -25,7 +25,8 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
     """Send one plan action to its skill server and follow the goal to its result."""
 
     KEYS: ClassVar[dict[str, Access]] = {"verified": Access.WRITE, "actions": Access.WRITE,
-                                         "situation": Access.WRITE, "sightings": Access.WRITE}
+                                         "situation": Access.WRITE, "sightings": Access.WRITE,
+                                         "verifications": Access.READ}
 
     def __init__(self, ctx: ExecutionContext, action: GroundAction, step: int) -> None:
         super().__init__(name=f"execute {action}")
@@ -48,9 +49,10 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         if not state.terminal:
             return Status.RUNNING
         result = self.handle.result()
-        self.board.verified.executed(self.action)  # whatever it did, what it touched must be looked at again
-        self.board.sightings.executed(self.action)  # and what was seen of it is no longer what is
         ok = state == GoalState.SUCCEEDED and result is not None and result.success
+        # whatever it did, what it touched must be looked at again
+        self.board.verified.executed(self.action, len(self.board.verifications), ok)
+        self.board.sightings.executed(self.action)  # and what was seen of it is no longer what is
         self.board.actions.append({"step": self.step, "action": str(self.action), "state": state.value,
                                  "message": result.message if result else "", "sent_s": self._sent_at,
                                  "done_s": self.ctx.now()})

@@ -75,7 +75,7 @@ from vap_bt.bt.compiler import compile_plan
 from vap_bt.bt.board import Board
 from vap_bt.bt.context import ExecutionContext, asking
 from vap_bt.bt.diagnosis import Sightings, diagnose, placed, review
-from vap_bt.bt.goal_check import resting_on_earlier, standing_confirmation
+from vap_bt.bt.goal_check import confirmed_by_its_action, resting_on_earlier, standing_confirmation
 from vap_bt.bt.record import Situation, Verification, Verified
 from vap_bt.bt.inflight import make_executor
 from vap_bt.bt.plan_tree import PlanTree
@@ -410,7 +410,7 @@ class Executive:
                     board.doubted |= {lit.atom for lit in situation.action.preconditions
                                       if lit.positive and lit.atom.predicate != self.roles.in_view}
                 recovered, survey = self._recover(graph, situation, times, out, deadline,
-                                                  shown_by_check(situation, board.verifications))
+                                                  shown_by_check(situation, board.verifications, frozenset(self.roles.support)))
                 review(situation, before, self._seen_again, graph, self._missed)
                 if not recovered:
                     break  # the time budget ran out while the robot was looking
@@ -441,7 +441,13 @@ class Executive:
         every one has one; never where a thing rests, which a slip or a nudge moves with no action
         of the plan."""
         expected = {l.atom: l.positive for l in self.task.goal}
-        earlier = {a: standing_confirmation(a, expected.get(a, True), board.verifications, board.verified.views(a))
+        verified, checks = board.verified, board.verifications
+        # among the views since the last action that could change it, else the last check that
+        # settled it, while no action since could undo that value (:meth:`Verified.standing`)
+        earlier = {a: next((i for views in (verified.views(a), verified.standing(a))
+                            if (i := standing_confirmation(a, expected.get(a, True), checks, views)) is not None),
+                           # no check settled it: the action that made it, seen to have happened
+                           confirmed_by_its_action(a, expected.get(a, True), checks, verified.ran, verified.hand))
                    for a in atoms if not self.roles.supports(a)}
         return earlier if atoms and len(earlier) == len(atoms) and None not in earlier.values() else {}
 
@@ -1185,19 +1191,37 @@ def unconfirmed_goal(atoms: list[Atom], step: int) -> Situation:
     return Situation("unseen", None, step, atoms[0], True, None, detail=detail)
 
 
-def shown_by_check(s: Situation, verifications: list[Verification]) -> bool:
-    """Whether ``s`` is a check that could not settle its atom (``unseen``) though its views showed
-    the thing the atom is about: the detector found it in a frame of the check, where the camera
-    was turned to belief's place for it. Then the model could not make the relation out; the thing
-    was not missing there, and no miss is noted (:meth:`Executive._note_miss`). A noted miss vetoes
-    every later sighting at that spot, and the true one with it (heat_pie seed 30 in pybullet: the
-    pie stood in the fridge all episode, seen there by the check whose "inside" stayed unsettled;
-    the re-survey's sighting of it in the fridge was refused, a false positive on the floor took it,
-    and three grasps on the floor found nothing)."""
-    if s.kind != "unseen" or s.atom is None or not s.atom.args:
+def shown_by_check(s: Situation, verifications: list[Verification], support: frozenset[str] = frozenset()) -> bool:
+    """Whether the thing ``s``'s atom is about was where belief put it, by the views of the check
+    that raised ``s``: then no miss is noted there (:meth:`Executive._note_miss`). A noted miss
+    vetoes every later sighting at that spot, and the true one with it (heat_pie seed 30 in
+    pybullet: the pie stood in the fridge all episode, seen there by the check whose "inside"
+    stayed unsettled; the re-survey's sighting of it in the fridge was refused, a false positive on
+    the floor took it, and three grasps on the floor found nothing). Two cases:
+
+    * a check that could not settle its atom (``unseen``) though the detector found the thing in a
+      frame of it, where the camera was turned to belief's place for it: the model could not make
+      the relation out;
+    * a check that settled against where the thing rests (a ``support`` predicate: on, inside)
+      whose frames showed the thing from two stands or more: a detector's false positive belongs
+      to one picture (the same view shows it again, another draws anew), so a thing found at its
+      spot from two stands is there, and the model's "no" is about what it rests on, not whether
+      it is there (gather_kindling seed 89 in pybullet: the stick lay on the garden floor, found
+      there from two stands, and vlm-2 said "not on the floor"; the miss noted at the spot refused
+      every later sighting of it there, a false positive across the garden took it, and three
+      grasps there found nothing). One picture's sighting proves nothing against a phantom (a
+      "cup" in the empty cabinet, boil_water seed 23)."""
+    if s.atom is None or not s.atom.args:
         return False
     v = next((v for v in reversed(verifications) if v.atom == s.atom), None)
-    return v is not None and any(s.atom.args[0] in r.identified for r in v.rounds)
+    if v is None:
+        return False
+    thing = s.atom.args[0]
+    if s.kind == "unseen":
+        return any(thing in r.identified for r in v.rounds)
+    if s.kind == "precondition" and s.observed is False and s.atom.predicate in support:
+        return len({r.stand for r in v.rounds if thing in r.identified and r.stand is not None}) >= 2
+    return False
 
 
 def rests_on_plan(s: Situation, verifications: list[Verification]) -> bool:

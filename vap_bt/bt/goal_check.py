@@ -14,7 +14,9 @@ knowledge, never checked, goal checks off, or a look that could not settle them)
 A goal atom whose goal checks could not settle it, after the robot went back to look and checked
 again until the executive calls it stuck, may still rest on an earlier check: the effect check
 that confirmed it right after the action that brought it about, with no action since that could
-change it and no settled view since that denied it (:func:`standing_confirmation`). That is the
+undo it and no settled view since that denied it (:func:`standing_confirmation`; an action that
+can only add the atom, the same press of a switch again, does not undo a view that saw it true:
+:meth:`vap_bt.bt.record.Verified.standing`). That is the
 paper's standard for the whole goal (Alg. 1 claims once the plan's effects are verified); the
 goal check's stricter bound (a second picture and odds that reach the claim's risk) stays the
 rule, and this is the fallback where the model reads the relation too poorly to ever reach it
@@ -23,6 +25,15 @@ microwave, three goal checks split between "yes" and "no", the episode given up)
 rests (``on``, ``inside``) is not a state that persists unseen: a slip or a nudge moves it without
 any action of the plan (see :func:`vap_bt.perception.judgement.evidence`), so those atoms never
 fall back.
+
+Where no check ever settled the atom, it may rest on the domain's model of the action that made it
+(:func:`confirmed_by_its_action`): the action's preconditions about the atom's things confirmed
+by views right before it ran, its skill said it succeeded, and a view right after it confirmed
+another of its effects — the action happened, and an action's effects come together (the oven's
+"on" seen after the press, the pie seen inside it before: the pie is heated, though vlm-2 reads
+"heated" of a pie small in the oven's mouth too poorly to say; heat_pie seed 93 in pybullet).
+A pie dropped beside the oven leaves "inside" unconfirmed before the press, and no claim rests
+on the press then.
 """
 
 from __future__ import annotations
@@ -33,8 +44,9 @@ import py_trees
 from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
-from vap_bt.bt.record import GoalAtomEvidence, GoalEvidence, Situation, Verification
+from vap_bt.bt.record import GoalAtomEvidence, GoalEvidence, Situation, Verification, may_change
 from vap_bt.domain.atoms import Atom, Literal
+from vap_bt.domain.knowledge import GroundAction
 from vap_bt.perception.profile import PerceptionProfile
 from vap_bt.perception.verification import Round
 from vap_bt.strategy import Strategy
@@ -105,16 +117,63 @@ def standing_confirmation(atom: Atom, expected: bool, verifications: Sequence[Ve
     return settled[-1]
 
 
+def confirmed_by_its_action(atom: Atom, expected: bool, verifications: Sequence[Verification],
+                            ran: Sequence[tuple[GroundAction, int, bool]], hand: frozenset[str]) -> int | None:
+    """The index in ``verifications`` of the check ``atom`` rests on by the model of the action that
+    brought it to ``expected`` (see the module docstring), or None. ``ran``: the actions that ran,
+    in order, each with how many checks had been recorded when it ended and whether its skill
+    succeeded (:attr:`vap_bt.bt.record.Verified.ran`); ``hand``: the hand's predicates, which any
+    action may change. The latest run of such an action that shows it, since the last action that
+    could undo the atom, counts, and no settled check of the atom since it may have said otherwise."""
+    for k in range(len(ran) - 1, -1, -1):
+        action, at, ok = ran[k]
+        if ok and atom in (action.add if expected else action.delete):
+            before = ran[k - 1][1] if k else 0
+            after = ran[k + 1][1] if k + 1 < len(ran) else len(verifications)
+            i = _co_effect_check(atom, action, verifications, before, at, after)
+            if i is None:
+                continue  # this run shows nothing; an earlier one may, and this one undid nothing
+            denied = any(v.atom == atom and v.value != expected and v.outcome in ("confirmed", "contradicted", "felt")
+                         for v in verifications[at:])
+            return None if denied else i
+        if may_change(action, atom, hand, expected):
+            return None  # something since could have undone it
+    return None
+
+
+def _co_effect_check(atom: Atom, action: GroundAction, verifications: Sequence[Verification],
+                     before: int, at: int, after: int) -> int | None:
+    """The check, among the effect checks of ``action``'s run (``verifications[at:after]``), that
+    confirmed another of its effects by a view — if every precondition of it about ``atom``'s
+    things was confirmed (by a view or the body) by its checks since the run before
+    (``verifications[before:at]``); None otherwise."""
+    name, things = str(action), set(atom.args)
+    pre = {v.atom: v for v in verifications[before:at] if v.phase == "pre" and v.action == name}
+    about = [a for a in action.pre_pos if things & set(a.args)]
+    if not about or any(a not in pre or pre[a].outcome not in ("confirmed", "felt") or pre[a].value is not True
+                        for a in about):
+        return None
+    made = action.add | action.delete
+    return next((i for i in range(at, after) if (v := verifications[i]).phase == "eff" and v.action == name
+                 and v.atom != atom and v.atom in made and v.outcome == "confirmed" and v.value == v.expected), None)
+
+
 def resting_on_earlier(evidence: GoalEvidence, earlier: dict[Atom, int],
                        verifications: Sequence[Verification]) -> GoalEvidence:
     """``evidence`` with each atom in ``earlier`` resting on the check it names (an index in
-    ``verifications``: :func:`standing_confirmation`)."""
+    ``verifications``: :func:`standing_confirmation`, or :func:`confirmed_by_its_action` when the
+    check is of another atom)."""
     def rest(a: GoalAtomEvidence) -> GoalAtomEvidence:
         i = earlier.get(a.atom)
         if i is None:
             return a
         v = verifications[i]
+        if v.atom != a.atom:
+            return GoalAtomEvidence(a.atom, a.expected, "earlier", i, v,
+                                    f"its goal checks could not settle it; {v.action} brings it about, ran "
+                                    f"with its preconditions about it confirmed, and its eff check confirmed "
+                                    f"{v.atom}; nothing since could undo it")
         return GoalAtomEvidence(a.atom, a.expected, "earlier", i, v,
                                 f"its goal checks could not settle it; its {v.phase} check after "
-                                f"{v.action} did, and nothing since could change it")
+                                f"{v.action} did, and nothing since could undo it")
     return GoalEvidence(tuple(rest(a) for a in evidence.atoms))

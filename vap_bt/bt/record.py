@@ -197,7 +197,15 @@ class Verified:
     (:class:`~vap_bt.bt.active_perception.ActivePerception`): those live, whatever the protocol,
     until an executed action's effects could change the atom (the planner's own frame assumption;
     the hand's atoms after every action) — a cup confirmed filled at the sink is still filled in
-    the microwave, where no view shows its inside."""
+    the microwave, where no view shows its inside.
+
+    And it keeps the last check that settled each atom (:meth:`settle`, :meth:`standing`) for as
+    long as no executed action could undo *its value*: an action that can only add an atom does
+    not make a seen-true one false (a second press of the oven's switch does not un-heat the pie
+    a view saw heated after the first), nor one that can only delete it a seen-false one true —
+    the same frame assumption, read per value. The actions that ran are kept in order (``ran``),
+    for a goal to rest on the action seen to have made it
+    (:func:`~vap_bt.bt.goal_check.confirmed_by_its_action`)."""
 
     def __init__(self, enabled: bool = False, hand: frozenset[str] = HOUSEHOLD.hand) -> None:
         self.enabled = enabled
@@ -205,6 +213,10 @@ class Verified:
         self.hand = hand
         self._values: dict[Atom, bool] = {}
         self._rounds: dict[Atom, list[Round]] = {}
+        self._settled: dict[Atom, tuple[bool, list[Round]]] = {}
+        #: every action that ran (or tried to), in order: the action, how many checks the episode
+        #: had recorded when it ended, and whether its skill reported success
+        self.ran: list[tuple[GroundAction, int, bool]] = []
 
     def get(self, atom: Atom) -> bool | None:
         """The value remembered for ``atom``, or None: never verified, forgotten since, or reuse disabled."""
@@ -224,23 +236,42 @@ class Verified:
         """The rounds ``atom`` was judged on since the last action that could have changed it."""
         return list(self._rounds.get(atom, ()))
 
+    def settle(self, atom: Atom, value: bool, rounds) -> None:
+        """A check settled ``atom`` at ``value`` on ``rounds`` (a view's verdict or the body's):
+        it replaces whatever settled the atom before."""
+        self._settled[atom] = (value, list(rounds))
+
+    def standing(self, atom: Atom) -> list[Round]:
+        """The rounds of the last check that settled ``atom``, while no action since could have
+        undone the value it settled (none when nothing settled it, or something since could)."""
+        return list(self._settled.get(atom, (None, []))[1])
+
     def distrust(self, atoms) -> None:
         """Forget the values and views ``atoms`` were judged on: something since casts doubt on
         them (the action meant to bring them about lost its tool)."""
         self._values = {a: v for a, v in self._values.items() if a not in atoms}
         self._rounds = {a: r for a, r in self._rounds.items() if a not in atoms}
+        self._settled = {a: s for a, s in self._settled.items() if a not in atoms}
 
-    def executed(self, action: GroundAction) -> None:
-        """``action`` ran (or tried to): forget what it could have changed."""
+    def executed(self, action: GroundAction, checks: int = 0, succeeded: bool = False) -> None:
+        """``action`` ran (or tried to; ``succeeded``: its skill said it did), ``checks`` checks
+        into the episode: forget what it could have changed."""
+        self.ran.append((action, checks, succeeded))
         self._values = {a: v for a, v in self._values.items() if not acted_on(action, a, self.hand)}
         self._rounds = {a: r for a, r in self._rounds.items() if not may_change(action, a, self.hand)}
+        self._settled = {a: (v, r) for a, (v, r) in self._settled.items()
+                         if not may_change(action, a, self.hand, v)}
 
 
-def may_change(action: GroundAction, atom: Atom, hand: frozenset[str]) -> bool:
-    """Whether ``action``'s effects (conditional ones included) could add or delete ``atom``, or
-    ``atom`` is the hand's (one of the ``hand`` predicates, or without arguments): the hand can
-    lose things on any move."""
-    return atom in action.may_add or atom in action.may_delete or atom.predicate in hand or not atom.args
+def may_change(action: GroundAction, atom: Atom, hand: frozenset[str], value: bool | None = None) -> bool:
+    """Whether ``action``'s effects (conditional ones included) could add or delete ``atom`` —
+    given its ``value``, only those that could make it otherwise: delete a true one, add a false
+    one — or ``atom`` is the hand's (one of the ``hand`` predicates, or without arguments): the
+    hand can lose things on any move."""
+    if atom.predicate in hand or not atom.args:
+        return True
+    adds, deletes = atom in action.may_add, atom in action.may_delete
+    return deletes if value is True else adds if value is False else adds or deletes
 
 
 def acted_on(action: GroundAction, atom: Atom, hand: frozenset[str]) -> bool:
