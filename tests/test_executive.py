@@ -487,6 +487,7 @@ def test_a_goal_no_goal_check_could_settle_rests_on_the_check_that_confirmed_it_
     evidence = GoalEvidence((GoalAtomEvidence(heated, True, "unchecked", 1, unsettled, "could not settle it"),))
     rested = resting_on_earlier(evidence, {heated: 0}, [confirmed, unsettled]).to_json()
     assert rested["unchecked"] == [] and rested["earlier"][0]["verification"] == 0
+    assert "checked" not in rested["earlier"][0]  # its own check
     assert "eff check after turnon(microwave, cup)" in rested["earlier"][0]["reason"]
 
 
@@ -570,7 +571,7 @@ def test_a_goal_no_check_settled_rests_on_the_action_seen_to_have_made_it():
 
     evidence = GoalEvidence((GoalAtomEvidence(heated, True, "unchecked", 4, checks()[4], "could not settle it"),))
     rested = resting_on_earlier(evidence, {heated: 3}, checks()).to_json()
-    assert rested["earlier"][0]["verification"] == 3
+    assert rested["earlier"][0]["verification"] == 3 and rested["earlier"][0]["checked"] == "turned_on(microwave)"
     assert "its eff check confirmed turned_on(microwave)" in rested["earlier"][0]["reason"]
 
 

@@ -161,6 +161,8 @@ class GoalAtomEvidence:
         if self.check is not None:
             out.update(verification=self.verification, value=self.check.value, outcome=self.check.outcome,
                        views=len(self.check.rounds))
+            if self.check.atom != self.atom:  # it rests on another effect of the action that made it
+                out["checked"] = str(self.check.atom)
         if self.reason:
             out["reason"] = self.reason
         return out
@@ -170,8 +172,10 @@ class GoalAtomEvidence:
 class GoalEvidence:
     """What the goal check of a tree rested on, per goal literal (the report's ``goal_evidence``):
     ``looked`` — a VLM verdict on views its goal check took; ``earlier`` — an earlier check's
-    settled verdict, no action since could change the atom, and the goal's own checks could not
-    settle it (:func:`~vap_bt.bt.goal_check.standing_confirmation`); ``felt`` — the body's word (the
+    settled verdict, no action since could undo it, and the goal's own checks could not settle it
+    (:func:`~vap_bt.bt.goal_check.standing_confirmation`), or, where no check ever settled it, the
+    check that saw another effect of the action that made it (``checked`` names that atom:
+    :func:`~vap_bt.bt.goal_check.confirmed_by_its_action`); ``felt`` — the body's word (the
     gripper settled the check, or the domain leaves the predicate to proprioception);
     ``unchecked`` — belief alone (map knowledge, a predicate never checked, goal checks off, or a
     look that could not settle it)."""
