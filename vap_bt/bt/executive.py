@@ -442,13 +442,18 @@ class Executive:
         of the plan."""
         expected = {l.atom: l.positive for l in self.task.goal}
         verified, checks = board.verified, board.verifications
-        # among the views since the last action that could change it, else the last check that
-        # settled it, while no action since could undo that value (:meth:`Verified.standing`)
-        earlier = {a: next((i for views in (verified.views(a), verified.standing(a))
-                            if (i := standing_confirmation(a, expected.get(a, True), checks, views)) is not None),
-                           # no check settled it: the action that made it, seen to have happened
-                           confirmed_by_its_action(a, expected.get(a, True), checks, verified.ran, verified.hand))
-                   for a in atoms if not self.roles.supports(a)}
+
+        def rests_on(a: Atom) -> int | None:
+            value = expected.get(a, True)
+            # among the views since the last action that could change it, else the last check that
+            # settled it, while no action since could undo that value (:meth:`Verified.standing`)
+            for views in (verified.views(a), verified.standing(a)):
+                if (i := standing_confirmation(a, value, checks, views)) is not None:
+                    return i
+            # no check settled it: the action that made it, seen to have happened
+            return confirmed_by_its_action(a, value, checks, verified.ran, verified.hand)
+
+        earlier = {a: rests_on(a) for a in atoms if not self.roles.supports(a)}
         return earlier if atoms and len(earlier) == len(atoms) and None not in earlier.values() else {}
 
     def _diagnose(self, s: Situation) -> Situation:
