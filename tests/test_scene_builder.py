@@ -21,7 +21,7 @@ from vap_bt.scene.graph import SceneGraph
 from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.taskfile import load
 
-from conftest import TREES
+from conftest import ROOT, TREES
 
 A = Atom.parse
 
@@ -119,6 +119,57 @@ def test_the_floor_along_every_wall_is_looked_at_from_inside_the_room_facing_the
     reach = np.hypot(WALL_LOOK_SPACING / 2, WALL_LOOK_INSET) + 1e-9
     assert all(np.min(np.hypot(*(aims - p).T)) <= reach for p in foot)
     assert b.wall_views("nowhere") == []
+
+
+def in_frame(view, points: np.ndarray) -> np.ndarray:
+    """Which floor ``points`` a view's frame shows: the wrist camera (robots/mobile_ur5e.yaml's
+    intrinsics) at the skills' eye over the stand (``skills.eyes.CAMERA_EYE``), aimed at the view's
+    point — a pinhole with nothing in the way."""
+    from robots.config import RobotConfig
+    from skills.eyes import CAMERA_EYE
+
+    cam = RobotConfig.from_yaml(ROOT / "robots" / "mobile_ur5e.yaml").camera
+    x, y, yaw = view.base_pose
+    eye = np.array([x + CAMERA_EYE[0] * np.cos(yaw), y + CAMERA_EYE[0] * np.sin(yaw), CAMERA_EYE[2]])
+    ahead = np.subtract(view.aim.point, eye)
+    ahead /= np.linalg.norm(ahead)
+    right = np.cross(ahead, (0.0, 0.0, 1.0))
+    right /= np.linalg.norm(right)
+    down = np.cross(ahead, right)
+    rel = np.c_[points, np.zeros(len(points))] - eye
+    z, u, v = rel @ ahead, rel @ right, rel @ down
+    return (z > 0) & (np.abs(u) <= z * cam.width / (2 * cam.fx)) & (np.abs(v) <= z * cam.height / (2 * cam.fy))
+
+
+def test_the_floor_between_the_walls_and_the_middle_of_a_wide_room_is_looked_at_too():
+    """In a room 4.4 m across (boil_water's kitchen) the walls' looks show the floor to about 0.8 m
+    off each wall, and the middle's (with the sweep's look round from the middle) not as far as
+    1.3 m off it: boil_water seed 129's cup lay there, in no frame of three searches. With the
+    inner ring's looks every point of the floor is in some frame."""
+    from vap_bt.scene.builder import INNER_LOOK_INSET, WALL_LOOK_DISTANCE
+
+    task = load(TREES / "collect_cup.yaml").planning
+    w, d = 6.15, 4.4
+    b = SceneGraphBuilder(task.knowledge, task.objects, SiteMap((RoomInfo("kitchen", "floor_kitchen", (0.0, 0.0, w, d)),)))
+    inner = b.inner_views("kitchen")
+    assert len(inner) == 2 * 4 + 2 * 2  # 3.75 m between the corners' points in four looks, 2.0 m in two
+    for v in inner:
+        (px, py, _), (x, y, yaw) = v.aim.point, v.base_pose
+        assert 0.0 < x < w and 0.0 < y < d
+        assert min(px, w - px, py, d - py) == pytest.approx(INNER_LOOK_INSET)
+        assert np.cos(yaw) * (px - x) + np.sin(yaw) * (py - y) == pytest.approx(WALL_LOOK_DISTANCE)  # facing it
+    floor = np.array([(x, y) for x in np.linspace(0.05, w - 0.05, 60) for y in np.linspace(0.05, d - 0.05, 43)])
+
+    def unseen(views) -> np.ndarray:
+        return floor[~np.any([in_frame(v, floor) for v in views], axis=0)]
+
+    outer = b.wall_views("kitchen") + b.middle_views("kitchen") + b.floor_views("kitchen")
+    missed = unseen(outer)
+    assert len(missed) and np.min(np.hypot(*(missed - (4.25, 1.29)).T)) < 0.15  # the cup's spot among them
+    assert len(unseen(outer + inner)) == 0
+    assert b.inner_views("nowhere") == []
+    narrow = SceneGraphBuilder(task.knowledge, task.objects, SiteMap((RoomInfo("hall", "floor_hall", (0.0, 0.0, 6.0, 2.0)),)))
+    assert narrow.inner_views("hall") == []  # 2 m across: the walls' looks meet the middle's
 
 
 def test_the_floor_at_the_middle_of_a_room_is_looked_at_from_all_round_it():

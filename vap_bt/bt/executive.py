@@ -386,6 +386,10 @@ class Executive:
                     # bring it about may have failed unseen (halve_egg seed 3: a cut that did not
                     # cut, its effect unsettled, three goal checks unsettled): do it again, once
                     redone.add(situation.atom)
+                    # the goal checks after the redo see what it did: their count starts anew
+                    # (boil_water seed 128: filled(cup) unseen three times, the cup refilled, and
+                    # the first goal check after it, unsettled, made the fourth: stuck)
+                    repeats.forget(situation.atom)
                     graph.correct(situation.atom, not situation.expected,
                                   self.task.knowledge.complements.get(situation.atom.predicate), cause="unconfirmed")
                     self.progress(f"    {situation.atom} never confirmed after {times} looks: doing it again")
@@ -1022,7 +1026,8 @@ class Executive:
         """The last looks of a survey or a search for ``sought()``, each until nothing is sought:
         first the floor along every wall (the sweep's views leave the feet of the walls out, and
         what rolled away lies there), then round the middle of each room's floor (the look round
-        from there leaves the floor at its feet out), then the tops of the rooms' pieces that
+        from there leaves the floor at its feet out), then the floor between those two (in a wide
+        room neither reaches it), then the tops of the rooms' pieces that
         things are put on, from nearer than the sweep's (a small thing on a counter every sweep
         view missed: a detector's miss belongs to the picture, a new one draws anew); before and
         after each, the floor round where a view glimpsed a sought thing (:meth:`_glimpses`).
@@ -1031,6 +1036,7 @@ class Executive:
         sweep = self._glimpses(sweep, sought, looked, lead)
         for what, views in (("along the walls of", self.builder.wall_views),
                             ("round the middle of the floor of", self.builder.middle_views),
+                            ("over the floor between the walls and the middle of", self.builder.inner_views),
                             ("nearer at the tops in", self.builder.near_top_views)):
             looks = [(r, views(r)) for r in rooms]
             if not sought() or not any(v for _, v in looks):

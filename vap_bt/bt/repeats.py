@@ -84,6 +84,11 @@ class RepeatWatch:
         self._seen[k] += 1
         return self._seen[k]
 
+    def forget(self, atom: Atom) -> None:
+        """Start counting the situations about ``atom`` afresh: the action that makes it ran
+        again, so its checks look at a new outcome, not at the one they could not make out."""
+        self._seen = Counter({k: n for k, n in self._seen.items() if k[2] != atom})
+
 
 def describe(s: Situation) -> str:
     """A situation in a few words, for the reason an episode stopped."""

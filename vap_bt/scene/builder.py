@@ -70,6 +70,14 @@ FLOOR_LOOK_HEADINGS = (-math.pi / 2, 0.0, math.pi, math.pi / 2)
 WALL_LOOK_INSET = 0.3
 WALL_LOOK_SPACING = 1.2
 WALL_LOOK_DISTANCE = 1.2
+#: the floor between the walls' looks and the middle's: a ring of points this far in from each
+#: wall, seen the walls' way (from WALL_LOOK_DISTANCE further in, facing the wall). A wall's look
+#: stands 1.5 m in and its frame spans the floor from the wall to about 0.8 m in; the middle's
+#: stands see about 0.7 m round the middle: in a room 4.4 m across a band from 0.8 to 1.5 m off each
+#: wall was in no search's frame (boil_water seed 129 in pybullet: the cup the hand lost lay 1.3 m
+#: from the kitchen's wall, searched for three times, then no plan). From 2.4 m in, a frame spans
+#: the floor from about 0.4 to 1.7 m off the wall
+INNER_LOOK_INSET = 1.2
 #: a look at the floor round a spot (where something slipped from the hand): from stands on every
 #: side, each facing it, in two rings — (distance m, first heading rad), six stands 60 degrees
 #: apart in each. Not from the spot itself: the camera never sees the floor under its own base (a
@@ -219,21 +227,41 @@ class SceneGraphBuilder:
         ``WALL_LOOK_INSET`` in from the wall, at most ``WALL_LOOK_SPACING`` apart, each from
         ``WALL_LOOK_DISTANCE`` further in, facing the wall; none for a room the map gives no
         outline."""
+        return self._floor_ring(room, WALL_LOOK_INSET, "by the wall")
+
+    def inner_views(self, room: str) -> list[Viewpoint]:
+        """A look at ``room``'s floor between the walls' looks and the middle's: points
+        ``INNER_LOOK_INSET`` in from each wall, along the part of it that is no corner, seen the
+        way :meth:`wall_views` sees theirs; none for a room the map gives no outline, nor along a
+        wall whose ring would reach past the room's middle (a narrow room's walls and middle
+        looks see all of it)."""
+        return self._floor_ring(room, INNER_LOOK_INSET, "off the wall", corners=False)
+
+    def _floor_ring(self, room: str, inset: float, label: str, corners: bool = True) -> list[Viewpoint]:
+        """Floor points ``inset`` in from each wall of ``room``, at most ``WALL_LOOK_SPACING``
+        apart along it (from corner to corner, or between the points ``inset`` in from each end),
+        each seen from ``WALL_LOOK_DISTANCE`` further in, facing the wall."""
         info = self.site_map.room(room)
         if info is None or info.bounds is None:
             return []
         x0, y0, x1, y1 = info.bounds
         out = []
-        # each wall: its start corner, the way along it, its length and the way into the room
-        for (ax, ay), (ux, uy), length, (nx, ny) in (((x0, y0), (1, 0), x1 - x0, (0, 1)), ((x1, y0), (0, 1), y1 - y0, (-1, 0)),
-                                                     ((x1, y1), (-1, 0), x1 - x0, (0, -1)), ((x0, y1), (0, -1), y1 - y0, (1, 0))):
-            n = max(1, math.ceil(length / WALL_LOOK_SPACING))
+        # each wall: its start corner, the way along it, its length, the way into the room and the
+        # room's depth that way
+        for (ax, ay), (ux, uy), length, (nx, ny), across in (
+                ((x0, y0), (1, 0), x1 - x0, (0, 1), y1 - y0), ((x1, y0), (0, 1), y1 - y0, (-1, 0), x1 - x0),
+                ((x1, y1), (-1, 0), x1 - x0, (0, -1), y1 - y0), ((x0, y1), (0, -1), y1 - y0, (1, 0), x1 - x0)):
+            start = 0.0 if corners else inset
+            span = length - 2 * start
+            if span <= 0 or 2 * inset >= across:
+                continue
+            n = max(1, math.ceil(span / WALL_LOOK_SPACING))
             for k in range(n):
-                s = (k + 0.5) * length / n
-                px, py = ax + ux * s + nx * WALL_LOOK_INSET, ay + uy * s + ny * WALL_LOOK_INSET
+                s = start + (k + 0.5) * span / n
+                px, py = ax + ux * s + nx * inset, ay + uy * s + ny * inset
                 stand = (px + nx * WALL_LOOK_DISTANCE, py + ny * WALL_LOOK_DISTANCE, math.atan2(-ny, -nx))
                 out.append(Viewpoint(room, Aim((info.floor,), (px, py, 0.0), info.floor), stand,
-                                     f"{room} floor by the wall at ({px:.2f}, {py:.2f})"))
+                                     f"{room} floor {label} at ({px:.2f}, {py:.2f})"))
         return out
 
     def near_top_views(self, room: str) -> list[Viewpoint]:
