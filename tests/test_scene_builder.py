@@ -121,10 +121,10 @@ def test_the_floor_along_every_wall_is_looked_at_from_inside_the_room_facing_the
     assert b.wall_views("nowhere") == []
 
 
-def in_frame(view, points: np.ndarray) -> np.ndarray:
-    """Which floor ``points`` a view's frame shows: the wrist camera (robots/mobile_ur5e.yaml's
-    intrinsics) at the skills' eye over the stand (``skills.eyes.CAMERA_EYE``), aimed at the view's
-    point — a pinhole with nothing in the way."""
+def in_frame(view, points: np.ndarray, z: float = 0.0) -> np.ndarray:
+    """Which ``points`` (x, y; at height ``z``: the floor's by default) a view's frame shows: the
+    wrist camera (robots/mobile_ur5e.yaml's intrinsics) at the skills' eye over the stand
+    (``skills.eyes.CAMERA_EYE``), aimed at the view's point — a pinhole with nothing in the way."""
     from robots.config import RobotConfig
     from skills.eyes import CAMERA_EYE
 
@@ -136,7 +136,7 @@ def in_frame(view, points: np.ndarray) -> np.ndarray:
     right = np.cross(ahead, (0.0, 0.0, 1.0))
     right /= np.linalg.norm(right)
     down = np.cross(ahead, right)
-    rel = np.c_[points, np.zeros(len(points))] - eye
+    rel = np.c_[points, np.full(len(points), z)] - eye
     z, u, v = rel @ ahead, rel @ right, rel @ down
     return (z > 0) & (np.abs(u) <= z * cam.width / (2 * cam.fx)) & (np.abs(v) <= z * cam.height / (2 * cam.fy))
 

@@ -53,6 +53,11 @@ TOP_VIEW_STANDOFF = 1.0
 SEARCH_TOP_STANDOFF = 0.7
 #: how a look at a top from each of those stands is labelled in logs and reports
 TOP_LOOKS = {TOP_VIEW_STANDOFF: "its top, from close by", SEARCH_TOP_STANDOFF: "its top, from nearer"}
+#: m of a top along its front that one look from SEARCH_TOP_STANDOFF shows: the camera stands
+#: 0.2 m off the front, about 0.6 m from the top's middle, and its frame (55 degrees wide) spans
+#: 0.6 m there. A longer top is looked at in parts (boil_water seed 102 in pybullet: the cup the
+#: hand lost lay on the counter 0.48 m from its middle, outside the one look at its top)
+NEAR_TOP_SPAN = 0.6
 #: the same stands for a look into a cavity that opens at the front (a microwave, an oven, a
 #: fridge), aimed at the cavity's middle: from them its top shows and what stands inside does not
 #: (boil_water seed 6 in pybullet: the cup heated in the microwave, out of every such frame)
@@ -267,7 +272,15 @@ class SceneGraphBuilder:
     def near_top_views(self, room: str) -> list[Viewpoint]:
         """A look at the top of every piece in ``room`` that things are put on, from nearer than
         the sweep's (:data:`SEARCH_TOP_STANDOFF`)."""
-        return [self._top_view(f, SEARCH_TOP_STANDOFF) for f in self.site_map.furniture if f.room == room and self._has_top(f)]
+        out = []
+        for f in self.site_map.furniture:
+            if f.room != room or not self._has_top(f):
+                continue
+            width = f.footprint[0] if f.footprint else 0.0
+            n = max(1, math.ceil(width / NEAR_TOP_SPAN - 1e-9))
+            out += [self._furniture_view(f, SEARCH_TOP_STANDOFF, TOP_LOOKS[SEARCH_TOP_STANDOFF] + (f", part {k + 1} of {n}" if n > 1 else ""),
+                                         along=(k + 0.5) * width / n - width / 2) for k in range(n)]
+        return out
 
     def spot_views(self, room: str, spot: tuple[float, float]) -> list[Viewpoint]:
         """A look at ``room``'s floor round ``spot`` from stands all round it in the room, each
@@ -322,10 +335,14 @@ class SceneGraphBuilder:
         return self._furniture_view(f, standoff, INSIDE_LOOKS[standoff], z=sum(f.cavity.z) / 2)
 
     def _furniture_view(self, f, standoff: float = VIEW_STANDOFF, label: str = "from the front",
-                        z: float | None = None) -> Viewpoint:
+                        z: float | None = None, along: float = 0.0) -> Viewpoint:
+        """A look at piece ``f`` from ``standoff`` in front of it, aimed at its middle at height
+        ``z`` — or ``along`` metres from the middle along its front (towards the piece's own left, as
+        it faces out)."""
         if f.pose is None:
             return Viewpoint(f.room, Aim((f.name,), place=f.name), None, f"{f.name}")
         x, y, yaw = f.pose
+        x, y = x - along * math.sin(yaw), y + along * math.cos(yaw)
         depth = f.footprint[1] if f.footprint else 0.5
         box = self.geometry.box(f.name) if self.geometry else None
         # the measured top once the piece has been seen (a look at its top), else a usual height
