@@ -408,7 +408,15 @@ class Hands:
             if len(stood) >= GRASP_STANDS:
                 return Outcome(False, f"{name}: no arm pose reaches it")
         self.progress(0.35, "approach")
-        self.body.line(G, steps=4, speed=0.3)
+        try:
+            self.body.line(G, steps=4, speed=0.3)
+        except Struck:
+            # a guarded approach: the fingertips met something before the grasp pose (the floor of
+            # a drawer a little higher than the map has it, beside the knife that lies on it), and
+            # the fingers close where the hand stopped; whether they caught the item, the gripper
+            # says (halve_egg seeds 58, 63, 76, 84, 116-118 in pybullet: the take-out of the knife
+            # ended "blocked" at this line three times from the same belief)
+            pass
         self.progress(0.55, "closing")
         holding = self.body.fingers(0.0, GRASP_FORCE)
         if holding:
