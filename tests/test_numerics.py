@@ -35,6 +35,20 @@ def test_importing_the_package_pins_the_kernels_numpy_and_scipy_load():
     assert got == {"numpy": "Haswell", "scipy": "Haswell", "simd": "X86_V3"}  # AVX2's, on an AVX-512 machine too
 
 
+def test_numpy_loaded_before_the_package_is_said_once_too_late_to_pin():
+    """A script that loads numpy (or pybullet, which loads it) before vap_bt runs the CPU's
+    kernels: the package cannot pin them then, and says so; loaded after it, or with the kernels
+    chosen by the environment, nothing is said."""
+    def stderr(code: str, env: dict[str, str]) -> str:
+        return subprocess.run([sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True,
+                              check=True).stderr
+
+    assert "numpy was loaded before vap_bt" in stderr("import numpy; import vap_bt", bare_env())
+    assert "numpy was loaded before vap_bt" not in stderr("import vap_bt; import numpy", bare_env())
+    assert "numpy was loaded before vap_bt" not in stderr("import numpy; import vap_bt",
+                                                           bare_env(OPENBLAS_CORETYPE="Haswell"))
+
+
 def test_a_kernel_set_someone_chose_is_kept():
     got = cores("vap_bt", "numpy", env=bare_env(OPENBLAS_CORETYPE="Sandybridge", NPY_DISABLE_CPU_FEATURES="X86_V3"))
     assert got["numpy"] == "Sandybridge" and "X86_V3" not in got["simd"]

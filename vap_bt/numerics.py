@@ -24,6 +24,7 @@ import ctypes
 import os
 import platform
 import sys
+import warnings
 from pathlib import Path
 
 #: the OpenBLAS kernel set pinned on x86-64
@@ -33,6 +34,14 @@ CORETYPE = "Haswell"
 NPY_OFF = "X86_V4 AVX512_ICL AVX512_SPR"
 
 if platform.machine().lower() in ("x86_64", "amd64"):
+    if "numpy" in sys.modules and "OPENBLAS_CORETYPE" not in os.environ:
+        # too late to pin: numpy chose its kernels when it loaded. Said, because the episode then
+        # differs from a campaign's with the same seed from the first rounding on (a trace script
+        # that imported pybullet, which loads numpy, before vap_bt: boil_water 102 and 135
+        # succeeded there and failed through tools/experiments, stop 58)
+        warnings.warn("numpy was loaded before vap_bt and OPENBLAS_CORETYPE is not set: its kernels are "
+                      "this CPU's, and a seed's episode may differ from a campaign's; import vap_bt first "
+                      f"or set OPENBLAS_CORETYPE={CORETYPE}", RuntimeWarning, stacklevel=2)
     os.environ.setdefault("OPENBLAS_CORETYPE", CORETYPE)
     os.environ.setdefault("NPY_DISABLE_CPU_FEATURES", NPY_OFF)
 
