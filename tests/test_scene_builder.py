@@ -127,18 +127,14 @@ def in_frame(view, points: np.ndarray, z: float = 0.0) -> np.ndarray:
     (``skills.eyes.CAMERA_EYE``), aimed at the view's point — a pinhole with nothing in the way."""
     from robots.config import RobotConfig
     from skills.eyes import CAMERA_EYE
+    from vap_bt.motion.se3 import look_pose
 
     cam = RobotConfig.from_yaml(ROOT / "robots" / "mobile_ur5e.yaml").camera
     x, y, yaw = view.base_pose
-    eye = np.array([x + CAMERA_EYE[0] * np.cos(yaw), y + CAMERA_EYE[0] * np.sin(yaw), CAMERA_EYE[2]])
-    ahead = np.subtract(view.aim.point, eye)
-    ahead /= np.linalg.norm(ahead)
-    right = np.cross(ahead, (0.0, 0.0, 1.0))
-    right /= np.linalg.norm(right)
-    down = np.cross(ahead, right)
-    rel = np.c_[points, np.full(len(points), z)] - eye
-    z, u, v = rel @ ahead, rel @ right, rel @ down
-    return (z > 0) & (np.abs(u) <= z * cam.width / (2 * cam.fx)) & (np.abs(v) <= z * cam.height / (2 * cam.fy))
+    eye = (x + CAMERA_EYE[0] * np.cos(yaw), y + CAMERA_EYE[0] * np.sin(yaw), CAMERA_EYE[2])
+    T = look_pose(eye, view.aim.point)
+    u, v, depth = ((np.c_[points, np.full(len(points), z)] - T[:3, 3]) @ T[:3, :3]).T  # optical: x right, y down
+    return (depth > 0) & (np.abs(u) <= depth * cam.width / (2 * cam.fx)) & (np.abs(v) <= depth * cam.height / (2 * cam.fy))
 
 
 def test_the_floor_between_the_walls_and_the_middle_of_a_wide_room_is_looked_at_too():

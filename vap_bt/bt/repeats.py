@@ -87,7 +87,7 @@ class RepeatWatch:
     def forget(self, atom: Atom) -> None:
         """Start counting the situations about ``atom`` afresh: the action that makes it ran
         again, so its checks look at a new outcome, not at the one they could not make out."""
-        self._seen = Counter({k: n for k, n in self._seen.items() if k[2] != atom})
+        self._seen = Counter({k: n for k, n in self._seen.items() if k[2] != atom})  # k[2]: the atom (:meth:`key`)
 
 
 def describe(s: Situation) -> str:

@@ -278,8 +278,8 @@ class SceneGraphBuilder:
                 continue
             width = f.footprint[0] if f.footprint else 0.0
             n = max(1, math.ceil(width / NEAR_TOP_SPAN - 1e-9))
-            out += [self._furniture_view(f, SEARCH_TOP_STANDOFF, TOP_LOOKS[SEARCH_TOP_STANDOFF] + (f", part {k + 1} of {n}" if n > 1 else ""),
-                                         along=(k + 0.5) * width / n - width / 2) for k in range(n)]
+            out += [self._top_view(f, SEARCH_TOP_STANDOFF, (k + 0.5) * width / n - width / 2,
+                                   f", part {k + 1} of {n}" if n > 1 else "") for k in range(n)]
         return out
 
     def spot_views(self, room: str, spot: tuple[float, float]) -> list[Viewpoint]:
@@ -328,8 +328,8 @@ class SceneGraphBuilder:
         sig = self.knowledge.predicates.get(self.roles.on) if self.roles.on is not None else None
         return f.pose is not None and sig is not None and len(sig) == 2 and self.knowledge.is_subtype(f.type, sig[1])
 
-    def _top_view(self, f, standoff: float) -> Viewpoint:
-        return self._furniture_view(f, standoff, TOP_LOOKS[standoff])
+    def _top_view(self, f, standoff: float, along: float = 0.0, part: str = "") -> Viewpoint:
+        return self._furniture_view(f, standoff, TOP_LOOKS[standoff] + part, along=along)
 
     def _inside_view(self, f, standoff: float) -> Viewpoint:
         return self._furniture_view(f, standoff, INSIDE_LOOKS[standoff], z=sum(f.cavity.z) / 2)
