@@ -104,6 +104,10 @@ CARRY = (0.30, 0.40, 0.95)  # where a held item rides, in the base frame (beside
 TAP_BELOW = 0.08  # a vessel's top is held this far under the tap
 #: the blade's headings a cut tries, about the vertical from the hand's present one (radians)
 CUT_YAWS = (0.0, math.pi / 2, -math.pi / 2, math.pi)
+#: where along its lowest edge the blade meets the item, as shares of the way from the edge's
+#: middle to either end: the middle first, then out along the blade, where the arm does not reach
+#: over an item at the back of a board with the middle of the blade
+CUT_ALONG = (0.0, 0.8, -0.8)
 #: m in front of the pose under the tap (out of the sink's front) whence the vessel goes in under
 #: it, the first the arm reaches: the tap's arm ends a couple of centimetres past its outlet, and
 #: the cup is 0.07 m across. Nearer only when the arm does not reach the first: a level hand
@@ -1066,13 +1070,19 @@ class Hands:
         seen = self.locate(name, point, where)
         if seen is None:
             return Outcome(False, f"{name} is not where it was believed to be: not seen", missing=name)
-        c = seen.centroid
-        self.nav.approach(self.nav.work_pose(c, self.nav.toward_robot(c, where.place), "top", where.place))
-        seen = self.eyes.measure(name, c) or seen
-        # its middle from its top and bottom: the camera sees an item from above, and the centre
-        # of what it sees lies near the top (an egg's: a centimetre under it, not three)
-        c, top = seen.centroid.copy(), seen.top
-        c[2] = (top + self.bottom(seen, where)) / 2
+        c, top = self._cut_middle(seen, where)
+
+        def reach(base) -> list:
+            # the first turn of the blade whose stroke the arm reaches from ``base``: halve_egg
+            # seeds 142, 155, 156 in pybullet stood where no turn reached ("egg: out of reach"
+            # three times from the same stand)
+            heading = np.array([math.cos(base[2]), math.sin(base[2]), 0.0])
+            return next((list(ts) for ts in self._strokes(held, heading, c, top) if self.nav.reaches(base, list(ts))),
+                        [None])
+
+        at = seen.centroid
+        self.nav.approach(self.nav.work_pose(at, self.nav.toward_robot(at, where.place), "top", where.place, reach=reach))
+        c, top = self._cut_middle(self.eyes.measure(name, at) or seen, where)
         # the hand straight down, the blade level under it: the blade's lowest edge (from the knife
         # as the camera measured it when the hand took it) goes over the item's centre, then down
         x = self.body.pose("tcp")[:3, 0]
@@ -1080,28 +1090,49 @@ class Hands:
         # the blade turned about the vertical where the hand's present heading has no arm pose: a
         # cut goes through the item whichever way the blade lies across it (halve_egg seeds 7, 15
         # and 27 in pybullet: "egg: out of reach" three times from the same stand)
-        for yaw in CUT_YAWS:
-            T, below = self._blade_over(held, se3.axis_angle((0.0, 0.0, 1.0), yaw) @ x, c, top)
-            if self.body.goto_pose(T):
-                break
-        else:
+        over, stroke = next(((T, s) for T, s in self._strokes(held, x, c, top) if self.body.goto_pose(T)), (None, None))
+        if over is None:
             self.carry()
             return Outcome(False, f"{name}: out of reach")
-        stroke = T.copy()
-        # the edge down past the item's middle, half way to its bottom: through it, pressing
-        stroke[2, 3] = c[2] - (top - c[2]) / 2 + below
         self.body.line(stroke, steps=6, speed=0.2)
-        self.body.line(T, steps=2, speed=0.4)
+        self.body.line(over, steps=2, speed=0.4)
         self.carry()
         return Outcome(True)
 
+    def _cut_middle(self, seen: Seen, where: Where) -> tuple[np.ndarray, float]:
+        """The item's middle from its top and bottom, and its top: the camera sees an item from
+        above, and the centre of what it sees lies near the top (an egg's: a centimetre under it,
+        not three)."""
+        c, top = seen.centroid.copy(), seen.top
+        c[2] = (top + self.bottom(seen, where)) / 2
+        return c, top
+
+    def _strokes(self, held: Held, x: np.ndarray, c: np.ndarray, top: float):
+        """For each point along the blade (:data:`CUT_ALONG`) and each turn of it about the
+        vertical from ``x`` (:data:`CUT_YAWS`): the tcp pose with that point of the blade over the
+        item's middle ``c``, and the stroke's end, the edge down past the middle half way to the
+        bottom — through it, pressing."""
+        for along in CUT_ALONG:
+            for yaw in CUT_YAWS:
+                T, below = self._blade_over(held, se3.axis_angle((0.0, 0.0, 1.0), yaw) @ x, c, top, along)
+                stroke = T.copy()
+                stroke[2, 3] = c[2] - (top - c[2]) / 2 + below
+                yield T, stroke
+
     @staticmethod
-    def _blade_over(held: Held, x: np.ndarray, c: np.ndarray, top: float) -> tuple[np.ndarray, float]:
+    def _blade_over(held: Held, x: np.ndarray, c: np.ndarray, top: float,
+                    along: float = 0.0) -> tuple[np.ndarray, float]:
         """The tcp pose, hand straight down with its x axis along ``x``, that puts the held
-        knife's lowest edge 6 cm over ``top`` above ``c``, and how far that edge lies below the tcp."""
+        knife's lowest edge 6 cm over ``top`` above ``c`` — the edge's middle, or the point
+        ``along`` of the way from it to an end — and how far that edge lies below the tcp."""
         R = se3.frame_zx((0.0, 0.0, -1.0), x, (0.0, 0.0, 0.0))[:3, :3]
         pts = held.corners @ R.T  # the knife's box corners from the tcp, the hand down
-        edge = pts[pts[:, 2] <= pts[:, 2].min() + 0.005].mean(axis=0)
+        lowest = pts[pts[:, 2] <= pts[:, 2].min() + 0.005]
+        edge = lowest.mean(axis=0)
+        if along and len(lowest) > 1:
+            out = (lowest - edge)[:, :2]
+            u = np.linalg.svd(out, full_matrices=False)[2][0]  # the edge's length, level
+            edge = edge + along * float(np.abs(out @ u).max()) * np.array([u[0], u[1], 0.0])
         T = np.eye(4)
         T[:3, :3], T[:3, 3] = R, (c[0] - edge[0], c[1] - edge[1], top - edge[2] + 0.06)
         return T, -edge[2]
