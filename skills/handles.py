@@ -62,6 +62,7 @@ LAG_STEPS = (-0.15, 0.0, 0.15)
 RING = dict(distance=(0.58, 0.66, 0.74, 0.84), bearing=(0.0, -0.35, 0.35, -0.7, 0.7, -1.0, 1.0), yaw=(0.0, -0.3, 0.3))
 GLOBAL_TRIES = 6  # initial poses whose whole path is planned before settling for the furthest
 OPEN_TO = 0.92  # share of its travel an opened door or drawer is pulled to
+SHUT_BELOW = 0.1  # share of its travel under which a leaf a look fits is taken as shut
 #: an opening the arm could not follow all the way that left the leaf below this share of its
 #: travel is pulled again, from where the leaf stopped (a new stance, a new path): an oven's
 #: drop-down door left at a third of its travel lay across the way into the cavity, and every
@@ -286,6 +287,24 @@ class Handles:
             if q is not None:
                 return q
         return self.scene.joint.get(name, default)
+
+    def shut(self, name: str) -> bool:
+        """Whether a look at ``name``'s leaf shows it shut (fitted under :data:`SHUT_BELOW` of its
+        travel); False when ``name`` has no leaf or no look shows it. From where the motion left
+        the robot first, then from the piece's standoff: on the localiser's and the depth
+        camera's noise, the look from where a takeout ended did not show the fridge to the
+        detector, the same look after the drive to its standoff did."""
+        leaf = self.scene.leaves.get(name)
+        if leaf is None:
+            return False
+        for stand in (None, self.nav.standoff(name)):
+            if stand is not None:
+                self.nav.approach(stand)
+            if self.eyes.look_at(self.leaf_point(name)):
+                q = self.scene.fit_leaf(name, self.eyes.frame())
+                if q is not None:
+                    return abs(q) < SHUT_BELOW * abs(leaf.art.opened)
+        return False
 
     def open_close(self, name: str, opening: bool) -> Outcome:
         """Open or close ``name`` with a free hand: something held is set down on the nearest

@@ -155,6 +155,8 @@ def test_the_rule_reads_what_the_senses_showed_since_the_robot_last_acted():
     assert diagnosis(Situation("execution", grasp, 1)) == "execution_failure"
     # the skill looked where belief put the cup and did not see it: belief, not the motion
     assert diagnosis(Situation("execution", grasp, 1, missing="cup")) == "perception_error"
+    # the skill found a precondition of its action false where it looked: belief again
+    assert diagnosis(Situation("execution", grasp, 1, unmet=Atom("reachable", ("cup",)))) == "perception_error"
     sightings.saw((on,), True, "survey")
     assert diagnosis(Situation("unseen", grasp, 1, on, True, None)) == "perception_error"  # nothing seen to differ
 

@@ -241,6 +241,28 @@ def test_takeout_from_fridge_round_its_open_door(worlds, sensors):
 
 
 @on_both_sensors()
+def test_a_takeout_from_a_shut_fridge_says_the_fridge_is_not_open(worlds, sensors):
+    # heat_pie seed 141: the fridge's opening failed unseen, and three takeouts saw only its door
+    # ("apple_pie is not where it was believed to be"): a look finds the door shut, and the skill
+    # says its precondition open(fridge) was what failed, not where the pie is
+    w = worlds("heat_pie", sensors=sensors)
+    run(w, "find(floor_kitchen, fridge, kitchen)")
+    goal = act(w, "takeout(apple_pie, fridge, kitchen)")
+    result = goal.result()
+    assert goal.state() is GoalState.ABORTED and result.unmet == "open(fridge)", result
+    assert result.missing is None and holds(w, "inside(apple_pie, fridge)", "closed(fridge)")
+
+
+def test_a_takeout_from_an_open_fridge_the_pie_is_gone_from_says_the_pie_is_missing(worlds):
+    # the look finds the door open: where the pie is was what failed
+    w = worlds("heat_pie")
+    run(w, "find(floor_kitchen, fridge, kitchen)", "open(fridge)")
+    lay(w, "apple_pie", (3.5, 2.0), 0.03, (0.0, 0.0, 0.0))
+    result = act(w, "takeout(apple_pie, fridge, kitchen)").result()
+    assert holds(w, "open(fridge)") and result.missing == "apple_pie" and result.unmet is None, result
+
+
+@on_both_sensors()
 def test_takeout_from_drawer_then_cut_after_view_moves(worlds, sensors):
     w = worlds("halve_egg", sensors=sensors)
     run(w, "open(drawer)", "takeout(knife, drawer, kitchen)")

@@ -34,6 +34,11 @@ def test_messages_round_trip():
     assert decode(encode(missed), GoalStatus).result.missing == "cup"
     assert SkillResult.of(Outcome(False, ""), "grasp(cup)") == SkillResult(False, "grasp(cup)")
     assert SkillResult(False, "", {"missing": 3}).missing is None  # a skill's odd data names nothing
+    # and one that found a precondition false where it looked says which
+    shut = GoalStatus("g-1", GoalState.SUCCEEDED, None,
+                      SkillResult.of(Outcome(False, "fridge is shut", unmet="open(fridge)"), "takeout"))
+    back = decode(encode(shut), GoalStatus).result
+    assert back.unmet == "open(fridge)" and back.missing is None
     req = GoalRequest("g-2", "grasp", ("cup", "table"), "c")
     assert decode(encode(req), GoalRequest) == req
     # the executive's hints ride with the goal: where belief puts each object, on or in what

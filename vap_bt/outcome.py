@@ -8,7 +8,9 @@ carries it as it is. ``completed`` is the doer's own view: a grasp that closed o
 
 A motion that looked for the thing it was to act on where belief put it, and did not see it
 there, says which thing (``missing``): the failure is then news about belief, not about the
-motion, and the executive's diagnosis reads it so (:mod:`vap_bt.bt.diagnosis`).
+motion, and the executive's diagnosis reads it so (:mod:`vap_bt.bt.diagnosis`). One that found a
+precondition of its action false where it looked (a fridge it was to take a pie out of, seen shut)
+says which (``unmet``), for the same reason.
 """
 
 from __future__ import annotations
@@ -24,3 +26,6 @@ class Outcome:
     message: str = ""
     #: the thing the motion did not see where belief put it (None: the failure was the motion's own)
     missing: str | None = None
+    #: the precondition of the action the motion found false where it looked, as an atom's text
+    #: (``"open(fridge)"``; None: it found none)
+    unmet: str | None = None

@@ -51,14 +51,25 @@ class SkillResult:
     @classmethod
     def of(cls, outcome: Outcome, call: str) -> "SkillResult":
         """The result of a motion or a world's action that ended as ``outcome`` (``call`` is the
-        message when it gives none); the thing it did not see, if it names one, in ``data``."""
-        return cls(outcome.completed, outcome.message or call, {"missing": outcome.missing} if outcome.missing else {})
+        message when it gives none); the thing it did not see and the precondition it found
+        false, if it names them, in ``data``."""
+        data = {k: v for k, v in (("missing", outcome.missing), ("unmet", outcome.unmet)) if v}
+        return cls(outcome.completed, outcome.message or call, data)
 
     @property
     def missing(self) -> str | None:
         """The thing the skill looked for where belief put it and did not see
         (:attr:`~vap_bt.outcome.Outcome.missing`), when its data names one."""
-        name = self.data.get("missing") if isinstance(self.data, dict) else None
+        return self._named("missing")
+
+    @property
+    def unmet(self) -> str | None:
+        """The precondition the skill found false where it looked
+        (:attr:`~vap_bt.outcome.Outcome.unmet`), when its data names one."""
+        return self._named("unmet")
+
+    def _named(self, key: str) -> str | None:
+        name = self.data.get(key) if isinstance(self.data, dict) else None
         return name if isinstance(name, str) else None
 
 

@@ -8,8 +8,10 @@ told which it was — the runner scores its diagnosis against the world's record
 (:mod:`vap_bt.sim.situation_truth`) — so the rule reads only what the executive itself observed:
 
 1. a skill that reports failure (kind ``execution``) → ``execution_failure``, unless it says it
-   did not see the thing it was to act on where belief put it (``missing``): that is news about
-   belief, as rule 3 reads what the camera could not make out → ``perception_error``;
+   did not see the thing it was to act on where belief put it (``missing``) or found a
+   precondition of its action false where it looked (``unmet``: a fridge it was to take from,
+   shut): that is news about belief, as rule 3 reads what the camera could not make out →
+   ``perception_error``;
 2. a held thing lost after an action that was to keep it or make it held (the gripper felt it
    gone: :class:`~vap_bt.bt.feel_hand.FeelHand`) → ``execution_failure``;
 3. what the camera could not make out (kind ``unseen``) → ``perception_error``: nothing was
@@ -155,6 +157,9 @@ def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Dia
     if s.kind == "execution" and s.missing:
         return "perception_error", (f"the skill of {s.action} did not see {s.missing} where belief put it: "
                                     "belief about where it is was wrong, not the motion")
+    if s.kind == "execution" and s.unmet is not None:
+        return "perception_error", (f"the skill of {s.action} found {s.unmet} false where it looked: "
+                                    "belief in it was wrong, not the motion")
     if s.kind == "execution":
         return "execution_failure", f"the skill of {s.action} reported failure"
     if s.kind == "action_failed":  # SuccessVQA's "no": the action's whole outcome, not one atom

@@ -17,6 +17,7 @@ from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.record import Situation
+from vap_bt.domain.atoms import Atom
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.skill import GoalHandle, GoalState
 
@@ -62,9 +63,15 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
             return Status.SUCCESS
         detail = result.message if result else state.value
         self.board.situation = Situation("execution", self.action, self.step, detail=detail,
-                                         missing=result.missing if result else None)
+                                         missing=result.missing if result else None,
+                                         unmet=self._unmet(result.unmet if result else None))
         self.ctx.progress(f"    situation: execution of {self.action} failed ({detail})")
         return Status.FAILURE
+
+    def _unmet(self, text: str | None) -> Atom | None:
+        """The action's positive precondition the skill named as found false; None for anything
+        else (what a skill may correct is a precondition of the action it was given)."""
+        return next((lit.atom for lit in self.action.preconditions if lit.positive and str(lit.atom) == text), None)
 
     def terminate(self, new_status: Status) -> None:
         if new_status == Status.INVALID and self.handle is not None and not self.handle.state().terminal:

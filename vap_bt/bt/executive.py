@@ -776,6 +776,9 @@ class Executive:
             for lit in s.action.preconditions:
                 if lit.positive and lit.atom.predicate == self.roles.in_view:
                     graph.correct(lit.atom, False)
+        if s.unmet is not None:  # the skill's camera found a precondition false (a fridge shut)
+            graph.correct(s.unmet, False, self.task.knowledge.complements.get(s.unmet.predicate))
+            self.sightings.saw((s.unmet,), False, "skill")
 
     def _relocate_involved(self, graph: SceneGraph, s: Situation, dropped: list[str]) -> list[str]:
         """Re-locate the portable things the situation is about (and what the hand dropped) from

@@ -38,6 +38,8 @@ class Situation:
     detail: str = ""
     #: the thing a failed skill looked for where belief put it and did not see (execution only)
     missing: str | None = None
+    #: the precondition a failed skill found false where it looked (execution only)
+    unmet: Atom | None = None
     #: what the executive makes of it, from its own records, and why (None: not diagnosed yet)
     diagnosis: Diagnosis | None = None
     diagnosis_basis: str = ""
@@ -46,7 +48,7 @@ class Situation:
         return {"kind": self.kind, "action": str(self.action) if self.action else None,
                 "predicate": str(self.atom) if self.atom else None,
                 "expected": self.expected, "observed": self.observed, "detail": self.detail,
-                "missing": self.missing, "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
+                "missing": self.missing, "unmet": str(self.unmet) if self.unmet else None, "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
 
 
 @dataclass
