@@ -169,3 +169,36 @@ def rare_failures(task) -> None:
         node.tick_once()
         assert node.status == Status.FAILURE and ctx.board.situation is not None
         ctx.board.situation = None
+
+
+class Shut(Failing):
+    """A skill client whose every goal ended aborted, its skill having found ``unmet`` false."""
+
+    def __init__(self, unmet: str) -> None:
+        self.unmet = unmet
+
+    def result(self):
+        return SkillResult(False, "fridge is shut", {"unmet": self.unmet})
+
+
+@pytest.mark.parametrize("unmet, taken", [("open(fridge)", True), ("open(oven)", False), ("open (fridge", False)])
+def test_a_precondition_a_skill_found_false_corrects_belief_and_nothing_else_does(unmet, taken):
+    # heat_pie seed 141: the takeout's look found the fridge shut. What a skill may correct is a
+    # precondition of the action it was given, named as the action names it; anything else it
+    # says is its message only
+    from types import SimpleNamespace
+
+    from vap_bt.bt.diagnosis import Sightings
+    from vap_bt.bt.executive import Executive
+
+    task = load(TREES / "heat_pie.yaml").planning
+    graph = SceneGraph.of_facts((task.init | {Atom("open", ("fridge",))}) - {Atom("closed", ("fridge",))})
+    ctx = ExecutionContext(graph=graph, vlm=None, camera=None, skills=Shut(unmet))
+    node = ExecuteSkill(ctx, task.knowledge.ground("takeout", ("apple_pie", "fridge", "kitchen")), 0)
+    node.tick_once()
+    s = ctx.board.situation
+    assert node.status == Status.FAILURE and s.unmet == (Atom("open", ("fridge",)) if taken else None)
+    ex = SimpleNamespace(_note_miss=lambda g, s: None, task=task, roles=graph.roles, sightings=Sightings(graph.roles.hand))
+    Executive._correct_belief(ex, graph, s)
+    assert (Atom("open", ("fridge",)) in graph.facts) != taken
+    assert (Atom("closed", ("fridge",)) in graph.facts) == taken  # the complement with it
