@@ -1073,9 +1073,9 @@ class Hands:
         c, top = self._cut_middle(seen, where)
 
         def reach(base) -> list:
-            # the first turn of the blade whose stroke the arm reaches from ``base``: halve_egg
-            # seeds 142, 155, 156 in pybullet stood where no turn reached ("egg: out of reach"
-            # three times from the same stand)
+            # the first blade pose whose stroke the arm reaches from ``base``: halve_egg seed 142
+            # in pybullet, the egg 2 cm in from the board's back edge, stood where none reached
+            # ("egg: out of reach" three times from the same stand)
             heading = np.array([math.cos(base[2]), math.sin(base[2]), 0.0])
             return next((list(ts) for ts in self._strokes(held, heading, c, top) if self.nav.reaches(base, list(ts))),
                         [None])

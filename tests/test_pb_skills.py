@@ -275,9 +275,10 @@ def test_takeout_from_drawer_then_cut_after_view_moves(worlds, sensors):
 
 
 def test_an_egg_at_the_back_of_the_board_is_cut_with_the_blade_further_out(worlds):
-    # halve_egg seeds 142 and 155 in pybullet: the egg lay 2 cm in from the board's back edge
-    # (from the layout; after a cut the knife pushed it); no stand in front of the board put the
-    # blade's middle over it, and the cut ended "egg: out of reach" three times from the same belief
+    # halve_egg seed 142 in pybullet: the egg lay 2 cm in from the board's back edge (as laid out);
+    # no stand in front of the board put the blade's middle over it, and the cut ended "egg: out of
+    # reach" three times from the same belief. Seed 155's egg, pushed there by an earlier cut, is
+    # still out of reach: its knife was held by its middle, with less blade beyond the hand
     w = worlds("halve_egg", image_size=(320, 240))
     lay(w, "egg", (3.846, 4.334), 0.93, (0.0, 0.0, 0.0))
     run(w, "open(drawer)", "takeout(knife, drawer, kitchen)", "find(floor_kitchen, egg, kitchen)", "cut(egg, knife)")
