@@ -17,6 +17,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the checkout's root: tools/, vap_bt/
 
+import vap_bt  # noqa: E402,F401  (first: it pins numpy's kernels, vap_bt/numerics.py, before the tools load numpy)
+
 from tools.experiments import compare, plots, tables  # noqa: E402
 from tools.experiments.command import Campaign, Experiment, chosen, main  # noqa: E402
 from vap_bt.settings import default  # noqa: E402
