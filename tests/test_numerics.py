@@ -49,12 +49,13 @@ def test_numpy_loaded_before_the_package_is_said_once_too_late_to_pin():
                                                            bare_env(OPENBLAS_CORETYPE="Haswell"))
 
 
-@pytest.mark.parametrize("command", ["ablation", "failures", "strategies", "viewpoints"])
+@pytest.mark.parametrize("command", ["experiments/ablation", "experiments/failures", "experiments/strategies",
+                                     "experiments/viewpoints", "experiments/scene_geometry", "bench/viewpoint_cases"])
 def test_each_experiment_command_pins_the_kernels_before_its_tools_load_numpy(command):
     """RESULTS.md's commands are run as they are, with no OPENBLAS_CORETYPE: an experiment's
     modules (tables, plots) load numpy, and imported before the package they left the command's
     own process on the CPU's kernels, said by the warning above on every campaign's first line."""
-    out = subprocess.run([sys.executable, f"tools/experiments/{command}.py", "--help"], cwd=ROOT, env=bare_env(),
+    out = subprocess.run([sys.executable, f"tools/{command}.py", "--help"], cwd=ROOT, env=bare_env(),
                          capture_output=True, text=True, check=True)
     assert "numpy was loaded before vap_bt" not in out.stderr
 

@@ -51,12 +51,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-import numpy as np
-import pybullet as pb
-from py_trees.common import Status
-
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
+
+import vap_bt  # noqa: E402,F401  (first: it pins numpy's kernels, vap_bt/numerics.py, before pybullet loads numpy)
+
+import numpy as np  # noqa: E402
+import pybullet as pb  # noqa: E402
+from py_trees.common import Status  # noqa: E402
 
 from skills.kit import Kit  # noqa: E402
 from skills.views import ViewService  # noqa: E402

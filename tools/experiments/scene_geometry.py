@@ -23,6 +23,8 @@ import time
 from itertools import product
 from pathlib import Path
 
+import vap_bt  # noqa: F401  (first: it pins numpy's kernels, vap_bt/numerics.py, before pybullet loads numpy)
+
 import numpy as np
 import pybullet as pb
 
