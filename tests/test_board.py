@@ -181,11 +181,12 @@ class Shut(Failing):
         return SkillResult(False, "fridge is shut", {"unmet": self.unmet})
 
 
-@pytest.mark.parametrize("unmet, taken", [("open(fridge)", True), ("open(oven)", False), ("open (fridge", False)])
+@pytest.mark.parametrize("unmet, taken", [("open(fridge)", True), ("(open fridge)", True), ("open(oven)", False),
+                                          ("open (fridge", False)])
 def test_a_precondition_a_skill_found_false_corrects_belief_and_nothing_else_does(unmet, taken):
     # heat_pie seed 141: the takeout's look found the fridge shut. What a skill may correct is a
-    # precondition of the action it was given, named as the action names it; anything else it
-    # says is its message only
+    # precondition of the action it was given (in either notation); anything else it says is its
+    # message only
     from types import SimpleNamespace
 
     from vap_bt.bt.diagnosis import Sightings

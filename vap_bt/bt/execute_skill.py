@@ -17,7 +17,7 @@ from py_trees.common import Access, Status
 
 from vap_bt.bt.context import ExecutionContext
 from vap_bt.bt.record import Situation
-from vap_bt.domain.atoms import Atom
+from vap_bt.domain.atoms import Atom, AtomSyntaxError
 from vap_bt.domain.knowledge import GroundAction
 from vap_bt.skill import GoalHandle, GoalState
 
@@ -69,9 +69,13 @@ class ExecuteSkill(py_trees.behaviour.Behaviour):
         return Status.FAILURE
 
     def _unmet(self, text: str | None) -> Atom | None:
-        """The action's positive precondition the skill named as found false; None for anything
-        else (what a skill may correct is a precondition of the action it was given)."""
-        return next((lit.atom for lit in self.action.preconditions if lit.positive and str(lit.atom) == text), None)
+        """The action's positive precondition the skill named as found false (in either notation);
+        None for anything else (what a skill may correct is a precondition of the action it was given)."""
+        try:
+            atom = Atom.parse(text) if text else None
+        except AtomSyntaxError:
+            return None
+        return atom if any(lit.positive and lit.atom == atom for lit in self.action.preconditions) else None
 
     def terminate(self, new_status: Status) -> None:
         if new_status == Status.INVALID and self.handle is not None and not self.handle.state().terminal:
