@@ -50,7 +50,8 @@ def test_numpy_loaded_before_the_package_is_said_once_too_late_to_pin():
 
 
 @pytest.mark.parametrize("command", ["experiments/ablation", "experiments/failures", "experiments/strategies",
-                                     "experiments/viewpoints", "experiments/scene_geometry", "bench/viewpoint_cases"])
+                                     "experiments/viewpoints", "experiments/scene_geometry", "bench/viewpoint_cases",
+                                     "bench/replan", "bench/semantics", "bench/viz_load"])
 def test_each_experiment_command_pins_the_kernels_before_its_tools_load_numpy(command):
     """RESULTS.md's commands are run as they are, with no OPENBLAS_CORETYPE: an experiment's
     modules (tables, plots) load numpy, and imported before the package they left the command's

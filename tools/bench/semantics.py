@@ -23,6 +23,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
+import vap_bt  # noqa: E402,F401  (first: it pins numpy's kernels, vap_bt/numerics.py, before anything loads numpy)
 
 from unified_planning.plans import ActionInstance  # noqa: E402
 from unified_planning.shortcuts import SequentialSimulator  # noqa: E402

@@ -63,6 +63,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
+import vap_bt  # noqa: E402,F401  (first: it pins numpy's kernels, vap_bt/numerics.py, before anything loads numpy)
 sys.path.insert(0, str(ROOT / "tests"))
 
 from py_trees.common import Status  # noqa: E402
