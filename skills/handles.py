@@ -282,11 +282,15 @@ class Handles:
         pushed it open on its way to where that handle would be."""
         leaf = self.scene.leaves[name]
         default = 0.0 if opening else leaf.art.opened * OPEN_TO
-        if self.eyes.look_at(self.leaf_point(name)):
-            q = self.scene.fit_leaf(name, self.eyes.frame(), gated=again, handle=True if again else None)
-            if q is not None:
-                return q
-        return self.scene.joint.get(name, default)
+        q = self._looked(name, gated=again, handle=True if again else None)
+        return q if q is not None else self.scene.joint.get(name, default)
+
+    def _looked(self, name: str, **fit) -> float | None:
+        """The leaf's joint value a look at it from here fits (:meth:`SceneModel.fit_leaf` with
+        ``fit``), or None when no aim is clear or the frame does not show it."""
+        if not self.eyes.look_at(self.leaf_point(name)):
+            return None
+        return self.scene.fit_leaf(name, self.eyes.frame(), **fit)
 
     def shut(self, name: str) -> bool:
         """Whether a look at ``name``'s leaf shows it shut (fitted under :data:`SHUT_BELOW` of its
@@ -300,10 +304,9 @@ class Handles:
         for stand in (None, self.nav.standoff(name)):
             if stand is not None:
                 self.nav.approach(stand)
-            if self.eyes.look_at(self.leaf_point(name)):
-                q = self.scene.fit_leaf(name, self.eyes.frame())
-                if q is not None:
-                    return abs(q) < SHUT_BELOW * abs(leaf.art.opened)
+            q = self._looked(name)
+            if q is not None:
+                return abs(q) < SHUT_BELOW * abs(leaf.art.opened)
         return False
 
     def open_close(self, name: str, opening: bool) -> Outcome:
