@@ -240,8 +240,8 @@ def corrected_map(site: SiteMap, c: Correction) -> SiteMap:
     far end of a room, where a correction taken here says little anyway)."""
     if c.is_identity():
         return site
-    shift = c.point((*c.pivot, 0.0))[:2] - np.asarray(c.pivot, float)
-    moved = Correction(float(shift[0]), float(shift[1]), 0.0, c.pivot, c.points, c.pieces, c.inliers)
+    moved = translation(c)
+    shift = (moved.dx, moved.dy)
 
     def room(r: RoomInfo) -> RoomInfo:
         if r.bounds is None:
@@ -253,14 +253,22 @@ def corrected_map(site: SiteMap, c: Correction) -> SiteMap:
         pose = None if d.pose is None else moved.pose(*d.pose)
         return replace(d, pose=pose, articulation=_articulation(d.articulation, moved))
 
-    def piece(f: FurnitureInfo) -> FurnitureInfo:
-        return replace(f, pose=None if f.pose is None else c.pose(*f.pose),
-                       articulation=_articulation(f.articulation, c),
-                       switch=None if f.switch is None else _vec(c.point(f.switch)),
-                       tap=None if f.tap is None else _vec(c.point(f.tap)))
-
     return replace(site, rooms=tuple(map(room, site.rooms)), doors=tuple(map(door, site.doors)),
-                   furniture=tuple(map(piece, site.furniture)))
+                   furniture=tuple(corrected_piece(f, c) for f in site.furniture))
+
+
+def corrected_piece(f: FurnitureInfo, c: Correction) -> FurnitureInfo:
+    """A piece of furniture (its pose, leaf, switch, tap) moved by ``c``."""
+    return replace(f, pose=None if f.pose is None else c.pose(*f.pose),
+                   articulation=_articulation(f.articulation, c),
+                   switch=None if f.switch is None else _vec(c.point(f.switch)),
+                   tap=None if f.tap is None else _vec(c.point(f.tap)))
+
+
+def translation(c: Correction) -> Correction:
+    """``c``'s shift at its pivot without its turn: how :func:`corrected_map` moves rooms and doors."""
+    shift = c.point((*c.pivot, 0.0))[:2] - np.asarray(c.pivot, float)
+    return Correction(float(shift[0]), float(shift[1]), 0.0, c.pivot, c.points, c.pieces, c.inliers)
 
 
 def _vec(v) -> tuple[float, float, float]:

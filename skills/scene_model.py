@@ -22,11 +22,12 @@ Skills plan motions against two kinds of knowledge, neither of which is the simu
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from skills.registration import Correction, RegistrationParams, corrected_articulation, corrected_map, register
+from skills.registration import (Correction, RegistrationParams, corrected_articulation, corrected_map, corrected_piece,
+                                 register, translation)
 from vap_bt.motion import se3
 from vap_bt.motion.collision import SceneBoxes
 from vap_bt.motion.footprint import Obb, apart, footprint
@@ -80,6 +81,13 @@ HANDLE_SEARCH_RANGE = 3.0  # m: beyond this a bar 2.4 cm thick is a few noisy pi
 BAR_STANDOUT = (0.025, 0.075)
 BAR_FACE_BAND = 0.02
 HANDLE_MIN_POINTS, HANDLE_MIN_BAR = 40, 8
+#: m a furniture handle's bar must lie off the map before the leaf is moved onto it: on exact
+#: depth, with no localisation error, the measure put bars 2 to 5 mm off (a fingers' width of
+#: slack), and each such move replanned the handle's path onto another stance
+HANDLE_LEAST = 0.01
+#: percentiles of a bar's points across the leaf's face taken as its edges (a stray point or two
+#: of depth noise beyond them)
+BAR_EXTENT = (5.0, 95.0)
 #: rad: a door's face seen turned up to this much from its fitted leaf is the leaf at another
 #: joint value (more is not the face)
 DOOR_TURN_FIX = 0.35
@@ -454,9 +462,11 @@ class SceneModel:
         #: without them a correction holds only until the base moves)
         self.mark = None
         self.since = None
-        #: room doors as a look from where the robot stands last showed them lying off the map
-        #: (no furniture registration reaches a door across the room): until the base moves
-        self.door_fixes: dict[str, Correction] = {}
+        #: leaves whose handle a look showed lying off the map as corrected (:meth:`fix_handle`):
+        #: where each leaf's map lies in the robot's frame now, and as measured, with the mark
+        #: then (carried by the wheels, as the correction is)
+        self.handle_fixes: dict[str, Correction] = {}
+        self._fixed: dict[str, tuple[Correction, tuple[np.ndarray, np.ndarray] | None]] = {}
         #: told when the map's geometry changed (a correction taken or dropped)
         self.changed = lambda: None
         self._build(site)
@@ -466,16 +476,32 @@ class SceneModel:
         self.floor_items: dict[str, Obb] = {}
 
     def _build(self, site: SiteMap) -> None:
+        fixes = self.handle_fixes
+        # a piece whose handle a look placed is laid by its own correction, from the map as the
+        # localiser places it: its carcass with its leaf (a leaf moved alone into its carcass was
+        # fitted a third open by the next look)
+        raw = {f.name: f for f in self.raw.furniture}
+        site = replace(site, furniture=tuple(corrected_piece(raw[f.name], fixes[f.name]) if f.name in fixes else f
+                                             for f in site.furniture))
         self.site = site
         turn = self.correction.dtheta
         self.furniture = {f.name: Furniture(f) for f in site.furniture if f.pose is not None and f.footprint}
-        self.leaves = {f.name: Leaf(f.name, f.articulation, turn) for f in site.furniture if f.articulation}
+        self.leaves = {f.name: Leaf(f.name, f.articulation, fixes[f.name].dtheta if f.name in fixes else turn)
+                       for f in site.furniture if f.articulation}
         for d in site.doors:
             if d.articulation is not None:
-                fix = self.door_fixes.get(d.name)
+                # a room door's leaf alone (its map is not turned with the correction: corrected_map)
+                fix = fixes.get(d.name)
                 self.leaves[d.name] = Leaf(d.name, d.articulation) if fix is None else \
-                    Leaf(d.name, corrected_articulation(d.articulation, fix), fix.dtheta)
+                    Leaf(d.name, corrected_articulation(self.raw.door(d.name).articulation, fix), fix.dtheta)
         self.changed()
+
+    def _leaf_correction(self, name: str) -> Correction:
+        """How ``name``'s leaf lies in the robot's frame now: its handle's fix, else the map's
+        correction (a room door: its shift only, :func:`corrected_map`)."""
+        if name in self.handle_fixes:
+            return self.handle_fixes[name]
+        return translation(self.correction) if self.site.door(name) is not None else self.correction
 
     # -- where the map lies from here ----------------------------------------------------------
 
@@ -503,35 +529,41 @@ class SceneModel:
         c = register(clouds, models, self.registration)
         if c is None:
             return None
-        self._registered = (c, self.mark()) if self.mark is not None else None
+        self._registered = (c, self._mark())
         self.correction = c
         self._build(corrected_map(self.raw, c))
         return c
 
-    def base_moved(self) -> None:
-        """The base moved: the correction is carried along by the wheels' motion (the localiser's
-        frame may have jumped), and dropped once the base has gone :data:`ODOMETRY_HOLD` from
-        where it was registered; the map is then used as the localiser places it. A door's fix
-        is dropped (a look from the next stance fits it again)."""
-        if self.door_fixes:
-            self.door_fixes = {}
-            if self.correction.is_identity():
-                self._build(self.raw)
-                return
-        if self.correction.is_identity():
-            return
-        if self._registered is None or self.since is None:
-            self.correction = Correction.none()
-            self._build(self.raw)
-            return
-        c, mark = self._registered
+    def _mark(self) -> tuple[np.ndarray, np.ndarray] | None:
+        return self.mark() if self.mark is not None else None
+
+    def _carried(self, c: Correction, mark) -> Correction | None:
+        """``c``, taken at ``mark``, as it lies in the robot's frame now (carried by the wheels'
+        motion since); None once the base has gone :data:`ODOMETRY_HOLD` from there, or when
+        the body keeps no marks."""
+        if mark is None or self.since is None:
+            return None
         _, odom_then = mark
         _, odom_now = self.mark()
         if float(np.linalg.norm(odom_now[:2, 3] - odom_then[:2, 3])) > ODOMETRY_HOLD:
-            self.correction, self._registered = Correction.none(), None
-            self._build(self.raw)
+            return None
+        return c.moved(self.since(mark))
+
+    def base_moved(self) -> None:
+        """The base moved: the correction, and each leaf's handle fix, is carried along by the
+        wheels' motion (the localiser's frame may have jumped: a fridge's handle fixed from one
+        stance was 14 cm off after the drive to the grasp stance), and dropped once the base has
+        gone :data:`ODOMETRY_HOLD` from where it was measured; the map (the leaf) is then used as
+        the localiser places it."""
+        if self.correction.is_identity() and not self._fixed:
             return
-        self.correction = c.moved(self.since(mark))
+        carried = {n: self._carried(*f) for n, f in self._fixed.items()}
+        self.handle_fixes = {n: c for n, c in carried.items() if c is not None}
+        self._fixed = {n: f for n, f in self._fixed.items() if carried[n] is not None}
+        c = None if self._registered is None else self._carried(*self._registered)
+        if c is None:
+            self._registered = None
+        self.correction = c or Correction.none()
         self._build(corrected_map(self.raw, self.correction))
 
     # -- where things are, by the map --------------------------------------------------------
@@ -738,8 +770,9 @@ class SceneModel:
         """The joint value of ``name``'s leaf that best explains the frame's points of its piece
         of furniture (or door) (:meth:`Leaf.fit`), or ``hint`` when the frame does not show it.
         ``gated``: the believed value stands unless the frame clearly explains another better
-        (a passing glance, or a second look from close by). ``handle``: a room door's handle is
-        placed where the frame shows it (:meth:`_fix_door`; by default when not ``gated``)."""
+        (a passing glance, or a second look from close by). ``handle``: the leaf's handle is
+        placed where the frame shows it (:meth:`fix_handle`; by default a room door's when not
+        ``gated``)."""
         leaf = self.leaves.get(name)
         d = frame.detection(name)
         cloud = instance_cloud(frame, d) if (leaf is not None and d is not None) else None
@@ -754,24 +787,33 @@ class SceneModel:
         if q is None:
             return hint
         self.joint[name] = q
-        if door and (not gated if handle is None else handle):
-            self._fix_door(name, frame, leaf, q)
+        if (door and not gated) if handle is None else handle:
+            self.fix_handle(name, frame)
             q = self.joint[name]  # the handle's face may have said the leaf stands a little further
         return q
 
-    def _fix_door(self, name: str, frame: Frame, leaf: "Leaf", q: float) -> None:
-        """Where the door's handle is, as the frame shows it: among the door's points near where
+    def fix_handle(self, name: str, frame: Frame, q: float | None = None) -> None:
+        """Where the leaf's handle is, as the frame shows it: among the piece's points near where
         the map (as the fit placed the leaf) puts the handle, the leaf's face is the plane most of
-        them lie on, and the bar is what stands out of it by :data:`BAR_STANDOUT`; the door is
-        then shifted (and turned to the face's normal) so that its handle is the bar seen. A
-        robot's localiser is a few centimetres and a couple of degrees off, two metres away that
-        is up to 15 cm, and the fingers must close round a 2.4 cm bar; no furniture registration
-        reaches a door across the room."""
-        d = frame.detection(name)
-        if d is None or frame.depth is None or frame.masks is None:
+        them lie on, and the bar is what stands out of it by :data:`BAR_STANDOUT`; the leaf is
+        then shifted so that its handle is the bar seen (a room door, ``door``, also turned to the
+        face's normal). A robot's localiser is a few centimetres and a couple of degrees off, two
+        metres away that is up to 15 cm, and the fingers must close round a 2.4 cm bar; no
+        furniture registration reaches a door across the room. Nor does it place a fridge's
+        handle: the door, which fills the front, is left out of the fit (it moves), and the 4-cm
+        side walls left slid the map 5 cm along the front — the fingers closed beside the bar.
+        The leaf stands at ``q``, by default as last fitted (:meth:`fit_leaf`). The bar is looked
+        for among the piece's pixels when the detector found it, else among all: where the map
+        puts it, the depth alone shows a face and a bar (the detector missed a fridge filling the
+        picture)."""
+        leaf = self.leaves.get(name)
+        if leaf is None or frame.depth is None:
             return
-        pts = np.asarray(backproject(frame.depth, frame.masks == d.mask_id, frame.intrinsics, frame.camera_pose,
-                                     HANDLE_SEARCH_RANGE).points)
+        d = frame.detection(name)
+        mask = frame.masks == d.mask_id if d is not None and frame.masks is not None else np.ones(frame.depth.shape, bool)
+        q = self.joint.get(name, 0.0) if q is None else q
+        door = self.site.door(name) is not None
+        pts = np.asarray(backproject(frame.depth, mask, frame.intrinsics, frame.camera_pose, HANDLE_SEARCH_RANGE).points)
         eye = np.asarray(frame.camera_pose)[:3, 3]
         for side in ((1.0, -1.0) if leaf.art.other_side is not None else (1.0,)):
             p, n, bar = leaf.handle_at(q, side)
@@ -791,25 +833,50 @@ class SceneModel:
             w, v = np.linalg.eigh(xy.T @ xy)
             seen_n = v[:, 0] if v[:, 0] @ n[:2] > 0 else -v[:, 0]
             turn = math.atan2(n[0] * seen_n[1] - n[1] * seen_n[0], float(n[:2] @ seen_n))
-            if not leaf.art.prismatic and abs(turn) <= DOOR_TURN_FIX:
+            if door and not leaf.art.prismatic and abs(turn) <= DOOR_TURN_FIX:
                 # the leaf stands turned by that much more than the fit said: a joint value a few
                 # steps off (seen edge-on, an open leaf is hard to fit), which the localiser's
                 # degree or two would not explain
                 q = q + turn * float(np.sign(leaf.axis[2]) or 1.0)
                 self.joint[name] = q
                 p, n, bar = leaf.handle_at(q, side)
-            centre = stands.mean(axis=0)
-            shift = centre - p
-            shift[2] = 0.0
-            if math.hypot(shift[0], shift[1]) > self.registration.max_shift:
+            # a room door's bar is placed by its points' mean, as since the doors' fix was
+            # written: measured as a furniture leaf's, the hand closed 3 mm nearer the leaf, and
+            # after a slip injected on door_lg the loose fingers went on to push it wide open
+            shift = np.array([*(stands.mean(axis=0) - p)[:2], 0.0]) if door else bar_offset(stands, p, n, bar, face)
+            if shift is None or math.hypot(shift[0], shift[1]) > self.registration.max_shift:
                 return
-            # carried onto the bar seen
+            if not door and math.hypot(shift[0], shift[1]) < HANDLE_LEAST:
+                return  # within the measure's own error: the leaf stays where the map has it
+            # carried onto the bar seen: the leaf as it lay (corrected, or fixed before) moved by it
             fix = Correction(float(shift[0]), float(shift[1]), 0.0, (float(p[0]), float(p[1])), len(near), (name,), 1.0)
-            previous = self.door_fixes.get(name)
-            # the fit was of the leaf as already fixed: the new fix comes on top of the old
-            self.door_fixes[name] = fix if previous is None else previous.moved(fix.matrix())
+            leaf_now = self._leaf_correction(name).moved(fix.matrix())
+            self.handle_fixes[name] = leaf_now
+            self._fixed[name] = (leaf_now, self._mark())
             self._build(corrected_map(self.raw, self.correction))
             return
+
+
+def bar_offset(pts: np.ndarray, p: np.ndarray, n: np.ndarray, bar: np.ndarray, face: float) -> np.ndarray | None:
+    """How far (horizontally) a handle's bar seen as the points ``pts`` lies from where the map
+    has it, ``p`` on a leaf facing ``n``, the bar along ``bar``, the face seen ``face`` along
+    ``n`` from ``p``. Along the normal: the face seen against the map's face,
+    :data:`HANDLE_STANDOUT` behind the bar (the bar's own points are its front and a side).
+    Across the face, for an upright bar: the middle of the points' extent, not their mean (the
+    bar's side seen obliquely lies at its edge, and the mean leaned 1.7 cm towards the camera on
+    exact depth); a level bar is grasped anywhere along it, and a view that cuts it (at the
+    picture's edge, or the search's) would move its middle. None for a face looking up or down (a
+    dropped oven door), which has no horizontal across."""
+    across = np.cross((0.0, 0.0, 1.0), n)
+    if np.linalg.norm(across) < 0.5:
+        return None
+    across /= np.linalg.norm(across)
+    normal = np.array([n[0], n[1], 0.0]) / np.linalg.norm(n[:2])
+    shift = normal * (face + HANDLE_STANDOUT)
+    if abs(float(np.asarray(bar) @ across)) < 0.5:
+        lo, hi = np.percentile((pts - p) @ across, BAR_EXTENT)
+        shift = shift + across * (lo + hi) / 2
+    return shift
 
 
 def seen_through(box: Obb, eye: np.ndarray, pts: np.ndarray, short: float) -> np.ndarray:

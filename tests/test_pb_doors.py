@@ -59,13 +59,12 @@ def test_a_view_closer_to_an_open_door_does_not_drive_the_held_item_into_its_lea
 
 # turning every waypoint near a wrist's limit by a whole turn let the fridge and the cabinet close, but
 # swept the wrist round mid-path elsewhere (boil_water seed 0's cup then not found in the cabinet): not
-# done. The cabinet's close now stops before that, its handle out of reach from where the open left it
+# done. The cabinet's close stopped before that, its handle out of reach from where the open left it,
+# until stop 60's look at the handle (the arm back where the leaf's look left it): refused there too
 NOT_CLOSED = skills_fail("close is refused: the timed path through the handle's waypoints leaves a wrist's joint limits",
                          "refused: a sample leaves the joint limits")
 ARTICULATED = [  # (task scene, the thing, where the robot stands first)
-    pytest.param("boil_water", "cabinet", "find(floor_kitchen, cabinet, kitchen)", id="cabinet",
-                 marks=skills_fail("close(cabinet): from where open(cabinet) left the robot, its handle is out of reach",
-                                   "cabinet: handle out of reach")),
+    pytest.param("boil_water", "cabinet", "find(floor_kitchen, cabinet, kitchen)", marks=NOT_CLOSED, id="cabinet"),
     pytest.param("boil_water", "microwave", "find(floor_kitchen, microwave, kitchen)", id="microwave"),
     pytest.param("heat_pie", "fridge", "find(floor_kitchen, fridge, kitchen)", marks=NOT_CLOSED, id="fridge"),
     pytest.param("heat_pie", "oven", "find(floor_kitchen, oven, kitchen)", id="oven",
@@ -91,6 +90,18 @@ def test_open_then_close(worlds, task, thing, start):
     assert holds(w, f"open({thing})") and not holds(w, f"closed({thing})") and within_limits(w, thing)
     run(w, f"close({thing})")
     assert holds(w, f"closed({thing})") and not holds(w, f"open({thing})") and within_limits(w, thing)
+
+
+@pytest.mark.parametrize("seed, find", [(0, "find(floor_kitchen, fridge)"), (4, "find(floor_kitchen, fridge, kitchen)")])
+def test_on_real_sensors_a_fridge_opens_its_handle_placed_where_a_look_shows_the_bar(worlds, seed, find):
+    """The fingers closed 5 to 16 cm beside the fridge's handle ("the handle slipped"): seed 0's map,
+    registered to the fridge, slid 5 cm along its front (the door, which fills it, is left out of
+    the fit); seed 4's localiser frame moved 14 cm as the base came to rest at the grasp stance,
+    after the path was planned. A look at the handle from the stance places its bar, carried by the
+    wheels to where the base then stands, and the path is planned again in the frame believed there."""
+    w = worlds("heat_pie", seed=seed, sensors="real")
+    run(w, find, "open(fridge)")
+    assert holds(w, "open(fridge)")
 
 
 def test_open_fails_door_stays_closed(worlds):

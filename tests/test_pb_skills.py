@@ -178,12 +178,15 @@ def test_an_item_held_from_above_goes_into_the_oven_leaned():
     In world pb-1 it failed (a strict xfail): seed 4's survey believed the shut oven open (the
     VLM's error) and no placein found an arm pose. In pb-2 (the gliding base) it is decided by the
     pictures' draws too: it failed so with the skills that looked again from the same views, and
-    succeeds with those that look again from new ones."""
+    succeeds with those that look again from new ones. A placein that finds the oven shut (the
+    survey's belief, wrong again on the pictures the handle's look of stop 60 led to) is the
+    executive's to correct (it opens the oven, stop 59), not the leaning's: it does not count."""
+    SHUT = "oven is shut"
     from vap_bt.app.runner import EpisodeInterrupted, RunConfig, Session
     from vap_bt.taskfile import load
 
     def stop_at_a_failed_placein(line: str) -> None:
-        if line.lstrip().startswith("situation: execution of placein(apple_pie, oven"):
+        if line.lstrip().startswith("situation: execution of placein(apple_pie, oven") and SHUT not in line:
             raise KeyboardInterrupt
 
     task = load(TREES / "heat_pie.yaml")
@@ -195,7 +198,8 @@ def test_an_item_held_from_above_goes_into_the_oven_leaned():
         r = stopped.report
     finally:
         session.close()
-    placed = [a for a in r["actions_executed"] if a["action"].startswith("placein(apple_pie, oven")]
+    placed = [a for a in r["actions_executed"] if a["action"].startswith("placein(apple_pie, oven")
+              and SHUT not in a.get("message", "")]
     assert placed and all(a["state"] == "succeeded" for a in placed), placed
     assert r["success"] and r["goal_satisfied"], r["reason"]
 

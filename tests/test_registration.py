@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from skills.registration import Correction, corrected_map, register, surface_distance
-from skills.scene_model import Furniture, SceneModel
+from skills.scene_model import Furniture, SceneModel, bar_offset
 from vap_bt.motion import se3
 from vap_bt.motion.footprint import Obb
 from vap_bt.robot.site_map import FurnitureInfo, RoomInfo, SiteMap
@@ -121,3 +121,22 @@ def test_surface_distance_is_zero_on_a_face_and_grows_off_it():
     box = Obb.aabb((0, 0, 0), (1, 1, 1))
     d = surface_distance(np.array([[0.5, 0.5, 1.0], [0.5, 0.5, 1.1], [0.5, 0.5, 0.9], [0.5, 0.5, 0.5]]), [box])
     assert np.allclose(d, [0.0, 0.1, 0.1, 0.5])
+
+
+def test_a_bar_is_placed_by_the_middle_of_its_points_across_the_face_and_by_the_face_along_it():
+    """A fridge's handle as a look shows it: the bar (2.4 cm square, its centre 4.5 cm in front of
+    the leaf's face) 3 cm along the face and 1 cm out from where the map has it; the camera sees
+    its front and one side. The side's points lie at the bar's edge, so their mean leans that way."""
+    p, n = np.array([1.0, 2.0, 1.0]), np.array([0.0, -1.0, 0.0])
+    across = np.array([1.0, 0.0, 0.0])
+    centre = p + 0.03 * across + 0.01 * n
+    zs = np.linspace(-0.1, 0.1, 21)
+    front = [centre + u * across + 0.012 * n + (0, 0, z) for u in np.linspace(-0.012, 0.012, 7) for z in zs]
+    side = [centre - 0.012 * across + v * n + (0, 0, z) for v in np.linspace(-0.012, 0.012, 7) for z in zs]
+    bar = np.array(front + side)
+    face = float((centre - 0.045 * n - p) @ n)  # where the face's points lie along the normal
+    up = np.array([0.0, 0.0, 1.0])
+    assert np.allclose(bar_offset(bar, p, n, up, face), centre - p, atol=1e-3)
+    assert abs((bar.mean(axis=0) - centre) @ across) > 0.004  # what the mean would have said
+    assert np.allclose(bar_offset(bar, p, n, across, face), 0.01 * n, atol=1e-3)  # a level bar: not along it
+    assert bar_offset(bar, p, up, across, face) is None  # a face looking up
