@@ -31,7 +31,6 @@ from skills.goal import Where
 from skills.hands import Hands
 from skills.navigator import Navigator
 from skills.scene_model import ANONYMOUS, SceneModel, seen_from, seen_in_hand
-from vap_bt.robot.drivers import has_drivers
 from vap_bt.robot.frame import Frame
 from vap_bt.robot.labels import class_of
 from vap_bt.scene.identity import SEEN_RADIUS, Believed, Identifier, IdentityParams
