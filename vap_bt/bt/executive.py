@@ -712,7 +712,8 @@ class Executive:
         ticks — and the live view draws — until its steps are done: belief corrected from what was
         observed, a look at what a check could not make out, the gripper asked, the items involved
         re-located and, when lost, looked for; and when the same situation came back from the same
-        belief (``times``), a look round before the same plan. Returns whether it finished before
+        belief (``times``), a look round before the same plan — after which a thing a check could
+        not make out is looked at again, so that the next check starts from a view of it. Returns whether it finished before
         the time budget ran out, and the re-survey it took, if any."""
         executor, halt = self.executor, self._halt
         self._seen_again, self._missed = set(), set()
@@ -737,7 +738,16 @@ class Executive:
             return tuple(dict.fromkeys([*dropped, *((s.atom.args[0],) if held else ())]))
 
         search = Step("look for what is lost", look_for, executor, halt)
-        done = self._drive(recovery_tree(describe(s), [*steps, feel, relocate, search]), deadline, out)
+        steps += [feel, relocate, search]
+        if s.kind == "unseen" and s.atom is not None:
+            # a search walks the robot round rooms and leaves it where its last view stood, and the
+            # check that follows starts from there, not from the look above (boil_water seed 211 in
+            # pybullet: each look at the cup in the microwave, from its front, was followed by a
+            # re-survey for it, and every goal check began at the survey's last stand, beside the
+            # microwave, whose side hid the cup: the same four pictures, three times, then "stuck")
+            steps.append(Step(f"look at {', '.join(s.atom.args)} again",
+                              lambda: search.result is not None and self._look_at(graph, s.atom.args), executor, halt))
+        done = self._drive(recovery_tree(describe(s), steps), deadline, out)
         return done, search.result
 
     def _drive(self, tree: py_trees.trees.BehaviourTree, deadline: float | None,
