@@ -161,6 +161,39 @@ def test_the_rule_reads_what_the_senses_showed_since_the_robot_last_acted():
     assert diagnosis(Situation("unseen", grasp, 1, on, True, None)) == "perception_error"  # nothing seen to differ
 
 
+def test_a_contradiction_the_check_s_own_views_disagreed_on_is_no_world_change():
+    """A shut cabinet the survey read "open" (5 to 0), and the precondition check's first view too,
+    then "shut" from two more stands (pybullet boil_water seed 182): the model erred about the leaf
+    within the check itself, so the survey's "open" is no ground for a world change."""
+    k = load(TREES / "boil_water.yaml").planning.knowledge
+    takeout = k.ground("takeout", ("cup", "cabinet", "kitchen"))
+    opened = Atom("open", ("cabinet",))
+    graph, sightings = SceneGraph.of_facts({opened}), Sightings()
+    sightings.saw((opened,), True, "survey")
+    unanimous = Situation("precondition", takeout, 1, opened, True, False)
+    split = Situation("precondition", takeout, 1, opened, True, False, split=True)
+    assert diagnose(unanimous, sightings, graph)[0] == "world_change"
+    d, basis = diagnose(split, sightings, graph)
+    assert d == "perception_error" and "views disagreed" in basis and "survey" in basis
+    # only a world change is read again: belief that rested on no view was wrong either way
+    fresh = Sightings()
+    assert diagnose(split, fresh, graph) == diagnose(unanimous, fresh, graph)
+
+
+def test_a_check_that_contradicts_belief_says_whether_its_own_views_disagreed():
+    """The decorator marks the situation it raises: ``split`` when a view of the check voted the
+    value belief had, however the check then settled."""
+    from test_active_perception import CUP_ON_TABLE, Camera, ScriptedCheck, run, view
+
+    # a precondition an action failed on needs a second view: "yes", then "no" twice
+    doubted = ScriptedCheck(CUP_ON_TABLE, [view("yyyyy", True), view("nnnnn", True), view("nnnnn", True)])
+    split = run(doubted, Camera(), doubted={CUP_ON_TABLE})[2].board.situation
+    unanimous = run(ScriptedCheck(CUP_ON_TABLE, [view("nnnnn", True), view("nnnny", False)]), Camera())[2].board.situation
+    assert (split.kind, split.observed, split.split) == ("precondition", False, True)
+    assert (unanimous.kind, unanimous.observed, unanimous.split) == ("precondition", False, False)
+    assert split.to_json()["split"] is True
+
+
 def test_a_world_change_a_later_look_overturns_before_any_action_is_a_perception_error():
     k = load(TREES / "collect_cup.yaml").planning.knowledge
     grasp = k.ground("grasp", ("cup", "coffee_table", "living_room"))

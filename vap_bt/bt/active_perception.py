@@ -64,7 +64,7 @@ from vap_bt.domain.knowledge import GroundAction
 from vap_bt.errors import TransportError
 from vap_bt.perception import judgement
 from vap_bt.perception.judgement import Look, Phase, Settlement, Subject
-from vap_bt.perception.verification import Round, Verdict, choice, target_of
+from vap_bt.perception.verification import Round, Verdict, choice, distinct, target_of, votes
 from vap_bt.perception.viewpoints import ViewpointSearch
 
 
@@ -306,7 +306,8 @@ class ActivePerception(py_trees.decorators.Decorator):
             self.ctx.progress(f"    {atom} observed {s.value} again: trying {self.action} against it")
             return Status.SUCCESS
         kind = {"pre": "precondition", "eff": "effect", "goal": "goal"}[self.phase]
-        board.situation = Situation(kind, self.action, self.step, atom, expected, s.value)
+        board.situation = Situation(kind, self.action, self.step, atom, expected, s.value,
+                                    split=expected in votes(distinct(self.rounds)))
         self.ctx.progress(f"    situation: {kind} {'' if expected else 'not '}{atom} observed {s.value}")
         return Status.FAILURE
 

@@ -32,6 +32,12 @@ told which it was — the runner scores its diagnosis against the world's record
    world's defaults, or the last view said otherwise — the belief was what was wrong →
    ``perception_error``. A re-location's frames do not confirm (:data:`UNCONFIRMED`): belief
    takes in where the recovery found a thing it had lost track of, and the next check tests it.
+   Nor is it a world change when the check that raised the situation had views of its own that
+   showed the atom as belief had it (:attr:`~vap_bt.bt.record.Situation.split`): the model erred
+   about that very atom within one check, with nothing done in between, and a view erring once
+   more — the earlier sighting's — explains the contradiction without anything having changed
+   (pybullet, boil_water seed 182: a shut cabinet read "open" 5 to 0 by the survey and by the
+   precondition check's first view, "shut" by its next two) → ``perception_error``.
 
 The action-level baselines' situations (:mod:`vap_bt.bt.action_check`) name no atom: SuccessVQA's
 "no" says the action's outcome failed → ``execution_failure``; AffordanceVQA's "no" says some
@@ -176,10 +182,20 @@ def diagnose(s: Situation, sightings: Sightings, graph: SceneGraph) -> tuple[Dia
         return "execution_failure", f"{s.atom.args[0]} was lost from the hand during {s.action or 'the last action'}"
     if s.atom.predicate == roles.in_view and s.atom.args:
         thing = s.atom.args[0]
-        return _grounded(sorted(graph.location(thing)), sightings, f"{thing} not in sight where belief put it: ")
+        return _unsplit(s, _grounded(sorted(graph.location(thing)), sightings, f"{thing} not in sight where belief put it: "))
     if s.kind == "effect" and s.action is not None and s.atom in s.action.may_add | s.action.may_delete:
         return "execution_failure", f"{s.action} was to make {'' if s.expected else 'not '}{s.atom} and did not"
-    return _grounded([s.atom] if s.expected else [], sightings, "", absent=None if s.expected else s.atom)
+    return _unsplit(s, _grounded([s.atom] if s.expected else [], sightings, "", absent=None if s.expected else s.atom))
+
+
+def _unsplit(s: Situation, reading: tuple[Diagnosis, str]) -> tuple[Diagnosis, str]:
+    """Rule 6's reading of ``s``, but a perception error where it would be a world change and the
+    check that raised ``s`` had views of its own that showed the atom as belief had it."""
+    diagnosis, basis = reading
+    if diagnosis != "world_change" or not s.split:
+        return reading
+    return "perception_error", (f"the check's own views disagreed about {s.atom} (some showed it as belief had it): "
+                                f"the model erred about it, not the world ({basis})")
 
 
 @dataclass(frozen=True)

@@ -40,6 +40,9 @@ class Situation:
     missing: str | None = None
     #: the precondition a failed skill found false where it looked (execution only)
     unmet: Atom | None = None
+    #: a check that settled against belief had views of its own that showed the atom as belief
+    #: had it (the model erred about it in this very check, one way or the other)
+    split: bool = False
     #: what the executive makes of it, from its own records, and why (None: not diagnosed yet)
     diagnosis: Diagnosis | None = None
     diagnosis_basis: str = ""
@@ -48,7 +51,7 @@ class Situation:
         return {"kind": self.kind, "action": str(self.action) if self.action else None,
                 "predicate": str(self.atom) if self.atom else None,
                 "expected": self.expected, "observed": self.observed, "detail": self.detail,
-                "missing": self.missing, "unmet": str(self.unmet) if self.unmet else None, "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
+                "missing": self.missing, "unmet": str(self.unmet) if self.unmet else None, "split": self.split, "diagnosis": self.diagnosis, "diagnosis_basis": self.diagnosis_basis}
 
 
 @dataclass
