@@ -612,8 +612,8 @@ def test_views_since_the_action_that_lean_against_a_goal_atom_are_weighed_by_the
 def test_a_goal_atom_a_check_confirmed_but_whose_views_since_weigh_against_is_done_again_not_claimed():
     """Symbolic halve_egg seed 3: the cut's effect check confirmed sliced(egg), the goal checks
     after it could not settle it and their views weighed against it; the robot cuts again rather
-    than claim the goal on that one check (pybullet halve_egg seeds 214 and 218: such claims, after
-    a cut Table II made fail, were denied by the world), and the goal is then seen reached."""
+    than claim the goal on that one check (seed 159: such a claim, the world denied), and the goal
+    is then seen reached."""
     lines = []
     sess = session("halve_egg.yaml")
     sess.progress = lines.append

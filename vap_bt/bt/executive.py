@@ -386,8 +386,8 @@ class Executive:
                     # a goal no view confirmed rests on the plan alone, and the action that was to
                     # bring it about may have failed unseen (halve_egg seed 3: a cut that did not
                     # cut, its effect unsettled, three goal checks unsettled): do it again, once;
-                    # so too one a check confirmed that the views since weigh against (halve_egg
-                    # seed 214: "sliced" read once after a cut that failed, then mostly "not cut")
+                    # so too one a check confirmed that the views since weigh against (symbolic
+                    # halve_egg seed 159: "sliced" claimed on one such check, and the egg was whole)
                     redone.add(situation.atom)
                     how = "never confirmed" if rests_on_plan(situation, board.verifications) else "weighed against by its views"
                     # the goal checks after the redo see what it did: their count starts anew

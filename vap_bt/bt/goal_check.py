@@ -37,10 +37,12 @@ on the press then.
 
 Neither fallback holds where the views of the atom since the action that could change it —
 the confirming check's and every goal check's — weigh against it (:func:`leans_against`: their
-log odds by the backend's calibration fall below even). An egg vlm-2 read "sliced" once, after a
-cut Table II made fail, and six goal checks then split on mostly read "not cut" (halve_egg seeds
-214 and 218 in pybullet): the executive cuts again instead (the action is done again once, as for
-a goal no check ever confirmed), and claims nothing the views lean against.
+log odds by the backend's calibration fall below even). There the executive does the action again
+once (as for a goal no check ever confirmed) and claims nothing the views lean against: symbolic
+halve_egg seed 159 and boil_water seed 146 claimed "sliced" and "heated" on such a check, and the
+world denied both; cut and heated again, both goals were then seen reached (pybullet halve_egg seed
+228 too). Views that do not weigh against it leave the claim on the check: pybullet halve_egg
+seeds 214 and 218 are claimed so and denied, as before.
 """
 
 from __future__ import annotations
