@@ -129,3 +129,20 @@ def test_the_time_budget_halts_a_replanned_tree_and_cancels_its_goal_in_flight(e
     assert "time budget (3 s) exhausted" in report["reason"] and report["replans"] >= 1
     assert len(seen) >= 2 and not seen[-1].get("failed"), "the replanned tree's action should be running"
     assert halted, "the goal in flight in the replanned tree must be cancelled by the halt"
+
+
+def test_work_in_flight_left_by_a_ctrl_c_is_cancelled_not_waited_for():
+    """Leaving a ``working`` block on a Ctrl-C cancels the questions still queued and waits for none
+    (``Executor``'s own ``with`` would run every queued question first)."""
+    from vap_bt.bt.inflight import MAX_IN_FLIGHT, working
+
+    release = threading.Event()
+    t0 = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        with working(True) as executor:
+            futures = [executor.submit(release.wait, 30.0) for _ in range(3 * MAX_IN_FLIGHT)]
+            raise KeyboardInterrupt
+    left = time.monotonic() - t0
+    release.set()
+    assert left < 5.0
+    assert sum(f.cancelled() for f in futures) == 2 * MAX_IN_FLIGHT  # all but those already started

@@ -77,7 +77,7 @@ from vap_bt.bt.context import ExecutionContext, asking
 from vap_bt.bt.diagnosis import Sightings, diagnose, placed, review
 from vap_bt.bt.goal_check import confirmed_by_its_action, leans_against, resting_on_earlier, standing_confirmation
 from vap_bt.bt.record import Situation, Verification, Verified
-from vap_bt.bt.inflight import make_executor
+from vap_bt.bt.inflight import working
 from vap_bt.bt.plan_tree import PlanTree
 from vap_bt.bt.recovery import Halting, Step, recovery_tree
 from vap_bt.bt.repeats import LOOK_AFRESH, RepeatWatch, contested, describe, seen_together, stuck
@@ -265,11 +265,9 @@ class Executive:
         ended. Blocks until then; ``phase`` says meanwhile where it is."""
         self.phase = "survey"
         #: where work in flight runs: the checks' captures and questions, the recovery steps
-        self.executor = executor = make_executor(self.s.threads)
-        try:
+        with working(self.s.threads) as executor:
+            self.executor = executor
             return self._run(executor)
-        finally:
-            executor.shutdown(wait=False, cancel_futures=True)
 
     def _run(self, executor) -> EpisodeOutcome:
         graph, survey = self._survey_in_tree()
@@ -707,7 +705,7 @@ class Executive:
             askable = {f.name for f in self.builder.site_map.furniture if container is not None
                        and k.is_subtype(f.type, container)}
         candidates = [n for n in sorted(self.builder.evidence) if n in askable and k.is_subtype(self.task.objects[n], sig)]
-        with make_executor(self.s.threads) as executor:
+        with working(self.s.threads) as executor:
             vote, protocol = asking(self.s.strategy, self.s.vote, self.s.protocol)
             answers = survey_states(self.vlm, self.builder.best_frames(), candidates, vote, self.profile,
                                     predicates=(opened,), protocol=protocol, undetectable=self.builder.undetectable(),

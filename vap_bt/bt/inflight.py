@@ -18,7 +18,8 @@ from __future__ import annotations
 
 import time
 from concurrent.futures import Executor, Future, ThreadPoolExecutor
-from typing import Any, Callable
+from contextlib import contextmanager
+from typing import Any, Callable, Iterator
 
 #: questions to a VLM in flight at once: a round's five paraphrases and its sufficiency question
 MAX_IN_FLIGHT = 8
@@ -39,6 +40,19 @@ class InlineExecutor(Executor):
 def make_executor(concurrent: bool) -> Executor:
     """A thread pool for work that takes time, or the inline executor for immediate answers."""
     return ThreadPoolExecutor(MAX_IN_FLIGHT, thread_name_prefix="inflight") if concurrent else InlineExecutor()
+
+
+@contextmanager
+def working(concurrent: bool) -> Iterator[Executor]:
+    """:func:`make_executor` for the length of a ``with`` block, and on leaving it — done, failed or
+    a Ctrl-C — what has not started is cancelled and nothing is waited for: ``Executor``'s own
+    ``with`` waits for every queued question, which after a Ctrl-C in the survey kept the process
+    alive long after its report was written."""
+    executor = make_executor(concurrent)
+    try:
+        yield executor
+    finally:
+        executor.shutdown(wait=False, cancel_futures=True)
 
 
 def body_executor(executor: Executor) -> Executor:
