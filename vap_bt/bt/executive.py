@@ -27,7 +27,7 @@ then swaps in a new plan's tree:
 A goal atom the camera could not confirm, back unchanged after looking afresh, stops the episode
 as stuck — unless no check ever confirmed it: then belief holds it only because an action was to
 bring it about, which may have failed unseen, and it is handed back to the planner once
-(:func:`rests_on_plan`); or unless the check that confirmed it after that action still stands
+(:func:`why_redone`); or unless the check that confirmed it after that action still stands
 (no action since could change it, no settled view since denied it, and it is a state, not where
 a thing rests): then the claim rests on that check, the paper's own standard, and the report
 says so (:func:`~vap_bt.bt.goal_check.standing_confirmation`).
@@ -380,14 +380,10 @@ class Executive:
                     self.progress(f"    {situation.atom} denied {times} times from the same belief: "
                                   f"trying {situation.action} against it")
                 elif stuck(situation, times) and situation.atom not in redone \
-                        and (rests_on_plan(situation, board.verifications) or self._doubted_goal(situation, ctx)):
-                    # a goal no view confirmed rests on the plan alone, and the action that was to
-                    # bring it about may have failed unseen (halve_egg seed 3: a cut that did not
-                    # cut, its effect unsettled, three goal checks unsettled): do it again, once;
-                    # so too one a check confirmed that the views since weigh against (symbolic
-                    # halve_egg seed 159: "sliced" claimed on one such check, and the egg was whole)
+                        and (how := why_redone(situation, board, ctx.calibration)):
+                    # the action may have failed unseen (halve_egg seed 3: a cut that did not cut,
+                    # its effect unsettled, three goal checks unsettled): do it again, once
                     redone.add(situation.atom)
-                    how = "never confirmed" if rests_on_plan(situation, board.verifications) else "weighed against by its views"
                     # the goal checks after the redo see what it did: their count starts anew
                     # (boil_water seed 128: filled(cup) unseen three times, the cup refilled, and
                     # the first goal check after it, unsettled, made the fourth: stuck)
@@ -463,15 +459,6 @@ class Executive:
 
         earlier = {a: rests_on(a) for a in atoms if not self.roles.supports(a)}
         return earlier if atoms and len(earlier) == len(atoms) and None not in earlier.values() else {}
-
-    def _doubted_goal(self, s: Situation, ctx: ExecutionContext) -> bool:
-        """Whether ``s`` is a goal atom the camera could not confirm (:func:`unconfirmed_goal`)
-        whose views since the last action that could change it weigh against it, though an
-        earlier check confirmed it: the action that was to bring it about is done again before
-        any claim rests on that check."""
-        if s.kind != "unseen" or s.action is not None or s.atom is None or s.expected is None:
-            return False
-        return leans_against(s.atom, s.expected, ctx.board.verified.views(s.atom), ctx.calibration)
 
     def _diagnose(self, s: Situation) -> Situation:
         """``s`` with the executive's diagnosis of it (:mod:`vap_bt.bt.diagnosis`), made once: from
@@ -1261,17 +1248,26 @@ def shown_by_check(s: Situation, verifications: list[Verification], support: fro
     return False
 
 
-def rests_on_plan(s: Situation, verifications: list[Verification]) -> bool:
-    """Whether ``s`` is a goal atom the camera could not confirm (:func:`unconfirmed_goal`) that
-    belief holds only because a plan's action was to bring it about: no check of the episode
-    settled it at the goal's value, by a view or by the body. Then the action may have failed
-    where no view could tell (an injected cut that does not cut: vlm-2 reads ``sliced`` poorly,
-    and its effect check stayed unsettled), and doing it again is the way to a goal the camera
-    can confirm; an atom a check did confirm is another matter (a view of it was good enough)."""
+def why_redone(s: Situation, board: Board, calibration: Calibration) -> str | None:
+    """Why the action that was to bring about ``s``, a goal atom the camera could not confirm
+    (:func:`unconfirmed_goal`), is to be done again before anything is claimed; None if not.
+
+    * "never confirmed": belief holds it only because a plan's action was to bring it about — no
+      check of the episode settled it at the goal's value, by a view or by the body. The action may
+      have failed where no view could tell (an injected cut that does not cut: vlm-2 reads
+      ``sliced`` poorly, and its effect check stayed unsettled);
+    * "weighed against by its views": a check did confirm it, but the views since the last action
+      that could change it weigh against it (:func:`~vap_bt.bt.goal_check.leans_against`), so no
+      claim may rest on that check (symbolic halve_egg seed 159: "sliced" on one such check, and
+      the egg was whole)."""
     if s.kind != "unseen" or s.action is not None or s.atom is None:
-        return False
-    return not any(v.atom == s.atom and v.value == s.expected and v.outcome in ("confirmed", "felt")
-                   for v in verifications)
+        return None
+    if not any(v.atom == s.atom and v.value == s.expected and v.outcome in ("confirmed", "felt")
+               for v in board.verifications):
+        return "never confirmed"
+    if s.expected is not None and leans_against(s.atom, s.expected, board.verified.views(s.atom), calibration):
+        return "weighed against by its views"
+    return None
 
 
 def replan_timing(plan: Plan, seconds: float) -> str:

@@ -131,8 +131,7 @@ def leans_against(atom: Atom, value: bool, views: Sequence[Round], calibration: 
     """Whether ``views`` of ``atom`` (those since the last action that could change it) weigh
     against ``value``: their log odds (:meth:`~vap_bt.perception.evidence.Calibration.log_odds`)
     below even, for it."""
-    odds = calibration.log_odds(atom.predicate, views)
-    return (odds if value else -odds) < 0.0
+    return calibration.odds_for(atom.predicate, views, value) < 0.0
 
 
 def confirmed_by_its_action(atom: Atom, expected: bool, verifications: Sequence[Verification],

@@ -128,6 +128,11 @@ class Calibration:
         w = self.weights(predicate)
         return sum(w[k] for r in distinct(list(rounds)) for k in view_kinds(r))
 
+    def odds_for(self, predicate: str, rounds: Iterable[Round], value: bool) -> float:
+        """:meth:`log_odds` for ``value``: positive when the views favour it, negative against."""
+        odds = self.log_odds(predicate, rounds)
+        return odds if value else -odds
+
     @classmethod
     def load(cls, path: Path = CALIBRATION) -> "Calibration":
         """The calibration a YAML file holds (default: the shipped :data:`CALIBRATION`), as :meth:`to_yaml`

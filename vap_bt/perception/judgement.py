@@ -112,8 +112,8 @@ def needs_second_look(subject: Subject, value: bool, views: list[Round], rules: 
     pictures = distinct(views)
     agreeing = votes(pictures).count(value)
     if subject.phase == "goal" and value == subject.expected:  # success is claimed on it
-        odds = rules.calibration.log_odds(subject.atom.predicate, pictures)
-        return agreeing < 2 or (odds if value else -odds) < claim_threshold(rules.claim_risk)
+        return agreeing < 2 or rules.calibration.odds_for(subject.atom.predicate, pictures, value) \
+            < claim_threshold(rules.claim_risk)
     return agreeing < 2
 
 
