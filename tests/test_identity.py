@@ -17,7 +17,7 @@ from vap_bt.domain.atoms import Atom
 from vap_bt.robot.frame import Detection, Frame
 from vap_bt.robot.labels import class_of, label_of
 from vap_bt.robot.site_map import Cavity, DoorInfo, FurnitureInfo, RoomInfo, SiteMap
-from vap_bt.scene.identity import Believed, Identifier, centroid_of, measured_on_support, named_relations
+from vap_bt.scene.identity import Believed, Identifier, centroid_of, named_relations
 
 W, H, F = 160, 120, 100.0
 #: the camera's optical frame in the map frame: 2 m up, looking down, image x along +X, y along -Y
@@ -87,33 +87,6 @@ def test_a_bottle_seen_near_where_one_was_measured_is_that_one_not_another_belie
     # with bottle1 out of the frame's reach (believed elsewhere), the same bottle may be bottle2
     belief["bottle1"] = Believed((1.5, 1.5, 0.1))
     assert names(ident().identify(pixel_frame(("bottle", (-0.8, -0.52, 0.95))), belief)) == ["bottle2"]
-
-
-def test_an_item_seen_where_belief_put_it_only_by_its_support_is_measured_unless_another_could_be_it():
-    """retrieve_bottles seed 219 in pybullet: bottle2 placed on the counter and seen there stayed
-    believed "anywhere on the counter"; so was bottle1 after a place that dropped it on the floor,
-    and the one bottle on the counter was named bottle1 by the tie. The first sighting where no
-    other bottle could be the detection measures it; a tie, a bottle placed nowhere or the task
-    file's word measures nothing."""
-    on_counter = Believed((-0.8, -0.6, 0.9), 0.82, support="counter")
-    frame = pixel_frame(("bottle", (-0.75, -0.5, 1.0)))
-    belief = {"bottle1": Believed((1.5, 1.5, 0.1)), "bottle2": on_counter}  # bottle1 measured far off
-    seen = ident().identify(frame, belief)
-    assert names(seen) == ["bottle2"]
-    point = measured_on_support(seen, belief, VOCABULARY)
-    assert set(point) == {"bottle2"} and np.allclose(point["bottle2"], (-0.75, -0.5, 1.0), atol=0.02)
-    # then a bottle believed where it was measured is that one, not another believed anywhere there
-    after = {"bottle1": on_counter, "bottle2": Believed(point["bottle2"])}
-    assert names(ident().identify(frame, after)) == ["bottle2"]
-    tie = {"bottle1": on_counter, "bottle2": on_counter}
-    assert measured_on_support(ident().identify(frame, tie), tie, VOCABULARY) == {}
-    nowhere = {"bottle2": on_counter}  # bottle1 placed nowhere: it may be this one
-    assert measured_on_support(ident().identify(frame, nowhere), nowhere, VOCABULARY) == {}
-    assert set(measured_on_support(ident().identify(frame, nowhere), nowhere, VOCABULARY, held="bottle1")) == {"bottle2"}
-    told = {"bottle1": Believed((1.5, 1.5, 0.1)), "bottle2": replace(on_counter, told=True)}
-    assert measured_on_support(ident().identify(frame, told), told, VOCABULARY) == {}
-    measured = {"bottle1": Believed((1.5, 1.5, 0.1)), "bottle2": Believed((-0.76, -0.5, 1.0))}
-    assert measured_on_support(ident().identify(frame, measured), measured, VOCABULARY) == {}  # already measured
 
 
 def test_a_moved_object_is_rematched_nearby_and_taken_anew_when_looked_for():

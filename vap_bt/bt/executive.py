@@ -97,7 +97,7 @@ from vap_bt.robot.camera import Body, Camera
 from vap_bt.scene import belief
 from vap_bt.scene.builder import Geometry, SceneGraphBuilder, SweepRecord
 from vap_bt.scene.graph import SceneGraph
-from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera, measured_on_support
+from vap_bt.scene.identity import Believed, Identifier, IdentifyingCamera
 from vap_bt.scene.misses import Misses
 from vap_bt.scene.moves import SightingMoves
 from vap_bt.scene.trail import lost_on_the_way, trail_spots
@@ -668,21 +668,10 @@ class Executive:
                 belief[n] = b
         hand = tuple(state.tcp_pose[:3]) if state.tcp_pose is not None else None
         named = self.identifier.identify(frame, belief, held, hand, state.room)
-        if self.graph is not None and self.geometry is not None:
-            self._measure_where_believed(named, belief, held)
         seen = {d.name for d in named.detections if d.name}
         self.builder.forget(seen & unplaced)  # this sighting replaces one that placed it nowhere
         self.builder.saw(seen)
         return named
-
-    def _measure_where_believed(self, frame: Frame, belief: dict[str, Believed], held: str | None) -> None:
-        """Believe each item ``frame`` measures where belief put it only by its support
-        (:func:`~vap_bt.scene.identity.measured_on_support`) at the point it was measured: belief of
-        an item the robot put somewhere would otherwise stay "anywhere on that top" however often a
-        check saw it there."""
-        graph = self.graph
-        for name, point in measured_on_support(frame, belief, self.identifier.vocabulary, held).items():
-            graph.objects[name] = graph.objects[name].seen(centroid=point, located=frozenset(graph.location(name)))
 
     def _said_where(self, obj: str) -> bool:
         return any(a.predicate in self.roles.location and a.args and a.args[0] == obj for a in self.prior)

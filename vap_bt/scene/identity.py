@@ -395,32 +395,6 @@ def _spread(radius: float) -> float:
     return 2.0 * math.log(max(radius, SEEN_RADIUS) / SEEN_RADIUS)
 
 
-def measured_on_support(frame: Frame, belief: Mapping[str, Believed], vocabulary: Mapping[str, str],
-                        held: str | None = None) -> dict[str, Vec3]:
-    """The items ``frame`` names where ``belief`` put them only by their support (a point with a
-    radius wider than a measured centroid's: anywhere on a piece's top, an action of the plan
-    having carried them there), with where the frame measures each — except where another item
-    of its class could have been that detection: one placed nowhere, or believed within its
-    radius of the measured point. Such a name is a tie the assignment broke, not a sighting
-    (retrieve_bottles seed 219 in pybullet: bottle2, placed and seen on the counter, and bottle1,
-    whose place failed and dropped it on the floor, were both believed anywhere on the counter;
-    the one bottle there was named bottle1 by the tie, and success was claimed on it). ``held``:
-    the item in the hand, which is no rival. The task file's word (``told``) is not measured here."""
-    out: dict[str, Vec3] = {}
-    for d in frame.detections:
-        b = belief.get(d.name) if d.name else None
-        if b is None or b.told or b.point is None or b.radius <= SEEN_RADIUS:
-            continue
-        c = centroid_of(frame, d)
-        if c is None:
-            continue
-        rivals = [m for m in vocabulary if m not in (d.name, held) and vocabulary[m] == vocabulary[d.name]
-                  and (m not in belief or belief[m].point is None or math.dist(c, belief[m].point) <= belief[m].radius)]
-        if not rivals:
-            out[d.name] = (float(c[0]), float(c[1]), float(c[2]))
-    return out
-
-
 def centroid_of(frame: Frame, d: Detection, max_range: float = 4.0, max_points: int = 400) -> np.ndarray | None:
     """The median (map frame) of the points of ``d``'s mask with a depth return within
     ``max_range``; None when the frame has no pixels or the mask none with depth. The median, not
