@@ -46,8 +46,8 @@ def make_executor(concurrent: bool) -> Executor:
 def working(concurrent: bool) -> Iterator[Executor]:
     """:func:`make_executor` for the length of a ``with`` block, and on leaving it — done, failed or
     a Ctrl-C — what has not started is cancelled and nothing is waited for: ``Executor``'s own
-    ``with`` waits for every queued question, which after a Ctrl-C in the survey kept the process
-    alive long after its report was written."""
+    ``with`` waits for every queued question, which after a Ctrl-C in the survey can keep the
+    process alive long after its report was written (the likely cause of a flaky interrupt test)."""
     executor = make_executor(concurrent)
     try:
         yield executor
