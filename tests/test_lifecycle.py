@@ -136,11 +136,18 @@ def test_work_in_flight_left_by_a_ctrl_c_is_cancelled_not_waited_for():
     (``Executor``'s own ``with`` would run every queued question first)."""
     from vap_bt.bt.inflight import MAX_IN_FLIGHT, working
 
-    release = threading.Event()
+    release, started = threading.Event(), threading.Semaphore(0)
+
+    def question() -> None:
+        started.release()
+        release.wait(30.0)
+
     t0 = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
         with working(True) as executor:
-            futures = [executor.submit(release.wait, 30.0) for _ in range(3 * MAX_IN_FLIGHT)]
+            futures = [executor.submit(question) for _ in range(3 * MAX_IN_FLIGHT)]
+            for _ in range(MAX_IN_FLIGHT):  # every worker has taken its question: the rest are queued
+                assert started.acquire(timeout=10.0)
             raise KeyboardInterrupt
     left = time.monotonic() - t0
     release.set()
